@@ -1,0 +1,220 @@
+# libmodesplit build.
+#
+#   make                 library (shared + static), plugins, tools
+#   make check           build and run every test (README's test command)
+#   make demo            run the default scene: HDF5 file + PNG frames in demo/
+#   make bench           benchmarks: medians, spreads, machine; CSV in bench/
+#   make install PREFIX=/usr/local
+#   make SAN=asan check  the tests under AddressSanitizer + UBSan (build-asan/)
+#   make SAN=tsan check  the tests under ThreadSanitizer (build-tsan/)
+#   make NATIVE=1 bench  add -march=native (benchmarks only; results differ
+#                        in the last bits from the portable build)
+#
+# Sources are found by wildcard: lib/<part>/*.c is the library, one
+# plugins/shapes/<name>.c or plugins/shaders/<name>.c per plugin,
+# tools/modesplit/*.c the tool, tools/bench/<name>.c one benchmark program
+# each, tests/test_<part>.c one Check suite each.
+
+VERSION   := 0.1.0
+SOVERSION := 0
+PREFIX    ?= /usr/local
+DESTDIR   ?=
+CC        ?= cc
+CXX       ?= c++
+SAN       ?=
+NATIVE    ?= 0
+
+ifeq ($(SAN),)
+BUILD ?= build
+else
+BUILD ?= build-$(SAN)
+endif
+
+PKG_CONFIG ?= pkg-config
+# Libraries the build needs (tools/deps.sh installs them). OSMesa is
+# optional: without it the renderer returns MS_ERR_UNSUPPORTED.
+LIB_PKGS  := jansson hdf5 libpng
+HAVE_OSMESA := $(shell $(PKG_CONFIG) --exists osmesa 2>/dev/null && echo 1 || echo 0)
+ifeq ($(HAVE_OSMESA),1)
+LIB_PKGS  += osmesa
+endif
+PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(LIB_PKGS) 2>/dev/null)
+PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(LIB_PKGS) 2>/dev/null)
+CHECK_CFLAGS := $(shell $(PKG_CONFIG) --cflags check 2>/dev/null)
+CHECK_LIBS   := $(shell $(PKG_CONFIG) --libs check 2>/dev/null)
+
+WARN      := -Wall -Wextra -Werror -Wpedantic -Wshadow -Wstrict-prototypes -Wmissing-prototypes
+OPT       ?= -O2
+CFLAGS    ?= $(OPT) -g
+BASEFLAGS := -std=c11 $(WARN) -fPIC -fvisibility=hidden -D_POSIX_C_SOURCE=200809L
+CPPFLAGS  += -Iinclude -Ilib -MMD -MP -DMS_HAVE_OSMESA=$(HAVE_OSMESA) \
+             -DMS_BUILD_PLUGIN_DIR='"$(abspath $(BUILD))/plugins"'
+ifeq ($(NATIVE),1)
+BASEFLAGS += -march=native
+endif
+ifeq ($(SAN),asan)
+BASEFLAGS += -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+LDSAN     := -fsanitize=address,undefined
+else ifeq ($(SAN),tsan)
+BASEFLAGS += -fsanitize=thread -fno-omit-frame-pointer
+LDSAN     := -fsanitize=thread
+endif
+ALL_CFLAGS := $(BASEFLAGS) $(CFLAGS) $(PKG_CFLAGS)
+SYS_LIBS   := $(PKG_LIBS) -ldl -lpthread -lm
+
+LIB_SRC := $(wildcard lib/*/*.c)
+ifeq ($(HAVE_OSMESA),0)
+LIB_SRC := $(filter-out lib/render/gl_%.c,$(LIB_SRC))
+endif
+LIB_OBJ   := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
+SHARED    := $(BUILD)/lib/libmodesplit.so.$(VERSION)
+SONAME    := libmodesplit.so.$(SOVERSION)
+STATIC    := $(BUILD)/lib/libmodesplit.a
+
+SHAPE_SRC  := $(wildcard plugins/shapes/*.c)
+SHADER_SRC := $(wildcard plugins/shaders/*.c)
+PLUGINS    := $(SHAPE_SRC:plugins/shapes/%.c=$(BUILD)/plugins/shape_%.so) \
+              $(SHADER_SRC:plugins/shaders/%.c=$(BUILD)/plugins/shader_%.so)
+PLUGIN_LIBS ?= $(shell $(PKG_CONFIG) --libs jansson libpng 2>/dev/null) -lm
+
+TOOL_SRC  := $(wildcard tools/modesplit/*.c)
+TOOL      := $(if $(TOOL_SRC),$(BUILD)/bin/modesplit)
+BENCH_SRC := $(wildcard tools/bench/*.c)
+BENCHES   := $(BENCH_SRC:tools/bench/%.c=$(BUILD)/bin/%)
+TEST_SRC  := $(wildcard tests/test_*.c)
+TESTS     := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+# Helpers shared by several test suites (tests/support_*.c).
+TEST_SUPPORT := $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/support_*.c))
+
+.SECONDARY:
+# V=1 shows the full commands.
+ifeq ($(V),1)
+Q :=
+else
+Q := @
+endif
+
+.PHONY: all lib plugins tools tests check check-headers check-exports demo bench \
+        install uninstall clean deps
+.DEFAULT_GOAL := all
+
+all: lib plugins tools
+
+lib: $(SHARED) $(STATIC) $(BUILD)/lib/$(SONAME) $(BUILD)/lib/libmodesplit.so
+plugins: $(PLUGINS)
+tools: $(TOOL) $(BENCHES)
+tests: $(TESTS)
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(@D)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@
+
+$(SHARED): $(LIB_OBJ)
+	@mkdir -p $(@D)
+	@echo "  LD      $@"
+	$(Q)$(CC) -shared -Wl,-soname,$(SONAME) -Wl,--no-undefined $(LDSAN) -o $@ $^ $(SYS_LIBS)
+
+$(BUILD)/lib/$(SONAME): $(SHARED)
+	$(Q)ln -sf $(notdir $<) $@
+$(BUILD)/lib/libmodesplit.so: $(BUILD)/lib/$(SONAME)
+	$(Q)ln -sf $(notdir $<) $@
+
+$(STATIC): $(LIB_OBJ)
+	@mkdir -p $(@D)
+	@echo "  AR      $@"
+	$(Q)rm -f $@ && ar rcs $@ $^
+
+# Plugins are self-contained: they use no libmodesplit symbols, so they
+# load into any host (a statically linked test, an engine, the tool).
+$(BUILD)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h
+	@mkdir -p $(@D)
+	@echo "  PLUGIN  $@"
+	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -shared -Wl,--no-undefined $(LDSAN) -o $@ $< $(PLUGIN_LIBS)
+$(BUILD)/plugins/shader_%.so: plugins/shaders/%.c include/modesplit/plugin.h
+	@mkdir -p $(@D)
+	@echo "  PLUGIN  $@"
+	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -shared -Wl,--no-undefined $(LDSAN) -o $@ $< $(PLUGIN_LIBS)
+
+# The tool links the shared library, found next to it at run time.
+$(BUILD)/bin/modesplit: $(TOOL_SRC:%.c=$(BUILD)/obj/%.o) $(SHARED) $(BUILD)/lib/libmodesplit.so
+	@mkdir -p $(@D)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDSAN) -o $@ $(filter %.o,$^) -L$(BUILD)/lib -lmodesplit \
+	    -Wl,-rpath,'$$ORIGIN/../lib' $(SYS_LIBS)
+
+$(BUILD)/bin/%: $(BUILD)/obj/tools/bench/%.o $(STATIC)
+	@mkdir -p $(@D)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDSAN) -o $@ $< $(STATIC) $(SYS_LIBS)
+
+# Tests link the static library so they can also reach internal functions.
+$(BUILD)/obj/tests/%.o: tests/%.c
+	@mkdir -p $(@D)
+	@echo "  CC      $<"
+	$(Q)$(CC) $(CPPFLAGS) -Itests $(ALL_CFLAGS) $(CHECK_CFLAGS) -c $< -o $@
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TEST_SUPPORT) $(STATIC) | plugins tools
+	@mkdir -p $(@D)
+	@echo "  LD      $@"
+	$(Q)$(CC) $(LDSAN) -o $@ $< $(TEST_SUPPORT) $(STATIC) $(CHECK_LIBS) $(SYS_LIBS)
+
+deps:
+	@tools/deps.sh
+
+# Every suite runs even if one fails; the target fails if any did.
+check: deps
+	@$(MAKE) --no-print-directory all tests
+	@$(MAKE) --no-print-directory check-headers check-exports
+	@fail=0; for t in $(TESTS); do \
+	    echo "== $$t"; \
+	    MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) $$t || fail=1; \
+	done; \
+	if [ $$fail -ne 0 ]; then echo "make check: FAILED"; exit 1; fi; \
+	echo "make check: all $(words $(TESTS)) suites passed ($(BUILD))"
+
+# The public headers compile as C11 (pedantic) and as C++11.
+check-headers:
+	@mkdir -p $(BUILD)/compile
+	$(Q)$(CC) -std=c11 $(WARN) -Iinclude -fsyntax-only tests/compile/headers.c
+	$(Q)$(CXX) -std=c++11 -Wall -Wextra -Werror -Wpedantic -Iinclude -fsyntax-only \
+	    -x c++ tests/compile/headers.c
+	@echo "headers: C11 and C++11 OK"
+
+# The shared library exports ms_* symbols only.
+check-exports: $(SHARED)
+	@tests/check_exports.sh $(SHARED)
+
+demo: deps
+	@$(MAKE) --no-print-directory all
+	@mkdir -p demo
+	$(BUILD)/bin/modesplit run data/scenes/default.json --out demo/default.h5 --png demo/frames
+	@echo "demo: wrote demo/default.h5 (HDF5), demo/default.xmf (ParaView) and demo/frames/*.png"
+
+bench: deps
+	@$(MAKE) --no-print-directory all
+	@mkdir -p bench
+	@for b in $(BENCHES); do echo "== $$b"; $$b --csv-dir bench || exit 1; done
+
+install: all
+	install -d $(DESTDIR)$(PREFIX)/include/modesplit $(DESTDIR)$(PREFIX)/lib/pkgconfig \
+	    $(DESTDIR)$(PREFIX)/lib/modesplit/plugins $(DESTDIR)$(PREFIX)/bin
+	install -m 644 include/modesplit/*.h $(DESTDIR)$(PREFIX)/include/modesplit/
+	install -m 755 $(SHARED) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf $(notdir $(SHARED)) $(DESTDIR)$(PREFIX)/lib/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(PREFIX)/lib/libmodesplit.so
+	install -m 644 $(STATIC) $(DESTDIR)$(PREFIX)/lib/
+	$(if $(PLUGINS),install -m 755 $(PLUGINS) $(DESTDIR)$(PREFIX)/lib/modesplit/plugins/)
+	$(if $(TOOL),install -m 755 $(TOOL) $(DESTDIR)$(PREFIX)/bin/)
+	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' \
+	    -e 's|@REQUIRES@|$(LIB_PKGS)|g' tools/modesplit.pc.in \
+	    > $(DESTDIR)$(PREFIX)/lib/pkgconfig/modesplit.pc
+
+uninstall:
+	rm -rf $(DESTDIR)$(PREFIX)/include/modesplit $(DESTDIR)$(PREFIX)/lib/modesplit
+	rm -f $(DESTDIR)$(PREFIX)/lib/libmodesplit.* $(DESTDIR)$(PREFIX)/lib/pkgconfig/modesplit.pc
+	rm -f $(DESTDIR)$(PREFIX)/bin/modesplit
+
+clean:
+	rm -rf build build-asan build-tsan demo
+
+-include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

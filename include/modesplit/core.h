@@ -1,0 +1,75 @@
+/* libmodesplit core: version, status codes, the thread-local error sentence,
+ * and the opaque handle types every other header refers to.
+ *
+ * Every fallible call returns an ms_status: MS_OK (0) or a negative error.
+ * After an error, ms_last_error() returns a sentence that names the bad value
+ * and the bound it broke, e.g.
+ *   "surface: wave_speed 40 m/s with dx 0.01 m needs dt <= 1.77e-4 s".
+ * The sentence is thread-local: it belongs to the thread that made the call
+ * and stays until that thread's next failing call.
+ *
+ * The library never prints, exits or aborts on bad input.
+ */
+#ifndef MODESPLIT_CORE_H
+#define MODESPLIT_CORE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define MS_API __attribute__((visibility("default")))
+#else
+#define MS_API
+#endif
+
+#define MS_VERSION_MAJOR 0
+#define MS_VERSION_MINOR 1
+#define MS_VERSION_PATCH 0
+#define MS_VERSION_STRING "0.1.0"
+
+/* Opaque handles. */
+typedef struct ms_surface ms_surface;   /* 2D wave equation (paper eq. 2) */
+typedef struct ms_volume ms_volume;     /* 3D SPH (paper eqs. 9-18) */
+typedef struct ms_shape ms_shape;       /* collision shape from a plugin */
+typedef struct ms_scene ms_scene;       /* parsed scene file */
+typedef struct ms_sim ms_sim;           /* the mode-splitting coupler */
+typedef struct ms_renderer ms_renderer; /* OSMesa off-screen renderer */
+typedef struct ms_writer ms_writer;     /* HDF5 output */
+
+/* X-macro of the status codes: name, value, short description. */
+#define MS_STATUS_MAP(X)                                                      \
+    X(OK, 0, "success")                                                       \
+    X(ERR_INVALID_ARGUMENT, -1, "invalid argument")                           \
+    X(ERR_OUT_OF_MEMORY, -2, "out of memory")                                 \
+    X(ERR_UNSTABLE, -3, "parameters cannot be made numerically stable")       \
+    X(ERR_IO, -4, "input/output error")                                       \
+    X(ERR_PARSE, -5, "parse error")                                           \
+    X(ERR_PLUGIN, -6, "plugin error")                                         \
+    X(ERR_UNSUPPORTED, -7, "not supported by this build")                     \
+    X(ERR_STATE, -8, "call not allowed in the current state")
+
+typedef enum ms_status {
+#define MS_STATUS_ENUM_(name, value, text) MS_##name = value,
+    MS_STATUS_MAP(MS_STATUS_ENUM_)
+#undef MS_STATUS_ENUM_
+    MS_STATUS_FORCE_32BIT_ = 0x7fffffff /* public enums are 32-bit */
+} ms_status;
+
+/* "0.1.0" */
+MS_API const char *ms_version(void);
+/* "MS_ERR_UNSTABLE"; "MS_UNKNOWN_STATUS" for a value not in the map. */
+MS_API const char *ms_status_name(ms_status s);
+/* One-line description of a status code ("out of memory"). */
+MS_API const char *ms_status_text(ms_status s);
+/* The sentence of this thread's last failed call; "" if none failed yet. */
+MS_API const char *ms_last_error(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* MODESPLIT_CORE_H */

@@ -1,0 +1,59 @@
+/* Internal helpers shared by every part of libmodesplit (never installed):
+ * the error sentence, argument checks, aligned allocation, the seeded RNG
+ * and a monotonic clock. Nothing here is exported from the shared library.
+ */
+#ifndef MS_CORE_INTERNAL_H
+#define MS_CORE_INTERNAL_H
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "modesplit/core.h"
+
+#if defined(__GNUC__) || defined(__clang__)
+#define MS_PRINTF(fmt, args) __attribute__((format(printf, fmt, args)))
+#else
+#define MS_PRINTF(fmt, args)
+#endif
+
+/* Set this thread's error sentence and return s, so a failing path reads
+ *     return ms_fail(MS_ERR_INVALID_ARGUMENT, "surface: nx %d is below 2", nx);
+ */
+ms_status ms_fail(ms_status s, const char *fmt, ...) MS_PRINTF(2, 3);
+
+/* Argument checks: each returns MS_OK or fails with a sentence naming the
+ * part, the key, the value and the bound ("surface: dx 0 m must be > 0"). */
+ms_status ms_check_finite(const char *part, const char *key, double v);
+ms_status ms_check_range(const char *part, const char *key, double v, double lo, double hi,
+                         const char *unit);
+ms_status ms_check_positive(const char *part, const char *key, double v, const char *unit);
+ms_status ms_check_int_range(const char *part, const char *key, long v, long lo, long hi);
+ms_status ms_check_not_null(const char *part, const char *key, const void *p);
+
+/* Zeroed, 64-byte aligned memory (cache line, AVX-512 vector); n in bytes.
+ * ms_alloc_array checks count*size for overflow. NULL when out of memory. */
+void *ms_alloc(size_t n);
+void *ms_alloc_array(size_t count, size_t size);
+void ms_free(void *p);
+
+/* xoshiro128** seeded by splitmix64: small, fast, and the same sequence on
+ * every platform, carried in the handle that uses it (no global state). */
+typedef struct ms_rng {
+    uint32_t s[4];
+} ms_rng;
+void ms_rng_seed(ms_rng *r, uint64_t seed);
+uint32_t ms_rng_u32(ms_rng *r);
+/* Uniform in [0, 1), 24 random bits. */
+float ms_rng_uniform(ms_rng *r);
+/* Poisson-distributed count with the given mean (>= 0). */
+long ms_rng_poisson(ms_rng *r, double mean);
+
+/* Monotonic clock in seconds, for statistics only (never for results). */
+double ms_now(void);
+
+#define MS_MIN(a, b) ((a) < (b) ? (a) : (b))
+#define MS_MAX(a, b) ((a) > (b) ? (a) : (b))
+#define MS_CLAMP(v, lo, hi) MS_MIN(MS_MAX((v), (lo)), (hi))
+
+#endif /* MS_CORE_INTERNAL_H */

@@ -1,0 +1,7 @@
+/* The library version, from the one definition in core.h. */
+#include "core/internal.h"
+
+const char *ms_version(void)
+{
+    return MS_VERSION_STRING;
+}

@@ -1,0 +1,23 @@
+/* Shared helpers of the Check suites (tests/support_*.c). */
+#ifndef MS_TESTS_SUPPORT_H
+#define MS_TESTS_SUPPORT_H
+
+#include <check.h>
+#include <string.h>
+
+/* Run a suite in fork mode (each case in its own process, so a crash is a
+ * failure, not the end of the run); returns the exit status for main. */
+int ms_test_run(Suite *s);
+
+/* Assert a call failed with `status` and that ms_last_error() contains
+ * `word`: every refusal is tested like a feature. */
+#define MS_ASSERT_REFUSED(call, status, word)                                          \
+    do {                                                                               \
+        ms_status st_ = (call);                                                        \
+        ck_assert_msg(st_ == (status), "%s returned %s, expected %s (%s)", #call,      \
+                      ms_status_name(st_), ms_status_name(status), ms_last_error());   \
+        ck_assert_msg(strstr(ms_last_error(), (word)) != NULL,                         \
+                      "message \"%s\" lacks \"%s\"", ms_last_error(), (word));         \
+    } while (0)
+
+#endif

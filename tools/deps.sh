@@ -1,0 +1,40 @@
+#!/bin/sh
+# Installs the Debian packages libmodesplit needs when they are missing.
+# As root it runs apt-get; otherwise it prints the one command to run.
+#   tools/deps.sh          check, install what is missing (root)
+#   tools/deps.sh --list   print the package list
+set -eu
+
+# build: compiler, make, pkg-config; libraries: JSON (jansson), HDF5, PNG,
+# OSMesa (off-screen GL); tests: Check, valgrind, h5dump (hdf5-tools),
+# clang for the libFuzzer harnesses.
+PACKAGES="build-essential pkg-config libjansson-dev libhdf5-dev hdf5-tools libpng-dev \
+libosmesa6-dev check libsubunit-dev valgrind clang"
+
+if [ "${1:-}" = "--list" ]; then
+    echo $PACKAGES
+    exit 0
+fi
+
+missing=""
+for p in $PACKAGES; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing="$missing $p"
+    fi
+done
+
+if [ -z "$missing" ]; then
+    exit 0
+fi
+
+if [ "$(id -u)" -eq 0 ]; then
+    echo "deps: installing$missing"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    # shellcheck disable=SC2086
+    apt-get install -y -qq --no-install-recommends $missing
+else
+    echo "deps: missing Debian packages:$missing" >&2
+    echo "deps: run:  sudo apt-get install -y$missing" >&2
+    exit 1
+fi
