@@ -59,6 +59,22 @@ typedef enum ms_status {
     MS_STATUS_FORCE_32BIT_ = 0x7fffffff /* public enums are 32-bit */
 } ms_status;
 
+/* The fields of a run, as bits (scene `output.fields`, ms_writer_open). */
+enum {
+    MS_FIELD_COMBINED = 1u << 0,  /* SPH field up-sampled + wave field (eq. 20) */
+    MS_FIELD_SURFACE = 1u << 1,   /* the wave-equation field alone */
+    MS_FIELD_VOLUME = 1u << 2,    /* the SPH height field alone (eq. 16) */
+    MS_FIELD_PARTICLES = 1u << 3  /* SPH particle positions and velocities */
+};
+
+/* A regular grid placed in the world: cell (i, j) spans
+ * [origin + (i, j) * (dx, dy), origin + (i+1, j+1) * (dx, dy)]. */
+typedef struct ms_grid {
+    int nx, ny;
+    float dx, dy;      /* m */
+    float origin[2];   /* m, corner of cell (0, 0) */
+} ms_grid;
+
 /* "0.1.0" */
 MS_API const char *ms_version(void);
 /* "MS_ERR_UNSTABLE"; "MS_UNKNOWN_STATUS" for a value not in the map. */

@@ -12,13 +12,7 @@
 extern "C" {
 #endif
 
-/* Bits of the `fields` argument of ms_writer_open. */
-enum {
-    MS_FIELD_COMBINED = 1u << 0,  /* /fields/combined */
-    MS_FIELD_SURFACE = 1u << 1,   /* /fields/surface  */
-    MS_FIELD_VOLUME = 1u << 2,    /* /fields/volume   */
-    MS_FIELD_PARTICLES = 1u << 3  /* /Step#n/x,y,z,vx,vy,vz (H5Part) */
-};
+/* `fields` is a set of MS_FIELD_* bits (core.h). */
 
 MS_API ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields,
                                 ms_writer **out);

@@ -16,6 +16,15 @@ MS_API ms_status ms_scene_load(const char *path, ms_scene **out);
 MS_API ms_status ms_scene_parse(const char *json, size_t len, ms_scene **out);
 MS_API void ms_scene_destroy(ms_scene *sc);
 
+MS_API const char *ms_scene_name(const ms_scene *sc);
+MS_API const char *ms_scene_text(const ms_scene *sc);  /* the JSON text as loaded */
+MS_API const char *ms_scene_path(const ms_scene *sc);  /* file it came from; "" when parsed */
+MS_API double ms_scene_duration(const ms_scene *sc);    /* s */
+MS_API float ms_scene_frame_dt(const ms_scene *sc);     /* s */
+MS_API unsigned ms_scene_output_fields(const ms_scene *sc); /* MS_FIELD_* bits asked for */
+MS_API int ms_scene_output_every(const ms_scene *sc);   /* write every n-th frame, >= 1 */
+MS_API int ms_scene_has_render(const ms_scene *sc);     /* a `render` section exists */
+
 #ifdef __cplusplus
 }
 #endif

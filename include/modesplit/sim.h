@@ -48,6 +48,20 @@ MS_API const float *ms_sim_height(const ms_sim *sim, int *nx, int *ny); /* combi
 MS_API ms_volume *ms_sim_volume(ms_sim *sim);   /* NULL when the scene has no volume */
 MS_API ms_surface *ms_sim_surface(ms_sim *sim); /* NULL when the scene has no surface */
 
+/* The parts of the last finished frame (views, valid until the next
+ * ms_sim_step). NULL (and *nx = *ny = 0) for a part the sim does not have. */
+MS_API const float *ms_sim_surface_height(const ms_sim *sim, int *nx, int *ny);
+MS_API const float *ms_sim_volume_height(const ms_sim *sim, int *nx, int *ny);
+/* Where a field (one MS_FIELD_COMBINED/SURFACE/VOLUME bit) lies in the world. */
+MS_API ms_status ms_sim_field_grid(const ms_sim *sim, unsigned field, ms_grid *out);
+/* Particles as structure-of-arrays views: pos[0..2] = x, y, z and
+ * vel[0..2] = vx, vy, vz, n each; *n = 0 and NULL views without a volume. */
+MS_API ms_status ms_sim_particles(const ms_sim *sim, int *n, const float *pos[3],
+                                  const float *vel[3]);
+MS_API double ms_sim_time(const ms_sim *sim);   /* s, time of the fields above */
+MS_API long ms_sim_frame(const ms_sim *sim);    /* frames finished */
+MS_API const ms_scene *ms_sim_scene(const ms_sim *sim); /* NULL when made from a desc */
+
 typedef struct ms_stats {
     double volume_ms, surface_ms, extract_ms, combine_ms, render_ms, total_ms;
     long volume_steps, surface_steps, frames;
