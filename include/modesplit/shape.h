@@ -22,6 +22,26 @@ MS_API ms_status ms_shape_set_pose(ms_shape *s, const float pos[3], const float 
  * and the outward smoothed unit normal there (normal may be NULL). */
 MS_API float ms_shape_distance(const ms_shape *s, const float p[3], float normal[3]);
 
+/* Velocity (m/s) of the shape's material at world point p (moving obstacles
+ * push the liquid with it). */
+MS_API void ms_shape_velocity(const ms_shape *s, const float p[3], float vel[3]);
+/* Current position (m) and velocity (m/s) of the shape's origin. */
+MS_API void ms_shape_get_pose(const ms_shape *s, float pos[3], float vel[3]);
+/* World-space bounding box (m). */
+MS_API void ms_shape_bounds(const ms_shape *s, float lo[3], float hi[3]);
+/* Rasterise the shape's footprint at water level z (m) onto grid g: mask
+ * cells whose centre lies inside the shape are set to 1, others are left
+ * as they are (so several shapes OR into one obstacle mask). */
+MS_API ms_status ms_shape_footprint(const ms_shape *s, const ms_grid *g, float z,
+                                    unsigned char *mask);
+/* Water depth (m) over the shape at each cell centre of g for a water
+ * level z: z minus the height of the shape's top there, clamped at 0, and
+ * min()-ed into depth (initialise depth with the depth without the shape).
+ * Terrain uses it to set the wave speed map (c = sqrt(g depth)). */
+MS_API ms_status ms_shape_depth(const ms_shape *s, const ms_grid *g, float z, float *depth);
+/* The shape's kind name ("sphere"). */
+MS_API const char *ms_shape_kind(const ms_shape *s);
+
 #ifdef __cplusplus
 }
 #endif
