@@ -423,9 +423,9 @@ START_TEST(out_of_tree_plugin_builds_against_installed_headers)
     ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0, 0.5f, 0.3f}, NULL), 0.1f, 1e-6f);
     ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0.9f, 0, 0}, NULL), 0.2f, 1e-6f);
     ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0.5f, 0, 0}, NULL), -0.2f, 1e-6f);
+    ms_shape_destroy(s);
     MS_ASSERT_REFUSED(ms_shape_create("torus", "{\"major\": 0.1, \"minor\": 0.2}", &s),
                       MS_ERR_INVALID_ARGUMENT, "minor 0.2 m");
-    ms_shape_destroy(s);
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     ck_assert_int_eq(system(cmd), 0);
 }
