@@ -218,3 +218,5 @@ clean:
 	rm -rf build build-asan build-tsan demo
 
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+# Plugins include plugins/common/*.h: their dependency files too.
+-include $(wildcard $(BUILD)/plugins/*.d)
