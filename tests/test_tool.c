@@ -59,7 +59,7 @@ static void remove_tree(const char *dir)
 
 /* A path in the test's directory; each call returns a fresh string, all
  * freed by remove_tmp_dir. */
-static char *paths[256];
+static char *paths[1024];
 static int npaths;
 
 static char *tmp_path(const char *name)
@@ -67,8 +67,8 @@ static char *tmp_path(const char *name)
     size_t n = strlen(tmp_dir) + strlen(name) + 2;
     char *p = malloc(n);
     snprintf(p, n, "%s/%s", tmp_dir, name);
-    if (npaths < 256)
-        paths[npaths++] = p;
+    ck_assert_int_lt(npaths, 1024);
+    paths[npaths++] = p;
     return p;
 }
 
@@ -145,10 +145,13 @@ static pid_t spawn_tool(const char *const *args, const char *out, const char *er
 static result run_tool(const char *const *args)
 {
     result r;
-    pid_t pid = spawn_tool(args, tmp_path("stdout.txt"), tmp_path("stderr.txt"));
+    char out[512], err[512];
+    snprintf(out, sizeof out, "%s/stdout.txt", tmp_dir);
+    snprintf(err, sizeof err, "%s/stderr.txt", tmp_dir);
+    pid_t pid = spawn_tool(args, out, err);
     waitpid(pid, &r.status, 0);
-    r.out = slurp(tmp_path("stdout.txt"));
-    r.err = slurp(tmp_path("stderr.txt"));
+    r.out = slurp(out);
+    r.err = slurp(err);
     return r;
 }
 
@@ -179,14 +182,30 @@ static long frames_in(const char *path)
     return n;
 }
 
+/* Frames `modesplit info` sees in a file (-1 if it cannot read it now).
+ * A file being written is read through the tool, as a user would: HDF5
+ * 1.10.8 can leak (and complain at exit) after opening a file caught in
+ * the middle of a flush, which must not count against this process. */
+static long frames_via_info(const char *path)
+{
+    result r = run_tool((const char *[]){"info", path, NULL});
+    long n = -1;
+    const char *p = strstr(r.out, "\n  frames    ");
+    if (exited(&r, 0) && p)
+        n = strtol(p + 14, NULL, 10);
+    result_free(&r);
+    return n;
+}
+
 /* Wait until the file holds at least n frames (reading it while the run
  * goes on); 0 on time-out. */
 static int wait_for_frames(const char *path, long n, double timeout_s)
 {
-    for (double t = 0; t < timeout_s; t += 0.02) {
-        if (frames_in(path) >= n)
+    double start = 0;
+    for (int i = 0; start < timeout_s; ++i, start += 0.05) {
+        if (frames_via_info(path) >= n)
             return 1;
-        struct timespec ts = {0, 20000000};
+        struct timespec ts = {0, 50000000};
         nanosleep(&ts, NULL);
     }
     return 0;
@@ -525,7 +544,7 @@ START_TEST(sigkill_mid_run_leaves_a_file_h5dump_and_info_read)
                                tmp_path("o.txt"), tmp_path("e.txt"));
         /* readable while the run goes on */
         int ok = wait_for_frames(out, 2 + round, 60);
-        long seen = frames_in(out);
+        long seen = frames_via_info(out);
         struct timespec ts = {0, 1000000L * (7 * round)};
         nanosleep(&ts, NULL);
         kill(pid, SIGKILL);
