@@ -219,7 +219,9 @@ int cmd_run(int argc, char **argv)
             break;
         }
         ++done;
-        if (done % every == 0) {
+        /* The sim publishes a frame one step behind (its first step
+         * publishes the start): write published frames 0, every, 2 every... */
+        if ((done - 1) % every == 0) {
             double t0 = tool_now();
             if (w && ms_writer_frame(w, sim) != MS_OK) {
                 progress_end(&prog);
