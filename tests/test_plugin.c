@@ -233,7 +233,8 @@ START_TEST(lists_the_shipped_plugins)
     ck_assert_int_ge(n, 3);
     const char *want[] = {"box", "plane", "sphere"};
     int found = 0;
-    const char *prev_kind = "", *prev_name = "";
+    const char *prev_name = "";
+    int prev_rank = 0;
     for (int i = 0; i < n; ++i) {
         ms_plugin_description d;
         ck_assert_int_eq(ms_plugin_describe(i, &d), MS_OK);
@@ -242,11 +243,10 @@ START_TEST(lists_the_shipped_plugins)
         ck_assert_int_gt(strlen(d.version), 0);
         ck_assert_uint_eq(d.abi >> 16, MS_PLUGIN_ABI_MAJOR);
         ck_assert_int_eq(access(d.path, R_OK), 0);
-        /* sorted by kind, then name */
-        int c = strcmp(prev_kind, d.kind);
-        ck_assert(c < 0 || (c == 0 && strcmp(prev_name, d.name) < 0) ||
-                  (strcmp(d.kind, "shape") == 0 && strcmp(prev_kind, "shape") != 0));
-        prev_kind = d.kind;
+        /* sorted by kind (shapes, then shaders), then name */
+        int rank = strcmp(d.kind, "shape") == 0 ? 0 : 1;
+        ck_assert(rank > prev_rank || (rank == prev_rank && strcmp(prev_name, d.name) < 0));
+        prev_rank = rank;
         prev_name = d.name;
         for (int k = 0; k < 3; ++k)
             found += strcmp(d.name, want[k]) == 0;
@@ -355,6 +355,82 @@ START_TEST(first_use_from_many_threads_scans_once)
 }
 END_TEST
 
+/* Reads a whole small file into buf. */
+static void slurp(const char *path, char *buf, size_t n)
+{
+    buf[0] = '\0';
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return;
+    size_t got = fread(buf, 1, n - 1, f);
+    buf[got] = '\0';
+    fclose(f);
+}
+
+/* make install into a temporary prefix; a plugin written outside the tree
+ * is built against the installed headers found by pkg-config, and a program
+ * linked against the installed shared library finds the installed plugins
+ * (dladdr) and, through MODESPLIT_PLUGIN_PATH, the new one. */
+START_TEST(out_of_tree_plugin_builds_against_installed_headers)
+{
+    char dir[] = "/tmp/ms_test_install_XXXXXX", cwd[1024], cmd[4096];
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    ck_assert_ptr_nonnull(getcwd(cwd, sizeof cwd));
+    const char *build = getenv("MS_TEST_BUILD") ? getenv("MS_TEST_BUILD") : "build";
+    const char *san = getenv("MS_TEST_SAN") ? getenv("MS_TEST_SAN") : "";
+    const char *sanflags = strcmp(san, "asan") == 0   ? "-fsanitize=address,undefined"
+                           : strcmp(san, "tsan") == 0 ? "-fsanitize=thread"
+                                                      : "";
+    const char *cc = getenv("CC") ? getenv("CC") : "cc";
+    snprintf(cmd, sizeof cmd,
+             "set -e; cd '%s'; env -u MAKEFLAGS -u MAKELEVEL -u MFLAGS make -s install "
+             "PREFIX='%s/prefix' BUILD='%s' SAN='%s' > '%s/install.log' 2>&1; "
+             "mkdir '%s/plugins'; cp tests/plugins/torus.c tests/plugins/host.c '%s/'; "
+             "cd '%s'; export PKG_CONFIG_PATH='%s/prefix/lib/pkgconfig'; "
+             "%s -std=c11 -Wall -Wextra -Werror -shared -fPIC $(pkg-config --cflags modesplit) "
+             "torus.c -o plugins/torus.so -lm; "
+             "%s -std=c11 -Wall -Werror %s $(pkg-config --cflags modesplit) host.c -o host "
+             "$(pkg-config --libs modesplit) -Wl,-rpath,'%s/prefix/lib'; "
+             "env -u MODESPLIT_PLUGIN_PATH ./host > installed.txt; "
+             "MODESPLIT_PLUGIN_PATH='%s/plugins' ./host > env.txt",
+             cwd, dir, build, san, dir, dir, dir, dir, dir, cc, cc, sanflags, dir, dir);
+    int rc = system(cmd);
+    char out[8192], path[600], want[700];
+    if (rc != 0) {
+        snprintf(path, sizeof path, "%s/install.log", dir);
+        slurp(path, out, sizeof out);
+    }
+    ck_assert_msg(rc == 0, "install/build failed (%d): %s", rc, rc ? out : "");
+    /* installed program, no MODESPLIT_PLUGIN_PATH: the install's plugins
+     * come before the build tree's */
+    snprintf(path, sizeof path, "%s/installed.txt", dir);
+    slurp(path, out, sizeof out);
+    snprintf(want, sizeof want, "path %s/prefix/lib/modesplit/plugins:", dir);
+    ck_assert_msg(strstr(out, want), "%s lacks \"%s\"", out, want);
+    snprintf(want, sizeof want, "plugin sphere %s/prefix/lib/modesplit/plugins/shape_sphere.so",
+             dir);
+    ck_assert_msg(strstr(out, want), "%s lacks \"%s\"", out, want);
+    ck_assert_ptr_nonnull(strstr(out, "error shape: no shape plugin named \"torus\""));
+    /* with the plugin's directory on MODESPLIT_PLUGIN_PATH */
+    snprintf(path, sizeof path, "%s/env.txt", dir);
+    slurp(path, out, sizeof out);
+    ck_assert_msg(strstr(out, "torus 0.400000"), "%s", out);
+    /* and loaded explicitly into this (static) program */
+    snprintf(path, sizeof path, "%s/plugins/torus.so", dir);
+    ck_assert_int_eq(ms_plugin_load(path), MS_OK);
+    ms_shape *s;
+    ck_assert_int_eq(ms_shape_create("torus", "{\"major\": 0.5, \"minor\": 0.2}", &s), MS_OK);
+    ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0, 0.5f, 0.3f}, NULL), 0.1f, 1e-6f);
+    ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0.9f, 0, 0}, NULL), 0.2f, 1e-6f);
+    ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0.5f, 0, 0}, NULL), -0.2f, 1e-6f);
+    ms_shape_destroy(s);
+    MS_ASSERT_REFUSED(ms_shape_create("torus", "{\"major\": 0.1, \"minor\": 0.2}", &s),
+                      MS_ERR_INVALID_ARGUMENT, "minor 0.2 m");
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
 static Suite *plugin_suite(void)
 {
     Suite *s = suite_create("plugin");
@@ -385,6 +461,10 @@ static Suite *plugin_suite(void)
     tcase_add_test(reg, search_path_order);
     tcase_add_test(reg, first_use_from_many_threads_scans_once);
     suite_add_tcase(s, reg);
+    TCase *inst = tcase_create("install");
+    tcase_set_timeout(inst, 120);
+    tcase_add_test(inst, out_of_tree_plugin_builds_against_installed_headers);
+    suite_add_tcase(s, inst);
     return s;
 }
 

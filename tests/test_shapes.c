@@ -1,8 +1,11 @@
 /* Collision shapes: distances and normals against closed forms at random
  * points (inside, outside, edges, corners), normals continuous across box
  * edges, footprints against analytic areas, depths, parameter refusals. */
+#define _DEFAULT_SOURCE /* mkdtemp */
 #include <check.h>
 #include <math.h>
+#include <png.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -410,6 +413,429 @@ START_TEST(depth_over_a_submerged_sphere)
 }
 END_TEST
 
+/* Where the distance field is smooth (its finite-difference gradient has
+ * unit length: not on a medial surface), the normal is that gradient. */
+static int normal_is_gradient(const ms_shape *s, const float p[3], const float n[3], double tol)
+{
+    float g[3];
+    num_gradient(s, p, 1e-4f, g);
+    double gl = len3(g);
+    if (fabs(gl - 1) > 1e-2)
+        return -1; /* not smooth here: not checked */
+    for (int k = 0; k < 3; ++k)
+        if (fabs(n[k] - g[k] / gl) > tol)
+            return 0;
+    return 1;
+}
+
+START_TEST(capsule_matches_closed_form)
+{
+    ms_shape *s = make("capsule", "{\"a\": [-0.2, 0.1, 0], \"b\": [0.3, -0.1, 0.2], "
+                                  "\"radius\": 0.15}");
+    const double a[3] = {-0.2, 0.1, 0}, b[3] = {0.3, -0.1, 0.2};
+    ms_rng r;
+    ms_rng_seed(&r, 5);
+    int checked = 0, inside = 0;
+    for (int i = 0; i < 3000; ++i) {
+        float p[3] = {urand(&r, -0.5f, 0.6f), urand(&r, -0.4f, 0.4f), urand(&r, -0.3f, 0.5f)};
+        float n[3];
+        float d = ms_shape_distance(s, p, n);
+        double ab[3], ap[3], abab = 0, apab = 0;
+        for (int k = 0; k < 3; ++k) {
+            ab[k] = b[k] - a[k];
+            ap[k] = p[k] - a[k];
+            abab += ab[k] * ab[k];
+            apab += ap[k] * ab[k];
+        }
+        double t = fmin(fmax(apab / abab, 0), 1), v2 = 0;
+        for (int k = 0; k < 3; ++k)
+            v2 += pow(ap[k] - t * ab[k], 2);
+        ck_assert_double_lt(fabs(d - (sqrt(v2) - 0.15)), 2e-6);
+        ck_assert_double_lt(fabs(len3(n) - 1), 1e-5);
+        int ok = normal_is_gradient(s, p, n, 1e-2);
+        ck_assert_int_ne(ok, 0);
+        checked += ok == 1;
+        inside += d < 0;
+    }
+    ck_assert_int_gt(checked, 2500);
+    ck_assert_int_gt(inside, 200);
+    ms_shape_destroy(s);
+}
+END_TEST
+
+/* The glass profile in (rho, z), sampled densely: brute-force distance. */
+static double glass_brute(double R, double H, double w, double f, double rho, double z)
+{
+    const double e[5][4] = {{0, 0, R, 0}, {R, 0, R, H}, {R, H, R - w, H},
+                            {R - w, H, R - w, f}, {R - w, f, 0, f}};
+    double best = 1e30;
+    for (int k = 0; k < 5; ++k)
+        for (int i = 0; i <= 4000; ++i) {
+            double t = i / 4000.0;
+            double x = e[k][0] + t * (e[k][2] - e[k][0]), y = e[k][1] + t * (e[k][3] - e[k][1]);
+            best = fmin(best, hypot(rho - x, z - y));
+        }
+    int in = (rho <= R && z >= 0 && z <= f) || (rho >= R - w && rho <= R && z >= 0 && z <= H);
+    return in ? -best : best;
+}
+
+START_TEST(glass_matches_closed_form)
+{
+    const double R = 0.05, H = 0.12, w = 0.01, f = 0.02;
+    ms_shape *s = make("glass", "{\"radius\": 0.05, \"height\": 0.12, \"wall\": 0.01, "
+                                "\"floor\": 0.02, \"smooth\": 0}");
+    ck_assert_int_eq(ms_shape_set_pose(s, (float[3]){1, 1, 0.5f}, NULL), MS_OK);
+    ms_rng r;
+    ms_rng_seed(&r, 6);
+    int in_wall = 0, in_cavity = 0, checked = 0;
+    for (int i = 0; i < 600; ++i) {
+        float l[3] = {urand(&r, -0.08f, 0.08f), urand(&r, -0.08f, 0.08f), urand(&r, -0.03f, 0.16f)};
+        float p[3] = {1 + l[0], 1 + l[1], 0.5f + l[2]}, n[3];
+        float d = ms_shape_distance(s, p, n);
+        double rho = hypot(l[0], l[1]);
+        /* the sampling step is H/4000 = 3e-5 m */
+        ck_assert_double_lt(fabs(d - glass_brute(R, H, w, f, rho, l[2])), 4e-5);
+        in_wall += d < 0 && rho > R - w && l[2] > f;
+        in_cavity += rho < R - w && l[2] > f && l[2] < H;
+        int ok = normal_is_gradient(s, p, n, 2e-2);
+        ck_assert_msg(ok != 0, "normal (%g %g %g) at (%g %g %g)", n[0], n[1], n[2], l[0], l[1], l[2]);
+        checked += ok == 1;
+    }
+    ck_assert_int_gt(in_wall, 10);
+    ck_assert_int_gt(in_cavity, 30);
+    ck_assert_int_gt(checked, 500);
+    /* on the axis, inside the cavity, the floor is below: normal up */
+    float n[3];
+    float d = ms_shape_distance(s, (float[3]){1, 1, 0.5f + 0.025f}, n);
+    ck_assert_float_eq_tol(d, 0.005f, 1e-6f);
+    ck_assert_float_eq_tol(n[2], 1.0f, 1e-6f);
+    ms_shape_destroy(s);
+}
+END_TEST
+
+/* Walk a half-plane arc (x = cx + r cos th, z = cz + r sin th, y = 0)
+ * outside a shape: returns the largest change of the normal between
+ * neighbours; n0, n1 get the first and last normals. */
+static double walk_arc(const ms_shape *s, double cx, double cz, double r, double th0, double th1,
+                       float n0[3], float n1[3])
+{
+    float prev[3] = {0, 0, 0};
+    double worst = 0;
+    for (int i = 0; i <= 3000; ++i) {
+        double th = th0 + (th1 - th0) * i / 3000;
+        float p[3] = {(float)(cx + r * cos(th)), 0, (float)(cz + r * sin(th))}, nn[3];
+        ck_assert_float_gt(ms_shape_distance(s, p, nn), 0.0f);
+        if (i > 0) {
+            float dd[3] = {nn[0] - prev[0], nn[1] - prev[1], nn[2] - prev[2]};
+            worst = fmax(worst, len3(dd));
+        } else
+            memcpy(n0, nn, sizeof nn);
+        memcpy(prev, nn, sizeof nn);
+    }
+    memcpy(n1, prev, sizeof prev);
+    return worst;
+}
+
+START_TEST(glass_normals_are_continuous_over_rim_and_corners)
+{
+    ms_shape *s = make("glass", "{\"radius\": 0.05, \"height\": 0.12, \"wall\": 0.01, "
+                                "\"floor\": 0.02}");
+    float n0[3], n1[3];
+    /* around the rim on a half circle of 9 mm about its middle (the rim
+     * is 1 cm wide): from outside (normal +x) over it into the cavity (-x) */
+    double worst = walk_arc(s, 0.045, 0.12, 0.009, 0, PI, n0, n1);
+    ck_assert_msg(worst < 0.02, "over the rim the normal jumps by %g", worst);
+    ck_assert_float_eq_tol(n0[0], 1.0f, 1e-3f);
+    ck_assert_float_eq_tol(n1[0], -1.0f, 1e-3f);
+    /* the concave inner corner, 3 mm from the floor, towards the wall */
+    const float c0[3] = {0.0f, 0, 0.023f}, c1[3] = {0.037f, 0, 0.023f};
+    worst = max_normal_step(s, c0, c1, 3000, n0, n1);
+    ck_assert_msg(worst < 0.02, "in the inner corner the normal jumps by %g", worst);
+    ck_assert_float_eq_tol(n0[2], 1.0f, 1e-3f);
+    ck_assert_double_lt(n1[0], -0.5); /* turned towards the wall's normal */
+    /* around the outer bottom edge, 4 mm from it */
+    worst = walk_arc(s, 0.05, 0, 0.004, -PI / 2, 0, n0, n1);
+    ck_assert_msg(worst < 0.02, "at the bottom edge the normal jumps by %g", worst);
+    ck_assert_float_eq_tol(n0[2], -1.0f, 1e-3f);
+    ck_assert_float_eq_tol(n1[0], 1.0f, 1e-3f);
+    ms_shape_destroy(s);
+}
+END_TEST
+
+START_TEST(glass_footprint_and_depth)
+{
+    const ms_grid g = {.nx = 120, .ny = 120, .dx = 0.002f, .dy = 0.002f, .origin = {-0.12f, -0.12f}};
+    ms_shape *s = make("glass", "{\"radius\": 0.1, \"height\": 0.12, \"wall\": 0.03, "
+                                "\"floor\": 0.02}");
+    unsigned char *mask = calloc((size_t)g.nx * g.ny, 1);
+    ck_assert_int_eq(ms_shape_footprint(s, &g, 0.06f, mask), MS_OK); /* an annulus */
+    long cells = 0;
+    for (int i = 0; i < g.nx * g.ny; ++i)
+        cells += mask[i];
+    double area = PI * (0.01 - 0.0049), err = fabs(cells * 4e-6 - area);
+    ck_assert_msg(err < 2 * PI * (0.1 + 0.07) * 0.002 * 0.5, "annulus %g vs %g", cells * 4e-6, area);
+    memset(mask, 0, (size_t)g.nx * g.ny);
+    ck_assert_int_eq(ms_shape_footprint(s, &g, 0.01f, mask), MS_OK); /* the floor: a disc */
+    cells = 0;
+    for (int i = 0; i < g.nx * g.ny; ++i)
+        cells += mask[i];
+    ck_assert_double_lt(fabs(cells * 4e-6 - PI * 0.01), 2 * PI * 0.1 * 0.002 * 0.5);
+    /* depth of water at level 0.1 m: 0.08 m over the floor, 0 on the wall */
+    float *depth = malloc(sizeof(float) * (size_t)(g.nx * g.ny));
+    for (int i = 0; i < g.nx * g.ny; ++i)
+        depth[i] = 1.0f;
+    ck_assert_int_eq(ms_shape_depth(s, &g, 0.1f, depth), MS_OK);
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            double rho = hypot(-0.12 + (i + 0.5) * 0.002, -0.12 + (j + 0.5) * 0.002);
+            double want = rho > 0.1 ? 1.0 : rho >= 0.07 ? 0.0 : 0.08;
+            ck_assert_double_lt(fabs(depth[j * g.nx + i] - want), 1e-6);
+        }
+    free(depth);
+    free(mask);
+    ms_shape_destroy(s);
+}
+END_TEST
+
+START_TEST(capsule_footprint_and_marched_depth)
+{
+    /* lying along x: its section at height z is a stadium */
+    ms_shape *s = make("capsule", "{\"a\": [-0.2, 0, 0], \"b\": [0.2, 0, 0], \"radius\": 0.1}");
+    ck_assert_int_eq(ms_shape_set_pose(s, (float[3]){0.5f, 0.5f, -0.02f}, NULL), MS_OK);
+    const ms_grid g = {.nx = 250, .ny = 250, .dx = 0.004f, .dy = 0.004f, .origin = {0, 0}};
+    unsigned char *mask = calloc((size_t)g.nx * g.ny, 1);
+    ck_assert_int_eq(ms_shape_footprint(s, &g, 0.04f, mask), MS_OK);
+    long cells = 0;
+    for (int i = 0; i < g.nx * g.ny; ++i)
+        cells += mask[i];
+    double hw = sqrt(0.01 - 0.06 * 0.06); /* half width at 6 cm above the axis */
+    double area = 0.4 * 2 * hw + PI * hw * hw, perim = 0.8 + 2 * PI * hw;
+    ck_assert_double_lt(fabs(cells * 1.6e-5 - area), perim * 0.004 * 0.5);
+    /* the depth of water at z = 0.2 m above it, marched (no height_at) */
+    float *depth = malloc(sizeof(float) * (size_t)(g.nx * g.ny));
+    for (int i = 0; i < g.nx * g.ny; ++i)
+        depth[i] = 1.0f;
+    ck_assert_int_eq(ms_shape_depth(s, &g, 0.2f, depth), MS_OK);
+    int over = 0;
+    for (int j = 0; j < g.ny; ++j)
+        for (int i = 0; i < g.nx; ++i) {
+            double x = (i + 0.5) * 0.004 - 0.5, y = (j + 0.5) * 0.004 - 0.5;
+            double ex = fmax(fabs(x) - 0.2, 0), q = 0.01 - ex * ex - y * y;
+            double want = q > 0 ? 0.2 - (-0.02 + sqrt(q)) : 1.0;
+            over += q > 0;
+            ck_assert_msg(fabs(depth[j * g.nx + i] - want) < 1e-4, "%d %d: %g != %g", i, j,
+                          depth[j * g.nx + i], want);
+        }
+    ck_assert_int_gt(over, 3000);
+    free(depth);
+    free(mask);
+    ms_shape_destroy(s);
+}
+END_TEST
+
+START_TEST(terrain_from_heights_matches_a_plane)
+{
+    /* a planar ramp h = 0.1 x - 0.05 y + 0.2 sampled 5 x 4 over 2 x 1.5 m */
+    char json[1024];
+    size_t len = (size_t)snprintf(json, sizeof json, "{\"size\": [2, 1.5], \"heights\": [");
+    for (int j = 0; j < 4; ++j) {
+        len += (size_t)snprintf(json + len, sizeof json - len, "%s[", j ? "," : "");
+        for (int i = 0; i < 5; ++i)
+            len += (size_t)snprintf(json + len, sizeof json - len, "%s%.6f", i ? "," : "",
+                                    0.1 * (i * 0.5) - 0.05 * (j * 0.5) + 0.2);
+        len += (size_t)snprintf(json + len, sizeof json - len, "]");
+    }
+    snprintf(json + len, sizeof json - len, "], \"base\": 0.5}");
+    ms_shape *s = make("terrain", json);
+    const double k = 1 / sqrt(1 + 0.01 + 0.0025);
+    ms_rng r;
+    ms_rng_seed(&r, 7);
+    for (int i = 0; i < 2000; ++i) {
+        float p[3] = {urand(&r, 0.3f, 1.7f), urand(&r, 0.3f, 1.2f), 0}, n[3];
+        double h = 0.1 * p[0] - 0.05 * p[1] + 0.2;
+        /* inside no deeper than 0.1 m: the sides (0.3 m away) do not blend in */
+        p[2] = (float)(h + urand(&r, -0.1f, 0.2f));
+        float d = ms_shape_distance(s, p, n);
+        ck_assert_double_lt(fabs(d - (p[2] - h) * k), 2e-6);
+        ck_assert_double_lt(fabs(n[0] + 0.1 * k), 1e-5);
+        ck_assert_double_lt(fabs(n[1] - 0.05 * k), 1e-5);
+        ck_assert_double_lt(fabs(n[2] - k), 1e-5);
+    }
+    /* beside the map: the side face; below the base: the bottom */
+    float n[3];
+    ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){2.3f, 0.7f, 0.1f}, n), 0.3f, 1e-6f);
+    ck_assert_float_eq_tol(n[0], 1.0f, 1e-6f);
+    float lo[3], hi[3];
+    ms_shape_bounds(s, lo, hi);
+    ck_assert_float_eq_tol(lo[2], 0.2f - 0.075f - 0.5f, 1e-6f);
+    ck_assert_float_eq_tol(hi[2], 0.4f, 1e-6f);
+    ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){1, 0.7f, lo[2] - 0.1f}, n), 0.1f, 1e-6f);
+    ck_assert_float_eq_tol(n[2], -1.0f, 1e-6f);
+    /* depth for a water level z = 0.35: z - h, 0 where the ground is dry */
+    const ms_grid g = {.nx = 40, .ny = 30, .dx = 0.05f, .dy = 0.05f, .origin = {0, 0}};
+    float depth[40 * 30];
+    for (int i = 0; i < 40 * 30; ++i)
+        depth[i] = 9;
+    ck_assert_int_eq(ms_shape_depth(s, &g, 0.35f, depth), MS_OK);
+    int dry = 0;
+    for (int j = 0; j < 30; ++j)
+        for (int i = 0; i < 40; ++i) {
+            double x = (i + 0.5) * 0.05, y = (j + 0.5) * 0.05;
+            double want = fmax(0.35 - (0.1 * x - 0.05 * y + 0.2), 0);
+            dry += want == 0;
+            ck_assert_double_lt(fabs(depth[j * 40 + i] - want), 1e-6);
+        }
+    ck_assert_int_gt(dry, 10);
+    ms_shape_destroy(s);
+}
+END_TEST
+
+/* Writes a w x h grey PNG (16 bit if wide) of f(i, row) in [0, 1]. */
+static void write_png(const char *path, int w, int h, int wide, double (*f)(int, int))
+{
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    img.width = (png_uint_32)w;
+    img.height = (png_uint_32)h;
+    img.format = wide ? PNG_FORMAT_LINEAR_Y : PNG_FORMAT_GRAY;
+    void *pix = malloc(PNG_IMAGE_SIZE(img));
+    for (int r = 0; r < h; ++r)
+        for (int i = 0; i < w; ++i) {
+            double v = f(i, r);
+            if (wide)
+                ((png_uint_16 *)pix)[r * w + i] = (png_uint_16)lround(v * 65535);
+            else
+                ((png_byte *)pix)[r * w + i] = (png_byte)lround(v * 255);
+        }
+    ck_assert(png_image_write_to_file(&img, path, 0, pix, 0, NULL));
+    free(pix);
+}
+
+/* a bowl: 1 at the rim, 0 at the centre of a 33 x 33 image */
+static double bowl(int i, int r)
+{
+    double x = (i - 16) / 16.0, y = (r - 16) / 16.0;
+    return fmin(1, 0.5 * (x * x + y * y));
+}
+
+static double ramp_rows(int i, int r)
+{
+    (void)i;
+    return r / 8.0; /* 9 rows: the top row is 0 */
+}
+
+START_TEST(terrain_from_png)
+{
+    char dir[] = "/tmp/ms_test_terrain_XXXXXX";
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    char path[256], json[512];
+    for (int wide = 0; wide < 2; ++wide) {
+        snprintf(path, sizeof path, "%s/bowl%d.png", dir, wide);
+        write_png(path, 33, 33, wide, bowl);
+        snprintf(json, sizeof json,
+                 "{\"png\": \"%s\", \"size\": [0.64, 0.64], \"height_range\": [-0.3, -0.1]}",
+                 path);
+        ms_shape *s = make("terrain", json);
+        /* at the samples the height is the pixel's, quantised */
+        const ms_grid g = {.nx = 33, .ny = 33, .dx = 0.02f, .dy = 0.02f, .origin = {-0.01f, -0.01f}};
+        float depth[33 * 33];
+        for (int i = 0; i < 33 * 33; ++i)
+            depth[i] = 9;
+        ck_assert_int_eq(ms_shape_depth(s, &g, 0.0f, depth), MS_OK);
+        double q = wide ? 0.2 / 65535 : 0.2 / 255;
+        for (int j = 0; j < 33; ++j) /* cell centres on the samples */
+            for (int i = 0; i < 33; ++i) {
+                double h = -0.3 + 0.2 * bowl(i, 32 - j);
+                ck_assert_double_le(fabs(depth[j * 33 + i] + h), 0.5 * q + 1e-6);
+            }
+        /* off the map the depth is left as it was */
+        const ms_grid off = {.nx = 4, .ny = 4, .dx = 0.1f, .dy = 0.1f, .origin = {0.6f, 0.6f}};
+        float d4[16];
+        for (int i = 0; i < 16; ++i)
+            d4[i] = 9;
+        ck_assert_int_eq(ms_shape_depth(s, &off, 0.0f, d4), MS_OK);
+        /* centres from 0.65 m: the 0.64 m map ends before */
+        for (int i = 0; i < 16; ++i)
+            ck_assert_float_eq(d4[i], 9.0f);
+        /* the middle is the lowest: the normal there points up */
+        float n[3];
+        ms_shape_distance(s, (float[3]){0.32f, 0.32f, 0}, n);
+        ck_assert_float_eq_tol(n[2], 1.0f, 1e-4f);
+        ms_shape_destroy(s);
+    }
+    /* the image's top row is the far (y = sy) edge */
+    snprintf(path, sizeof path, "%s/rows.png", dir);
+    write_png(path, 3, 9, 0, ramp_rows);
+    snprintf(json, sizeof json, "{\"png\": \"%s\", \"size\": [1, 1], \"height_range\": [0, 1]}",
+             path);
+    ms_shape *s = make("terrain", json);
+    /* h = 1 - y (8-bit steps of 1/255): distance (z - h)/sqrt(2) */
+    ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0.5f, 1, 2}, NULL), 2 / sqrtf(2), 5e-3f);
+    ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0.5f, 0, 2}, NULL), 1 / sqrtf(2), 5e-3f);
+    ms_shape_destroy(s);
+    /* refusals name the key or the file */
+    ms_shape *bad;
+    snprintf(json, sizeof json, "{\"png\": \"%s/missing.png\"}", dir);
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", json, &bad), MS_ERR_IO, "missing.png");
+    snprintf(path, sizeof path, "%s/colour.png", dir);
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    img.width = img.height = 2;
+    img.format = PNG_FORMAT_RGB;
+    unsigned char rgb[12] = {0};
+    ck_assert(png_image_write_to_file(&img, path, 0, rgb, 0, NULL));
+    snprintf(json, sizeof json, "{\"png\": \"%s\"}", path);
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", json, &bad), MS_ERR_INVALID_ARGUMENT,
+                      "grey-scale");
+    snprintf(path, sizeof path, "%s/text.png", dir);
+    FILE *f = fopen(path, "w");
+    fputs("not a png", f);
+    fclose(f);
+    snprintf(json, sizeof json, "{\"png\": \"%s\"}", path);
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", json, &bad), MS_ERR_IO, "text.png");
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"heights\": [[0, 1], [0]]}", &bad),
+                      MS_ERR_PARSE, "heights[1]");
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"heights\": [[0, 1], [0, \"x\"]]}", &bad),
+                      MS_ERR_PARSE, "heights[1][1]");
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"heights\": [[0, 1]]}", &bad), MS_ERR_PARSE,
+                      "at least 2 rows");
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"heights\": [[0, 1], [0, 1]], "
+                                                 "\"height_range\": [0, 1]}", &bad),
+                      MS_ERR_INVALID_ARGUMENT, "height_range");
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"heights\": [[0, 1], [0, 1]], "
+                                                 "\"png\": \"a.png\"}", &bad),
+                      MS_ERR_INVALID_ARGUMENT, "both");
+    MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"size\": [1, -1]}", &bad),
+                      MS_ERR_INVALID_ARGUMENT, "size[1]");
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    ck_assert_int_eq(system(cmd), 0);
+}
+END_TEST
+
+START_TEST(every_shape_has_working_defaults)
+{
+    const char *kinds[] = {"plane", "sphere", "box", "capsule", "glass", "terrain"};
+    for (int k = 0; k < 6; ++k) {
+        ms_shape *s = make(kinds[k], NULL);
+        ck_assert_str_eq(ms_shape_kind(s), kinds[k]);
+        float lo[3], hi[3], n[3];
+        ms_shape_bounds(s, lo, hi);
+        for (int a = 0; a < 3; ++a)
+            ck_assert(lo[a] <= hi[a]);
+        /* a point far above is outside with an upward-ish normal */
+        float d = ms_shape_distance(s, (float[3]){0.01f, 0.02f, 50}, n);
+        ck_assert_msg(d > 40 && n[2] > 0.9f, "%s: d %g n %g", kinds[k], d, n[2]);
+        ck_assert_double_lt(fabs(len3(n) - 1), 1e-5);
+        ms_shape_destroy(s);
+        s = make(kinds[k], "{}");
+        ms_shape_destroy(s);
+    }
+}
+END_TEST
+
 static Suite *shapes_suite(void)
 {
     Suite *s = suite_create("shapes");
@@ -425,6 +851,17 @@ static Suite *shapes_suite(void)
     tcase_add_test(tc, footprints_match_analytic_areas);
     tcase_add_test(tc, depth_over_a_submerged_sphere);
     suite_add_tcase(s, tc);
+    TCase *more = tcase_create("more");
+    tcase_set_timeout(more, 60);
+    tcase_add_test(more, capsule_matches_closed_form);
+    tcase_add_test(more, glass_matches_closed_form);
+    tcase_add_test(more, glass_normals_are_continuous_over_rim_and_corners);
+    tcase_add_test(more, glass_footprint_and_depth);
+    tcase_add_test(more, capsule_footprint_and_marched_depth);
+    tcase_add_test(more, terrain_from_heights_matches_a_plane);
+    tcase_add_test(more, terrain_from_png);
+    tcase_add_test(more, every_shape_has_working_defaults);
+    suite_add_tcase(s, more);
     return s;
 }
 

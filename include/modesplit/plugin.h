@@ -153,9 +153,15 @@ typedef struct ms_shape_vtable {
 
 /* The passes a shader needs; the renderer runs only those (flags). */
 enum {
-    MS_SHADER_NEEDS_REFLECTION = 1u << 0, /* the environment cubemap */
-    MS_SHADER_NEEDS_REFRACTION = 1u << 1, /* the scene below the surface */
-    MS_SHADER_NEEDS_CAUSTICS = 1u << 2    /* the caustics light map (Snell) */
+    /* the environment cubemap ms_env, for reflected rays */
+    MS_SHADER_NEEDS_REFLECTION = 1u << 0,
+    /* the liquid is see-through: refracted rays look up ms_env too (the
+     * paper's cubemap refraction, section 3.6) and meet the pool floor at
+     * ms_floor_z */
+    MS_SHADER_NEEDS_REFRACTION = 1u << 1,
+    /* the caustics light map ms_caustics (light traced through the surface
+     * by Snell's law onto the floor), computed each frame */
+    MS_SHADER_NEEDS_CAUSTICS = 1u << 2
 };
 
 /* How a shader sets its uniforms without linking GL: the renderer passes
@@ -170,31 +176,32 @@ typedef struct ms_shader_uniforms {
     void (*set_vec4)(void *ctx, const char *name, float x, float y, float z, float w);
 } ms_shader_uniforms;
 
-/* The contract between renderer and shader source (GLSL 1.20, the legacy
- * built-ins are available):
- *   vertex attributes: gl_Vertex (world position, m), gl_Normal (world
- *     unit normal of the liquid surface); gl_ModelViewProjectionMatrix;
+/* The contract between the renderer and a shader's source, GLSL 1.20
+ * (what Mesa's llvmpipe/OSMesa compiles; the legacy built-ins exist):
+ *   attributes: gl_Vertex (world position, m), gl_Normal (world unit
+ *     normal of the liquid surface); gl_ModelViewProjectionMatrix maps
+ *     world to clip space;
  *   uniforms the renderer sets (a shader declares those it uses):
  *     vec3  ms_eye          eye position, world (m)
  *     vec3  ms_light_dir    unit vector towards the light, world
  *     vec3  ms_light_color  linear RGB
- *     samplerCube ms_env    environment cubemap (unit 0)
- *     sampler2D ms_refraction  scene below the surface, screen space (unit 1,
- *                           only with MS_SHADER_NEEDS_REFRACTION)
- *     sampler2D ms_caustics caustics light map over the pool floor (unit 2,
- *                           only with MS_SHADER_NEEDS_CAUSTICS)
- *     vec4  ms_pool         x0, y0, size x, size y of the pool (m): the
- *                           caustics map spans it
- *     float ms_floor_z      height of the pool floor (m)
+ *     float ms_time         s since the start
  *     vec4  ms_viewport     width, height, 1/width, 1/height (pixels)
- *     float ms_time         seconds since the start
- *   the shader's own uniforms it sets itself in set_uniforms. */
+ *     samplerCube ms_env    environment cubemap, texture unit 0 (with
+ *                           MS_SHADER_NEEDS_REFLECTION or _REFRACTION)
+ *     float ms_floor_z      height of the pool floor (m)
+ *     vec4  ms_pool         x0, y0, size x, size y of the pool (m)
+ *     sampler2D ms_caustics caustics light map over ms_pool, texture unit 1,
+ *                           1 = unfocused light (with _CAUSTICS)
+ *   the shader's own uniforms (colours, ...) it sets in set_uniforms.
+ * The fragment shader writes gl_FragColor (linear RGB, alpha 1). */
 typedef struct ms_shader_vtable {
     uint32_t size;               /* sizeof(ms_shader_vtable) */
     uint32_t passes;             /* MS_SHADER_NEEDS_* bits */
     const char *vertex_source;   /* GLSL 1.20 vertex shader */
     const char *fragment_source; /* GLSL 1.20 fragment shader */
-    /* params_json as for shapes (colours, ...; NULL: defaults). */
+    /* Optional (NULL: no parameters, self is NULL; then destroy is NULL
+     * too). params_json as for shapes (colours, ...; NULL: defaults). */
     int (*create)(const char *params_json, void **out, char *err, size_t err_size);
     void (*destroy)(void *self);
     /* Called with the program bound, once per draw. */

@@ -17,6 +17,24 @@
 #define SHAPE_VT_SIZE_1_0 (offsetof(ms_shape_vtable, height_at) + sizeof(void (*)(void)))
 #define SHADER_VT_SIZE_1_0 (offsetof(ms_shader_vtable, set_uniforms) + sizeof(void (*)(void)))
 
+ms_status ms_plugin_status(int rc)
+{
+    switch (rc) {
+    case MS_PLUGIN_OK:
+        return MS_OK;
+    case MS_PLUGIN_ERR_INVALID_ARGUMENT:
+        return MS_ERR_INVALID_ARGUMENT;
+    case MS_PLUGIN_ERR_OUT_OF_MEMORY:
+        return MS_ERR_OUT_OF_MEMORY;
+    case MS_PLUGIN_ERR_IO:
+        return MS_ERR_IO;
+    case MS_PLUGIN_ERR_PARSE:
+        return MS_ERR_PARSE;
+    default:
+        return MS_ERR_PLUGIN;
+    }
+}
+
 const char *ms_plugin_kind_name(uint32_t kind)
 {
     switch (kind) {

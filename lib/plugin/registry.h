@@ -33,6 +33,10 @@ typedef struct ms_plugin_rec {
  * file (and the symbol) and what is wrong. */
 ms_status ms_plugin_open(const char *path, ms_plugin_rec **out);
 
+/* The ms_status of a plugin create's return code (MS_PLUGIN_ERR_* are the
+ * ms_status values; anything else is MS_ERR_PLUGIN). */
+ms_status ms_plugin_status(int rc);
+
 /* The kind's name: "shape", "shader", "unknown". */
 const char *ms_plugin_kind_name(uint32_t kind);
 
@@ -53,5 +57,20 @@ char *ms_plugin_compose_search_path(const char *env, const char *object_path,
 
 /* The search path of this process (env, dladdr, MS_BUILD_PLUGIN_DIR). */
 char *ms_plugin_default_search_path(void);
+
+/* A shader plugin made ready for a renderer: its vtable (the sources, the
+ * passes, set_uniforms) and its instance (self, for set_uniforms). */
+typedef struct ms_shader_instance {
+    const ms_plugin_rec *plugin;
+    const ms_shader_vtable *vt;
+    void *self;
+} ms_shader_instance;
+
+/* Finds the shader plugin `name` and creates an instance from its
+ * parameters (JSON object text, NULL = defaults). Errors name the shader
+ * and the key ("shader water: ior 0.5 is outside [1, 3]"). */
+ms_status ms_shader_instance_create(const char *name, const char *params_json,
+                                    ms_shader_instance *out);
+void ms_shader_instance_destroy(ms_shader_instance *in);
 
 #endif /* MS_PLUGIN_REGISTRY_H */

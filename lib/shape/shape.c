@@ -28,11 +28,7 @@ ms_status ms_shape_create(const char *kind, const char *params_json, ms_shape **
     if (rc != MS_PLUGIN_OK) {
         free(s);
         err[sizeof err - 1] = '\0';
-        ms_status code = rc == MS_PLUGIN_ERR_INVALID_ARGUMENT  ? MS_ERR_INVALID_ARGUMENT
-                         : rc == MS_PLUGIN_ERR_OUT_OF_MEMORY ? MS_ERR_OUT_OF_MEMORY
-                         : rc == MS_PLUGIN_ERR_IO            ? MS_ERR_IO
-                         : rc == MS_PLUGIN_ERR_PARSE         ? MS_ERR_PARSE
-                                                             : MS_ERR_PLUGIN;
+        ms_status code = ms_plugin_status(rc);
         return ms_fail(code, "shape %s: %s", kind,
                        err[0] ? err : "the plugin refused the parameters without a reason");
     }
