@@ -268,11 +268,13 @@ START_TEST(search_path_scan_skips_bad_files_and_earlier_names_win)
     snprintf(env, sizeof env, "/nonexistent/dir::%s", tmp);
     setenv("MODESPLIT_PLUGIN_PATH", env, 1);
     ck_assert_ptr_nonnull(strstr(ms_plugin_search_path(), tmp));
-    /* every bad file, the object file, the text file, the second testball
-     * and the build tree's sphere (shadowed) are problems; the first
-     * testball and the fake sphere load */
-    ck_assert_int_eq(ms_plugin_problem_count(), N_BAD + 4);
-    for (int i = 0; i < ms_plugin_problem_count(); ++i)
+    /* the missing directory, every bad file, the object file, the text
+     * file, the second testball and the build tree's sphere (shadowed) are
+     * problems; the first testball and the fake sphere load */
+    ck_assert_int_eq(ms_plugin_problem_count(), 1 + N_BAD + 4);
+    ck_assert_str_eq(ms_plugin_problem(0),
+                     "plugin: directory /nonexistent/dir of MODESPLIT_PLUGIN_PATH does not exist");
+    for (int i = 1; i < ms_plugin_problem_count(); ++i)
         ck_assert_ptr_nonnull(strstr(ms_plugin_problem(i), tmp));
     int testball = 0, sphere_from_tmp = 0, sphere_from_build = 0;
     for (int i = 0; i < ms_plugin_count(); ++i) {

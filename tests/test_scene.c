@@ -243,6 +243,25 @@ START_TEST(shapes_are_checked_by_their_plugins)
 }
 END_TEST
 
+START_TEST(shader_names_are_checked_against_the_registry)
+{
+    ms_scene *sc = NULL;
+    REFUSED("{\"surface\": {},\n \"render\": {\"shader\": \"lava\"}}", MS_ERR_INVALID_ARGUMENT,
+            "<scene>:2:13: render.shader \"lava\" is not a shader plugin");
+    /* the sentence lists the shaders there are */
+    ck_assert_ptr_nonnull(strstr(ms_last_error(), "water"));
+    ck_assert_ptr_nonnull(strstr(ms_last_error(), "milk"));
+    REFUSED("{\"surface\": {}, \"render\": {\"shader\": \"sphere\"}}", MS_ERR_INVALID_ARGUMENT,
+            "is not a shader plugin");
+    sc = parse_ok("{\"surface\": {}, \"render\": {\"shader\": \"milk\", \"width\": 64}}");
+    ck_assert_str_eq(sc->render.shader, "milk");
+    ck_assert_int_eq(sc->render.width, 64);
+    ck_assert_int_eq(sc->render.height, 950);
+    ck_assert_int_eq(sc->render.has_caustics, 0);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 START_TEST(duplicate_keys_are_refused)
 {
     ms_scene *sc = NULL;
@@ -371,6 +390,7 @@ static Suite *scene_suite(void)
     tcase_add_test(tc, inconsistent_sections_are_refused);
     tcase_add_test(tc, missing_files_are_refused);
     tcase_add_test(tc, shapes_are_checked_by_their_plugins);
+    tcase_add_test(tc, shader_names_are_checked_against_the_registry);
     tcase_add_test(tc, duplicate_keys_are_refused);
     tcase_add_test(tc, positions_survive_escapes_nesting_and_utf8);
     tcase_add_test(tc, output_section_sets_fields_and_every);

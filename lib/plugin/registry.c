@@ -162,7 +162,14 @@ static void scan(void)
     search_path = ms_plugin_default_search_path();
     char **seen = NULL; /* canonical directories already scanned */
     int n_seen = 0;
-    for (const char *p = search_path; p && *p;) {
+    /* the first n_env directories are the user's: say if one is missing */
+    int n_env = 0;
+    for (const char *e = getenv("MODESPLIT_PLUGIN_PATH"); e && *e;) {
+        size_t n = strcspn(e, ":");
+        n_env += n > 0;
+        e += n + (e[n] == ':');
+    }
+    for (const char *p = search_path; p && *p; --n_env) {
         const char *colon = strchr(p, ':');
         size_t n = colon ? (size_t)(colon - p) : strlen(p);
         char *dir = malloc(n + 1);
@@ -170,6 +177,12 @@ static void scan(void)
             memcpy(dir, p, n);
             dir[n] = '\0';
             char *canon = realpath(dir, NULL);
+            if (!canon && n_env > 0) {
+                char msg[1200];
+                snprintf(msg, sizeof msg,
+                         "plugin: directory %s of MODESPLIT_PLUGIN_PATH does not exist", dir);
+                add_problem(msg);
+            }
             int dup = 0;
             for (int i = 0; canon && i < n_seen; ++i)
                 dup |= strcmp(seen[i], canon) == 0;
