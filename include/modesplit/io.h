@@ -128,7 +128,7 @@ typedef struct ms_preview_desc {
     float relief;                 /* vertical exaggeration of the shading; 0 .. 1e6 */
     float sun_azimuth;            /* degrees clockwise from +y (north); any finite value */
     float sun_elevation;          /* degrees above the horizon; 0 .. 90 */
-    int scale;                    /* pixels per cell (nearest); 1 .. 16 */
+    int scale;                    /* pixels per cell (bilinear); 1 .. 16 */
 } ms_preview_desc;
 
 /* dx = dy = 0.01 m, range from the field, relief 1, sun from the north-west
