@@ -4,7 +4,7 @@
  * it, a run's HDF5 + XDMF + PNG output, SIGKILL / SIGINT / SIGTERM in the
  * middle of a run, unwritable paths, the progress display on a terminal
  * and off it; and the writer on a real sim, read back bit for bit. */
-#define _XOPEN_SOURCE 600 /* posix_openpt, grantpt, unlockpt, ptsname */
+#define _GNU_SOURCE /* posix_openpt, grantpt, unlockpt, ptsname; unshare */
 #include <check.h>
 #include <dirent.h>
 #include <errno.h>
@@ -13,6 +13,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -625,6 +627,46 @@ START_TEST(unwritable_outputs_exit_1_with_a_sentence)
 }
 END_TEST
 
+/* A full disk: a 4 MiB tmpfs in a private mount namespace (root only; it
+ * vanishes with the process). The run stops with status 1 and a sentence,
+ * and the file keeps the frames written before. */
+START_TEST(full_disk_exits_1_and_keeps_the_frames)
+{
+    if (unshare(CLONE_NEWNS) != 0 || mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0) {
+        fprintf(stderr, "test_tool: full-disk case skipped (needs CAP_SYS_ADMIN: %s)\n",
+                strerror(errno));
+        return;
+    }
+    make_tmp_dir();
+    char disk[600];
+    snprintf(disk, sizeof disk, "%s/disk", tmp_dir);
+    ck_assert_int_eq(mkdir(disk, 0700), 0);
+    if (mount("tmpfs", disk, "tmpfs", 0, "size=4m") != 0) {
+        fprintf(stderr, "test_tool: full-disk case skipped (cannot mount a tmpfs: %s)\n",
+                strerror(errno));
+        remove_tmp_dir();
+        return;
+    }
+    char out[700];
+    snprintf(out, sizeof out, "%s/run.h5", disk);
+    result r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "100000", "--out", out,
+                                         "--quiet", NULL});
+    ASSERT_EXIT(r, 1);
+    ck_assert_msg(strstr(r.err, "are free on the file system") || strstr(r.err, "No space left"),
+                  "%s", r.err);
+    ck_assert_int_eq(count_lines(r.err), 1);
+    result_free(&r);
+    long frames = frames_in(out);
+    ck_assert_int_gt(frames, 0);
+    ck_assert(h5dump_reads(out));
+    r = run_tool((const char *[]){"info", out, NULL});
+    ASSERT_EXIT(r, 0);
+    result_free(&r);
+    umount(disk);
+    remove_tmp_dir();
+}
+END_TEST
+
 /* ---- progress display ------------------------------------------------------ */
 
 START_TEST(progress_is_a_bar_on_a_terminal)
@@ -704,6 +746,7 @@ static Suite *tool_suite(void)
     tcase_add_test(tc, run_file_holds_what_the_sim_held_bit_for_bit);
     tcase_add_test(tc, writer_refuses_fields_the_sim_lacks);
     tcase_add_test(tc, unwritable_outputs_exit_1_with_a_sentence);
+    tcase_add_test(tc, full_disk_exits_1_and_keeps_the_frames);
     tcase_add_test(tc, progress_is_a_bar_on_a_terminal);
     suite_add_tcase(s, tc);
     tc = tcase_create("signals");
