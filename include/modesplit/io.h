@@ -81,7 +81,8 @@ MS_API const char *ms_writer_xdmf_path(const ms_writer *w);
 typedef struct ms_reader ms_reader;
 
 /* Open a run file for reading (also while a writer is still adding frames,
- * or after it was killed). MS_ERR_IO when the file cannot be opened or is
+ * or after it was killed; a file caught in the middle of a flush may fail
+ * to open, so try again, and HDF5 1.10.8 then leaks a few hundred bytes). MS_ERR_IO when the file cannot be opened or is
  * not HDF5, MS_ERR_PARSE when it is HDF5 but not a well-formed modesplit
  * run (the sentence names the object), MS_ERR_UNSUPPORTED for a newer
  * format_version. */
@@ -127,7 +128,7 @@ typedef struct ms_preview_desc {
     float relief;                 /* vertical exaggeration of the shading; 0 .. 1e6 */
     float sun_azimuth;            /* degrees clockwise from +y (north); any finite value */
     float sun_elevation;          /* degrees above the horizon; 0 .. 90 */
-    int scale;                    /* pixels per cell (nearest); 1 .. 16 */
+    int scale;                    /* pixels per cell (bilinear); 1 .. 16 */
 } ms_preview_desc;
 
 /* dx = dy = 0.01 m, range from the field, relief 1, sun from the north-west

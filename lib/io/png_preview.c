@@ -8,7 +8,9 @@
  * crests). Light: a hillshade, Lambert's cosine law n.L with the normal of
  * the exaggerated surface z = relief * h(x, y) from central differences
  * (one-sided at the edges), scaled so flat water keeps its ramp colour.
- * The image has north up: its top row is the grid's largest y.
+ * The image has north up: its top row is the grid's largest y. With
+ * scale > 1 the cell colours are interpolated bilinearly between cell
+ * centres (a cell with a non-finite height stays a magenta block).
  * The PNG is written to "<path>.tmp" and renamed, so no half-written
  * preview is ever seen under the final name.
  */
@@ -112,11 +114,11 @@ ms_status ms_field_shade(const float *h, int nx, int ny, const ms_preview_desc *
     ms_status st = check_desc(h, nx, ny, d);
     if (st != MS_OK || (st = ms_check_not_null("preview", "rgb", rgb)) != MS_OK)
         return st;
-    size_t w = (size_t)nx * (size_t)d->scale, hgt = (size_t)ny * (size_t)d->scale;
-    if (rgb_bytes < w * hgt * 3)
+    size_t w = (size_t)nx * (size_t)d->scale;
+    if (rgb_bytes < w * (size_t)ny * (size_t)d->scale * 3)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "preview: rgb holds %zu bytes but %zu x %zu pixels need %zu", rgb_bytes,
-                       w, hgt, w * hgt * 3);
+                       w, (size_t)ny * (size_t)d->scale, w * (size_t)ny * (size_t)d->scale * 3);
     float lo = d->height_min, hi = d->height_max;
     if (lo == hi) {
         double mn = INFINITY, mx = -INFINITY;
@@ -132,30 +134,64 @@ ms_status ms_field_shade(const float *h, int nx, int ny, const ms_preview_desc *
     double az = d->sun_azimuth * DEG_TO_RAD, el = d->sun_elevation * DEG_TO_RAD;
     float lx = (float)(sin(az) * cos(el)), ly = (float)(cos(az) * cos(el));
     float lz = (float)sin(el);
+    /* Cell colours first (NaN red marks a non-finite height)... */
+    float *cell = malloc((size_t)nx * (size_t)ny * 3 * sizeof *cell);
+    if (!cell)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "preview: out of memory for %d x %d cells", nx, ny);
     for (int y = 0; y < ny; ++y) {
         for (int x = 0; x < nx; ++x) {
             float v = at(h, nx, x, y);
-            unsigned char px[3];
+            float *c = cell + ((size_t)y * (size_t)nx + (size_t)x) * 3;
             if (!isfinite(v)) {
-                px[0] = 255, px[1] = 0, px[2] = 255;
-            } else {
-                float c[3];
-                ramp(hi > lo ? (v - lo) * inv_range : 0.5f, c);
-                float gx = d->relief * slope(h, nx, ny, x, y, 0, d->dx);
-                float gy = d->relief * slope(h, nx, ny, x, y, 1, d->dy);
-                float ndotl = (-gx * lx - gy * ly + lz) / sqrtf(gx * gx + gy * gy + 1.0f);
-                float light = AMBIENT + (1.0f - AMBIENT) * MS_MAX(ndotl, 0.0f) / lz;
-                for (int k = 0; k < 3; ++k)
-                    px[k] = (unsigned char)lrintf(255.0f * MS_CLAMP(c[k] * light, 0.0f, 1.0f));
+                c[0] = NAN;
+                continue;
             }
-            size_t row0 = (size_t)(ny - 1 - y) * (size_t)d->scale;
-            for (int sy = 0; sy < d->scale; ++sy) {
-                unsigned char *p = rgb + ((row0 + (size_t)sy) * w + (size_t)x * d->scale) * 3;
-                for (int sx = 0; sx < d->scale; ++sx, p += 3)
-                    memcpy(p, px, 3);
+            ramp(hi > lo ? (v - lo) * inv_range : 0.5f, c);
+            float gx = d->relief * slope(h, nx, ny, x, y, 0, d->dx);
+            float gy = d->relief * slope(h, nx, ny, x, y, 1, d->dy);
+            float ndotl = (-gx * lx - gy * ly + lz) / sqrtf(gx * gx + gy * gy + 1.0f);
+            float light = AMBIENT + (1.0f - AMBIENT) * MS_MAX(ndotl, 0.0f) / lz;
+            for (int k = 0; k < 3; ++k)
+                c[k] = MS_CLAMP(c[k] * light, 0.0f, 1.0f);
+        }
+    }
+    /* ...then pixels: bilinear between cell centres (nearest next to a
+     * non-finite cell, which stays magenta), top row = largest y. */
+    size_t hgt = (size_t)ny * (size_t)d->scale;
+    float inv_scale = 1.0f / (float)d->scale;
+    for (size_t j = 0; j < hgt; ++j) {
+        float v = ((float)(hgt - 1 - j) + 0.5f) * inv_scale - 0.5f;
+        v = MS_CLAMP(v, 0.0f, (float)(ny - 1));
+        int y0 = (int)v, y1 = y0 + 1 < ny ? y0 + 1 : y0;
+        float fy = v - (float)y0;
+        for (size_t i = 0; i < w; ++i) {
+            float u = ((float)i + 0.5f) * inv_scale - 0.5f;
+            u = MS_CLAMP(u, 0.0f, (float)(nx - 1));
+            int x0 = (int)u, x1 = x0 + 1 < nx ? x0 + 1 : x0;
+            float fx = u - (float)x0;
+            const float *c00 = cell + ((size_t)y0 * (size_t)nx + (size_t)x0) * 3;
+            const float *c10 = cell + ((size_t)y0 * (size_t)nx + (size_t)x1) * 3;
+            const float *c01 = cell + ((size_t)y1 * (size_t)nx + (size_t)x0) * 3;
+            const float *c11 = cell + ((size_t)y1 * (size_t)nx + (size_t)x1) * 3;
+            unsigned char *px = rgb + (j * w + i) * 3;
+            if (isnan(c00[0]) || isnan(c10[0]) || isnan(c01[0]) || isnan(c11[0])) {
+                const float *c = fx < 0.5f ? (fy < 0.5f ? c00 : c01) : (fy < 0.5f ? c10 : c11);
+                if (isnan(c[0])) {
+                    px[0] = 255, px[1] = 0, px[2] = 255;
+                } else {
+                    for (int k = 0; k < 3; ++k)
+                        px[k] = (unsigned char)lrintf(255.0f * c[k]);
+                }
+                continue;
+            }
+            for (int k = 0; k < 3; ++k) {
+                float a = c00[k] + fx * (c10[k] - c00[k]);
+                float b = c01[k] + fx * (c11[k] - c01[k]);
+                px[k] = (unsigned char)lrintf(255.0f * (a + fy * (b - a)));
             }
         }
     }
+    free(cell);
     return MS_OK;
 }
 
