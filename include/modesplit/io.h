@@ -1,6 +1,45 @@
-/* ms_writer: HDF5 dumps of the fields and particles of a run (DESIGN 5),
- * flushed each frame so the file is readable while the run goes on and
- * valid if it is killed, with an XDMF sidecar for ParaView.
+/* Output of a run: ms_writer writes HDF5 files of the fields and particles
+ * (DESIGN 5), ms_reader reads them back, ms_field_write_png draws a quick
+ * shaded-relief preview of a height field.
+ *
+ *     ms_writer *w;
+ *     if (ms_writer_open("run.h5", sim, MS_FIELD_COMBINED | MS_FIELD_PARTICLES, &w))
+ *         return fprintf(stderr, "%s\n", ms_last_error()), 1;
+ *     for (int i = 0; i < 600; ++i) {
+ *         if (ms_sim_step(sim, dt) || ms_writer_frame(w, sim)) break;
+ *     }
+ *     ms_writer_close(w);           // run.h5 + run.xmf (ParaView)
+ *
+ * The file (format "modesplit", format_version 1):
+ *   /                     attributes format, format_version, library_version,
+ *                         scene (the scene JSON), scene_name, frame_dt (s),
+ *                         output_every, frames (complete frames in the file)
+ *   /time                 float64 [frame], s
+ *   /fields/combined      float32 [frame][y][x], m; also /fields/surface and
+ *   /fields/volume        /fields/volume; extendible, one frame per chunk,
+ *                         shuffle + deflate; attributes dx = [dx, dy] (m),
+ *                         origin = [x0, y0] (m, corner of cell (0, 0))
+ *   /Step#<n>/x,y,z,vx,vy,vz   particles (H5Part), float32 [count], m and
+ *                         m/s; attribute TimeValue (s)
+ * Only the fields asked for are present. Frame n is the n-th written frame.
+ *
+ * Crash safety: each frame is written and flushed before ms_writer_frame
+ * returns, then the root attribute `frames` is raised and flushed again;
+ * freed file space is never reused. A run killed at any point leaves a file
+ * that h5dump and ms_reader read, with every frame whose ms_writer_frame
+ * returned. Before each frame the writer checks the space left on the file
+ * system (and RLIMIT_FSIZE) and stops with MS_ERR_IO instead of writing a
+ * frame that cannot fit. The writer turns off HDF5 file locking so that the
+ * file can be read while the run goes on.
+ *
+ * The XDMF sidecar (run.xmf beside run.h5; the path with ".h5" replaced, or
+ * ".xmf" appended) is a temporal collection, one entry per frame, rewritten
+ * in place after each frame: ParaView (Xdmf readers) opens height fields as
+ * point data on an image grid (points at the cell centres) and particles as
+ * poly-vertices with a velocity vector.
+ *
+ * None of this prints: HDF5's own error printing is silenced during each
+ * call (and restored after), its errors become one ms_last_error() sentence.
  */
 #ifndef MODESPLIT_IO_H
 #define MODESPLIT_IO_H
@@ -12,12 +51,100 @@
 extern "C" {
 #endif
 
-/* `fields` is a set of MS_FIELD_* bits (core.h). */
+#define MS_FILE_FORMAT "modesplit"
+#define MS_FILE_FORMAT_VERSION 1
 
+/* ---- writing ----------------------------------------------------------- */
+
+/* Create (or truncate) `path` and write its layout for `sim`. `fields` is a
+ * set of MS_FIELD_* bits (core.h); 0 means what the sim's scene asks for
+ * (ms_scene_output_fields), or MS_FIELD_COMBINED for a sim made from a desc.
+ * Asking for a part the sim does not have (a surface field without a
+ * surface, particles without a volume) is MS_ERR_INVALID_ARGUMENT. An
+ * unwritable path or a full disk is MS_ERR_IO with the system's reason. */
 MS_API ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields,
                                 ms_writer **out);
+/* Append the sim's current frame (fields, particles, ms_sim_time) and flush
+ * it to disk. After an MS_ERR_IO the writer is failed: later frames return
+ * MS_ERR_STATE, and ms_writer_close keeps the frames written before. */
 MS_API ms_status ms_writer_frame(ms_writer *w, const ms_sim *sim);
+/* Close the file and the sidecar, free the writer (NULL is fine). Returns
+ * the first error met while closing. */
 MS_API ms_status ms_writer_close(ms_writer *w);
+/* Frames written and flushed so far. */
+MS_API long ms_writer_frames(const ms_writer *w);
+/* The XDMF sidecar's path. */
+MS_API const char *ms_writer_xdmf_path(const ms_writer *w);
+
+/* ---- reading ----------------------------------------------------------- */
+
+typedef struct ms_reader ms_reader;
+
+/* Open a run file for reading (also while a writer is still adding frames,
+ * or after it was killed; a file caught in the middle of a flush may fail
+ * to open, so try again, and HDF5 1.10.8 then leaks a few hundred bytes). MS_ERR_IO when the file cannot be opened or is
+ * not HDF5, MS_ERR_PARSE when it is HDF5 but not a well-formed modesplit
+ * run (the sentence names the object), MS_ERR_UNSUPPORTED for a newer
+ * format_version. */
+MS_API ms_status ms_reader_open(const char *path, ms_reader **out);
+MS_API void ms_reader_close(ms_reader *r);
+
+/* Complete frames: the smallest of the `frames` attribute and the lengths
+ * of /time and of every field dataset. */
+MS_API long ms_reader_frames(const ms_reader *r);
+/* MS_FIELD_* bits present in the file (MS_FIELD_PARTICLES if /Step#0 is). */
+MS_API unsigned ms_reader_fields(const ms_reader *r);
+MS_API int ms_reader_format_version(const ms_reader *r);
+/* Strings held by the reader; "" when the file lacks them. */
+MS_API const char *ms_reader_library_version(const ms_reader *r);
+MS_API const char *ms_reader_scene(const ms_reader *r);       /* scene JSON text */
+MS_API const char *ms_reader_scene_name(const ms_reader *r);
+MS_API double ms_reader_frame_dt(const ms_reader *r);         /* s, NAN if absent */
+MS_API int ms_reader_output_every(const ms_reader *r);        /* 1 if absent */
+
+/* Time of a frame, s. */
+MS_API ms_status ms_reader_time(const ms_reader *r, long frame, double *t);
+/* Grid of one field (a single MS_FIELD_COMBINED/SURFACE/VOLUME bit). */
+MS_API ms_status ms_reader_field_grid(const ms_reader *r, unsigned field, ms_grid *out);
+/* Bytes the field takes in the file (compressed) and would take raw. */
+MS_API ms_status ms_reader_field_bytes(const ms_reader *r, unsigned field, uint64_t *stored,
+                                       uint64_t *raw);
+/* Copy one frame of a field into out (capacity `count` floats, >= nx*ny). */
+MS_API ms_status ms_reader_read_field(const ms_reader *r, unsigned field, long frame,
+                                      float *out, size_t count);
+/* Particles stored for a frame (0 when the file has none). */
+MS_API ms_status ms_reader_particle_count(const ms_reader *r, long frame, int *n);
+/* Copy the particles of a frame: pos[0..2] = x, y, z and vel[0..2] = vx,
+ * vy, vz, each of capacity `capacity` floats (>= the count); any of the six
+ * pointers (or pos, vel) may be NULL to skip it. */
+MS_API ms_status ms_reader_read_particles(const ms_reader *r, long frame, int capacity,
+                                          float *const pos[3], float *const vel[3]);
+
+/* ---- shaded-relief preview (PNG) ---------------------------------------- */
+
+typedef struct ms_preview_desc {
+    float dx, dy;                 /* m, cell size: sets the slopes of the shading; > 0 */
+    float height_min, height_max; /* m, the colour ramp's range; equal: the field's own */
+    float relief;                 /* vertical exaggeration of the shading; 0 .. 1e6 */
+    float sun_azimuth;            /* degrees clockwise from +y (north); any finite value */
+    float sun_elevation;          /* degrees above the horizon; 0 .. 90 */
+    int scale;                    /* pixels per cell (bilinear); 1 .. 16 */
+} ms_preview_desc;
+
+/* dx = dy = 0.01 m, range from the field, relief 1, sun from the north-west
+ * (azimuth 315) at 45 degrees, scale 1. */
+MS_API ms_preview_desc ms_preview_desc_default(void);
+
+/* Shade a height field (nx*ny, row-major, x fastest) into RGB8 pixels,
+ * (nx*scale) x (ny*scale), top row first, the top row being the largest y
+ * (north up): a water colour ramp (deep blue troughs, turquoise, pale
+ * crests) lit by a hillshade (Lambert, normals from central differences).
+ * A non-finite height is drawn magenta. */
+MS_API ms_status ms_field_shade(const float *h, int nx, int ny, const ms_preview_desc *d,
+                                unsigned char *rgb, size_t rgb_bytes);
+/* The same, written as an 8-bit RGB PNG (libpng) to path. */
+MS_API ms_status ms_field_write_png(const float *h, int nx, int ny, const char *path,
+                                    const ms_preview_desc *d);
 
 #ifdef __cplusplus
 }

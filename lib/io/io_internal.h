@@ -1,0 +1,116 @@
+/* Internal interface of lib/io (never installed).
+ *
+ * The writer is built in two layers: writer.c writes raw arrays described
+ * by an ms_writer_layout (no sim needed: the tests and ms_writer_open both
+ * use it), writer_sim.c fills the layout and the frame data from an ms_sim.
+ * h5util.c holds the HDF5 glue every file here shares: silencing HDF5's
+ * error printing and turning its error stack into one sentence.
+ */
+#ifndef MS_IO_INTERNAL_H
+#define MS_IO_INTERNAL_H
+
+#include <hdf5.h>
+#include <stdint.h>
+
+#include "core/internal.h"
+#include "modesplit/io.h"
+
+/* The three height fields, in MS_FIELD_* bit order (bit = 1 << slot). */
+enum { MS_IO_COMBINED = 0, MS_IO_SURFACE = 1, MS_IO_VOLUME = 2, MS_IO_NFIELDS = 3 };
+#define MS_IO_HEIGHT_FIELDS (MS_FIELD_COMBINED | MS_FIELD_SURFACE | MS_FIELD_VOLUME)
+#define MS_IO_ALL_FIELDS (MS_IO_HEIGHT_FIELDS | MS_FIELD_PARTICLES)
+/* "combined", "surface", "volume". */
+extern const char *const ms_io_field_names[MS_IO_NFIELDS];
+/* Slot of a single height-field bit, -1 for anything else. */
+int ms_io_field_slot(unsigned field);
+
+/* Largest grid side and cell count a file may hold (also what the reader
+ * accepts): 65536 cells a side, 2^28 cells (1 GiB of float32 per frame). */
+#define MS_IO_MAX_SIDE 65536
+#define MS_IO_MAX_CELLS (1L << 28)
+/* Most particles in one step. */
+#define MS_IO_MAX_PARTICLES (1L << 28)
+
+/* ---- the raw writer ---- */
+typedef struct ms_writer_layout {
+    unsigned fields;              /* MS_FIELD_* bits to write */
+    ms_grid grid[MS_IO_NFIELDS];  /* where each height field lies */
+    const char *scene_text;       /* may be NULL */
+    const char *scene_name;       /* may be NULL */
+    double frame_dt;              /* s, of the simulation */
+    int output_every;             /* frames of the sim per written frame, >= 1 */
+} ms_writer_layout;
+
+typedef struct ms_writer_data {
+    double time;                          /* s */
+    const float *field[MS_IO_NFIELDS];    /* nx*ny each, for the fields written */
+    int particles;                        /* count, >= 0 */
+    const float *pos[3], *vel[3];         /* particles views, may be NULL if count is 0 */
+} ms_writer_data;
+
+ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out);
+ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d);
+/* Tests only: turn off the free-space check, so that the write itself
+ * meets the full disk. */
+void ms_writer_skip_space_check(ms_writer *w);
+/* The layout the writer was opened with (its grids and fields). */
+const ms_writer_layout *ms_writer_get_layout(const ms_writer *w);
+
+/* ---- XDMF sidecar (xdmf.c) ---- */
+typedef struct ms_xdmf ms_xdmf;
+/* Create the sidecar at xmf_path that refers to h5_name (a path relative
+ * to the sidecar's directory). */
+ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_writer_layout *l,
+                       ms_xdmf **out);
+/* Append frame `frame` (time t, `particles` particles in /Step#frame). */
+ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles);
+ms_status ms_xdmf_close(ms_xdmf *x);
+/* "run.xmf" for "run.h5", "out.dat.xmf" for "out.dat"; malloc'ed. */
+char *ms_xdmf_path_for(const char *h5_path);
+
+/* ---- H5Part particles (h5part.c) ---- */
+/* Create the group of one step, not yet linked into the file (anonymous),
+ * with TimeValue and the six arrays; *group out (H5Gclose it). */
+ms_status ms_h5part_write_step(hid_t file, double t, int n, const float *const pos[3],
+                               const float *const vel[3], hid_t *group);
+/* Link a written step as /Step#frame. */
+ms_status ms_h5part_link_step(hid_t file, hid_t group, long frame);
+/* "Step#12" into buf. */
+void ms_h5part_step_name(char *buf, size_t size, long frame);
+
+/* ---- the superblock's EOA kept ahead of every flush (eoa_guard.c) ---- */
+/* Call right before H5Fflush: see eoa_guard.c. */
+ms_status ms_h5_guard_eoa(hid_t file);
+/* Jenkins lookup3 (HDF5's metadata checksum). */
+uint32_t ms_lookup3(const void *key, size_t length, uint32_t initval);
+/* A 48-byte version-2 superblock with 8-byte addresses and a good checksum. */
+int ms_h5_superblock_ok(const unsigned char *sb);
+
+/* ---- HDF5 glue (h5util.c) ---- */
+/* Silence HDF5's automatic error printing for the current thread until
+ * ms_h5_loud restores what was there. */
+typedef struct ms_h5_quiet {
+    H5E_auto2_t func;
+    void *data;
+} ms_h5_quiet;
+void ms_h5_hush(ms_h5_quiet *q);
+void ms_h5_loud(const ms_h5_quiet *q);
+/* Fail with "<sentence>: <reason>" where the reason is the system error
+ * HDF5 met (errno text, e.g. "No space left on device") or the innermost
+ * HDF5 message; clears the HDF5 error stack. */
+ms_status ms_h5_fail(ms_status s, const char *fmt, ...) MS_PRINTF(2, 3);
+/* A file access property list: latest-1.8 format (readable by HDF5 1.8 and
+ * later), file locking off, sec2 driver. H5Pclose it. */
+hid_t ms_h5_fapl(void);
+/* Attribute helpers on any object; each returns < 0 on failure. */
+herr_t ms_h5_attr_string(hid_t obj, const char *name, const char *value);
+herr_t ms_h5_attr_double(hid_t obj, const char *name, const double *v, int n);
+herr_t ms_h5_attr_int64(hid_t obj, const char *name, int64_t v);
+/* Readers of the same, defensive about what the file holds: the attribute
+ * must exist with the right class and element count, or they return < 0.
+ * ms_h5_read_string mallocs *out (NUL-terminated, at most max_len bytes). */
+herr_t ms_h5_read_string(hid_t obj, const char *name, size_t max_len, char **out);
+herr_t ms_h5_read_doubles(hid_t obj, const char *name, double *v, int n);
+herr_t ms_h5_read_int64(hid_t obj, const char *name, int64_t *v);
+
+#endif /* MS_IO_INTERNAL_H */

@@ -1,0 +1,574 @@
+/* lib/io: the HDF5 run file (DESIGN 5), written from raw arrays.
+ *
+ * Owns the file's layout: root attributes, /time, /fields/<name> as float32
+ * [frame][y][x] datasets (extendible, one frame per chunk, shuffle +
+ * deflate, no chunk cache so each frame goes to disk when written), the
+ * H5Part particle steps (h5part.c) and the XDMF sidecar (xdmf.c).
+ *
+ * Crash safety, in this order per frame:
+ *   1. check the space left (file system and RLIMIT_FSIZE) for the frame;
+ *   2. extend and write every field and /time, build the particle step as
+ *      an anonymous group;
+ *   3. move the superblock's EOA ahead (eoa_guard.c), H5Fflush: the frame's
+ *      data and metadata are on disk;
+ *   4. link /Step#k, raise the root attribute `frames`, guard and flush
+ *      again: the commit;
+ *   5. append the frame to the XDMF sidecar (one pwrite).
+ * Freed file space is never reused (H5F_FSPACE_STRATEGY_NONE), so nothing a
+ * flushed state refers to is overwritten by a later frame's data; a kill
+ * between two flushes leaves the last committed state readable. The reader
+ * takes the smallest of `frames` and every dataset's length.
+ */
+#define _GNU_SOURCE /* memfd_create */
+#include <errno.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include "io/io_internal.h"
+
+/* deflate level: 1 is fast and already takes most of what shuffle leaves
+ * (see README, HDF5 layout). */
+#define DEFLATE_LEVEL 1
+#define TIME_CHUNK 256
+/* Half the fan-out of the chunk-index B-tree nodes (HDF5's default is 32):
+ * a node splits every CHUNK_BTREE_K frames, and a split is the one change
+ * of a flush whose parent is written before its new child. Larger nodes
+ * make that rarer at the cost of rewriting a larger node (~100 bytes an
+ * entry) each frame. */
+#define CHUNK_BTREE_K 128
+/* Metadata written per frame beyond the raw arrays (B-tree nodes, object
+ * headers, the Step group), generous. */
+#define META_SLACK_BYTES (256u * 1024u)
+
+struct ms_writer {
+    char *path;
+    char *xmf_path;
+    hid_t file;
+    hid_t dset[MS_IO_NFIELDS];
+    hid_t time_dset;
+    hid_t frames_attr;
+    ms_writer_layout layout; /* strings not kept */
+    long frames;             /* committed */
+    int failed;              /* a write failed: no more frames */
+    int no_space_check;      /* tests: let the write meet the full disk */
+    ms_xdmf *xdmf;
+};
+
+static void close_handles(ms_writer *w)
+{
+    for (int i = 0; i < MS_IO_NFIELDS; ++i)
+        if (w->dset[i] >= 0) {
+            H5Dclose(w->dset[i]);
+            w->dset[i] = -1;
+        }
+    if (w->time_dset >= 0) {
+        H5Dclose(w->time_dset);
+        w->time_dset = -1;
+    }
+    if (w->frames_attr >= 0) {
+        H5Aclose(w->frames_attr);
+        w->frames_attr = -1;
+    }
+}
+
+static void free_writer(ms_writer *w)
+{
+    if (!w)
+        return;
+    free(w->path);
+    free(w->xmf_path);
+    free(w);
+}
+
+/* Close a file that met a write error without writing to it again.
+ * H5Fclose flushes, and a flush that fails keeps the file open inside
+ * HDF5, which then loops (and prints) when the program exits. So the file
+ * descriptor under HDF5 is first pointed at an anonymous scratch file:
+ * the close writes its last metadata there, and the file on disk keeps
+ * the state of the last committed frame. */
+static void abandon_file(ms_writer *w)
+{
+    if (w->file < 0)
+        return;
+    int *fdp = NULL;
+    if (H5Fget_vfd_handle(w->file, H5P_DEFAULT, (void **)&fdp) >= 0 && fdp && *fdp >= 0) {
+        int scratch = -1;
+#ifdef MFD_CLOEXEC
+        scratch = memfd_create("modesplit-abandoned", MFD_CLOEXEC);
+#endif
+        if (scratch < 0)
+            scratch = open("/dev/null", O_RDWR | O_CLOEXEC);
+        if (scratch >= 0) {
+            dup2(scratch, *fdp);
+            close(scratch);
+        }
+    }
+    H5Fclose(w->file);
+    H5Eclear2(H5E_DEFAULT);
+    w->file = -1;
+}
+
+static uint64_t frame_bound_bytes(const ms_writer *w, int particles);
+
+static ms_status check_layout(const ms_writer_layout *l)
+{
+    if (l->fields == 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: no fields to write (fields is 0)");
+    if (l->fields & ~(unsigned)MS_IO_ALL_FIELDS)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: fields 0x%x has bits other than MS_FIELD_COMBINED, _SURFACE, "
+                       "_VOLUME and _PARTICLES", l->fields);
+    for (int i = 0; i < MS_IO_NFIELDS; ++i) {
+        if (!(l->fields & (1u << i)))
+            continue;
+        const ms_grid *g = &l->grid[i];
+        const char *n = ms_io_field_names[i];
+        if (g->nx < 1 || g->nx > MS_IO_MAX_SIDE || g->ny < 1 || g->ny > MS_IO_MAX_SIDE)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "io: field %s grid %d x %d cells is outside [1, %d] a side", n,
+                           g->nx, g->ny, MS_IO_MAX_SIDE);
+        if ((long)g->nx * g->ny > MS_IO_MAX_CELLS)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "io: field %s grid %d x %d has more than %ld cells", n, g->nx, g->ny,
+                           MS_IO_MAX_CELLS);
+        if (!(g->dx > 0) || !(g->dy > 0) || !isfinite(g->dx) || !isfinite(g->dy))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "io: field %s cell size %g x %g m must be finite and > 0", n,
+                           (double)g->dx, (double)g->dy);
+        if (!isfinite(g->origin[0]) || !isfinite(g->origin[1]))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: field %s origin must be finite", n);
+    }
+    if (!isfinite(l->frame_dt) || l->frame_dt < 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: frame_dt %g s must be finite and >= 0",
+                       l->frame_dt);
+    if (l->output_every < 1)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: output_every %d must be >= 1",
+                       l->output_every);
+    return MS_OK;
+}
+
+static hid_t create_field(hid_t group, const char *name, const ms_grid *g)
+{
+    hsize_t dims[3] = {0, (hsize_t)g->ny, (hsize_t)g->nx};
+    hsize_t maxdims[3] = {H5S_UNLIMITED, (hsize_t)g->ny, (hsize_t)g->nx};
+    hsize_t chunk[3] = {1, (hsize_t)g->ny, (hsize_t)g->nx};
+    hid_t space = H5Screate_simple(3, dims, maxdims);
+    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    hid_t dapl = H5Pcreate(H5P_DATASET_ACCESS);
+    hid_t d = -1;
+    float fill = NAN; /* a frame without data reads as NaN, never as a flat 0 */
+    if (space >= 0 && dcpl >= 0 && dapl >= 0 && H5Pset_chunk(dcpl, 3, chunk) >= 0 &&
+        H5Pset_shuffle(dcpl) >= 0 && H5Pset_deflate(dcpl, DEFLATE_LEVEL) >= 0 &&
+        H5Pset_fill_value(dcpl, H5T_NATIVE_FLOAT, &fill) >= 0 &&
+        H5Pset_chunk_cache(dapl, 0, 0, 1.0) >= 0) {
+        d = H5Dcreate2(group, name, H5T_IEEE_F32LE, space, H5P_DEFAULT, dcpl, dapl);
+        double dx[2] = {g->dx, g->dy};
+        double origin[2] = {g->origin[0], g->origin[1]};
+        if (d >= 0 &&
+            (ms_h5_attr_double(d, "dx", dx, 2) < 0 ||
+             ms_h5_attr_double(d, "origin", origin, 2) < 0 ||
+             ms_h5_attr_string(d, "units", "m") < 0 ||
+             ms_h5_attr_string(d, "axes", "frame,y,x") < 0)) {
+            H5Dclose(d);
+            d = -1;
+        }
+    }
+    if (space >= 0)
+        H5Sclose(space);
+    if (dcpl >= 0)
+        H5Pclose(dcpl);
+    if (dapl >= 0)
+        H5Pclose(dapl);
+    return d;
+}
+
+static hid_t create_time(hid_t file)
+{
+    hsize_t dims[1] = {0}, maxdims[1] = {H5S_UNLIMITED}, chunk[1] = {TIME_CHUNK};
+    hid_t space = H5Screate_simple(1, dims, maxdims);
+    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    hid_t d = -1;
+    double fill = NAN;
+    if (space >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, 1, chunk) >= 0 &&
+        H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &fill) >= 0) {
+        d = H5Dcreate2(file, "time", H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+        if (d >= 0 && ms_h5_attr_string(d, "units", "s") < 0) {
+            H5Dclose(d);
+            d = -1;
+        }
+    }
+    if (space >= 0)
+        H5Sclose(space);
+    if (dcpl >= 0)
+        H5Pclose(dcpl);
+    return d;
+}
+
+/* Root attributes, datasets and the `frames` attribute of a new file. */
+static int write_layout(ms_writer *w, const ms_writer_layout *l)
+{
+    hid_t f = w->file;
+    double frame_dt = l->frame_dt;
+    if (ms_h5_attr_string(f, "format", MS_FILE_FORMAT) < 0 ||
+        ms_h5_attr_int64(f, "format_version", MS_FILE_FORMAT_VERSION) < 0 ||
+        ms_h5_attr_string(f, "library_version", ms_version()) < 0 ||
+        ms_h5_attr_string(f, "scene", l->scene_text ? l->scene_text : "") < 0 ||
+        ms_h5_attr_string(f, "scene_name", l->scene_name ? l->scene_name : "") < 0 ||
+        ms_h5_attr_double(f, "frame_dt", &frame_dt, 1) < 0 ||
+        ms_h5_attr_int64(f, "output_every", l->output_every) < 0 ||
+        ms_h5_attr_int64(f, "frames", 0) < 0)
+        return -1;
+    if (l->fields & MS_IO_HEIGHT_FIELDS) {
+        hid_t g = H5Gcreate2(f, "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        if (g < 0)
+            return -1;
+        for (int i = 0; i < MS_IO_NFIELDS; ++i) {
+            if (!(l->fields & (1u << i)))
+                continue;
+            w->dset[i] = create_field(g, ms_io_field_names[i], &l->grid[i]);
+            if (w->dset[i] < 0) {
+                H5Gclose(g);
+                return -1;
+            }
+        }
+        if (H5Gclose(g) < 0)
+            return -1;
+    }
+    w->time_dset = create_time(f);
+    if (w->time_dset < 0)
+        return -1;
+    w->frames_attr = H5Aopen(f, "frames", H5P_DEFAULT);
+    if (w->frames_attr < 0)
+        return -1;
+    return H5Fflush(f, H5F_SCOPE_GLOBAL) < 0 ? -1 : 0;
+}
+
+/* Before HDF5 sees the path: create it and make sure it takes a write.
+ * HDF5 cannot close a file whose very first flush fails (it keeps it open
+ * inside and prints when the program exits), so an unwritable path, a
+ * device that refuses writes (/dev/full) or a full disk is caught here,
+ * with the system's reason. */
+static ms_status probe_path(const char *path, const ms_writer_layout *l)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0)
+        return ms_fail(MS_ERR_IO, "io: cannot create %s: %s", path, strerror(errno));
+    static const char zeros[4096];
+    struct stat sb;
+    int regular = fstat(fd, &sb) == 0 && S_ISREG(sb.st_mode);
+    ms_status st = MS_OK;
+    struct statvfs vb;
+    if (regular && fstatvfs(fd, &vb) == 0) {
+        ms_writer probe = {0};
+        probe.layout = *l;
+        uint64_t need = frame_bound_bytes(&probe, 0) + META_SLACK_BYTES;
+        uint64_t blocks = geteuid() == 0 ? (uint64_t)vb.f_bfree : (uint64_t)vb.f_bavail;
+        uint64_t free_bytes = blocks * (uint64_t)vb.f_frsize;
+        if (free_bytes < need)
+            st = ms_fail(MS_ERR_IO,
+                         "io: cannot create %s: its file system has %.2f MB free, the layout "
+                         "and a first frame need up to %.2f MB", path, free_bytes / 1e6,
+                         need / 1e6);
+    }
+    for (int i = 0; i < 16 && st == MS_OK; ++i)
+        if (pwrite(fd, zeros, sizeof zeros, (off_t)i * (off_t)sizeof zeros) != (ssize_t)sizeof zeros)
+            st = ms_fail(MS_ERR_IO, "io: cannot write %s: %s", path,
+                         errno ? strerror(errno) : "short write");
+    if (regular && ftruncate(fd, 0) != 0 && st == MS_OK)
+        st = ms_fail(MS_ERR_IO, "io: cannot write %s: %s", path, strerror(errno));
+    close(fd);
+    if (st != MS_OK && regular)
+        unlink(path);
+    return st;
+}
+
+ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out)
+{
+    ms_status st;
+    if ((st = ms_check_not_null("io", "out", out)) != MS_OK)
+        return st;
+    *out = NULL;
+    if ((st = ms_check_not_null("io", "path", path)) != MS_OK ||
+        (st = ms_check_not_null("io", "layout", l)) != MS_OK)
+        return st;
+    if (!path[0])
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: the output path is empty");
+    if ((st = check_layout(l)) != MS_OK)
+        return st;
+
+    ms_writer *w = calloc(1, sizeof *w);
+    if (!w)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+    w->file = w->time_dset = w->frames_attr = -1;
+    for (int i = 0; i < MS_IO_NFIELDS; ++i)
+        w->dset[i] = -1;
+    w->layout = *l;
+    w->layout.scene_text = w->layout.scene_name = NULL;
+    w->path = strdup(path);
+    w->xmf_path = ms_xdmf_path_for(path);
+    if (!w->path || !w->xmf_path) {
+        free_writer(w);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+    }
+
+    if ((st = probe_path(path, l)) != MS_OK) {
+        free_writer(w);
+        return st;
+    }
+    ms_h5_quiet q;
+    ms_h5_hush(&q);
+    hid_t fapl = ms_h5_fapl();
+    hid_t fcpl = H5Pcreate(H5P_FILE_CREATE);
+    if (fapl < 0 || fcpl < 0 ||
+        H5Pset_file_space_strategy(fcpl, H5F_FSPACE_STRATEGY_NONE, 0, 1) < 0 ||
+        H5Pset_istore_k(fcpl, CHUNK_BTREE_K) < 0) {
+        st = ms_h5_fail(MS_ERR_IO, "io: cannot set up HDF5 for %s", path);
+    } else {
+        w->file = H5Fcreate(path, H5F_ACC_TRUNC, fcpl, fapl);
+        if (w->file < 0)
+            st = ms_h5_fail(MS_ERR_IO, "io: cannot create %s", path);
+        else if (write_layout(w, l) < 0)
+            st = ms_h5_fail(MS_ERR_IO, "io: cannot write the layout of %s", path);
+    }
+    if (fapl >= 0)
+        H5Pclose(fapl);
+    if (fcpl >= 0)
+        H5Pclose(fcpl);
+    if (st == MS_OK) {
+        /* The sidecar names the HDF5 file relative to itself. */
+        const char *slash = strrchr(path, '/');
+        st = ms_xdmf_open(w->xmf_path, slash ? slash + 1 : path, &w->layout, &w->xdmf);
+    }
+    if (st != MS_OK) {
+        close_handles(w);
+        if (w->file >= 0) {
+            /* a file that holds no frame is no use: remove it, if it is one */
+            struct stat sb;
+            int *fdp = NULL;
+            if (H5Fget_vfd_handle(w->file, H5P_DEFAULT, (void **)&fdp) >= 0 && fdp &&
+                fstat(*fdp, &sb) == 0 && S_ISREG(sb.st_mode))
+                unlink(path);
+            abandon_file(w);
+        }
+        H5Eclear2(H5E_DEFAULT);
+        ms_h5_loud(&q);
+        free_writer(w);
+        return st;
+    }
+    ms_h5_loud(&q);
+    *out = w;
+    return MS_OK;
+}
+
+static uint64_t frame_bound_bytes(const ms_writer *w, int particles)
+{
+    uint64_t raw = 0;
+    for (int i = 0; i < MS_IO_NFIELDS; ++i)
+        if (w->layout.fields & (1u << i))
+            raw += (uint64_t)w->layout.grid[i].nx * (uint64_t)w->layout.grid[i].ny * 4u;
+    if (w->layout.fields & MS_FIELD_PARTICLES)
+        raw += (uint64_t)particles * 6u * 4u;
+    /* deflate can grow incompressible data a little */
+    return raw + raw / 64 + META_SLACK_BYTES;
+}
+
+/* Refuse a frame that cannot fit, before touching the file. */
+static ms_status check_space(const ms_writer *w, int particles)
+{
+    int *fdp = NULL;
+    if (H5Fget_vfd_handle(w->file, H5P_DEFAULT, (void **)&fdp) < 0 || !fdp) {
+        H5Eclear2(H5E_DEFAULT);
+        return MS_OK; /* not a plain file: let the write report */
+    }
+    uint64_t need = frame_bound_bytes(w, particles);
+    struct stat sb;
+    struct statvfs vb;
+    if (fstat(*fdp, &sb) != 0 || !S_ISREG(sb.st_mode))
+        return MS_OK;
+    char holds[64];
+    if (w->frames > 0)
+        snprintf(holds, sizeof holds, "frames 0-%ld", w->frames - 1);
+    else
+        snprintf(holds, sizeof holds, "no frame yet");
+    if (fstatvfs(*fdp, &vb) == 0) {
+        uint64_t blocks = geteuid() == 0 ? (uint64_t)vb.f_bfree : (uint64_t)vb.f_bavail;
+        uint64_t free_bytes = blocks * (uint64_t)vb.f_frsize;
+        if (free_bytes < need)
+            return ms_fail(MS_ERR_IO,
+                           "io: frame %ld needs up to %.2f MB but only %.2f MB are free on the "
+                           "file system of %s; stopped before writing it (the file holds %s)",
+                           w->frames, need / 1e6, free_bytes / 1e6, w->path, holds);
+    }
+    struct rlimit rl;
+    if (getrlimit(RLIMIT_FSIZE, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
+        (uint64_t)sb.st_size + need > (uint64_t)rl.rlim_cur)
+        return ms_fail(MS_ERR_IO,
+                       "io: frame %ld needs up to %.2f MB but the file size limit (ulimit -f) "
+                       "leaves %.2f MB for %s; stopped before writing it (the file holds %s)",
+                       w->frames, need / 1e6,
+                       ((uint64_t)rl.rlim_cur > (uint64_t)sb.st_size
+                            ? (double)((uint64_t)rl.rlim_cur - (uint64_t)sb.st_size)
+                            : 0.0) / 1e6,
+                       w->path, holds);
+    return MS_OK;
+}
+
+/* Flush with the superblock's EOA moved ahead first (eoa_guard.c). */
+static int commit(ms_writer *w)
+{
+    if (ms_h5_guard_eoa(w->file) != MS_OK)
+        return 0;
+    return H5Fflush(w->file, H5F_SCOPE_GLOBAL) >= 0;
+}
+
+static herr_t append_rows(hid_t d, long frame, const void *buf, hid_t mtype, int rank,
+                          const hsize_t *row_dims)
+{
+    hsize_t dims[3], start[3] = {0, 0, 0}, count[3];
+    dims[0] = (hsize_t)frame + 1;
+    start[0] = (hsize_t)frame;
+    count[0] = 1;
+    for (int i = 1; i < rank; ++i)
+        dims[i] = count[i] = row_dims[i - 1];
+    if (H5Dset_extent(d, dims) < 0)
+        return -1;
+    hid_t fs = H5Dget_space(d);
+    hid_t ms = H5Screate_simple(rank, count, NULL);
+    herr_t st = -1;
+    if (fs >= 0 && ms >= 0 && H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) >= 0)
+        st = H5Dwrite(d, mtype, ms, fs, H5P_DEFAULT, buf);
+    if (fs >= 0)
+        H5Sclose(fs);
+    if (ms >= 0)
+        H5Sclose(ms);
+    return st;
+}
+
+static ms_status check_data(const ms_writer *w, const ms_writer_data *d)
+{
+    if (!isfinite(d->time))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: frame time %g s is not finite", d->time);
+    for (int i = 0; i < MS_IO_NFIELDS; ++i)
+        if ((w->layout.fields & (1u << i)) && !d->field[i])
+            return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: field %s has no data for frame %ld",
+                           ms_io_field_names[i], w->frames);
+    if (w->layout.fields & MS_FIELD_PARTICLES) {
+        if (d->particles < 0 || d->particles > MS_IO_MAX_PARTICLES)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "io: particle count %d is outside [0, %ld]", d->particles,
+                           MS_IO_MAX_PARTICLES);
+        for (int k = 0; k < 3 && d->particles > 0; ++k)
+            if (!d->pos[k] || !d->vel[k])
+                return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                               "io: %d particles but a position or velocity array is NULL",
+                               d->particles);
+    }
+    return MS_OK;
+}
+
+ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
+{
+    ms_status st;
+    if ((st = ms_check_not_null("io", "writer", w)) != MS_OK ||
+        (st = ms_check_not_null("io", "frame data", d)) != MS_OK)
+        return st;
+    if (w->failed)
+        return ms_fail(MS_ERR_STATE,
+                       "io: the writer of %s stopped after a write error; close it (the file "
+                       "keeps its %ld frames)", w->path, w->frames);
+    if ((st = check_data(w, d)) != MS_OK)
+        return st;
+    ms_h5_quiet q;
+    ms_h5_hush(&q);
+    st = w->no_space_check ? MS_OK : check_space(w, d->particles);
+    if (st != MS_OK) {
+        ms_h5_loud(&q);
+        return st;
+    }
+    long k = w->frames;
+    int ok = 1;
+    hid_t step = -1;
+    for (int i = 0; i < MS_IO_NFIELDS && ok; ++i) {
+        if (!(w->layout.fields & (1u << i)))
+            continue;
+        hsize_t row[2] = {(hsize_t)w->layout.grid[i].ny, (hsize_t)w->layout.grid[i].nx};
+        ok = append_rows(w->dset[i], k, d->field[i], H5T_NATIVE_FLOAT, 3, row) >= 0;
+    }
+    int particles = (w->layout.fields & MS_FIELD_PARTICLES) ? d->particles : 0;
+    if (ok && (w->layout.fields & MS_FIELD_PARTICLES))
+        ok = ms_h5part_write_step(w->file, d->time, particles, d->pos, d->vel, &step) == MS_OK;
+    if (ok)
+        ok = append_rows(w->time_dset, k, &d->time, H5T_NATIVE_DOUBLE, 1, NULL) >= 0;
+    /* 1: the frame's data and its (still unlinked) particle step */
+    if (ok)
+        ok = commit(w);
+    /* 2: link the step and raise `frames` */
+    int64_t committed = k + 1;
+    if (ok && step >= 0)
+        ok = ms_h5part_link_step(w->file, step, k) == MS_OK;
+    if (ok)
+        ok = H5Awrite(w->frames_attr, H5T_NATIVE_INT64, &committed) >= 0 && commit(w);
+    if (step >= 0 && H5Gclose(step) < 0)
+        ok = 0;
+    if (!ok) {
+        w->failed = 1;
+        st = ms_h5_fail(MS_ERR_IO, "io: writing frame %ld to %s failed", k, w->path);
+        ms_h5_loud(&q);
+        return st;
+    }
+    ms_h5_loud(&q);
+    w->frames = k + 1;
+    st = ms_xdmf_frame(w->xdmf, k, d->time, particles);
+    if (st != MS_OK)
+        w->failed = 1;
+    return st;
+}
+
+ms_status ms_writer_close(ms_writer *w)
+{
+    if (!w)
+        return MS_OK;
+    ms_status st = MS_OK;
+    ms_h5_quiet q;
+    ms_h5_hush(&q);
+    close_handles(w);
+    if (w->failed)
+        abandon_file(w); /* the frames committed before stay as they are */
+    else if (w->file >= 0 && H5Fclose(w->file) < 0)
+        st = ms_h5_fail(MS_ERR_IO, "io: closing %s failed", w->path);
+    w->file = -1;
+    H5Eclear2(H5E_DEFAULT);
+    ms_h5_loud(&q);
+    ms_status xs = ms_xdmf_close(w->xdmf);
+    if (st == MS_OK)
+        st = xs;
+    free_writer(w);
+    return st;
+}
+
+long ms_writer_frames(const ms_writer *w)
+{
+    return w ? w->frames : 0;
+}
+
+const char *ms_writer_xdmf_path(const ms_writer *w)
+{
+    return w ? w->xmf_path : "";
+}
+
+void ms_writer_skip_space_check(ms_writer *w)
+{
+    w->no_space_check = 1;
+}
+
+const ms_writer_layout *ms_writer_get_layout(const ms_writer *w)
+{
+    return &w->layout;
+}

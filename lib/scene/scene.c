@@ -1,0 +1,211 @@
+/* ms_scene: loading a scene file (JSON, parsed by jansson) into the values
+ * of data/scenes/README.md, and the accessors the tool and the writer use.
+ * The schema itself is in sections.c; the typed readers that name
+ * file:line:col in reader.c and locate.c.
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <jansson.h>
+
+#include "core/internal.h"
+#include "scene/sections.h"
+
+#define MAX_SCENE_BYTES (16u << 20)
+
+static void free_path(ms_scene_motion *p)
+{
+    ms_free(p->points);
+    p->points = NULL;
+    p->npoints = 0;
+}
+
+static void free_shape(ms_scene_shape *s)
+{
+    ms_free(s->kind);
+    ms_free(s->params_json);
+    free_path(&s->path);
+}
+
+void ms_scene_destroy(ms_scene *sc)
+{
+    if (!sc)
+        return;
+    ms_free(sc->text);
+    ms_free(sc->path);
+    ms_free(sc->name);
+    for (int i = 0; i < sc->nobstacles; ++i)
+        free_shape(&sc->obstacles[i]);
+    ms_free(sc->obstacles);
+    free_path(&sc->boat_path);
+    free_path(&sc->drag_path);
+    ms_free(sc->drops);
+    ms_free(sc->floater_xy);
+    if (sc->has_container)
+        free_shape(&sc->container);
+    ms_free(sc->render.shader);
+    ms_free(sc->render.cubemap);
+    ms_free(sc);
+}
+
+static char *dup_n(const char *s, size_t n)
+{
+    char *d = ms_alloc(n + 1);
+    if (d) {
+        memcpy(d, s, n);
+        d[n] = '\0';
+    }
+    return d;
+}
+
+static ms_status parse(const char *text, size_t len, const char *file, const char *path,
+                       const char *dir, const char *default_name, ms_scene **out)
+{
+    if (len > MAX_SCENE_BYTES)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: scene of %zu bytes; allowed: at most %u bytes",
+                       file, len, MAX_SCENE_BYTES);
+    ms_scene *sc = ms_alloc(sizeof *sc);
+    if (!sc)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory");
+    sc->text = dup_n(text, len);
+    sc->text_len = len;
+    sc->path = dup_n(path, strlen(path));
+    if (!sc->text || !sc->path) {
+        ms_scene_destroy(sc);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for %zu bytes", len);
+    }
+    json_error_t err;
+    json_t *root = json_loadb(text, len, JSON_REJECT_DUPLICATES, &err);
+    if (!root) {
+        int line = err.line, col = err.column;
+        if (line < 1) {
+            size_t pos = err.position > 0 ? (size_t)err.position : 0;
+            ms_scene_line_col(text, len, pos, &line, &col);
+        }
+        ms_scene_destroy(sc);
+        return ms_fail(MS_ERR_PARSE, "%s:%d:%d: JSON syntax error: %s", file, line,
+                       col < 1 ? 1 : col, err.text);
+    }
+    ms_scene_ctx c = {.file = file, .text = sc->text, .len = len, .depth = 0};
+    ms_status st = ms_scene_read_sections(&c, root, sc, dir, default_name);
+    json_decref(root);
+    if (st != MS_OK) {
+        ms_scene_destroy(sc);
+        return st;
+    }
+    *out = sc;
+    return MS_OK;
+}
+
+ms_status ms_scene_parse(const char *json, size_t len, ms_scene **out)
+{
+    if (!out)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: out is NULL");
+    *out = NULL;
+    if (!json)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: json text is NULL");
+    return parse(json, len, "<scene>", "", "", "scene", out);
+}
+
+ms_status ms_scene_load(const char *path, ms_scene **out)
+{
+    if (!out)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: out is NULL");
+    *out = NULL;
+    if (!path || !path[0])
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: path is NULL or empty");
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return ms_fail(MS_ERR_IO, "%s: cannot open the scene file: %s", path, strerror(errno));
+    char *buf = NULL;
+    size_t len = 0, cap = 0;
+    ms_status st = MS_OK;
+    for (;;) {
+        if (len == cap) {
+            if (cap > MAX_SCENE_BYTES) {
+                st = ms_fail(MS_ERR_INVALID_ARGUMENT,
+                             "%s: scene file is larger than %u bytes; allowed: at most %u bytes",
+                             path, MAX_SCENE_BYTES, MAX_SCENE_BYTES);
+                break;
+            }
+            size_t ncap = cap ? 2 * cap : 65536;
+            char *nb = realloc(buf, ncap);
+            if (!nb) {
+                st = ms_fail(MS_ERR_OUT_OF_MEMORY, "%s: out of memory reading the scene", path);
+                break;
+            }
+            buf = nb;
+            cap = ncap;
+        }
+        size_t got = fread(buf + len, 1, cap - len, f);
+        len += got;
+        if (got == 0) {
+            if (ferror(f))
+                st = ms_fail(MS_ERR_IO, "%s: cannot read the scene file: %s", path,
+                             strerror(errno));
+            break;
+        }
+    }
+    fclose(f);
+    if (st == MS_OK) {
+        /* directory with a trailing '/', for paths inside the scene */
+        const char *slash = strrchr(path, '/');
+        size_t dlen = slash ? (size_t)(slash - path) + 1 : 0;
+        char *dir = dup_n(path, dlen);
+        const char *base = slash ? slash + 1 : path;
+        size_t blen = strlen(base);
+        if (blen > 5 && strcmp(base + blen - 5, ".json") == 0)
+            blen -= 5;
+        char *name = dup_n(base, blen);
+        if (!dir || !name)
+            st = ms_fail(MS_ERR_OUT_OF_MEMORY, "%s: out of memory", path);
+        else
+            st = parse(buf, len, path, path, dir, name[0] ? name : "scene", out);
+        ms_free(dir);
+        ms_free(name);
+    }
+    free(buf);
+    return st;
+}
+
+const char *ms_scene_name(const ms_scene *sc)
+{
+    return sc ? sc->name : "";
+}
+
+const char *ms_scene_text(const ms_scene *sc)
+{
+    return sc ? sc->text : "";
+}
+
+const char *ms_scene_path(const ms_scene *sc)
+{
+    return sc ? sc->path : "";
+}
+
+double ms_scene_duration(const ms_scene *sc)
+{
+    return sc ? sc->duration : 0;
+}
+
+float ms_scene_frame_dt(const ms_scene *sc)
+{
+    return sc ? sc->frame_dt : 0;
+}
+
+unsigned ms_scene_output_fields(const ms_scene *sc)
+{
+    return sc ? sc->output_fields : 0;
+}
+
+int ms_scene_output_every(const ms_scene *sc)
+{
+    return sc ? sc->output_every : 1;
+}
+
+int ms_scene_has_render(const ms_scene *sc)
+{
+    return sc ? sc->has_render : 0;
+}

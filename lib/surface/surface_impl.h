@@ -1,0 +1,99 @@
+/* Internal layout of ms_surface (lib/surface/ only).
+ *
+ * The fields are stored padded with one ghost cell on every side, rows of
+ * `stride` floats (nx + 2 rounded up to a cache line), so the leapfrog row
+ * kernel runs without branches; the ghost cells carry the boundary
+ * condition:
+ *   reflect  - ghost speed 0: no flux through the wall (Neumann);
+ *   periodic - ghosts are copies of the opposite edge;
+ *   absorb   - ghost speed = edge speed, ghost height advanced by Mur's
+ *              first-order absorbing condition, and a thin sponge of extra
+ *              damping just inside the edge takes what Mur reflects at
+ *              oblique incidence.
+ * Each padded row starts MS_SURFACE_ORIGIN floats into its stride, so the
+ * interior of every row begins on a 64-byte boundary (aligned loads and
+ * stores for the centre and vertical neighbours of the stencil).
+ * ms_surface_row(s, y) is the index of padded row y's west ghost (y = 0 is
+ * the south ghost row, y = ny + 1 the north one); interior cell (x, y),
+ * 0-based, is at ms_surface_row(s, y + 1) + x + 1.
+ */
+#ifndef MS_SURFACE_IMPL_H
+#define MS_SURFACE_IMPL_H
+
+#include "core/internal.h"
+#include "modesplit/surface.h"
+
+typedef struct disturber {
+    int id;               /* > 0; 0 = free slot */
+    ms_disturber_desc d;  /* position and velocity now */
+    float *path;          /* npath (x, y) pairs, or NULL */
+    int npath, loop;
+    float path_speed;     /* m/s along the path */
+    double path_s;        /* m travelled along the path */
+} disturber;
+
+struct ms_surface {
+    ms_surface_desc desc;
+    int nx, ny;
+    int stride;           /* floats per padded row */
+    size_t plane;         /* floats per padded field: stride * (ny + 2) */
+
+    float *h;             /* f^n, the height field */
+    float *v;             /* f^n - f^{n-1}: the last sub-step's displacement
+                             (velocity * v_dt). Stored on its own, not as
+                             f^{n-1}, so its round-off is relative to the
+                             velocity rather than the height: volume and
+                             energy drift far less in float. */
+    float *speed;         /* m/s per cell as stepped: the map (or desc.wave_speed)
+                             with solid cells at 0; ghosts carry the boundary */
+    float *speed_map;     /* the user's speed map, padded, or NULL (uniform) */
+    float *a;             /* speed * dt / dx for the cached sub-step dt */
+    float *delta;         /* damping factor per sub-step, cached dt */
+    float *damp_map;      /* per-cell damping per second, or NULL (uniform) */
+    unsigned char *solid; /* padded obstacle mask, or NULL */
+    float *view;          /* nx * ny contiguous copy for ms_surface_height */
+    int view_dirty;
+
+    float coef_dt;        /* s, the dt `a` and `delta` hold; 0 = stale */
+    float max_speed;      /* m/s, fastest cell */
+    float v_dt;           /* s, the sub-step v belongs to; 0 = none yet */
+    double time;          /* s */
+    long substeps, drops;
+
+    ms_rng rng;
+    ms_rain rain;         /* rate 0 = no rain */
+
+    disturber *dist;
+    int ndist, cap_dist, next_id;
+};
+
+#define MS_SURFACE_ORIGIN 15
+
+static inline size_t ms_surface_row(const ms_surface *s, int y)
+{
+    return (size_t)y * (size_t)s->stride + MS_SURFACE_ORIGIN;
+}
+
+static inline size_t ms_surface_at(const ms_surface *s, int x, int y)
+{
+    return ms_surface_row(s, y + 1) + (size_t)(x + 1);
+}
+
+/* maps.c */
+void ms_surface_set_ghost_speeds(ms_surface *s);
+void ms_surface_refresh_coefficients(ms_surface *s, float dt);
+/* wave.c */
+float ms_surface_stable_dt(const ms_surface *s);
+/* drops.c */
+void ms_surface_splat(ms_surface *s, float x, float y, float radius, float amplitude);
+void ms_surface_rain(ms_surface *s, float dt);
+/* disturber.c */
+void ms_surface_disturbers_advance(ms_surface *s, float dt);
+void ms_surface_disturbers_positions(const ms_surface *s, float *xy);
+void ms_surface_disturbers_force_row(const ms_surface *s, int y, float *v_row, const float *xy);
+/* energy.c: the energy of the cells in [x0, x1) x [y0, y1) */
+double ms_surface_energy_region(const ms_surface *s, int x0, int x1, int y0, int y1);
+/* surface.c */
+void ms_surface_zero_solid(ms_surface *s, float *field);
+
+#endif /* MS_SURFACE_IMPL_H */

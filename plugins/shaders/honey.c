@@ -1,0 +1,132 @@
+/* Shader plugin "honey": a thick, amber, see-through liquid. The refracted
+ * ray (looked up in the environment cubemap, as the paper does for water)
+ * is tinted by Beer-Lambert absorption along its path to the floor, so thin
+ * layers glow golden and deep ones go dark amber; Fresnel reflection (index
+ * 1.49) and a sharp highlight. No caustics.
+ *
+ * Parameters: {"color": [1.0, 0.62, 0.12], "ior": 1.49, "density": 25,
+ *              "shininess": 300}
+ *   color      what 1/density metres of honey pass (linear RGB, 0..1);
+ *   ior        refractive index;
+ *   density    1/m: how quickly light is absorbed (transmission color^(density len));
+ *   shininess  Blinn-Phong exponent of the highlight.
+ */
+#include <stdlib.h>
+
+#include "../common/params.h"
+#include "modesplit/plugin.h"
+
+static const char vertex_source[] =
+    "#version 120\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "void main()\n"
+    "{\n"
+    "    v_pos = gl_Vertex.xyz;\n"
+    "    v_normal = gl_Normal;\n"
+    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
+    "}\n";
+
+static const char fragment_source[] =
+    "#version 120\n"
+    "uniform vec3 ms_eye;\n"
+    "uniform vec3 ms_light_dir;\n"
+    "uniform vec3 ms_light_color;\n"
+    "uniform samplerCube ms_env;\n"
+    "uniform float ms_floor_z;\n"
+    "uniform vec3 honey_color;\n"
+    "uniform float honey_ior;\n"
+    "uniform float honey_density;\n"
+    "uniform float honey_shininess;\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "void main()\n"
+    "{\n"
+    "    vec3 n = normalize(v_normal);\n"
+    "    vec3 v = normalize(v_pos - ms_eye);\n"
+    "    if (dot(n, v) > 0.0)\n"
+    "        n = -n;\n"
+    "    float cosi = clamp(-dot(v, n), 0.0, 1.0);\n"
+    "    float r0 = (1.0 - honey_ior) / (1.0 + honey_ior);\n"
+    "    r0 *= r0;\n"
+    "    float fresnel = r0 + (1.0 - r0) * pow(1.0 - cosi, 5.0);\n"
+    "    vec3 t = refract(v, n, 1.0 / honey_ior);\n"
+    "    float len = max(v_pos.z - ms_floor_z, 0.0) / max(-t.z, 0.05);\n"
+    "    vec3 pass = pow(max(honey_color, vec3(1e-3)), vec3(honey_density * len));\n"
+    "    vec3 below = textureCube(ms_env, t).rgb * pass;\n"
+    "    below += honey_color * 0.08 * ms_light_color;\n"
+    "    vec3 env = textureCube(ms_env, reflect(v, n)).rgb;\n"
+    "    vec3 h = normalize(ms_light_dir - v);\n"
+    "    float norm = (honey_shininess + 8.0) / 25.0;\n"
+    "    vec3 spec = ms_light_color * norm * pow(max(dot(n, h), 0.0), honey_shininess);\n"
+    "    gl_FragColor = vec4(mix(below, env, fresnel) + spec * (0.3 + fresnel), 1.0);\n"
+    "}\n";
+
+typedef struct honey {
+    float color[3];
+    float ior, density, shininess;
+} honey;
+
+static int honey_create(const char *json, void **out, char *err, size_t err_size)
+{
+    static const char *const keys[] = {"color", "ior", "density", "shininess", NULL};
+    static const float dcolor[3] = {1.0f, 0.62f, 0.12f};
+    honey o = {{1.0f, 0.62f, 0.12f}, 1.49f, 25.0f, 300.0f};
+    params pm;
+    if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
+        params_vec(&pm, "color", 3, o.color, dcolor, 0.0, 1.0, "");
+        o.ior = params_number(&pm, "ior", o.ior, 1.0, 3.0, "");
+        o.density = params_number(&pm, "density", o.density, 0.0, 1e4, "1/m");
+        o.shininess = params_number(&pm, "shininess", o.shininess, 1.0, 1e5, "");
+    }
+    int rc = params_close(&pm);
+    if (rc != MS_PLUGIN_OK)
+        return rc;
+    honey *p = malloc(sizeof *p);
+    if (!p) {
+        snprintf(err, err_size, "out of memory");
+        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
+    }
+    *p = o;
+    *out = p;
+    return MS_PLUGIN_OK;
+}
+
+static void honey_destroy(void *self)
+{
+    free(self);
+}
+
+static void honey_set_uniforms(const void *self, const ms_shader_uniforms *u)
+{
+    const honey *o = self;
+    u->set_vec3(u->ctx, "honey_color", o->color[0], o->color[1], o->color[2]);
+    u->set_float(u->ctx, "honey_ior", o->ior);
+    u->set_float(u->ctx, "honey_density", o->density);
+    u->set_float(u->ctx, "honey_shininess", o->shininess);
+}
+
+static const ms_shader_vtable honey_vtable = {
+    .size = sizeof(ms_shader_vtable),
+    .passes = MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION,
+    .vertex_source = vertex_source,
+    .fragment_source = fragment_source,
+    .create = honey_create,
+    .destroy = honey_destroy,
+    .set_uniforms = honey_set_uniforms,
+};
+
+static const ms_plugin_info honey_info = {
+    .abi = MS_PLUGIN_ABI,
+    .size = sizeof(ms_plugin_info),
+    .name = "honey",
+    .version = "1.0",
+    .kind = MS_PLUGIN_SHADER,
+    .description = "amber, see-through honey: absorbed refraction, Fresnel, sharp highlight",
+    .vtable = &honey_vtable,
+};
+
+const ms_plugin_info *ms_plugin_entry(void)
+{
+    return &honey_info;
+}

@@ -1,0 +1,120 @@
+/* Shader plugin "milk" (the paper's Fig. 9b): an opaque, soft liquid. Light
+ * wraps around the surface (a cheap stand-in for the scattering inside
+ * milk), a faint, broad sheen of the environment at grazing angles; no
+ * refraction, no caustics.
+ *
+ * Parameters: {"color": [0.93, 0.92, 0.88], "softness": 0.6, "sheen": 0.35}
+ *   color     linear RGB, 0..1;
+ *   softness  how far light wraps past the terminator, 0 (hard) .. 1;
+ *   sheen     strength of the environment's reflection at grazing angles.
+ */
+#include <stdlib.h>
+
+#include "../common/params.h"
+#include "modesplit/plugin.h"
+
+static const char vertex_source[] =
+    "#version 120\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "void main()\n"
+    "{\n"
+    "    v_pos = gl_Vertex.xyz;\n"
+    "    v_normal = gl_Normal;\n"
+    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
+    "}\n";
+
+static const char fragment_source[] =
+    "#version 120\n"
+    "uniform vec3 ms_eye;\n"
+    "uniform vec3 ms_light_dir;\n"
+    "uniform vec3 ms_light_color;\n"
+    "uniform samplerCube ms_env;\n"
+    "uniform vec3 milk_color;\n"
+    "uniform float milk_softness;\n"
+    "uniform float milk_sheen;\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "void main()\n"
+    "{\n"
+    "    vec3 n = normalize(v_normal);\n"
+    "    vec3 v = normalize(v_pos - ms_eye);\n"
+    "    if (dot(n, v) > 0.0)\n"
+    "        n = -n;\n"
+    "    float wrap = (dot(n, ms_light_dir) + milk_softness) / (1.0 + milk_softness);\n"
+    "    vec3 diffuse = milk_color * ms_light_color * clamp(wrap, 0.0, 1.0);\n"
+    "    vec3 ambient = milk_color * 0.3;\n"
+    "    float cosi = clamp(-dot(v, n), 0.0, 1.0);\n"
+    "    float sheen = milk_sheen * pow(1.0 - cosi, 3.0);\n"
+    "    vec3 env = textureCube(ms_env, reflect(v, n)).rgb;\n"
+    "    vec3 h = normalize(ms_light_dir - v);\n"
+    "    vec3 spec = ms_light_color * 0.15 * pow(max(dot(n, h), 0.0), 24.0);\n"
+    "    gl_FragColor = vec4(mix(ambient + diffuse, env, sheen) + spec, 1.0);\n"
+    "}\n";
+
+typedef struct milk {
+    float color[3];
+    float softness, sheen;
+} milk;
+
+static int milk_create(const char *json, void **out, char *err, size_t err_size)
+{
+    static const char *const keys[] = {"color", "softness", "sheen", NULL};
+    static const float dcolor[3] = {0.93f, 0.92f, 0.88f};
+    milk m = {{0.93f, 0.92f, 0.88f}, 0.6f, 0.35f};
+    params pm;
+    if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
+        params_vec(&pm, "color", 3, m.color, dcolor, 0.0, 1.0, "");
+        m.softness = params_number(&pm, "softness", m.softness, 0.0, 1.0, "");
+        m.sheen = params_number(&pm, "sheen", m.sheen, 0.0, 1.0, "");
+    }
+    int rc = params_close(&pm);
+    if (rc != MS_PLUGIN_OK)
+        return rc;
+    milk *p = malloc(sizeof *p);
+    if (!p) {
+        snprintf(err, err_size, "out of memory");
+        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
+    }
+    *p = m;
+    *out = p;
+    return MS_PLUGIN_OK;
+}
+
+static void milk_destroy(void *self)
+{
+    free(self);
+}
+
+static void milk_set_uniforms(const void *self, const ms_shader_uniforms *u)
+{
+    const milk *m = self;
+    u->set_vec3(u->ctx, "milk_color", m->color[0], m->color[1], m->color[2]);
+    u->set_float(u->ctx, "milk_softness", m->softness);
+    u->set_float(u->ctx, "milk_sheen", m->sheen);
+}
+
+static const ms_shader_vtable milk_vtable = {
+    .size = sizeof(ms_shader_vtable),
+    .passes = MS_SHADER_NEEDS_REFLECTION,
+    .vertex_source = vertex_source,
+    .fragment_source = fragment_source,
+    .create = milk_create,
+    .destroy = milk_destroy,
+    .set_uniforms = milk_set_uniforms,
+};
+
+static const ms_plugin_info milk_info = {
+    .abi = MS_PLUGIN_ABI,
+    .size = sizeof(ms_plugin_info),
+    .name = "milk",
+    .version = "1.0",
+    .kind = MS_PLUGIN_SHADER,
+    .description = "opaque, soft milk: wrapped diffuse light, grazing sheen, no refraction",
+    .vtable = &milk_vtable,
+};
+
+const ms_plugin_info *ms_plugin_entry(void)
+{
+    return &milk_info;
+}

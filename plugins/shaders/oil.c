@@ -1,0 +1,121 @@
+/* Shader plugin "oil": a dark, opaque, glossy liquid (motor oil, crude):
+ * almost black body colour, the environment reflected by the Fresnel
+ * equations (Schlick, oil's index 1.47), a sharp sun highlight; no
+ * refraction, no caustics.
+ *
+ * Parameters: {"color": [0.03, 0.025, 0.015], "ior": 1.47, "shininess": 600}
+ *   color      body colour, linear RGB 0..1;
+ *   ior        refractive index (sets the Fresnel reflectance);
+ *   shininess  Blinn-Phong exponent of the highlight (higher = sharper).
+ */
+#include <stdlib.h>
+
+#include "../common/params.h"
+#include "modesplit/plugin.h"
+
+static const char vertex_source[] =
+    "#version 120\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "void main()\n"
+    "{\n"
+    "    v_pos = gl_Vertex.xyz;\n"
+    "    v_normal = gl_Normal;\n"
+    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
+    "}\n";
+
+static const char fragment_source[] =
+    "#version 120\n"
+    "uniform vec3 ms_eye;\n"
+    "uniform vec3 ms_light_dir;\n"
+    "uniform vec3 ms_light_color;\n"
+    "uniform samplerCube ms_env;\n"
+    "uniform vec3 oil_color;\n"
+    "uniform float oil_ior;\n"
+    "uniform float oil_shininess;\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "void main()\n"
+    "{\n"
+    "    vec3 n = normalize(v_normal);\n"
+    "    vec3 v = normalize(v_pos - ms_eye);\n"
+    "    if (dot(n, v) > 0.0)\n"
+    "        n = -n;\n"
+    "    float cosi = clamp(-dot(v, n), 0.0, 1.0);\n"
+    "    float r0 = (1.0 - oil_ior) / (1.0 + oil_ior);\n"
+    "    r0 *= r0;\n"
+    "    float fresnel = r0 + (1.0 - r0) * pow(1.0 - cosi, 5.0);\n"
+    "    vec3 body = oil_color * (0.2 + 0.8 * max(dot(n, ms_light_dir), 0.0)) * ms_light_color;\n"
+    "    vec3 env = textureCube(ms_env, reflect(v, n)).rgb;\n"
+    "    vec3 h = normalize(ms_light_dir - v);\n"
+    "    float norm = (oil_shininess + 8.0) / 25.0;\n"
+    "    vec3 spec = ms_light_color * norm * pow(max(dot(n, h), 0.0), oil_shininess);\n"
+    "    gl_FragColor = vec4(mix(body, env, fresnel) + spec * (0.3 + fresnel), 1.0);\n"
+    "}\n";
+
+typedef struct oil {
+    float color[3];
+    float ior, shininess;
+} oil;
+
+static int oil_create(const char *json, void **out, char *err, size_t err_size)
+{
+    static const char *const keys[] = {"color", "ior", "shininess", NULL};
+    static const float dcolor[3] = {0.03f, 0.025f, 0.015f};
+    oil o = {{0.03f, 0.025f, 0.015f}, 1.47f, 600.0f};
+    params pm;
+    if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
+        params_vec(&pm, "color", 3, o.color, dcolor, 0.0, 1.0, "");
+        o.ior = params_number(&pm, "ior", o.ior, 1.0, 3.0, "");
+        o.shininess = params_number(&pm, "shininess", o.shininess, 1.0, 1e5, "");
+    }
+    int rc = params_close(&pm);
+    if (rc != MS_PLUGIN_OK)
+        return rc;
+    oil *p = malloc(sizeof *p);
+    if (!p) {
+        snprintf(err, err_size, "out of memory");
+        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
+    }
+    *p = o;
+    *out = p;
+    return MS_PLUGIN_OK;
+}
+
+static void oil_destroy(void *self)
+{
+    free(self);
+}
+
+static void oil_set_uniforms(const void *self, const ms_shader_uniforms *u)
+{
+    const oil *o = self;
+    u->set_vec3(u->ctx, "oil_color", o->color[0], o->color[1], o->color[2]);
+    u->set_float(u->ctx, "oil_ior", o->ior);
+    u->set_float(u->ctx, "oil_shininess", o->shininess);
+}
+
+static const ms_shader_vtable oil_vtable = {
+    .size = sizeof(ms_shader_vtable),
+    .passes = MS_SHADER_NEEDS_REFLECTION,
+    .vertex_source = vertex_source,
+    .fragment_source = fragment_source,
+    .create = oil_create,
+    .destroy = oil_destroy,
+    .set_uniforms = oil_set_uniforms,
+};
+
+static const ms_plugin_info oil_info = {
+    .abi = MS_PLUGIN_ABI,
+    .size = sizeof(ms_plugin_info),
+    .name = "oil",
+    .version = "1.0",
+    .kind = MS_PLUGIN_SHADER,
+    .description = "dark, opaque, glossy oil: Fresnel reflection, sharp highlight",
+    .vtable = &oil_vtable,
+};
+
+const ms_plugin_info *ms_plugin_entry(void)
+{
+    return &oil_info;
+}

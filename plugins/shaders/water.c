@@ -1,0 +1,134 @@
+/* Shader plugin "water" (the paper's section 3.6): reflection and
+ * refraction looked up in the environment cubemap and mixed by the Fresnel
+ * equations (Schlick's approximation), the refracted ray lit where it meets
+ * the pool floor by the caustics light map, light absorbed along its path
+ * under water, and a sun highlight.
+ *
+ * Parameters: {"color": [0.02, 0.28, 0.33], "ior": 1.333, "caustics": 1.2,
+ *              "clarity": 1.5}
+ *   color     what deep water looks like (linear RGB, 0..1);
+ *   ior       refractive index (1.333 for water);
+ *   caustics  strength of the caustics light map (0 = none);
+ *   clarity   path length (m) over which light under water falls to 1/e.
+ */
+#include <stdlib.h>
+
+#include "../common/params.h"
+#include "modesplit/plugin.h"
+
+static const char vertex_source[] =
+    "#version 120\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "void main()\n"
+    "{\n"
+    "    v_pos = gl_Vertex.xyz;\n"
+    "    v_normal = gl_Normal;\n"
+    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
+    "}\n";
+
+static const char fragment_source[] =
+    "#version 120\n"
+    "uniform vec3 ms_eye;\n"
+    "uniform vec3 ms_light_dir;\n"
+    "uniform vec3 ms_light_color;\n"
+    "uniform samplerCube ms_env;\n"
+    "uniform sampler2D ms_caustics;\n"
+    "uniform vec4 ms_pool;\n"
+    "uniform float ms_floor_z;\n"
+    "uniform vec3 water_color;\n"
+    "uniform float water_ior;\n"
+    "uniform float water_caustics;\n"
+    "uniform float water_clarity;\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "void main()\n"
+    "{\n"
+    "    vec3 n = normalize(v_normal);\n"
+    "    vec3 v = normalize(v_pos - ms_eye);\n"
+    "    if (dot(n, v) > 0.0)\n"
+    "        n = -n;\n"
+    "    float cosi = clamp(-dot(v, n), 0.0, 1.0);\n"
+    "    float r0 = (1.0 - water_ior) / (1.0 + water_ior);\n"
+    "    r0 *= r0;\n"
+    "    float fresnel = r0 + (1.0 - r0) * pow(1.0 - cosi, 5.0);\n"
+    "    vec3 reflected = textureCube(ms_env, reflect(v, n)).rgb;\n"
+    "    vec3 t = refract(v, n, 1.0 / water_ior);\n"
+    "    float len = max(v_pos.z - ms_floor_z, 0.0) / max(-t.z, 0.05);\n"
+    "    vec2 uv = (v_pos.xy + len * t.xy - ms_pool.xy) / ms_pool.zw;\n"
+    "    float light = 0.55 + water_caustics * texture2D(ms_caustics, uv).r;\n"
+    "    vec3 below = textureCube(ms_env, t).rgb * light;\n"
+    "    below = mix(water_color, below, exp(-len / water_clarity));\n"
+    "    vec3 h = normalize(ms_light_dir - v);\n"
+    "    vec3 spec = ms_light_color * pow(max(dot(n, h), 0.0), 400.0) * fresnel * 4.0;\n"
+    "    gl_FragColor = vec4(mix(below, reflected, fresnel) + spec, 1.0);\n"
+    "}\n";
+
+typedef struct water {
+    float color[3];
+    float ior, caustics, clarity;
+} water;
+
+static int water_create(const char *json, void **out, char *err, size_t err_size)
+{
+    static const char *const keys[] = {"color", "ior", "caustics", "clarity", NULL};
+    static const float dcolor[3] = {0.02f, 0.28f, 0.33f};
+    water w = {{0.02f, 0.28f, 0.33f}, 1.333f, 1.2f, 1.5f};
+    params pm;
+    if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
+        params_vec(&pm, "color", 3, w.color, dcolor, 0.0, 1.0, "");
+        w.ior = params_number(&pm, "ior", w.ior, 1.0, 3.0, "");
+        w.caustics = params_number(&pm, "caustics", w.caustics, 0.0, 10.0, "");
+        w.clarity = params_number(&pm, "clarity", w.clarity, 1e-3, 1e3, "m");
+    }
+    int rc = params_close(&pm);
+    if (rc != MS_PLUGIN_OK)
+        return rc;
+    water *p = malloc(sizeof *p);
+    if (!p) {
+        snprintf(err, err_size, "out of memory");
+        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
+    }
+    *p = w;
+    *out = p;
+    return MS_PLUGIN_OK;
+}
+
+static void water_destroy(void *self)
+{
+    free(self);
+}
+
+static void water_set_uniforms(const void *self, const ms_shader_uniforms *u)
+{
+    const water *w = self;
+    u->set_vec3(u->ctx, "water_color", w->color[0], w->color[1], w->color[2]);
+    u->set_float(u->ctx, "water_ior", w->ior);
+    u->set_float(u->ctx, "water_caustics", w->caustics);
+    u->set_float(u->ctx, "water_clarity", w->clarity);
+}
+
+static const ms_shader_vtable water_vtable = {
+    .size = sizeof(ms_shader_vtable),
+    .passes = MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION | MS_SHADER_NEEDS_CAUSTICS,
+    .vertex_source = vertex_source,
+    .fragment_source = fragment_source,
+    .create = water_create,
+    .destroy = water_destroy,
+    .set_uniforms = water_set_uniforms,
+};
+
+static const ms_plugin_info water_info = {
+    .abi = MS_PLUGIN_ABI,
+    .size = sizeof(ms_plugin_info),
+    .name = "water",
+    .version = "1.0",
+    .kind = MS_PLUGIN_SHADER,
+    .description = "clear water: Fresnel mix of cubemap reflection and refraction, caustics",
+    .vtable = &water_vtable,
+};
+
+const ms_plugin_info *ms_plugin_entry(void)
+{
+    return &water_info;
+}

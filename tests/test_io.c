@@ -1,0 +1,1002 @@
+/* io: the HDF5 run file (writer and reader, bit-for-bit round trips on a
+ * non-square grid), crash safety (SIGKILL mid-run, a full disk, the file
+ * size limit), the XDMF sidecar, refusals, and the shaded-relief PNG. */
+#define _GNU_SOURCE /* unshare, CLONE_NEWNS for the full-disk case */
+#include <check.h>
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <png.h>
+#include <sched.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mount.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "io/io_internal.h"
+#include "modesplit/modesplit.h"
+#include "support.h"
+
+/* ---- helpers ---------------------------------------------------------- */
+
+static char tmp_dir[256];
+
+static void make_tmp_dir(void)
+{
+    const char *base = getenv("TMPDIR");
+    snprintf(tmp_dir, sizeof tmp_dir, "%s/ms_io_XXXXXX", base && base[0] ? base : "/tmp");
+    ck_assert_ptr_nonnull(mkdtemp(tmp_dir));
+}
+
+static void remove_tmp_dir(void)
+{
+    DIR *d = opendir(tmp_dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+            continue;
+        char p[512];
+        snprintf(p, sizeof p, "%s/%s", tmp_dir, e->d_name);
+        remove(p);
+    }
+    closedir(d);
+    rmdir(tmp_dir);
+}
+
+static char *tmp_path(const char *name)
+{
+    static char p[4][512];
+    static int k;
+    k = (k + 1) % 4;
+    snprintf(p[k], sizeof p[k], "%s/%s", tmp_dir, name);
+    return p[k];
+}
+
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *s = malloc((size_t)n + 1);
+    size_t got = fread(s, 1, (size_t)n, f);
+    s[got] = '\0';
+    fclose(f);
+    return s;
+}
+
+static int count_of(const char *hay, const char *needle)
+{
+    int n = 0;
+    for (const char *p = strstr(hay, needle); p; p = strstr(p + 1, needle))
+        ++n;
+    return n;
+}
+
+/* h5dump reads the whole file without an error (skipped when absent). */
+static int h5dump_reads(const char *path)
+{
+    if (system("command -v h5dump > /dev/null 2>&1") != 0)
+        return 1;
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "h5dump '%s' > /dev/null 2>&1", path);
+    return system(cmd) == 0;
+}
+
+/* A non-square layout: combined and surface on a 37 x 23 wave grid,
+ * volume on a 9 x 6 SPH grid, particles. */
+static ms_writer_layout test_layout(unsigned fields)
+{
+    ms_writer_layout l = {0};
+    l.fields = fields;
+    for (int i = 0; i < 2; ++i)
+        l.grid[i] = (ms_grid){.nx = 37, .ny = 23, .dx = 0.01f, .dy = 0.02f,
+                              .origin = {-0.185f, 0.5f}};
+    l.grid[MS_IO_VOLUME] = (ms_grid){.nx = 9, .ny = 6, .dx = 0.04f, .dy = 0.08f,
+                                     .origin = {-0.18f, 0.48f}};
+    l.scene_text = "{\"name\": \"test scene\", \"frame_dt\": 0.02}";
+    l.scene_name = "test scene";
+    l.frame_dt = 0.02;
+    l.output_every = 2;
+    return l;
+}
+
+/* The data of frame k, a pure function of k (so a reader can check it):
+ * smooth waves in even cells, arbitrary bit patterns (NaN payloads,
+ * infinities, denormals) in odd ones; k % 4 particles... */
+typedef struct frame_buf {
+    float *field[MS_IO_NFIELDS];
+    float *p[6];
+    int n;
+    double t;
+} frame_buf;
+
+static uint32_t mix(uint32_t x)
+{
+    x ^= x >> 16;
+    x *= 0x7feb352dU;
+    x ^= x >> 15;
+    x *= 0x846ca68bU;
+    x ^= x >> 16;
+    return x;
+}
+
+static void frame_fill(frame_buf *b, const ms_writer_layout *l, long k)
+{
+    for (int s = 0; s < MS_IO_NFIELDS; ++s) {
+        const ms_grid *g = &l->grid[s];
+        size_t n = (size_t)g->nx * g->ny;
+        b->field[s] = realloc(b->field[s], n * sizeof(float));
+        for (size_t i = 0; i < n; ++i) {
+            uint32_t bits = mix((uint32_t)(k * 7919 + s * 104729 + (long)i));
+            if (i % 2 == 0) {
+                b->field[s][i] = 0.01f * sinf(0.3f * (float)(i % (size_t)g->nx) + 0.1f * (float)k) +
+                                 0.3f;
+            } else {
+                memcpy(&b->field[s][i], &bits, 4);
+            }
+        }
+    }
+    b->n = (int)((k * 37) % 50); /* 0 .. 49, with a 0 at k = 0 */
+    for (int c = 0; c < 6; ++c) {
+        b->p[c] = realloc(b->p[c], (size_t)(b->n + 1) * sizeof(float));
+        for (int i = 0; i < b->n; ++i)
+            b->p[c][i] = (float)(c + 1) * 0.125f + (float)i * 1e-3f + (float)k;
+    }
+    b->t = 0.04 * (double)(k + 1) + 1e-17;
+}
+
+static void frame_free(frame_buf *b)
+{
+    for (int s = 0; s < MS_IO_NFIELDS; ++s)
+        free(b->field[s]);
+    for (int c = 0; c < 6; ++c)
+        free(b->p[c]);
+    memset(b, 0, sizeof *b);
+}
+
+static ms_writer_data frame_data(const frame_buf *b)
+{
+    ms_writer_data d = {0};
+    d.time = b->t;
+    for (int s = 0; s < MS_IO_NFIELDS; ++s)
+        d.field[s] = b->field[s];
+    d.particles = b->n;
+    for (int c = 0; c < 3; ++c) {
+        d.pos[c] = b->p[c];
+        d.vel[c] = b->p[c + 3];
+    }
+    return d;
+}
+
+static void write_frames(ms_writer *w, const ms_writer_layout *l, long from, long to)
+{
+    frame_buf b = {0};
+    for (long k = from; k < to; ++k) {
+        frame_fill(&b, l, k);
+        ms_writer_data d = frame_data(&b);
+        ck_assert_msg(ms_writer_write(w, &d) == MS_OK, "%s", ms_last_error());
+    }
+    frame_free(&b);
+}
+
+/* Every frame of the file equals frame_fill's, bit for bit. */
+static void check_frames(ms_reader *r, const ms_writer_layout *l, long frames)
+{
+    ck_assert_int_eq(ms_reader_frames(r), frames);
+    frame_buf b = {0};
+    float *got = malloc(37 * 23 * sizeof(float));
+    float *pg[6];
+    for (int c = 0; c < 6; ++c)
+        pg[c] = malloc(64 * sizeof(float));
+    for (long k = 0; k < frames; ++k) {
+        frame_fill(&b, l, k);
+        double t;
+        ck_assert_int_eq(ms_reader_time(r, k, &t), MS_OK);
+        ck_assert_mem_eq(&t, &b.t, sizeof t);
+        for (int s = 0; s < MS_IO_NFIELDS; ++s) {
+            if (!(l->fields & (1u << s)))
+                continue;
+            size_t n = (size_t)l->grid[s].nx * l->grid[s].ny;
+            ck_assert_msg(ms_reader_read_field(r, 1u << s, k, got, 37 * 23) == MS_OK, "%s",
+                          ms_last_error());
+            ck_assert_msg(memcmp(got, b.field[s], n * sizeof(float)) == 0,
+                          "field %s frame %ld differs", ms_io_field_names[s], k);
+        }
+        if (l->fields & MS_FIELD_PARTICLES) {
+            int n = -1;
+            ck_assert_int_eq(ms_reader_particle_count(r, k, &n), MS_OK);
+            ck_assert_int_eq(n, b.n);
+            ck_assert_int_eq(ms_reader_read_particles(r, k, 64, pg, pg + 3), MS_OK);
+            for (int c = 0; c < 6; ++c)
+                ck_assert_mem_eq(pg[c], b.p[c], (size_t)n * sizeof(float));
+        }
+    }
+    for (int c = 0; c < 6; ++c)
+        free(pg[c]);
+    free(got);
+    frame_free(&b);
+}
+
+/* ---- round trip --------------------------------------------------------- */
+
+START_TEST(round_trip_is_bit_for_bit_on_a_non_square_grid)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    ms_writer *w;
+    ck_assert_msg(ms_writer_open_layout(tmp_path("run.h5"), &l, &w) == MS_OK, "%s",
+                  ms_last_error());
+    write_frames(w, &l, 0, 12);
+    ck_assert_int_eq(ms_writer_frames(w), 12);
+    ck_assert_str_eq(ms_writer_xdmf_path(w), tmp_path("run.xmf"));
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+
+    ms_reader *r;
+    ck_assert_msg(ms_reader_open(tmp_path("run.h5"), &r) == MS_OK, "%s", ms_last_error());
+    ck_assert_uint_eq(ms_reader_fields(r), MS_IO_ALL_FIELDS);
+    ck_assert_int_eq(ms_reader_format_version(r), MS_FILE_FORMAT_VERSION);
+    ck_assert_str_eq(ms_reader_library_version(r), ms_version());
+    ck_assert_str_eq(ms_reader_scene(r), l.scene_text);
+    ck_assert_str_eq(ms_reader_scene_name(r), "test scene");
+    ck_assert_double_eq(ms_reader_frame_dt(r), 0.02);
+    ck_assert_int_eq(ms_reader_output_every(r), 2);
+    for (int s = 0; s < MS_IO_NFIELDS; ++s) {
+        ms_grid g;
+        ck_assert_int_eq(ms_reader_field_grid(r, 1u << s, &g), MS_OK);
+        ck_assert_int_eq(g.nx, l.grid[s].nx);
+        ck_assert_int_eq(g.ny, l.grid[s].ny);
+        ck_assert_float_eq(g.dx, l.grid[s].dx);
+        ck_assert_float_eq(g.dy, l.grid[s].dy);
+        ck_assert_float_eq(g.origin[0], l.grid[s].origin[0]);
+        ck_assert_float_eq(g.origin[1], l.grid[s].origin[1]);
+        uint64_t stored = 0, raw = 0;
+        ck_assert_int_eq(ms_reader_field_bytes(r, 1u << s, &stored, &raw), MS_OK);
+        ck_assert_uint_eq(raw, 12u * (uint64_t)g.nx * g.ny * 4u);
+        ck_assert_uint_gt(stored, 0);
+    }
+    check_frames(r, &l, 12);
+    ms_reader_close(r);
+    ck_assert(h5dump_reads(tmp_path("run.h5")));
+    remove_tmp_dir();
+}
+END_TEST
+
+START_TEST(only_the_fields_asked_for_are_written)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_FIELD_VOLUME);
+    ms_writer *w;
+    ck_assert_int_eq(ms_writer_open_layout(tmp_path("v.h5"), &l, &w), MS_OK);
+    write_frames(w, &l, 0, 3);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(tmp_path("v.h5"), &r), MS_OK);
+    ck_assert_uint_eq(ms_reader_fields(r), MS_FIELD_VOLUME);
+    check_frames(r, &l, 3);
+    int n = -1;
+    ck_assert_int_eq(ms_reader_particle_count(r, 0, &n), MS_OK);
+    ck_assert_int_eq(n, 0);
+    float buf[64];
+    MS_ASSERT_REFUSED(ms_reader_read_field(r, MS_FIELD_COMBINED, 0, buf, 64),
+                      MS_ERR_INVALID_ARGUMENT, "no field combined");
+    ms_reader_close(r);
+    char *x = slurp(tmp_path("v.xmf"));
+    ck_assert_ptr_nonnull(x);
+    ck_assert_int_eq(count_of(x, "/fields/combined"), 0);
+    ck_assert_int_eq(count_of(x, "Polyvertex"), 0);
+    ck_assert_int_eq(count_of(x, "/fields/volume"), 3);
+    free(x);
+    remove_tmp_dir();
+}
+END_TEST
+
+START_TEST(a_scene_text_over_64_kib_round_trips)
+{
+    make_tmp_dir();
+    size_t n = 200000;
+    char *scene = malloc(n + 1);
+    for (size_t i = 0; i < n; ++i)
+        scene[i] = (char)('a' + i % 26);
+    scene[n] = '\0';
+    ms_writer_layout l = test_layout(MS_FIELD_COMBINED);
+    l.scene_text = scene;
+    ms_writer *w;
+    ck_assert_msg(ms_writer_open_layout(tmp_path("big.h5"), &l, &w) == MS_OK, "%s",
+                  ms_last_error());
+    write_frames(w, &l, 0, 1);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(tmp_path("big.h5"), &r), MS_OK);
+    ck_assert_str_eq(ms_reader_scene(r), scene);
+    ms_reader_close(r);
+    ck_assert(h5dump_reads(tmp_path("big.h5")));
+    free(scene);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* ---- XDMF --------------------------------------------------------------- */
+
+START_TEST(xdmf_lists_every_frame_with_z_y_x_axis_order)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    ms_writer *w;
+    ck_assert_int_eq(ms_writer_open_layout(tmp_path("a b&c.h5"), &l, &w), MS_OK);
+    char *x0 = slurp(tmp_path("a b&c.xmf"));
+    ck_assert_ptr_nonnull(strstr(x0, "</Xdmf>\n"));
+    free(x0);
+    write_frames(w, &l, 0, 5);
+    /* valid after every frame, before close */
+    char *x = slurp(tmp_path("a b&c.xmf"));
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    char *y = slurp(tmp_path("a b&c.xmf"));
+    ck_assert_str_eq(x, y);
+    free(y);
+    size_t len = strlen(x);
+    ck_assert_str_eq(x + len - strlen("</Xdmf>\n"), "</Xdmf>\n");
+    ck_assert_int_eq(count_of(x, "<Time Value="), 5);
+    /* the file name is escaped; 37 x 23 points, dimensions slowest first */
+    ck_assert_ptr_nonnull(strstr(x, "a b&amp;c.h5:/fields/combined"));
+    ck_assert_int_eq(count_of(x, "TopologyType=\"3DCoRectMesh\" Dimensions=\"1 23 37\""), 5);
+    ck_assert_int_eq(count_of(x, "ItemType=\"HyperSlab\" Dimensions=\"1 23 37\""), 2 * 5);
+    ck_assert_int_eq(count_of(x, "TopologyType=\"3DCoRectMesh\" Dimensions=\"1 6 9\""), 5);
+    ck_assert_int_eq(count_of(x, "ItemType=\"HyperSlab\" Dimensions=\"1 6 9\""), 5);
+    /* combined and surface share one grid, volume has its own */
+    ck_assert_int_eq(count_of(x, "TopologyType=\"3DCoRectMesh\""), 2 * 5);
+    /* origin (z y x) at the first cell centre, spacing (z dy dx) */
+    ck_assert_ptr_nonnull(strstr(x, "Format=\"XML\">1 0.0199999996 0.00999999978<"));
+    ck_assert_ptr_nonnull(strstr(x, ">3 0 0 1 1 1 1 23 37<"));
+    ck_assert_ptr_nonnull(strstr(x, "Dimensions=\"4 23 37\""));
+    /* particles of frame 1 (37 of them), none in frame 0 */
+    ck_assert_ptr_nonnull(strstr(x, "NumberOfElements=\"37\""));
+    ck_assert_ptr_nonnull(strstr(x, "a b&amp;c.h5:/Step#1/vz"));
+    ck_assert_ptr_null(strstr(x, "/Step#0/"));
+    ck_assert_int_eq(count_of(x, "<Grid"), count_of(x, "</Grid>"));
+    free(x);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* The superblock format eoa_guard.c patches is the one HDF5 writes, and
+ * its checksum is HDF5's: a closed run file's superblock verifies. */
+START_TEST(superblock_checksum_matches_hdf5)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_FIELD_COMBINED);
+    ms_writer *w;
+    ck_assert_int_eq(ms_writer_open_layout(tmp_path("sb.h5"), &l, &w), MS_OK);
+    write_frames(w, &l, 0, 3);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    unsigned char sb[48];
+    FILE *f = fopen(tmp_path("sb.h5"), "rb");
+    ck_assert_int_eq(fread(sb, 1, 48, f), 48);
+    fclose(f);
+    ck_assert(ms_h5_superblock_ok(sb));
+    sb[30] ^= 1;
+    ck_assert(!ms_h5_superblock_ok(sb));
+    /* lookup3's published test value: hashlittle("Four score and seven years ago", 30, 0) */
+    ck_assert_uint_eq(ms_lookup3("Four score and seven years ago", 30, 0), 0x17770551u);
+    remove_tmp_dir();
+}
+END_TEST
+
+START_TEST(xdmf_path_replaces_h5_or_appends)
+{
+    char *p = ms_xdmf_path_for("dir/run.h5");
+    ck_assert_str_eq(p, "dir/run.xmf");
+    free(p);
+    p = ms_xdmf_path_for("run.hdf5");
+    ck_assert_str_eq(p, "run.xmf");
+    free(p);
+    p = ms_xdmf_path_for("out.dat");
+    ck_assert_str_eq(p, "out.dat.xmf");
+    free(p);
+}
+END_TEST
+
+/* ---- crash safety ------------------------------------------------------- */
+
+/* A child writes frames until killed, reporting each committed frame on a
+ * pipe; the parent kills it with SIGKILL after `after` frames plus a
+ * jitter, then reads the file. */
+static void kill_mid_run(long after, int jitter_us)
+{
+    ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    int fds[2];
+    ck_assert_int_eq(pipe(fds), 0);
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        close(fds[0]);
+        ms_writer *w;
+        if (ms_writer_open_layout(tmp_path("killed.h5"), &l, &w) != MS_OK)
+            _exit(3);
+        frame_buf b = {0};
+        for (long k = 0;; ++k) {
+            frame_fill(&b, &l, k);
+            ms_writer_data d = frame_data(&b);
+            if (ms_writer_write(w, &d) != MS_OK)
+                _exit(4);
+            long done = k + 1;
+            if (write(fds[1], &done, sizeof done) != sizeof done)
+                _exit(5);
+        }
+    }
+    close(fds[1]);
+    long done = 0, v;
+    while (done < after && read(fds[0], &v, sizeof v) == sizeof v)
+        done = v;
+    ck_assert_int_eq(done, after);
+    struct timespec ts = {0, (long)jitter_us * 1000};
+    nanosleep(&ts, NULL);
+    kill(pid, SIGKILL);
+    /* every frame reported before the kill is committed */
+    while (read(fds[0], &v, sizeof v) == sizeof v)
+        done = v;
+    close(fds[0]);
+    int status;
+    waitpid(pid, &status, 0);
+    ck_assert(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+
+    ck_assert_msg(h5dump_reads(tmp_path("killed.h5")), "h5dump fails on the killed file");
+    ms_reader *r;
+    ck_assert_msg(ms_reader_open(tmp_path("killed.h5"), &r) == MS_OK, "%s", ms_last_error());
+    long frames = ms_reader_frames(r);
+    /* all reported frames, and at most the one in hand when killed */
+    ck_assert_int_ge(frames, done);
+    ck_assert_int_le(frames, done + 1);
+    check_frames(r, &l, frames);
+    ms_reader_close(r);
+    char *x = slurp(tmp_path("killed.xmf"));
+    ck_assert_ptr_nonnull(x);
+    ck_assert_ptr_nonnull(strstr(x, "</Xdmf>\n"));
+    ck_assert_int_ge(count_of(x, "<Time Value="), done);
+    free(x);
+}
+
+START_TEST(sigkill_mid_run_leaves_every_flushed_frame)
+{
+    make_tmp_dir();
+    /* kill at a spread of moments inside the frame being written */
+    const int jitter[] = {0, 37, 150, 400, 1100, 2900};
+    for (int i = 0; i < 6; ++i)
+        kill_mid_run(3 + 4 * i, jitter[i]);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* Write frames of incompressible data until the writer refuses one. */
+static long fill_until_refused(ms_writer *w, const ms_writer_layout *l, ms_status *st)
+{
+    frame_buf b = {0};
+    long k = 0;
+    for (;; ++k) {
+        frame_fill(&b, l, k);
+        for (int s = 0; s < MS_IO_NFIELDS; ++s) /* random bits: deflate cannot shrink them */
+            for (int i = 0; i < l->grid[s].nx * l->grid[s].ny; ++i) {
+                uint32_t bits = mix((uint32_t)(k * 1000003 + s * 7777 + i)) | 0x40000000u;
+                memcpy(&b.field[s][i], &bits, 4);
+            }
+        ms_writer_data d = frame_data(&b);
+        *st = ms_writer_write(w, &d);
+        if (*st != MS_OK || k > 100000)
+            break;
+    }
+    frame_free(&b);
+    return k;
+}
+
+/* In a forked child with RLIMIT_FSIZE: the writer stops before a frame that
+ * cannot fit (or, with the check off, the write fails), and the file keeps
+ * the frames committed before. */
+static void file_size_limit_case(int with_check)
+{
+    ms_writer_layout l = test_layout(MS_FIELD_COMBINED | MS_FIELD_SURFACE);
+    l.grid[0].nx = l.grid[1].nx = 64;
+    l.grid[0].ny = l.grid[1].ny = 64;
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        signal(SIGXFSZ, SIG_IGN);
+        struct rlimit rl = {600000, 600000};
+        setrlimit(RLIMIT_FSIZE, &rl);
+        ms_writer *w;
+        if (ms_writer_open_layout(tmp_path("limit.h5"), &l, &w) != MS_OK)
+            _exit(200);
+        if (!with_check)
+            ms_writer_skip_space_check(w);
+        ms_status st;
+        long k = fill_until_refused(w, &l, &st);
+        if (st != MS_ERR_IO || k < 2)
+            _exit(201);
+        if (with_check && !strstr(ms_last_error(), "file size limit"))
+            _exit(202);
+        if (!with_check && !strstr(ms_last_error(), "File too large"))
+            _exit(203);
+        if (ms_writer_frames(w) != k)
+            _exit(204);
+        ms_status again;
+        frame_buf b = {0};
+        frame_fill(&b, &l, k);
+        ms_writer_data d = frame_data(&b);
+        again = ms_writer_write(w, &d);
+        frame_free(&b);
+        if (!with_check && again != MS_ERR_STATE)
+            _exit(205);
+        ms_writer_close(w);
+        _exit(k > 199 ? 199 : (int)k);
+    }
+    int status;
+    waitpid(pid, &status, 0);
+    ck_assert(WIFEXITED(status));
+    int k = WEXITSTATUS(status);
+    ck_assert_msg(k >= 2 && k < 199, "child failed with %d", k);
+    ck_assert(h5dump_reads(tmp_path("limit.h5")));
+    ms_reader *r;
+    ck_assert_msg(ms_reader_open(tmp_path("limit.h5"), &r) == MS_OK, "%s", ms_last_error());
+    ck_assert_int_eq(ms_reader_frames(r), k);
+    ms_reader_close(r);
+}
+
+START_TEST(file_size_limit_stops_before_a_frame_that_cannot_fit)
+{
+    make_tmp_dir();
+    file_size_limit_case(1);
+    file_size_limit_case(0);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* A real full disk: a 1 MiB tmpfs in a private mount namespace (root
+ * only; the mount vanishes with the process). Both the space check and,
+ * with it off, HDF5 meeting ENOSPC leave a readable file. */
+START_TEST(full_disk_is_an_error_and_leaves_a_readable_file)
+{
+    if (unshare(CLONE_NEWNS) != 0 || mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0) {
+        fprintf(stderr, "test_io: full_disk case skipped (needs CAP_SYS_ADMIN: %s)\n",
+                strerror(errno));
+        return;
+    }
+    make_tmp_dir();
+    if (mount("tmpfs", tmp_dir, "tmpfs", 0, "size=1m") != 0) {
+        fprintf(stderr, "test_io: full_disk case skipped (cannot mount a tmpfs: %s)\n",
+                strerror(errno));
+        remove_tmp_dir();
+        return;
+    }
+    for (int with_check = 1; with_check >= 0; --with_check) {
+        ms_writer_layout l = test_layout(MS_FIELD_COMBINED | MS_FIELD_SURFACE);
+        l.grid[0].nx = l.grid[1].nx = 64;
+        l.grid[0].ny = l.grid[1].ny = 64;
+        ms_writer *w;
+        ck_assert_int_eq(ms_writer_open_layout(tmp_path("full.h5"), &l, &w), MS_OK);
+        if (!with_check)
+            ms_writer_skip_space_check(w);
+        ms_status st;
+        long k = fill_until_refused(w, &l, &st);
+        ck_assert_int_eq(st, MS_ERR_IO);
+        ck_assert_msg(strstr(ms_last_error(), with_check ? "are free" : "No space left"), "%s",
+                      ms_last_error());
+        ck_assert_int_gt(k, 2);
+        ms_writer_close(w);
+        ck_assert(h5dump_reads(tmp_path("full.h5")));
+        ms_reader *r;
+        ck_assert_msg(ms_reader_open(tmp_path("full.h5"), &r) == MS_OK, "%s", ms_last_error());
+        ck_assert_int_eq(ms_reader_frames(r), k);
+        ms_reader_close(r);
+        remove(tmp_path("full.h5"));
+        remove(tmp_path("full.xmf"));
+    }
+    umount(tmp_dir);
+    remove_tmp_dir();
+}
+END_TEST
+
+START_TEST(unwritable_paths_are_refused_with_the_reason)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_FIELD_COMBINED);
+    ms_writer *w = (ms_writer *)&l;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("no/such/dir/run.h5"), &l, &w), MS_ERR_IO,
+                      "No such file or directory");
+    ck_assert_ptr_null(w);
+    ck_assert_ptr_nonnull(strstr(ms_last_error(), "cannot create"));
+    FILE *f = fopen(tmp_path("plain"), "w");
+    fclose(f);
+    MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("plain/run.h5"), &l, &w), MS_ERR_IO,
+                      "Not a directory");
+    MS_ASSERT_REFUSED(ms_writer_open_layout("/dev/full", &l, &w), MS_ERR_IO,
+                      "No space left on device");
+    if (geteuid() != 0) { /* root writes anywhere */
+        ck_assert_int_eq(mkdir(tmp_path("ro"), 0500), 0);
+        MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("ro/run.h5"), &l, &w), MS_ERR_IO,
+                          "Permission denied");
+    }
+    remove_tmp_dir();
+}
+END_TEST
+
+START_TEST(hdf5_errors_are_never_printed)
+{
+    make_tmp_dir();
+    /* stderr to a file while the library meets HDF5 errors */
+    fflush(stderr);
+    int saved = dup(2);
+    int fd = open(tmp_path("stderr.txt"), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(fd, 2);
+    ms_writer_layout l = test_layout(MS_FIELD_COMBINED);
+    ms_writer *w;
+    ms_reader *r;
+    ck_assert_int_ne(ms_writer_open_layout(tmp_path("no/dir.h5"), &l, &w), MS_OK);
+    FILE *f = fopen(tmp_path("text.h5"), "w");
+    fputs("not hdf5\n", f);
+    fclose(f);
+    ck_assert_int_ne(ms_reader_open(tmp_path("text.h5"), &r), MS_OK);
+    ck_assert_int_ne(ms_writer_open_layout("/dev/full", &l, &w), MS_OK);
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    close(fd);
+    char *s = slurp(tmp_path("stderr.txt"));
+    ck_assert_str_eq(s, "");
+    free(s);
+    /* and HDF5's own printing is back to what it was */
+    H5E_auto2_t func = NULL;
+    void *data = NULL;
+    H5Eget_auto2(H5E_DEFAULT, &func, &data);
+    ck_assert(func != NULL);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* ---- refusals ----------------------------------------------------------- */
+
+START_TEST(writer_refuses_bad_layouts_and_frames)
+{
+    make_tmp_dir();
+    ms_writer *w;
+    const char *p = tmp_path("bad.h5");
+    ms_writer_layout l = test_layout(0);
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "no fields");
+    l = test_layout(1u << 7);
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "bits");
+    l = test_layout(MS_FIELD_COMBINED);
+    l.grid[0].nx = 0;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "grid 0 x 23");
+    l = test_layout(MS_FIELD_COMBINED);
+    l.grid[0].nx = l.grid[0].ny = 60000;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "cells");
+    l = test_layout(MS_FIELD_SURFACE);
+    l.grid[1].dy = 0;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "cell size");
+    l = test_layout(MS_FIELD_VOLUME);
+    l.grid[2].origin[1] = NAN;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "origin");
+    l = test_layout(MS_FIELD_COMBINED);
+    l.frame_dt = -1;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "frame_dt");
+    l = test_layout(MS_FIELD_COMBINED);
+    l.output_every = 0;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "output_every");
+    MS_ASSERT_REFUSED(ms_writer_open_layout("", &l, &w), MS_ERR_INVALID_ARGUMENT, "empty");
+    MS_ASSERT_REFUSED(ms_writer_open_layout(NULL, &l, &w), MS_ERR_INVALID_ARGUMENT, "path");
+
+    l = test_layout(MS_FIELD_COMBINED | MS_FIELD_PARTICLES);
+    ck_assert_int_eq(ms_writer_open_layout(p, &l, &w), MS_OK);
+    frame_buf b = {0};
+    frame_fill(&b, &l, 1);
+    ms_writer_data d = frame_data(&b);
+    d.field[0] = NULL;
+    MS_ASSERT_REFUSED(ms_writer_write(w, &d), MS_ERR_INVALID_ARGUMENT, "no data");
+    d = frame_data(&b);
+    d.time = NAN;
+    MS_ASSERT_REFUSED(ms_writer_write(w, &d), MS_ERR_INVALID_ARGUMENT, "time");
+    d = frame_data(&b);
+    d.particles = -1;
+    MS_ASSERT_REFUSED(ms_writer_write(w, &d), MS_ERR_INVALID_ARGUMENT, "particle count");
+    d = frame_data(&b);
+    d.vel[2] = NULL;
+    MS_ASSERT_REFUSED(ms_writer_write(w, &d), MS_ERR_INVALID_ARGUMENT, "NULL");
+    MS_ASSERT_REFUSED(ms_writer_write(w, NULL), MS_ERR_INVALID_ARGUMENT, "frame data");
+    /* refused frames left nothing behind */
+    ck_assert_int_eq(ms_writer_frames(w), 0);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    ck_assert_int_eq(ms_writer_close(NULL), MS_OK);
+    frame_free(&b);
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(p, &r), MS_OK);
+    ck_assert_int_eq(ms_reader_frames(r), 0);
+    ms_reader_close(r);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* Build a small HDF5 file by hand: a root with the given format attributes. */
+static void foreign_file(const char *path, const char *format, long version)
+{
+    hid_t f = H5Fcreate(path, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    if (format)
+        ck_assert_int_ge(ms_h5_attr_string(f, "format", format), 0);
+    if (version)
+        ck_assert_int_ge(ms_h5_attr_int64(f, "format_version", version), 0);
+    H5Fclose(f);
+}
+
+START_TEST(reader_refuses_what_is_not_a_run)
+{
+    make_tmp_dir();
+    ms_reader *r = (ms_reader *)tmp_dir;
+    MS_ASSERT_REFUSED(ms_reader_open(tmp_path("absent.h5"), &r), MS_ERR_IO, "No such file");
+    ck_assert_ptr_null(r);
+    MS_ASSERT_REFUSED(ms_reader_open(tmp_dir, &r), MS_ERR_IO, "not a regular file");
+    FILE *f = fopen(tmp_path("text.h5"), "w");
+    fputs("{\"name\": \"a scene, not a run\"}\n", f);
+    fclose(f);
+    MS_ASSERT_REFUSED(ms_reader_open(tmp_path("text.h5"), &r), MS_ERR_IO, "not an HDF5 file");
+    foreign_file(tmp_path("other.h5"), NULL, 0);
+    MS_ASSERT_REFUSED(ms_reader_open(tmp_path("other.h5"), &r), MS_ERR_PARSE,
+                      "not a modesplit run");
+    foreign_file(tmp_path("newer.h5"), "modesplit", 99);
+    MS_ASSERT_REFUSED(ms_reader_open(tmp_path("newer.h5"), &r), MS_ERR_UNSUPPORTED,
+                      "format_version 99");
+    foreign_file(tmp_path("bare.h5"), "modesplit", 1);
+    MS_ASSERT_REFUSED(ms_reader_open(tmp_path("bare.h5"), &r), MS_ERR_PARSE, "frames");
+    MS_ASSERT_REFUSED(ms_reader_open(NULL, &r), MS_ERR_INVALID_ARGUMENT, "path");
+
+    ms_writer_layout l = test_layout(MS_FIELD_COMBINED);
+    ms_writer *w;
+    ck_assert_int_eq(ms_writer_open_layout(tmp_path("ok.h5"), &l, &w), MS_OK);
+    write_frames(w, &l, 0, 2);
+    ms_writer_close(w);
+    ck_assert_int_eq(ms_reader_open(tmp_path("ok.h5"), &r), MS_OK);
+    float buf[37 * 23];
+    double t;
+    MS_ASSERT_REFUSED(ms_reader_read_field(r, MS_FIELD_COMBINED, 2, buf, 37 * 23),
+                      MS_ERR_INVALID_ARGUMENT, "frame 2 is outside [0, 2)");
+    MS_ASSERT_REFUSED(ms_reader_read_field(r, MS_FIELD_COMBINED, -1, buf, 37 * 23),
+                      MS_ERR_INVALID_ARGUMENT, "outside");
+    MS_ASSERT_REFUSED(ms_reader_read_field(r, MS_FIELD_COMBINED, 0, buf, 100),
+                      MS_ERR_INVALID_ARGUMENT, "851 floats");
+    MS_ASSERT_REFUSED(ms_reader_read_field(r, MS_FIELD_COMBINED | MS_FIELD_SURFACE, 0, buf, 851),
+                      MS_ERR_INVALID_ARGUMENT, "not one of");
+    MS_ASSERT_REFUSED(ms_reader_time(r, 5, &t), MS_ERR_INVALID_ARGUMENT, "frame 5");
+    ms_grid g;
+    MS_ASSERT_REFUSED(ms_reader_field_grid(r, MS_FIELD_VOLUME, &g), MS_ERR_INVALID_ARGUMENT,
+                      "no field volume");
+    ms_reader_close(r);
+    ms_reader_close(NULL);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* A file whose datasets lie about themselves is refused, not trusted. */
+START_TEST(reader_refuses_malformed_datasets)
+{
+    make_tmp_dir();
+    const char *p = tmp_path("lie.h5");
+    /* /time as integers, /fields/combined of rank 2, missing dx */
+    for (int variant = 0; variant < 3; ++variant) {
+        hid_t f = H5Fcreate(p, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+        ms_h5_attr_string(f, "format", "modesplit");
+        ms_h5_attr_int64(f, "format_version", 1);
+        ms_h5_attr_int64(f, "frames", 1);
+        hsize_t one = 1, two[2] = {4, 4};
+        hid_t sp = H5Screate_simple(1, &one, NULL);
+        hid_t d = H5Dcreate2(f, "time", variant == 0 ? H5T_STD_I32LE : H5T_IEEE_F64LE, sp,
+                             H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        H5Dclose(d);
+        H5Sclose(sp);
+        hid_t g = H5Gcreate2(f, "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        hsize_t three[3] = {1, 4, 4};
+        sp = variant == 1 ? H5Screate_simple(2, two, NULL) : H5Screate_simple(3, three, NULL);
+        d = H5Dcreate2(g, "combined", H5T_IEEE_F32LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        H5Dclose(d);
+        H5Sclose(sp);
+        H5Gclose(g);
+        H5Fclose(f);
+        ms_reader *r;
+        const char *word[3] = {"/time", "/fields/combined is not", "attribute dx"};
+        MS_ASSERT_REFUSED(ms_reader_open(p, &r), MS_ERR_PARSE, word[variant]);
+    }
+    remove_tmp_dir();
+}
+END_TEST
+
+/* ---- PNG preview -------------------------------------------------------- */
+
+static unsigned char *shade(const float *h, int nx, int ny, const ms_preview_desc *d)
+{
+    size_t n = (size_t)nx * d->scale * ny * d->scale * 3;
+    unsigned char *rgb = malloc(n);
+    ck_assert_msg(ms_field_shade(h, nx, ny, d, rgb, n) == MS_OK, "%s", ms_last_error());
+    return rgb;
+}
+
+START_TEST(preview_has_north_up_and_the_water_ramp)
+{
+    /* h = y: the top row (largest y) is the highest, pale; the bottom deep. */
+    enum { NX = 5, NY = 4 };
+    float h[NX * NY];
+    for (int y = 0; y < NY; ++y)
+        for (int x = 0; x < NX; ++x)
+            h[y * NX + x] = (float)y;
+    ms_preview_desc d = ms_preview_desc_default();
+    d.relief = 0; /* colour only */
+    unsigned char *rgb = shade(h, NX, NY, &d);
+    const unsigned char *top = rgb, *bottom = rgb + (NY - 1) * NX * 3;
+    ck_assert_int_eq(top[0], 242); /* foam 0.95 * 255 */
+    ck_assert_int_eq(top[2], 255);
+    ck_assert_int_eq(bottom[0], 5); /* navy 0.02 * 255 */
+    ck_assert_int_eq(bottom[2], 71); /* 0.28 * 255 */
+    /* every pixel of a row equal */
+    for (int x = 1; x < NX; ++x)
+        ck_assert_int_eq(memcmp(rgb + x * 3, rgb, 3), 0);
+    free(rgb);
+    /* a fixed range clamps: everything above height_max is foam */
+    d.height_min = -1;
+    d.height_max = 0.5f;
+    rgb = shade(h, NX, NY, &d);
+    ck_assert_int_eq(rgb[(NY - 2) * NX * 3], 242);
+    free(rgb);
+}
+END_TEST
+
+START_TEST(preview_hillshade_lights_slopes_facing_the_sun)
+{
+    /* A ridge along y: its west flank faces a sun in the west. */
+    enum { NX = 21, NY = 3 };
+    float h[NX * NY];
+    for (int y = 0; y < NY; ++y)
+        for (int x = 0; x < NX; ++x)
+            h[y * NX + x] = 0.05f * (10.0f - fabsf((float)x - 10.0f));
+    ms_preview_desc d = ms_preview_desc_default();
+    d.sun_azimuth = 270; /* west */
+    d.height_min = d.height_max = 0.3f;
+    d.height_min = 0.0f;
+    d.relief = 1;
+    unsigned char *rgb = shade(h, NX, NY, &d);
+    /* same height (same ramp colour) at x = 5 (west flank) and x = 15 */
+    const unsigned char *west = rgb + (NX + 5) * 3, *east = rgb + (NX + 15) * 3;
+    for (int c = 0; c < 3; ++c)
+        ck_assert_int_gt(west[c], east[c]);
+    /* a flat field is lit exactly as the ramp says */
+    float flat[NX * NY];
+    for (int i = 0; i < NX * NY; ++i)
+        flat[i] = 0.15f;
+    d.height_min = 0;
+    d.height_max = 0.3f;
+    unsigned char *f = shade(flat, NX, NY, &d);
+    d.relief = 0;
+    unsigned char *g = shade(flat, NX, NY, &d);
+    ck_assert_int_eq(memcmp(f, g, NX * NY * 3), 0);
+    free(f);
+    free(g);
+    free(rgb);
+}
+END_TEST
+
+START_TEST(preview_png_holds_the_shaded_pixels)
+{
+    make_tmp_dir();
+    enum { NX = 30, NY = 17 };
+    float h[NX * NY];
+    for (int i = 0; i < NX * NY; ++i)
+        h[i] = 0.01f * sinf(0.7f * (float)(i % NX)) * cosf(0.4f * (float)(i / NX));
+    h[3] = NAN;
+    ms_preview_desc d = ms_preview_desc_default();
+    d.scale = 2;
+    ck_assert_msg(ms_field_write_png(h, NX, NY, tmp_path("f.png"), &d) == MS_OK, "%s",
+                  ms_last_error());
+    unsigned char *want = shade(h, NX, NY, &d);
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    ck_assert(png_image_begin_read_from_file(&img, tmp_path("f.png")));
+    ck_assert_int_eq(img.width, NX * 2);
+    ck_assert_int_eq(img.height, NY * 2);
+    img.format = PNG_FORMAT_RGB;
+    unsigned char *got = malloc(PNG_IMAGE_SIZE(img));
+    ck_assert(png_image_finish_read(&img, NULL, got, 0, NULL));
+    ck_assert_int_eq(memcmp(got, want, NX * NY * 4 * 3), 0);
+    /* the NaN cell (x = 3, y = 0: bottom row) is magenta */
+    const unsigned char *m = got + ((size_t)(2 * NY - 1) * 2 * NX + 6) * 3;
+    ck_assert(m[0] == 255 && m[1] == 0 && m[2] == 255);
+    free(got);
+    free(want);
+    /* no temporary file is left behind */
+    ck_assert_int_ne(access(tmp_path("f.png.tmp"), F_OK), 0);
+    remove_tmp_dir();
+}
+END_TEST
+
+START_TEST(preview_refuses_bad_arguments)
+{
+    float h[4] = {0, 1, 2, 3};
+    unsigned char rgb[64];
+    ms_preview_desc d = ms_preview_desc_default();
+    MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 5), MS_ERR_INVALID_ARGUMENT, "rgb holds");
+    MS_ASSERT_REFUSED(ms_field_shade(NULL, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT,
+                      "height field");
+    MS_ASSERT_REFUSED(ms_field_shade(h, 0, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT, "nx");
+    d.scale = 0;
+    MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT, "scale");
+    d = ms_preview_desc_default();
+    d.sun_elevation = 0;
+    MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT,
+                      "sun_elevation");
+    d = ms_preview_desc_default();
+    d.height_min = 1;
+    MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT,
+                      "height_min");
+    d = ms_preview_desc_default();
+    d.dx = NAN;
+    MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT, "dx");
+    d = ms_preview_desc_default();
+    d.relief = -1;
+    MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT, "relief");
+    d = ms_preview_desc_default();
+    MS_ASSERT_REFUSED(ms_field_write_png(h, 2, 2, "/no/such/dir/f.png", &d), MS_ERR_IO,
+                      "No such file");
+    make_tmp_dir();
+    ck_assert_int_eq(mkdir(tmp_path("sub"), 0700), 0);
+    MS_ASSERT_REFUSED(ms_field_write_png(h, 2, 2, tmp_path("sub"), &d), MS_ERR_IO,
+                      "Is a directory");
+    ck_assert_int_ne(access(tmp_path("sub.tmp"), F_OK), 0);
+    rmdir(tmp_path("sub"));
+    remove_tmp_dir();
+}
+END_TEST
+
+static Suite *io_suite(void)
+{
+    Suite *s = suite_create("io");
+    TCase *tc = tcase_create("file");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, round_trip_is_bit_for_bit_on_a_non_square_grid);
+    tcase_add_test(tc, only_the_fields_asked_for_are_written);
+    tcase_add_test(tc, a_scene_text_over_64_kib_round_trips);
+    tcase_add_test(tc, xdmf_lists_every_frame_with_z_y_x_axis_order);
+    tcase_add_test(tc, xdmf_path_replaces_h5_or_appends);
+    tcase_add_test(tc, superblock_checksum_matches_hdf5);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("crash");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, sigkill_mid_run_leaves_every_flushed_frame);
+    tcase_add_test(tc, file_size_limit_stops_before_a_frame_that_cannot_fit);
+    tcase_add_test(tc, full_disk_is_an_error_and_leaves_a_readable_file);
+    tcase_add_test(tc, unwritable_paths_are_refused_with_the_reason);
+    tcase_add_test(tc, hdf5_errors_are_never_printed);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("refusals");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, writer_refuses_bad_layouts_and_frames);
+    tcase_add_test(tc, reader_refuses_what_is_not_a_run);
+    tcase_add_test(tc, reader_refuses_malformed_datasets);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("preview");
+    tcase_set_timeout(tc, 60);
+    tcase_add_test(tc, preview_has_north_up_and_the_water_ramp);
+    tcase_add_test(tc, preview_hillshade_lights_slopes_facing_the_sun);
+    tcase_add_test(tc, preview_png_holds_the_shaded_pixels);
+    tcase_add_test(tc, preview_refuses_bad_arguments);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    return ms_test_run(io_suite());
+}

@@ -1,0 +1,75 @@
+/* Progress of `modesplit run`: on a terminal one line redrawn at most ten
+ * times a second (bar, frame, frames/s, ETA, per-stage split); otherwise a
+ * plain line at every 10 % and at least every 10 s, for logs. All on
+ * stderr, so stdout keeps only the summary. */
+#include <unistd.h>
+
+#include "tool.h"
+
+#define BAR_WIDTH 24
+
+void progress_begin(tool_progress *p, long total, int quiet)
+{
+    p->tty = isatty(STDERR_FILENO);
+    p->quiet = quiet;
+    p->total = total;
+    p->start = tool_now();
+    p->last_draw = p->start;
+    p->last_decile = 0;
+}
+
+static void eta_text(double s, char *buf, size_t size)
+{
+    if (!(s >= 0) || s > 1e7)
+        snprintf(buf, size, "?");
+    else if (s >= 3600)
+        snprintf(buf, size, "%ld:%02ld:%02ld", (long)s / 3600, ((long)s / 60) % 60, (long)s % 60);
+    else
+        snprintf(buf, size, "%ld:%02ld", (long)s / 60, (long)s % 60);
+}
+
+void progress_update(tool_progress *p, long done, const tool_stages *s)
+{
+    if (p->quiet || p->total <= 0)
+        return;
+    double now = tool_now(), el = now - p->start;
+    double rate = el > 0 ? (double)done / el : 0.0;
+    char eta[32];
+    eta_text(rate > 0 ? (double)(p->total - done) / rate : -1, eta, sizeof eta);
+    int pct = (int)(100.0 * (double)done / (double)p->total);
+    if (p->tty) {
+        if (now - p->last_draw < 0.1 && done < p->total)
+            return;
+        p->last_draw = now;
+        char bar[BAR_WIDTH + 1];
+        int fill = (int)((double)BAR_WIDTH * (double)done / (double)p->total);
+        for (int i = 0; i < BAR_WIDTH; ++i)
+            bar[i] = i < fill ? '=' : (i == fill ? '>' : ' ');
+        bar[BAR_WIDTH] = '\0';
+        fprintf(stderr,
+                "\r[%s] %3d%% frame %ld/%ld %6.1f frames/s ETA %s | vol %.2g surf %.2g "
+                "extr %.2g comb %.2g out %.2g ms\033[K",
+                bar, pct, done, p->total, rate, eta, s->volume, s->surface, s->extract,
+                s->combine, s->write + s->png);
+        fflush(stderr);
+        return;
+    }
+    int decile = (int)(10.0 * (double)done / (double)p->total);
+    if (decile <= p->last_decile && now - p->last_draw < 10.0 && done < p->total)
+        return;
+    p->last_decile = decile;
+    p->last_draw = now;
+    fprintf(stderr,
+            "modesplit: frame %ld/%ld (%d%%), %.1f frames/s, ETA %s; per frame: volume %.3g ms, "
+            "surface %.3g ms, extract %.3g ms, combine %.3g ms, output %.3g ms\n",
+            done, p->total, pct, rate, eta, s->volume, s->surface, s->extract, s->combine,
+            s->write + s->png);
+}
+
+void progress_end(tool_progress *p)
+{
+    if (!p->quiet && p->tty && p->total > 0) {
+        fputs("\r\033[K", stderr);
+        fflush(stderr);
+    }
+}

@@ -1,0 +1,83 @@
+/* The `modesplit` command-line tool: shared declarations.
+ *
+ * One file per command (cmd_run.c, cmd_info.c, cmd_check.c, cmd_plugins.c),
+ * main.c dispatches and holds the usage text, progress.c draws the progress
+ * bar or lines, frames_png.c writes the PNG frames. The tool uses only the
+ * public API of libmodesplit (it links the shared library).
+ *
+ * Exit status: 0 success, 1 a failure while running, 2 bad usage or bad
+ * input. Messages go to stderr as one sentence each, "modesplit: ...".
+ */
+#ifndef MS_TOOL_H
+#define MS_TOOL_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "modesplit/modesplit.h"
+#include "modesplit/plugin.h"
+
+enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
+
+/* Print "modesplit: <message>\n" to stderr. */
+void tool_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* The usage text (modesplit --help) to f. */
+void tool_usage(FILE *f);
+
+/* Option parsing: argv[*i] is "--name" or "--name=value"; returns 1 and the
+ * value (the next argument, consumed) when it matches `name`. A missing
+ * value is a usage error reported here (*bad set). */
+int tool_opt_value(int argc, char **argv, int *i, const char *name, const char **value, int *bad);
+/* Strict number parsing: the whole string, finite, in [lo, hi]. */
+int tool_parse_long(const char *s, long lo, long hi, long *out);
+int tool_parse_double(const char *s, double lo, double hi, double *out);
+/* "12.3 MB", "850 kB", "512 B" into buf. */
+const char *tool_bytes(double bytes, char *buf, size_t size);
+
+/* Frames a scene runs for `duration` s (< 0: the scene's own): at most
+ * 1e9; 0 on success, else prints "<path>: ..." and returns -1. */
+int tool_scene_frames(const ms_scene *sc, const char *path, double duration, long *frames);
+
+int cmd_run(int argc, char **argv);
+int cmd_info(int argc, char **argv);
+int cmd_check(int argc, char **argv);
+int cmd_plugins(int argc, char **argv);
+
+/* ---- progress (progress.c) ---- */
+typedef struct tool_progress {
+    int tty;             /* stderr is a terminal: one line redrawn */
+    int quiet;
+    long total;          /* frames to run */
+    double start;        /* s, monotonic */
+    double last_draw;    /* s */
+    int last_decile;     /* plain lines: last 10 % step printed */
+} tool_progress;
+
+/* Per-frame stage times, ms (averages over the frames so far). */
+typedef struct tool_stages {
+    double volume, surface, extract, combine, write, png;
+} tool_stages;
+
+double tool_now(void);
+void progress_begin(tool_progress *p, long total, int quiet);
+/* After frame `done` (1..total). */
+void progress_update(tool_progress *p, long done, const tool_stages *s);
+/* Clear the bar (before the summary or an error). */
+void progress_end(tool_progress *p);
+
+/* ---- PNG frames (frames_png.c) ---- */
+typedef struct tool_png {
+    char *dir;
+    float lo, hi;        /* m, the colour range, widened as frames need */
+    float relief;        /* vertical exaggeration, lowered as frames need */
+    int have_range;
+    long written;
+} tool_png;
+
+/* Create DIR (and its parents) if missing; 0 on success, else prints. */
+int png_begin(tool_png *p, const char *dir);
+/* Write DIR/frame_NNNNN.png of a height field; 0 on success, else prints. */
+int png_frame(tool_png *p, long index, const float *h, const ms_grid *g);
+void png_end(tool_png *p);
+
+#endif /* MS_TOOL_H */
