@@ -916,6 +916,46 @@ START_TEST(a_coarser_mesh_averages_the_field)
 }
 END_TEST
 
+START_TEST(floating_discs_are_drawn_on_the_surface)
+{
+    ms_renderer_desc d = top_down("water");
+    ms_renderer *r = create_ok(&d);
+    float *h = field(N, 0.25f);
+    draw_ok(r, h, N);
+    unsigned char *plain = malloc((size_t)W * W * 4);
+    memcpy(plain, ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
+    /* a red leaf at the centre, a boat at the lower left */
+    const ms_render_disc discs[2] = {{{0.5f, 0.5f, 0.25f}, 0.05f, {0.9f, 0.05f, 0.05f}},
+                                     {{0.25f, 0.25f, 0.25f}, 0.08f, {0.4f, 0.2f, 0.1f}}};
+    ck_assert_int_eq(ms_renderer_set_discs(r, discs, 2), MS_OK);
+    draw_ok(r, h, N);
+    const unsigned char *px = ms_renderer_pixels(r, NULL, NULL);
+    const unsigned char *c = px + ((size_t)(W / 2) * W + W / 2) * 4;
+    ck_assert_msg(c[0] > 150 && c[1] < 80 && c[2] < 80, "the leaf is %d %d %d", c[0], c[1], c[2]);
+    /* nothing changed away from the discs */
+    ck_assert_int_eq(box_max_abs_diff(px, plain, W / 2 + 20, 8, W - 8, W / 2 - 20), 0);
+    /* removed again */
+    ck_assert_int_eq(ms_renderer_set_discs(r, NULL, 0), MS_OK);
+    draw_ok(r, h, N);
+    ck_assert_int_eq(memcmp(ms_renderer_pixels(r, NULL, NULL), plain, (size_t)W * W * 4), 0);
+    ms_render_disc bad = discs[0];
+    bad.radius = 0;
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, &bad, 1), MS_ERR_INVALID_ARGUMENT,
+                      "disc 0 radius 0 m must be finite and > 0");
+    bad = discs[0];
+    bad.color[1] = 1.5f;
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, &bad, 1), MS_ERR_INVALID_ARGUMENT,
+                      "disc 0 color[1] 1.5");
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, discs, -1), MS_ERR_INVALID_ARGUMENT,
+                      "discs n -1");
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, NULL, 1), MS_ERR_INVALID_ARGUMENT,
+                      "discs is NULL");
+    ms_renderer_destroy(r);
+    free(plain);
+    free(h);
+}
+END_TEST
+
 START_TEST(a_scene_renders_and_every_shader_draws)
 {
     const char *text = "{\"surface\": {\"cells\": [64, 64]},"
@@ -979,6 +1019,7 @@ static Suite *render_suite(void)
     tcase_add_test(tc, bad_fields_and_shaders_are_refused);
     tcase_add_test(tc, a_shader_that_does_not_compile_is_refused_with_its_log);
     tcase_add_test(tc, a_coarser_mesh_averages_the_field);
+    tcase_add_test(tc, floating_discs_are_drawn_on_the_surface);
     tcase_add_test(tc, a_scene_renders_and_every_shader_draws);
 #endif
     suite_add_tcase(s, tc);

@@ -114,6 +114,19 @@ MS_API ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim);
 MS_API ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *g,
                                         double time);
 
+/* Things floating on the surface (the paper's leaves and boat, Fig. 10),
+ * drawn as flat discs lit by the sun and the sky. */
+typedef struct ms_render_disc {
+    float pos[3];   /* m, world: the centre, on the surface */
+    float radius;   /* m, > 0 */
+    float color[3]; /* linear RGB, each [0, 1] */
+} ms_render_disc;
+/* The discs drawn with the next draws (copied; n = 0 removes them), at
+ * most MS_RENDER_MAX_DISCS. ms_renderer_draw sets the sim's floaters and
+ * the scene's boat itself. */
+#define MS_RENDER_MAX_DISCS 20000
+MS_API ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int n);
+
 /* RGBA8, top row first; view valid until the next draw. */
 MS_API const unsigned char *ms_renderer_pixels(const ms_renderer *r, int *w, int *h);
 MS_API ms_status ms_renderer_write_png(const ms_renderer *r, const char *path);

@@ -292,6 +292,7 @@ void ms_renderer_destroy(ms_renderer *r)
 #endif
     ms_shader_instance_destroy(&r->shader);
     ms_caustics_free(&r->caustics);
+    ms_free(r->discs);
     ms_free(r->pixels);
     ms_free(r->shader_name);
     ms_free(r->shader_params);
@@ -346,6 +347,43 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
     return ms_fail(MS_ERR_UNSUPPORTED,
                    "render: ms_renderer_draw needs the sim (lib/sim), which this build does "
                    "not have yet; draw its combined field with ms_renderer_draw_field");
+}
+
+ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int n)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
+        (st = ms_check_int_range(PART, "discs n", n, 0, MS_RENDER_MAX_DISCS)) != MS_OK ||
+        (n > 0 && (st = ms_check_not_null(PART, "discs", discs)) != MS_OK))
+        return st;
+    for (int i = 0; i < n; ++i) {
+        const ms_render_disc *c = &discs[i];
+        char key[64];
+        for (int k = 0; k < 3; ++k) {
+            snprintf(key, sizeof key, "disc %d pos[%d]", i, k);
+            if ((st = ms_check_range(PART, key, c->pos[k], -1e6, 1e6, "m")) != MS_OK)
+                return st;
+            snprintf(key, sizeof key, "disc %d color[%d]", i, k);
+            if ((st = ms_check_range(PART, key, c->color[k], 0, 1, "")) != MS_OK)
+                return st;
+        }
+        snprintf(key, sizeof key, "disc %d radius", i);
+        if ((st = ms_check_positive(PART, key, c->radius, "m")) != MS_OK)
+            return st;
+    }
+    if (n > r->discs_cap) {
+        ms_render_disc *p = ms_alloc_array((size_t)n, sizeof *p);
+        if (!p)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d discs", n);
+        ms_free(r->discs);
+        r->discs = p;
+        r->discs_cap = n;
+    }
+    if (n > 0)
+        memcpy(r->discs, discs, (size_t)n * sizeof *discs);
+    r->ndiscs = n;
+    r->discs_changed = 1;
+    return MS_OK;
 }
 
 const unsigned char *ms_renderer_pixels(const ms_renderer *r, int *w, int *h)

@@ -122,6 +122,9 @@ struct ms_renderer {
     unsigned passes;        /* MS_SHADER_NEEDS_* that run */
     int trace_caustics;     /* 1: the caustics pass runs */
     ms_caustics caustics;
+    ms_render_disc *discs;  /* floating things, ms_renderer_set_discs */
+    int ndiscs, discs_cap;
+    int discs_changed;      /* the GL side must rebuild their vertices */
     unsigned char *pixels;  /* width * height * 4, top row first */
     int have_frame;
     ms_render_stats stats;
