@@ -956,6 +956,37 @@ START_TEST(floating_discs_are_drawn_on_the_surface)
 }
 END_TEST
 
+START_TEST(the_shipped_scenes_render)
+{
+    /* each paper scene's render section makes a renderer (made small) that
+     * draws still water over the scene's domain */
+    static const char *const scenes[] = {"fig1", "fig9a", "fig9b", "fig10"};
+    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; ++k) {
+        char path[128];
+        snprintf(path, sizeof path, "data/scenes/%s.json", scenes[k]);
+        ms_scene *sc = NULL;
+        ms_status st = ms_scene_load(path, &sc);
+        ck_assert_msg(st == MS_OK, "%s: %s", path, ms_last_error());
+        ck_assert(ms_scene_has_render(sc));
+        ms_renderer_desc d;
+        ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
+        d.width = d.height = 48;
+        d.caustics_resolution = 32;
+        ms_renderer *r = NULL;
+        st = ms_renderer_create_desc(&d, &r);
+        ck_assert_msg(st == MS_OK, "%s: %s", path, ms_last_error());
+        float *h = field(32, d.water_level - d.pool_min[2]);
+        ms_grid g = {32, 32, (d.pool_max[0] - d.pool_min[0]) / 32,
+                     (d.pool_max[1] - d.pool_min[1]) / 32, {d.pool_min[0], d.pool_min[1]}};
+        st = ms_renderer_draw_field(r, h, &g, 0);
+        ck_assert_msg(st == MS_OK, "%s: %s", path, ms_last_error());
+        ms_renderer_destroy(r);
+        ms_scene_destroy(sc);
+        free(h);
+    }
+}
+END_TEST
+
 START_TEST(a_scene_renders_and_every_shader_draws)
 {
     const char *text = "{\"surface\": {\"cells\": [64, 64]},"
@@ -1020,6 +1051,7 @@ static Suite *render_suite(void)
     tcase_add_test(tc, a_shader_that_does_not_compile_is_refused_with_its_log);
     tcase_add_test(tc, a_coarser_mesh_averages_the_field);
     tcase_add_test(tc, floating_discs_are_drawn_on_the_surface);
+    tcase_add_test(tc, the_shipped_scenes_render);
     tcase_add_test(tc, a_scene_renders_and_every_shader_draws);
 #endif
     suite_add_tcase(s, tc);

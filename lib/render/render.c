@@ -196,6 +196,19 @@ static char *dup_or_null(const char *s)
 }
 #endif
 
+#if MS_HAVE_OSMESA
+/* Texels per side of the builtin sky's faces: about half the image's
+ * longer side (a face spans 90 degrees, the clouds are soft), a power of
+ * two in [32, 512]. */
+static int sky_size_for(int w, int h)
+{
+    int want = MS_MAX(w, h) / 2, n = 32;
+    while (n < want && n < 512)
+        n *= 2;
+    return n;
+}
+#endif
+
 ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
 {
     ms_status st;
@@ -249,7 +262,7 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
 
     ms_cubemap sky = {0, {NULL}};
     if (strcmp(d->cubemap, "builtin") == 0)
-        st = ms_sky_builtin(256, r->desc.light_dir, &sky);
+        st = ms_sky_builtin(sky_size_for(d->width, d->height), r->desc.light_dir, &sky);
     else
         st = ms_cubemap_load(d->cubemap, &sky);
     if (st == MS_OK)
