@@ -94,6 +94,8 @@ void ms_gl_sky_draw(const ms_renderer *r, const float forward[3], const float ri
  * and the pool, split by the water plane and seen from the eye's mirror
  * and refracted images. */
 ms_status ms_gl_env_create(ms_renderer *r);
+/* gl_renderer.c: after r->desc's camera changed: ms_env drawn again. */
+ms_status ms_gl_camera_moved(ms_renderer *r);
 
 /* A sentence for the first pending GL error, "" if none (clears them). */
 ms_status ms_gl_check(const char *doing);

@@ -136,6 +136,8 @@ struct ms_renderer {
  * set); on failure r->gl stays NULL and the error is set. */
 ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky);
 void ms_gl_destroy(ms_gl *gl);
+/* gl_renderer.c: the environment drawn again for r->desc's new camera. */
+ms_status ms_gl_camera_moved(ms_renderer *r);
 /* gl_frame.c: one frame of h over g into r->pixels. */
 ms_status ms_gl_draw(ms_renderer *r, const float *h, const ms_grid *g, double time);
 #endif
