@@ -21,6 +21,15 @@
 #include "support.h"
 #include "volume/volume_impl.h"
 
+/* Under ThreadSanitizer (MS_TEST_SAN=tsan, ~15x slower) the long
+ * single-threaded physics runs are skipped: they exercise no threads, and
+ * run in the plain and ASan builds. The threaded ones still run. */
+static int skip_under_tsan(void)
+{
+    const char *san = getenv("MS_TEST_SAN");
+    return san && strcmp(san, "tsan") == 0;
+}
+
 static int long_tests(void)
 {
     const char *e = getenv("MS_TEST_LONG");
@@ -374,12 +383,16 @@ static void hydrostatic(ms_pressure law)
 
 START_TEST(hydrostatic_pressure_matches_rho_g_d_ideal_gas)
 {
+    if (skip_under_tsan())
+        return;
     hydrostatic(MS_PRESSURE_IDEAL_GAS);
 }
 END_TEST
 
 START_TEST(hydrostatic_pressure_matches_rho_g_d_tait)
 {
+    if (skip_under_tsan())
+        return;
     hydrostatic(MS_PRESSURE_TAIT);
 }
 END_TEST
@@ -431,6 +444,8 @@ static double dam_break_rms(float a, float s, int *count)
 
 START_TEST(dam_break_follows_martin_and_moyce)
 {
+    if (skip_under_tsan())
+        return;
     int n;
     double rms = dam_break_rms(0.1f, 0.01f, &n);
     ck_assert_int_eq(n, 800);
@@ -494,6 +509,8 @@ static void settle_tank(ms_volume *v, int frames)
  * within a quarter spacing of it after the eq. 18 smoothing. */
 START_TEST(still_liquid_extracts_a_flat_surface_at_its_level)
 {
+    if (skip_under_tsan())
+        return;
     ms_volume_desc d = box_desc(0.4f, 0.4f, 0.4f, 0.02f);
     d.viscosity = 20.0f;
     ms_volume *v = make(&d);
@@ -586,11 +603,13 @@ static uint64_t state_hash(const ms_volume *v)
     return hsh;
 }
 
-static uint64_t run_dam(int threads)
+static uint64_t run_dam_isa(int threads, int isa)
 {
     ms_volume_desc d = box_desc(0.5f, 0.1f, 0.25f, 0.01f);
     d.threads = threads;
     ms_volume *v = make(&d);
+    if (isa >= 0)
+        v->isa = isa;
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.15f, 0.1f, 0.2f});
     for (int f = 0; f < 6; ++f)
         step(v, 1.0f / 60);
@@ -606,11 +625,30 @@ static uint64_t run_dam(int threads)
     return hsh;
 }
 
+static uint64_t run_dam(int threads)
+{
+    return run_dam_isa(threads, -1);
+}
+
 START_TEST(one_and_two_threads_give_the_same_bytes)
 {
     uint64_t a = run_dam(1), b = run_dam(2), c = run_dam(1);
     ck_assert_msg(a == c, "two runs with one thread differ");
     ck_assert_msg(a == b, "1 and 2 threads differ");
+}
+END_TEST
+
+/* The neighbour filter runs in plain C, SSE2 or AVX-512 (picked at run
+ * time) and the pair sums in C lanes or AVX-512 intrinsics: every path
+ * gives the same bytes. */
+START_TEST(every_instruction_set_path_gives_the_same_bytes)
+{
+    if (skip_under_tsan())
+        return;
+    const int best = ms_volume_pick_isa();
+    const uint64_t ref = run_dam_isa(1, MS_VOLUME_ISA_C);
+    for (int isa = MS_VOLUME_ISA_C + 1; isa <= best; ++isa)
+        ck_assert_msg(run_dam_isa(1, isa) == ref, "instruction set %d differs from plain C", isa);
 }
 END_TEST
 
@@ -662,6 +700,8 @@ END_TEST
  * step, nothing blows up, and viscosity only takes energy out. */
 START_TEST(a_hundredfold_viscosity_jump_stays_stable)
 {
+    if (skip_under_tsan())
+        return;
     ms_volume_desc d = box_desc(0.2f, 0.04f, 0.12f, 0.01f);
     d.viscosity = 2.0f;
     ms_volume *v = make(&d);
@@ -691,6 +731,8 @@ END_TEST
  * above its start (no energy is made). MS_TEST_LONG=1: more particles. */
 START_TEST(ten_thousand_steps_at_the_largest_step_stay_bounded)
 {
+    if (skip_under_tsan())
+        return;
     const int big = long_tests();
     ms_volume_desc d = box_desc(0.3f, big ? 0.15f : 0.06f, 0.3f, 0.015f);
     d.courant = 0.5f;
@@ -721,6 +763,8 @@ END_TEST
  * state stays sane. */
 START_TEST(a_one_second_frame_hitch_is_substepped)
 {
+    if (skip_under_tsan())
+        return;
     ms_volume_desc d = box_desc(0.2f, 0.04f, 0.12f, 0.01f);
     ms_volume *v = make(&d);
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.06f, 0.04f, 0.1f});
@@ -767,6 +811,8 @@ static int inside_count(const ms_volume *v, const ms_shape *s, float depth)
  * can make it (3 x 20 m/s). It stops 0.15 m before the far wall. */
 START_TEST(an_obstacle_at_20_m_s_pushes_the_liquid_and_none_tunnels)
 {
+    if (skip_under_tsan())
+        return;
     ms_volume_desc d = box_desc(0.8f, 0.06f, 0.16f, 0.01f);
     ms_volume *v = make(&d);
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.8f, 0.06f, 0.08f});
@@ -845,6 +891,8 @@ END_TEST
  * at least 97 % stays in the glass, none ends in its wall. */
 START_TEST(a_moving_glass_carries_its_liquid)
 {
+    if (skip_under_tsan())
+        return;
     ms_volume_desc d = box_desc(0.8f, 0.4f, 0.3f, 0.01f);
     d.viscosity = 20.0f; /* settles quickly */
     ms_volume *v = make(&d);
@@ -897,6 +945,8 @@ END_TEST
  * it, nothing blows up. */
 START_TEST(a_teleported_collider_is_swept_not_crushed)
 {
+    if (skip_under_tsan())
+        return;
     ms_volume_desc d = box_desc(0.3f, 0.1f, 0.15f, 0.01f);
     ms_volume *v = make(&d);
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.3f, 0.1f, 0.06f});
@@ -1066,6 +1116,7 @@ static Suite *volume_suite(void)
     TCase *hard = tcase_create("hard");
     tcase_set_timeout(hard, 300);
     tcase_add_test(hard, one_and_two_threads_give_the_same_bytes);
+    tcase_add_test(hard, every_instruction_set_path_gives_the_same_bytes);
     tcase_add_test(hard, all_particles_at_one_point_spread_and_stay_bounded);
     tcase_add_test(hard, a_hundredfold_viscosity_jump_stays_stable);
     tcase_add_test(hard, ten_thousand_steps_at_the_largest_step_stay_bounded);

@@ -51,10 +51,11 @@ float ms_volume_pressure(const ms_volume *v, float rho)
     return fmaxf(v->desc.gas_constant * (rho - rho0), 0.0f);
 }
 
-#if defined(__AVX512F__)
-#include <immintrin.h>
-#elif defined(__SSE2__)
+#if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
+#if MS_VOLUME_HAVE_AVX512
+#include <immintrin.h>
 #endif
 
 typedef struct density_ctx {
@@ -95,99 +96,161 @@ static int reserve(ms_nlist *L, size_t more)
     return 1;
 }
 
-/* Append (j | tag, r^2) for every j in [lo, hi), j != skip, closer than h
- * to q, in order of j. Three versions with the same result: AVX-512
- * (compress-store), SSE2 (compare, movemask, append the set bits) and
- * plain C (branch-free append); the arrays are padded, so a block may read
- * past hi. Returns the number appended. */
-static size_t filter_row(const ms_volume *v, int lo, int hi, const float q[3], int skip, int tag,
-                         int *restrict out, float *restrict out2)
+/* Append (j | tag, r^2) for every j in the nine row ranges [lo[r], hi[r])
+ * closer than h to q (the particle itself included), in order; returns the
+ * number appended.
+ * Three versions with the same result, chosen once per volume
+ * (ms_volume_pick_isa): AVX-512 (compare into a mask, compress in
+ * registers, store whole blocks), SSE2 (compare, movemask, append the set
+ * bits) and plain C (branch-free append). The particle arrays and the list
+ * are padded, so a block may read and write past the end. */
+static size_t filter_rows_c(const ms_volume *v, const int *lo, const int *hi, const float q[3],
+                            int tag, int *restrict out, float *restrict out2)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const float h2 = v->K.h2;
     size_t n = 0;
-#if defined(__AVX512F__)
-    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
-    const __m512 hh = _mm512_set1_ps(h2);
-    const __m512i iota = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-    for (int j = lo; j < hi; j += 16) {
-        int rem = hi - j;
-        __mmask16 valid = rem >= 16 ? (__mmask16)0xffff : (__mmask16)((1u << rem) - 1u);
-        __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, x + j));
-        __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, y + j));
-        __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, z + j));
-        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
-                                  _mm512_mul_ps(dz, dz));
-        unsigned m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
-        if ((unsigned)(skip - j) < 16u)
-            m &= ~(1u << (skip - j));
-        __m512i id = _mm512_add_epi32(_mm512_set1_epi32(j | tag), iota);
-        /* compress in registers and store whole blocks (the list has a
-         * block of slack): a compress to memory is microcoded and slow */
-        _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32((__mmask16)m, id));
-        _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps((__mmask16)m, r2));
-        n += (size_t)__builtin_popcount(m);
-    }
-#elif defined(__SSE2__)
-    const __m128 qx = _mm_set1_ps(q[0]), qy = _mm_set1_ps(q[1]), qz = _mm_set1_ps(q[2]);
-    const __m128 hh = _mm_set1_ps(h2);
-    for (int j = lo; j < hi; j += 4) {
-        __m128 dx = _mm_sub_ps(qx, _mm_loadu_ps(x + j));
-        __m128 dy = _mm_sub_ps(qy, _mm_loadu_ps(y + j));
-        __m128 dz = _mm_sub_ps(qz, _mm_loadu_ps(z + j));
-        __m128 r2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
-                               _mm_mul_ps(dz, dz));
-        unsigned m = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(r2, hh));
-        if (hi - j < 4)
-            m &= (1u << (hi - j)) - 1u;
-        if ((unsigned)(skip - j) < 4u)
-            m &= ~(1u << (skip - j));
-        if (m) {
-            float t[4];
-            _mm_storeu_ps(t, r2);
-            while (m) {
-                int b = __builtin_ctz(m);
-                out[n] = (j + b) | tag;
-                out2[n] = t[b];
-                n++;
-                m &= m - 1u;
-            }
+    for (int r = 0; r < 9; ++r)
+        for (int j = lo[r]; j < hi[r]; ++j) {
+            float dx = q[0] - x[j], dy = q[1] - y[j], dz = q[2] - z[j];
+            float r2 = dx * dx + dy * dy + dz * dz;
+            out[n] = j | tag;
+            out2[n] = r2;
+            n += r2 < h2;
         }
-    }
-#else
-    for (int j = lo; j < hi; ++j) {
-        float dx = q[0] - x[j], dy = q[1] - y[j], dz = q[2] - z[j];
-        float r2 = dx * dx + dy * dy + dz * dz;
-        out[n] = j | tag;
-        out2[n] = r2;
-        n += (r2 < h2) & (j != skip);
-    }
-#endif
     return n;
 }
 
-/* Append to L every particle j != skip within h of q, from the 27 cells
- * around cell c. Returns the neighbours appended, -1 if the list could not
- * grow. */
-static int gather(const ms_volume *v, ms_nlist *L, const float q[3], long c, int skip, int tag)
+#if defined(__SSE2__)
+static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi, const float q[3],
+                               int tag, int *restrict out, float *restrict out2)
+{
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const __m128 qx = _mm_set1_ps(q[0]), qy = _mm_set1_ps(q[1]), qz = _mm_set1_ps(q[2]);
+    const __m128 hh = _mm_set1_ps(v->K.h2);
+    size_t n = 0;
+    for (int r = 0; r < 9; ++r)
+        for (int j = lo[r]; j < hi[r]; j += 4) {
+            __m128 dx = _mm_sub_ps(qx, _mm_loadu_ps(x + j));
+            __m128 dy = _mm_sub_ps(qy, _mm_loadu_ps(y + j));
+            __m128 dz = _mm_sub_ps(qz, _mm_loadu_ps(z + j));
+            __m128 r2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
+                                   _mm_mul_ps(dz, dz));
+            unsigned m = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(r2, hh));
+            if (hi[r] - j < 4)
+                m &= (1u << (hi[r] - j)) - 1u;
+            if (m) {
+                float t[4];
+                _mm_storeu_ps(t, r2);
+                while (m) {
+                    int b = __builtin_ctz(m);
+                    out[n] = (j + b) | tag;
+                    out2[n] = t[b];
+                    n++;
+                    m &= m - 1u;
+                }
+            }
+        }
+    return n;
+}
+#endif
+
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
+filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float q[3], int tag,
+                   int *restrict out, float *restrict out2)
+{
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(v->K.h2);
+    const __m512i iota = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    const __m512i sixteen = _mm512_set1_epi32(16);
+    size_t n = 0;
+    for (int r = 0; r < 9; ++r) {
+        __m512i id = _mm512_add_epi32(_mm512_set1_epi32(lo[r] | tag), iota);
+        for (int j = lo[r]; j < hi[r]; j += 16) {
+            unsigned rem = (unsigned)(hi[r] - j);
+            __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+            __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, x + j));
+            __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, y + j));
+            __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, z + j));
+            __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                      _mm512_mul_ps(dz, dz));
+            __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+            /* compress in registers and store whole blocks (the list has
+             * slack): a compress to memory is microcoded and slow */
+            _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
+            _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
+            n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+            id = _mm512_add_epi32(id, sixteen);
+        }
+    }
+    return n;
+}
+#endif
+
+typedef size_t filter_fn(const ms_volume *v, const int *lo, const int *hi, const float q[3],
+                         int tag, int *restrict out, float *restrict out2);
+
+static filter_fn *filter_of(int isa)
+{
+#if MS_VOLUME_HAVE_AVX512
+    if (isa == MS_VOLUME_ISA_AVX512)
+        return filter_rows_avx512;
+#endif
+#if defined(__SSE2__)
+    if (isa >= MS_VOLUME_ISA_SSE2)
+        return filter_rows_sse2;
+#endif
+    (void)isa;
+    return filter_rows_c;
+}
+
+int ms_volume_pick_isa(void)
+{
+#if MS_VOLUME_HAVE_AVX512
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("bmi2"))
+        return MS_VOLUME_ISA_AVX512;
+#endif
+#if defined(__SSE2__)
+    return MS_VOLUME_ISA_SSE2;
+#else
+    return MS_VOLUME_ISA_C;
+#endif
+}
+
+/* The nine row ranges (x-1 .. x+1) of the 27 cells around cell c, and
+ * how many candidates they hold. */
+typedef struct rows {
+    long cell;
+    int lo[9], hi[9];
+    size_t cand;
+} rows;
+
+static void rows_of(const ms_volume *v, long c, rows *r)
 {
     const int *restrict start = v->cell_start;
     const long sx = v->gx, sxy = (long)v->gx * v->gy;
-    size_t cand = 0;
-    for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy) {
-            const long row = c + dz * sxy + dy * sx;
-            cand += (size_t)(start[row + 2] - start[row - 1]);
-        }
-    if (!reserve(L, cand + 2 * LANES))
+    static const signed char oz[9] = {-1, -1, -1, 0, 0, 0, 1, 1, 1};
+    static const signed char oy[9] = {-1, 0, 1, -1, 0, 1, -1, 0, 1};
+    r->cell = c;
+    r->cand = 0;
+    for (int k = 0; k < 9; ++k) {
+        const long row = c + oz[k] * sxy + oy[k] * sx;
+        r->lo[k] = start[row - 1];
+        r->hi[k] = start[row + 2];
+        r->cand += (size_t)(r->hi[k] - r->lo[k]);
+    }
+}
+
+/* Append to L every particle within h of q from the rows r. Returns the
+ * neighbours appended, -1 if the list could not grow. */
+static int gather(const ms_volume *v, ms_nlist *L, const float q[3], const rows *r, int tag)
+{
+    if (!reserve(L, r->cand + 2 * LANES))
         return -1;
-    size_t n = 0;
-    for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy) {
-            const long row = c + dz * sxy + dy * sx;
-            n += filter_row(v, start[row - 1], start[row + 2], q, skip, tag, L->idx + L->len + n,
-                            L->r2 + L->len + n);
-        }
+    size_t n = filter_of(v->isa)(v, r->lo, r->hi, q, tag, L->idx + L->len, L->r2 + L->len);
     L->len += n;
     return (int)n;
 }
@@ -234,14 +297,20 @@ static int gather_plane(const ms_volume *v, ms_nlist *L, const float p[3], int i
     return n_in;
 }
 
-/* Pad a run that began at `begin` to a multiple of the lanes. */
+/* Pad a run that began at `begin` to a multiple of the lanes (the list
+ * has a block of slack: a whole block is written). */
 static void pad(ms_nlist *L, size_t begin, int index, float h2)
 {
-    while ((L->len - begin) % LANES) {
-        L->idx[L->len] = index;
-        L->r2[L->len] = h2;
-        L->len++;
+    if (L->len == begin)
+        return; /* an empty run (the list may not even exist yet) */
+    size_t end = begin + (L->len - begin + LANES - 1) / LANES * LANES;
+    int *restrict idx = L->idx + L->len;
+    float *restrict r2 = L->r2 + L->len;
+    for (int l = 0; l < LANES; ++l) {
+        idx[l] = index;
+        r2[l] = h2;
     }
+    L->len = end;
 }
 
 static inline float cube(float a)
@@ -250,7 +319,13 @@ static inline float cube(float a)
 }
 
 /* Sum of the kernel weights of entries r2[0..n), n a multiple of the lanes
- * (padding has r^2 = h^2: weight 0), in lanes, in a fixed order. */
+ * (padding has r^2 = h^2: weight 0), in lanes, summed in ms_lanes_sum's
+ * fixed order; the coincident pairs (r^2 < eps^2) are counted. Built for
+ * AVX-512, AVX2 and the baseline (no FMA contraction with -std=c11: the
+ * same bits on each). */
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
 static float weight_sum(const ms_volume *v, const float *restrict r2, int n, int *coincident)
 {
     const float h = v->K.h, h2 = v->K.h2, eps2 = v->eps2;
@@ -271,13 +346,8 @@ static float weight_sum(const ms_volume *v, const float *restrict r2, int n, int
                 cl[l] += q < eps2 ? 1.0f : 0.0f;
             }
     }
-    float s = 0.0f, c = 0.0f;
-    for (int l = 0; l < LANES; ++l) {
-        s += acc[l];
-        c += cl[l];
-    }
-    *coincident = (int)c;
-    return s;
+    *coincident = (int)ms_lanes_sum(cl);
+    return ms_lanes_sum(acc);
 }
 
 static void density_part(void *ctxp, int part, int b, int e)
@@ -287,7 +357,6 @@ static void density_part(void *ctxp, int part, int b, int e)
     ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
     const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
     const float mw = v->mass * (poly6 ? v->K.poly6 : v->K.spiky);
-    const float self = poly6 ? cube(v->K.h2) : cube(v->K.h); /* W(0) / its constant */
     const float rho0 = v->desc.rest_density, h2 = v->K.h2;
     int coincident = 0, surface = 0;
     float max_err = 0.0f;
@@ -295,10 +364,13 @@ static void density_part(void *ctxp, int part, int b, int e)
     L->len = 0;
     G->len = 0;
     v->list_failed[part] = 0;
+    rows own = {.cell = -1}, img;
     for (int i = b; i < e; ++i) {
         const float p[3] = {v->x[i], v->y[i], v->z[i]};
         const size_t begin = L->len, gbegin = G->len;
-        int nreal = gather(v, L, p, v->cell[i], i, 0);
+        if (v->cell[i] != own.cell) /* the particles of a cell share their rows */
+            rows_of(v, v->cell[i], &own);
+        int nreal = gather(v, L, p, &own, 0); /* the particle itself included */
         if (nreal < 0) {
             v->list_failed[part] = 1;
             return;
@@ -314,8 +386,8 @@ static void density_part(void *ctxp, int part, int b, int e)
             for (int k = 0; k < 3; ++k)
                 if (f & (1u << k))
                     q[k] = 2.0f * wall[k] - q[k];
-            int got = gather(v, G, q, ms_volume_cell_of(v, q[0], q[1], q[2]), -1,
-                             (int)(f << MS_VOLUME_IMAGE_SHIFT));
+            rows_of(v, ms_volume_cell_of(v, q[0], q[1], q[2]), &img);
+            int got = gather(v, G, q, &img, (int)(f << MS_VOLUME_IMAGE_SHIFT));
             if (got < 0) {
                 v->list_failed[part] = 1;
                 return;
@@ -336,12 +408,12 @@ static void density_part(void *ctxp, int part, int b, int e)
         v->gl_begin[i] = (int)gbegin;
         v->gl_count[i] = nghost;
         int close = 0, gclose = 0;
-        float sum = self + weight_sum(v, L->r2 + begin, (int)(L->len - begin), &close);
+        float sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), &close);
         if (nghost)
             sum += weight_sum(v, G->r2 + gbegin, (int)(G->len - gbegin), &gclose);
-        v->nbr[i] = 1 + nreal + nghost;
-        coincident += close;
-        pairs += nreal + nghost;
+        v->nbr[i] = nreal + nghost;
+        coincident += close - 1; /* itself */
+        pairs += nreal - 1 + nghost;
         int is_surface = ms_volume_is_surface(v, i);
         surface += is_surface;
         float rho = mw * sum;

@@ -27,7 +27,8 @@
  * the particle count). A fractional step blends one more pass in, so the
  * field does not jump as e crosses an integer step. One pass is a 3 x 3
  * binomial filter over the cells that hold liquid (dry cells stay 0 and
- * do not pull the shore down).
+ * do not pull the shore down); passes update the field in place row by
+ * row from a padded copy, so each reads the previous pass only.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -74,33 +75,23 @@ typedef struct mark_ctx {
     ms_volume *v;
 } mark_ctx;
 
-/* mark[i] = 1 surface particle, 2 within h of one, 0 neither (a gather). */
+/* mark[i] = 1 surface particle, 2 within h of one, 0 neither: a gather
+ * over the neighbour lists of the last density pass (real neighbours; the
+ * wall images are the particle's own neighbours mirrored). */
 static void mark_part(void *ctxp, int part, int b, int e)
 {
-    (void)part;
     ms_volume *v = ((mark_ctx *)ctxp)->v;
-    const int *start = v->cell_start;
-    const long sx = v->gx, sxy = (long)v->gx * v->gy;
-    const float h2 = v->K.h2;
+    const ms_nlist *L = &v->lists[part];
     for (int i = b; i < e; ++i) {
         if (ms_volume_is_surface(v, i)) {
             v->mark[i] = 1;
             continue;
         }
+        const int *idx = L->idx + v->nl_begin[i];
+        const float *r2 = L->r2 + v->nl_begin[i];
         int near = 0;
-        const long c = v->cell[i];
-        for (int dz = -1; dz <= 1 && !near; ++dz)
-            for (int dy = -1; dy <= 1 && !near; ++dy) {
-                const long row = c + dz * sxy + dy * sx;
-                for (int j = start[row - 1]; j < start[row + 2]; ++j) {
-                    float dx = v->x[i] - v->x[j], dyy = v->y[i] - v->y[j],
-                          dzz = v->z[i] - v->z[j];
-                    if (ms_volume_is_surface(v, j) && dx * dx + dyy * dyy + dzz * dzz < h2) {
-                        near = 1;
-                        break;
-                    }
-                }
-            }
+        for (int k = 0; k < v->nl_count[i] && !near; ++k)
+            near = r2[k] < v->K.h2 && ms_volume_is_surface(v, idx[k]);
         v->mark[i] = near ? 2 : 0;
     }
 }
@@ -108,6 +99,9 @@ static void mark_part(void *ctxp, int part, int b, int e)
 /* phi (eq. 16) at height z of a column whose candidates are (zc, a), with
  * a = 1 - horizontal distance^2 / R^2; m is padded to a multiple of the
  * lanes with a = 0 (weight 0). Summed in lanes: vectorisable, fixed order. */
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
 static float phi_at(const float *restrict zc, const float *restrict a, int m, float z,
                     float inv_r2)
 {
@@ -120,10 +114,199 @@ static float phi_at(const float *restrict zc, const float *restrict a, int m, fl
             q = q > 0.0f ? q : 0.0f;
             acc[l] += sqrtf(q);
         }
-    float sum = 0.0f;
-    for (int l = 0; l < L; ++l)
-        sum += acc[l];
-    return sum;
+    return ms_lanes_sum(acc);
+}
+
+typedef struct column_ctx {
+    const ms_volume *v;
+    int nx, ny;
+    float dxe, dye;
+    const int *cstart;
+    const float *bx, *by, *bz;
+    float *cand;
+    size_t cand_stride;
+    float *raw;
+} column_ctx;
+
+/* Columns [b, e) (index j*nx + i): gather the spheres (and their images in
+ * the nearer side walls) within R horizontally, walk down from the top in
+ * steps of half a spacing until phi reaches T, and close in on the
+ * crossing by regula falsi to 1/256 of a spacing. */
+static void columns_part(void *ctxp, int part, int b, int e)
+{
+    const column_ctx *cc = ctxp;
+    const ms_volume *v = cc->v;
+    const int nx = cc->nx, ny = cc->ny;
+    const float *lo = v->desc.domain_min, *hi = v->desc.domain_max;
+    const float dxe = cc->dxe, dye = cc->dye;
+    const float R = v->K.h, R2 = R * R, inv_r2 = 1.0f / R2;
+    const int rx = (int)ceilf(R / dxe), ry = (int)ceilf(R / dye);
+    const float T = v->iso_level, dz = 0.5f * v->desc.spacing;
+    const float ztop = hi[2] - lo[2];
+    const int *cstart = cc->cstart;
+    const float *bx = cc->bx, *by = cc->by, *bz = cc->bz;
+    float *cz = cc->cand + (size_t)part * cc->cand_stride, *ca = cz + cc->cand_stride / 2;
+    for (int col = b; col < e; ++col) {
+        const int i = col % nx, j = col / nx;
+        const float px = lo[0] + ((float)i + 0.5f) * dxe, py = lo[1] + ((float)j + 0.5f) * dye;
+        const float wx = px - lo[0] <= hi[0] - px ? lo[0] : hi[0];
+        const float wy = py - lo[1] <= hi[1] - py ? lo[1] : hi[1];
+        const int nxm = fabsf(px - wx) < R ? 2 : 1, nym = fabsf(py - wy) < R ? 2 : 1;
+        const int images = nxm * nym > 1;
+        int mc = 0;
+        float zmax = -INFINITY, zlow = INFINITY;
+        for (int jj = j - ry; jj <= j + ry; ++jj) {
+            if (jj < 0 || jj >= ny)
+                continue;
+            /* the bins of row jj within R of the column are one run of the
+             * binned particles (bins are ordered y-major) */
+            float gy = fabsf(lo[1] + ((float)jj + 0.5f) * dye - py) - 0.5f * dye;
+            gy = gy > 0.0f ? gy : 0.0f;
+            int reach = rx;
+            if (!images) {
+                if (gy >= R)
+                    continue;
+                reach = (int)(sqrtf(R2 - gy * gy) / dxe) + 1; /* a ceiling (cells) */
+                reach = reach < rx ? reach : rx;
+            }
+            const int i0 = i - reach < 0 ? 0 : i - reach;
+            const int i1 = i + reach > nx - 1 ? nx - 1 : i + reach;
+            const int k0 = cstart[jj * nx + i0], k1 = cstart[jj * nx + i1 + 1];
+            if (!images) {
+                for (int k = k0; k < k1; ++k) {
+                    const float ex = bx[k] - px, ey = by[k] - py;
+                    const float a = 1.0f - (ex * ex + ey * ey) * inv_r2;
+                    cz[mc] = bz[k];
+                    ca[mc] = a;
+                    mc += a > 0.0f;
+                }
+                continue;
+            }
+            for (int k = k0; k < k1; ++k) {
+                /* the particle and its images in the nearer side walls */
+                const float ex[2] = {bx[k] - px, 2.0f * wx - bx[k] - px};
+                const float ey[2] = {by[k] - py, 2.0f * wy - by[k] - py};
+                for (int my = 0; my < nym; ++my)
+                    for (int mx = 0; mx < nxm; ++mx) {
+                        float a = 1.0f - (ex[mx] * ex[mx] + ey[my] * ey[my]) * inv_r2;
+                        cz[mc] = bz[k];
+                        ca[mc] = a;
+                        mc += a > 0.0f;
+                    }
+            }
+        }
+        /* where to start: the highest sphere top, but no higher than a
+         * spacing above the highest centre (a still lattice's phi there is
+         * ~0.6 T: the top crossing lies below) */
+        float zc = -INFINITY;
+        for (int k = 0; k < mc; ++k) {
+            if (cz[k] + R > zmax) {
+                float top = cz[k] + R * sqrtf(ca[k]);
+                zmax = top > zmax ? top : zmax;
+            }
+            zc = cz[k] > zc ? cz[k] : zc;
+            zlow = cz[k] - R < zlow ? cz[k] - R : zlow;
+        }
+        zmax = zmax < zc + v->desc.spacing ? zmax : zc + v->desc.spacing;
+        float height = 0.0f;
+        for (int pad = mc; pad % MS_VOLUME_LANES; ++pad) { /* weight-0 lanes */
+            cz[pad] = 0.0f;
+            ca[pad] = 0.0f;
+        }
+        mc = (mc + MS_VOLUME_LANES - 1) / MS_VOLUME_LANES * MS_VOLUME_LANES;
+        if (mc > 0) {
+            float za = zmax, zb = zmax, fa = -T, fb = -T;
+            int found = 0, steps = 0;
+            float z = zmax;
+            /* walk down in steps of half a spacing: a calm surface is met
+             * within a few */
+            for (; z >= zlow && steps < 6 && !found; z -= dz, ++steps) {
+                float phi = phi_at(cz, ca, mc, z, inv_r2);
+                if (phi >= T) {
+                    zb = z;
+                    fb = phi - T;
+                    found = 1;
+                } else {
+                    za = z;
+                    fa = phi - T;
+                }
+            }
+            if (!found && z >= zlow) {
+                /* Below spray: an upper bound of phi in slabs of height ~R
+                 * (the sum of the sphere maxima sqrt(a) overlapping a slab)
+                 * skips the slabs that cannot reach T; the walk goes on in
+                 * the others. */
+                enum { MAXSLABS = 256 };
+                float bound[MAXSLABS];
+                const float zhi = z + dz, span = zhi - zlow;
+                int ns = (int)(span / R) + 2;
+                ns = ns > MAXSLABS ? MAXSLABS : ns;
+                const float bs = span / (float)ns, inv_bs = 1.0f / bs;
+                for (int q = 0; q < ns; ++q)
+                    bound[q] = 0.0f;
+                for (int k = 0; k < mc; ++k) {
+                    if (!(ca[k] > 0.0f))
+                        continue;
+                    float sa = sqrtf(ca[k]), ext = R * sa;
+                    int q0 = (int)((cz[k] - ext - zlow) * inv_bs);
+                    int q1 = (int)((cz[k] + ext - zlow) * inv_bs);
+                    q0 = q0 < 0 ? 0 : q0;
+                    q1 = q1 > ns - 1 ? ns - 1 : q1;
+                    for (int q = q0; q <= q1; ++q)
+                        bound[q] += sa;
+                }
+                for (int q = ns - 1; q >= 0 && !found; --q) {
+                    if (bound[q] < T)
+                        continue;
+                    float top = zlow + (float)(q + 1) * bs;
+                    top = top < zhi ? top : zhi;
+                    const float bot = zlow + (float)q * bs;
+                    for (float zz = top; zz >= bot - dz; zz -= dz) {
+                        float phi = phi_at(cz, ca, mc, zz, inv_r2);
+                        if (phi >= T) {
+                            zb = zz;
+                            fb = phi - T;
+                            found = 1;
+                            break;
+                        }
+                        za = zz;
+                        fa = phi - T;
+                    }
+                }
+            }
+            if (found && za <= zb) { /* the crossing is at the very top */
+                za = zb + dz;
+                fa = phi_at(cz, ca, mc, za, inv_r2) - T;
+                found = fa < 0.0f;
+            }
+            if (found) {
+                /* regula falsi (Illinois) to 1/256 of a spacing */
+                const float tol = v->desc.spacing / 256.0f;
+                int side = 0;
+                for (int it = 0; it < 12 && za - zb > tol; ++it) {
+                    float zm = fb != fa ? zb + (za - zb) * fb / (fb - fa) : 0.5f * (za + zb);
+                    if (!(zm < za && zm > zb))
+                        zm = 0.5f * (za + zb);
+                    float fm = phi_at(cz, ca, mc, zm, inv_r2) - T;
+                    if (fm >= 0.0f) {
+                        zb = zm;
+                        fb = fm;
+                        if (side == -1)
+                            fa *= 0.5f;
+                        side = -1;
+                    } else {
+                        za = zm;
+                        fa = fm;
+                        if (side == 1)
+                            fb *= 0.5f;
+                        side = 1;
+                    }
+                }
+                height = fminf(fmaxf(0.5f * (za + zb) - lo[2], 0.0f), ztop);
+            }
+        }
+        cc->raw[col] = height;
+    }
 }
 
 ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
@@ -149,7 +332,6 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
 
     const float *lo = v->desc.domain_min, *hi = v->desc.domain_max;
     const float dxe = (hi[0] - lo[0]) / (float)nx, dye = (hi[1] - lo[1]) / (float)ny;
-    const float R = v->K.h, R2 = R * R, inv_r2 = 1.0f / R2;
 
     /* bin the marked particles by column (counting sort, stable) */
     int m = 0;
@@ -158,16 +340,21 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
     ms_status st = scratch((void **)&v->ex_start, &v->ex_start_cap, cells + 1, sizeof(int));
     if (st == MS_OK)
         st = scratch((void **)&v->ex_list, &v->ex_list_cap, (size_t)m + cells + 1, sizeof(int));
-    /* ex_buf: 3m binned positions, 2 x 4m candidates (mirrors), 3 fields */
+    /* ex_buf: 3m binned positions, 3 fields, and for each thread 2 x 4m
+     * candidates (a particle and its images) */
+    const int parts = ms_vpool_threads(v->pool);
+    const size_t cand_stride = 8 * ((size_t)m + MS_VOLUME_LANES);
+    const size_t padded = (size_t)(nx + 2) * (ny + 2);
     if (st == MS_OK)
         st = scratch((void **)&v->ex_buf, &v->ex_cap,
-                     3 * (size_t)m + 8 * ((size_t)m + MS_VOLUME_LANES) + 3 * cells, sizeof(float));
+                     3 * (size_t)m + 2 * cells + padded + (size_t)parts * cand_stride,
+                     sizeof(float));
     if (st != MS_OK)
         return st;
     int *cstart = v->ex_start, *ckey = v->ex_list, *cfill = v->ex_list + m;
     float *bx = v->ex_buf, *by = bx + m, *bz = by + m;
-    float *cz = bz + m, *ca = cz + 4 * ((size_t)m + MS_VOLUME_LANES);
-    float *raw = ca + 4 * ((size_t)m + MS_VOLUME_LANES), *tmp = raw + cells, *blend = tmp + cells;
+    float *raw = bz + m, *tmp = raw + cells, *blend = tmp + padded;
+    float *cand = blend + cells;
     memset(cfill, 0, cells * sizeof *cfill);
     for (int i = 0, k = 0; i < v->n; ++i) {
         if (!v->mark[i])
@@ -194,74 +381,12 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
         bz[d] = v->z[i];
     }
 
-    /* the topmost crossing of phi = T in every column */
-    const int rx = (int)ceilf(R / dxe), ry = (int)ceilf(R / dye);
-    const float T = v->iso_level, dz = 0.25f * v->desc.spacing;
-    const float ztop = hi[2] - lo[2];
-    for (int j = 0; j < ny; ++j)
-        for (int i = 0; i < nx; ++i) {
-            const float px = lo[0] + ((float)i + 0.5f) * dxe, py = lo[1] + ((float)j + 0.5f) * dye;
-            int mc2 = 0;
-            const float wx = px - lo[0] <= hi[0] - px ? lo[0] : hi[0];
-            const float wy = py - lo[1] <= hi[1] - py ? lo[1] : hi[1];
-            const int nxm = fabsf(px - wx) < R ? 2 : 1, nym = fabsf(py - wy) < R ? 2 : 1;
-            float zmax = -INFINITY, zmin = INFINITY;
-            for (int jj = j - ry; jj <= j + ry; ++jj) {
-                if (jj < 0 || jj >= ny)
-                    continue;
-                for (int ii = i - rx; ii <= i + rx; ++ii) {
-                    if (ii < 0 || ii >= nx)
-                        continue;
-                    int c = jj * nx + ii;
-                    for (int k = cstart[c]; k < cstart[c + 1]; ++k) {
-                        /* the particle and its image in the nearer side wall */
-                        float ex[2] = {bx[k] - px, 2.0f * wx - bx[k] - px};
-                        float ey[2] = {by[k] - py, 2.0f * wy - by[k] - py};
-                        for (int my = 0; my < nym; ++my)
-                            for (int mx = 0; mx < nxm; ++mx) {
-                                float a = 1.0f - (ex[mx] * ex[mx] + ey[my] * ey[my]) * inv_r2;
-                                if (a <= 0.0f)
-                                    continue;
-                                cz[mc2] = bz[k];
-                                ca[mc2] = a;
-                                float top = bz[k] + R * sqrtf(a);
-                                zmax = fmaxf(zmax, top);
-                                zmin = fminf(zmin, bz[k] - R * sqrtf(a));
-                                mc2++;
-                            }
-                    }
-                }
-            }
-            float height = 0.0f;
-            for (int pad = mc2; pad % MS_VOLUME_LANES; ++pad) { /* weight-0 lanes */
-                cz[pad] = 0.0f;
-                ca[pad] = 0.0f;
-            }
-            mc2 = (mc2 + MS_VOLUME_LANES - 1) / MS_VOLUME_LANES * MS_VOLUME_LANES;
-            if (mc2 > 0) {
-                float za = zmax, zb = zmax; /* phi(za) < T <= phi(zb) */
-                int found = 0;
-                for (float z = zmax; z >= zmin; z -= dz) {
-                    if (phi_at(cz, ca, mc2, z, inv_r2) >= T) {
-                        zb = z;
-                        found = 1;
-                        break;
-                    }
-                    za = z;
-                }
-                if (found) {
-                    for (int it = 0; it < 7; ++it) { /* to dz / 128 */
-                        float zm = 0.5f * (za + zb);
-                        if (phi_at(cz, ca, mc2, zm, inv_r2) >= T)
-                            zb = zm;
-                        else
-                            za = zm;
-                    }
-                    height = fminf(fmaxf(0.5f * (za + zb) - lo[2], 0.0f), ztop);
-                }
-            }
-            raw[(size_t)j * nx + i] = height;
-        }
+    /* the topmost crossing of phi = T in every column, columns split among
+     * the threads (each column on its own: the same bytes for any split) */
+    column_ctx cc = {.v = v, .nx = nx, .ny = ny, .dxe = dxe, .dye = dye, .cstart = cstart,
+                     .bx = bx, .by = by, .bz = bz, .cand = cand, .cand_stride = cand_stride,
+                     .raw = raw};
+    ms_vpool_run(v->pool, columns_part, &cc, (int)cells);
 
     /* eq. 18: the number of smoothing passes from E_kin / total mass */
     double e = ms_volume_kinetic_energy(v) / ((double)v->mass * v->n);
@@ -269,36 +394,43 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
     double steps = ramp > 0.0 ? v->desc.smooth_steps * ramp : 0.0;
     int full = (int)floor(steps);
     float frac = (float)(steps - full);
+    /* One pass: the 3 x 3 binomial weights over the wet cells, as sums over
+     * a zero-padded copy (dry cells hold 0) times the inverse of the wet
+     * weight around each cell, computed once. */
+    const int px = nx + 2;
+    float *pad = tmp, *inv_w = blend; /* (nx+2)(ny+2) and nx*ny floats */
     memcpy(out, raw, cells * sizeof *out);
-    for (int pass = 0; pass < full + (frac > 0.0f); ++pass) {
+    const int passes = full + (frac > 0.0f);
+    if (passes > 0) {
+        memset(pad, 0, (size_t)px * (ny + 2) * sizeof *pad);
         for (int j = 0; j < ny; ++j)
             for (int i = 0; i < nx; ++i) {
-                size_t c = (size_t)j * nx + i;
-                if (raw[c] <= 0.0f) {
-                    tmp[c] = 0.0f;
-                    continue;
-                }
-                float s = 0.0f, w = 0.0f;
+                float w = 0.0f;
                 for (int dj = -1; dj <= 1; ++dj)
                     for (int di = -1; di <= 1; ++di) {
                         int ii = i + di, jj = j + dj;
-                        if (ii < 0 || ii >= nx || jj < 0 || jj >= ny)
-                            continue;
-                        size_t cc = (size_t)jj * nx + ii;
-                        if (raw[cc] <= 0.0f)
-                            continue;
-                        float wk = (float)((2 - abs(di)) * (2 - abs(dj)));
-                        s += wk * out[cc];
-                        w += wk;
+                        if (ii >= 0 && ii < nx && jj >= 0 && jj < ny && raw[jj * nx + ii] > 0.0f)
+                            w += (float)((2 - abs(di)) * (2 - abs(dj)));
                     }
-                tmp[c] = s / w;
+                inv_w[j * nx + i] = w > 0.0f ? 1.0f / w : 0.0f;
             }
-        if (pass < full) {
-            memcpy(out, tmp, cells * sizeof *out);
-        } else { /* the fractional pass: blend it in */
-            for (size_t c = 0; c < cells; ++c)
-                blend[c] = out[c] + frac * (tmp[c] - out[c]);
-            memcpy(out, blend, cells * sizeof *out);
+    }
+    for (int pass = 0; pass < passes; ++pass) {
+        for (int j = 0; j < ny; ++j)
+            memcpy(pad + (size_t)(j + 1) * px + 1, out + (size_t)j * nx, (size_t)nx * sizeof *out);
+        const float f = pass < full ? 1.0f : frac; /* the last may be a fraction */
+        for (int j = 0; j < ny; ++j) {
+            const float *r0 = pad + (size_t)j * px, *r1 = r0 + px, *r2 = r1 + px;
+            for (int i = 0; i < nx; ++i) {
+                const size_t c = (size_t)j * nx + i;
+                if (raw[c] <= 0.0f)
+                    continue;
+                float acc = (r0[i] + 2.0f * r0[i + 1] + r0[i + 2]) +
+                            (2.0f * r1[i] + 4.0f * r1[i + 1] + 2.0f * r1[i + 2]) +
+                            (r2[i] + 2.0f * r2[i + 1] + r2[i + 2]);
+                float smoothed = acc * inv_w[c];
+                out[c] = f == 1.0f ? smoothed : out[c] + f * (smoothed - out[c]);
+            }
         }
     }
     return MS_OK;

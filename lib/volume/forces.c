@@ -42,6 +42,10 @@
 
 #include "volume/volume_impl.h"
 
+#if MS_VOLUME_HAVE_AVX512
+#include <immintrin.h>
+#endif
+
 typedef struct forces_ctx {
     ms_volume *v;
 } forces_ctx;
@@ -59,19 +63,67 @@ static inline int padded(int n)
     return (n + MS_VOLUME_LANES - 1) / MS_VOLUME_LANES * MS_VOLUME_LANES;
 }
 
-static pair_sums sums_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
+#if MS_VOLUME_HAVE_AVX512
+/* ms_lanes_sum in registers: the same tree order. */
+__attribute__((target("avx512f,avx512dq"))) static inline float hsum_avx512(__m512 v)
+{
+    __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(v), _mm512_extractf32x8_ps(v, 1));
+    __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
+    __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
+    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
+}
+
+/* The real-neighbour sums of sums_of in AVX-512 intrinsics, with hardware
+ * gathers: the same operations per lane in the same order (no fused
+ * multiply-adds, IEEE sqrt and division) and the same lane sum, so the
+ * same bits as the C loop. */
+__attribute__((target("avx512f,avx512dq"))) static pair_sums
+real_sums_avx512(const ms_volume *v, const int *restrict idx, const float *restrict r2s, int n,
+                 int i)
+{
+    const float *x = v->x, *y = v->y, *z = v->z, *vx = v->vx, *vy = v->vy, *vz = v->vz;
+    const float *prs = v->prs, *inv_rho = v->inv_rho;
+    const __m512 xi = _mm512_set1_ps(x[i]), yi = _mm512_set1_ps(y[i]), zi = _mm512_set1_ps(z[i]);
+    const __m512 uxi = _mm512_set1_ps(vx[i]), uyi = _mm512_set1_ps(vy[i]),
+                 uzi = _mm512_set1_ps(vz[i]);
+    const __m512 pi = _mm512_set1_ps(prs[i]), h = _mm512_set1_ps(v->K.h);
+    const __m512 eps = _mm512_set1_ps(sqrtf(v->eps2)), zero = _mm512_setzero_ps();
+    __m512 apx = zero, apy = zero, apz = zero, avx = zero, avy = zero, avz = zero, ad = zero;
+    for (int k = 0; k < n; k += MS_VOLUME_LANES) {
+        __m512i j = _mm512_loadu_si512((const void *)(idx + k));
+        __m512 dx = _mm512_sub_ps(xi, _mm512_i32gather_ps(j, x, 4));
+        __m512 dy = _mm512_sub_ps(yi, _mm512_i32gather_ps(j, y, 4));
+        __m512 dz = _mm512_sub_ps(zi, _mm512_i32gather_ps(j, z, 4));
+        __m512 r = _mm512_sqrt_ps(_mm512_loadu_ps(r2s + k));
+        __m512 hr = _mm512_max_ps(_mm512_sub_ps(h, r), zero);
+        __m512 fv = _mm512_mul_ps(_mm512_i32gather_ps(j, inv_rho, 4), hr);
+        __m512 pp = _mm512_add_ps(pi, _mm512_i32gather_ps(j, prs, 4));
+        __m512 fp = _mm512_div_ps(_mm512_mul_ps(_mm512_mul_ps(pp, fv), hr), _mm512_max_ps(r, eps));
+        apx = _mm512_add_ps(apx, _mm512_mul_ps(fp, dx));
+        apy = _mm512_add_ps(apy, _mm512_mul_ps(fp, dy));
+        apz = _mm512_add_ps(apz, _mm512_mul_ps(fp, dz));
+        avx = _mm512_add_ps(avx, _mm512_mul_ps(fv, _mm512_sub_ps(_mm512_i32gather_ps(j, vx, 4), uxi)));
+        avy = _mm512_add_ps(avy, _mm512_mul_ps(fv, _mm512_sub_ps(_mm512_i32gather_ps(j, vy, 4), uyi)));
+        avz = _mm512_add_ps(avz, _mm512_mul_ps(fv, _mm512_sub_ps(_mm512_i32gather_ps(j, vz, 4), uzi)));
+        ad = _mm512_add_ps(ad, fv);
+    }
+    pair_sums s = {hsum_avx512(apx), hsum_avx512(apy), hsum_avx512(apz), hsum_avx512(avx),
+                   hsum_avx512(avy), hsum_avx512(avz), hsum_avx512(ad)};
+    return s;
+}
+#endif
+
+/* The real-neighbour sums in plain C lanes (vectorised by the compiler). */
+static pair_sums real_sums_c(const ms_volume *v, const int *restrict idx,
+                             const float *restrict r2s, int n, int i)
 {
     enum { L = MS_VOLUME_LANES };
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const float *restrict vx = v->vx, *restrict vy = v->vy, *restrict vz = v->vz;
     const float *restrict prs = v->prs, *restrict inv_rho = v->inv_rho;
-    const int *restrict idx = lst->idx + v->nl_begin[i];
-    const float *restrict r2s = lst->r2 + v->nl_begin[i];
-    const int n = padded(v->nl_count[i]);
     const float h = v->K.h, eps = sqrtf(v->eps2);
     const float xi = x[i], yi = y[i], zi = z[i], vxi = vx[i], vyi = vy[i], vzi = vz[i];
     const float pi = prs[i];
-    pair_sums s = {0, 0, 0, 0, 0, 0, 0};
     float spx[L] = {0}, spy[L] = {0}, spz[L] = {0};
     float svx[L] = {0}, svy[L] = {0}, svz[L] = {0}, sd[L] = {0};
     for (int k = 0; k < n; k += L)
@@ -91,15 +143,29 @@ static pair_sums sums_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist
             svz[l] += fv * (vz[j] - vzi);
             sd[l] += fv;
         }
-    for (int l = 0; l < L; ++l) {
-        s.px += spx[l];
-        s.py += spy[l];
-        s.pz += spz[l];
-        s.vx += svx[l];
-        s.vy += svy[l];
-        s.vz += svz[l];
-        s.d += sd[l];
-    }
+    pair_sums s = {ms_lanes_sum(spx), ms_lanes_sum(spy), ms_lanes_sum(spz), ms_lanes_sum(svx),
+                   ms_lanes_sum(svy), ms_lanes_sum(svz), ms_lanes_sum(sd)};
+    return s;
+}
+
+static pair_sums sums_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
+{
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const float *restrict vx = v->vx, *restrict vy = v->vy, *restrict vz = v->vz;
+    const float *restrict prs = v->prs, *restrict inv_rho = v->inv_rho;
+    const int *restrict idx = lst->idx + v->nl_begin[i];
+    const float *restrict r2s = lst->r2 + v->nl_begin[i];
+    const int n = padded(v->nl_count[i]);
+    const float h = v->K.h, eps = sqrtf(v->eps2);
+    const float xi = x[i], yi = y[i], zi = z[i], vxi = vx[i], vyi = vy[i], vzi = vz[i];
+    const float pi = prs[i];
+    pair_sums s;
+#if MS_VOLUME_HAVE_AVX512
+    if (v->isa == MS_VOLUME_ISA_AVX512)
+        s = real_sums_avx512(v, idx, r2s, n, i);
+    else
+#endif
+        s = real_sums_c(v, idx, r2s, n, i);
     if (v->gl_count[i] == 0)
         return s;
     /* wall images: the neighbour reflected across the walls of its image
@@ -161,10 +227,11 @@ static void forces_part(void *ctxp, int part, int b, int e)
     for (int i = b; i < e; ++i) {
         pair_sums s = sums_of(v, lst, gst, i);
         const float ri = v->inv_rho[i];
+        s.d -= ri * v->K.h; /* the list holds the particle itself: not a neighbour */
         v->ax[i] = cp * ri * s.px + cv * ri * s.vx + v->b_ax[i] + gx;
         v->ay[i] = cp * ri * s.py + cv * ri * s.vy + v->b_ay[i] + gy;
         v->az[i] = cp * ri * s.pz + cv * ri * s.vz + v->b_az[i] + gz;
-        v->visc_rate[i] = cv * ri * s.d;
+        v->visc_rate[i] = cv * ri * (s.d > 0.0f ? s.d : 0.0f);
     }
 }
 
@@ -210,9 +277,9 @@ static void coincident_part(void *ctxp, int part, int b, int e)
         float s[3] = {0.0f, 0.0f, 0.0f};
         int any = 0;
         for (int k = 0; k < v->nl_count[i]; ++k) {
-            if (r2s[k] >= v->eps2)
-                continue;
             const int j = idx[k];
+            if (r2s[k] >= v->eps2 || j == i)
+                continue;
             float u[3];
             pair_direction(v->id[i], v->id[j], u);
             float fp = (v->prs[i] + v->prs[j]) * v->inv_rho[j] * h * h;

@@ -41,6 +41,30 @@
  * a block may read past the last particle (those lanes are masked). */
 #define MS_VOLUME_LANES 16
 
+/* Instruction sets of the neighbour filter (density.c), picked at run time
+ * (the same lists on each). The AVX-512 version needs GCC's target
+ * attribute and __builtin_cpu_supports; TSan builds stay on SSE2. */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+    !defined(__SANITIZE_THREAD__)
+#define MS_VOLUME_HAVE_AVX512 1
+#else
+#define MS_VOLUME_HAVE_AVX512 0
+#endif
+enum { MS_VOLUME_ISA_C = 0, MS_VOLUME_ISA_SSE2 = 1, MS_VOLUME_ISA_AVX512 = 2 };
+
+/* The sum of MS_VOLUME_LANES lane accumulators in one fixed tree order,
+ * (l, l+8), then (l, l+4), (l, l+2), (0, 1): what the AVX-512 code does
+ * with register halves, so both give the same bits. */
+static inline float ms_lanes_sum(const float a[16])
+{
+    float t8[8], t4[4];
+    for (int l = 0; l < 8; ++l)
+        t8[l] = a[l] + a[l + 8];
+    for (int l = 0; l < 4; ++l)
+        t4[l] = t8[l] + t8[l + 4];
+    return (t4[0] + t4[2]) + (t4[1] + t4[3]);
+}
+
 /* ---- worker threads (pool.c) ---- */
 typedef struct ms_vpool ms_vpool;
 /* Work on items [begin, end) of a parallel loop; `part` is the chunk index. */
@@ -153,6 +177,7 @@ struct ms_volume {
     int *ex_start, *ex_list;
     size_t ex_start_cap, ex_list_cap;
 
+    int isa;             /* MS_VOLUME_ISA_* of the neighbour filter */
     ms_vpool *pool;
     ms_nlist lists[MS_VOLUME_MAX_THREADS], ghosts[MS_VOLUME_MAX_THREADS];
     int list_failed[MS_VOLUME_MAX_THREADS];
@@ -225,6 +250,8 @@ static inline long ms_volume_cell_of(const ms_volume *v, float x, float y, float
 ms_status ms_volume_density(ms_volume *v);
 /* Pressure of a density (the equation of state of desc.pressure). */
 float ms_volume_pressure(const ms_volume *v, float rho);
+/* The best neighbour filter this CPU runs (MS_VOLUME_ISA_*). */
+int ms_volume_pick_isa(void);
 /* The boundary terms and a density pass at the current positions
  * (extraction and coupling between steps). */
 ms_status ms_volume_count_neighbours(ms_volume *v);
