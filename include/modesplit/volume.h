@@ -136,15 +136,22 @@ MS_API ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *o
 /* Eq. 18: sum of m v^2 / 2 over the particles, J. */
 MS_API double ms_volume_kinetic_energy(const ms_volume *v);
 
-/* A collider (eq. 15): particles near the shape feel a force along its
- * smoothed normal, and none ends inside it. The volume does not own the
+/* A collider (eq. 15): a shape (plane, box, sphere, glass, ... plugins)
+ * whose eq. 15 field acts on the particles near it, whose tangent plane
+ * reflects the liquid like a wall, and which no particle ends inside or
+ * crosses (a swept test in the shape's frame). The volume does not own the
  * shape: the caller keeps it alive (and does not destroy it) while the
  * volume uses it, i.e. until ms_volume_remove_collider or
  * ms_volume_destroy. A moving collider (a glass carried by the user) is
  * moved by the caller with ms_shape_set_pose between steps: during
- * ms_volume_step(dt) the shape is taken to start at its pose and move on
- * with its velocity, and the liquid is pushed and carried along with the
- * velocity of the shape. At most 64 colliders. */
+ * ms_volume_step(dt) the shape starts at its pose and moves on with its
+ * velocity, and the liquid is pushed and carried along with it (so after
+ * the step set the pose to pos + vel dt). If the caller puts it elsewhere
+ * than its velocity took it (a teleport, a pose set without a velocity),
+ * the next step sweeps it from there to the new place with the extra
+ * velocity jump/dt: the liquid in the way is pushed, not crushed. A
+ * particle squeezed between a collider and the domain's wall stays in the
+ * domain. At most 64 colliders. */
 MS_API ms_status ms_volume_add_collider(ms_volume *v, ms_shape *shape);
 MS_API ms_status ms_volume_remove_collider(ms_volume *v, ms_shape *shape);
 

@@ -13,7 +13,9 @@
  * of the classic mirror boundary: the real particles reflected across the
  * wall, across two walls at an edge, three at a corner), so it is not taken
  * for an under-dense one and the wall pushes back with the liquid's own
- * pressure. Colliders add the density of a mirrored lattice (collide.c). Pressure from the equation of state of desc.pressure:
+ * pressure. A particle within h of a shape collider sums in the same way
+ * the images, across the shape's tangent plane at its closest point, of
+ * the neighbours on its side of that plane. Pressure from the equation of state of desc.pressure:
  *   MS_PRESSURE_IDEAL_GAS  p = k (rho - rho0)                    (the paper's)
  *   MS_PRESSURE_TAIT       p = B ((rho/rho0)^7 - 1), B = rho0 c0^2 / 7,
  *                          continued along its tangent beyond rho = 2 rho0
@@ -190,6 +192,48 @@ static int gather(const ms_volume *v, ms_nlist *L, const float q[3], long c, int
     return (int)n;
 }
 
+/* The images of particle i's neighbours across the tangent plane of its
+ * nearest shape collider (point c = p - d n, normal n): the particles j on
+ * the liquid side of the plane within h of p's mirror image q = p - 2 d n.
+ * Rare (particles at a shape): plain C. */
+static int gather_plane(const ms_volume *v, ms_nlist *L, const float p[3], int i)
+{
+    const float d = v->c_d[i], n[3] = {v->c_nx[i], v->c_ny[i], v->c_nz[i]};
+    const float c[3] = {p[0] - d * n[0], p[1] - d * n[1], p[2] - d * n[2]};
+    const float q[3] = {p[0] - 2.0f * d * n[0], p[1] - 2.0f * d * n[1], p[2] - 2.0f * d * n[2]};
+    const int *restrict start = v->cell_start;
+    const long sx = v->gx, sxy = (long)v->gx * v->gy;
+    const long cq = ms_volume_cell_of(v, q[0], q[1], q[2]);
+    const float h2 = v->K.h2;
+    const int tag = (int)(MS_VOLUME_IMAGE_SHAPE << MS_VOLUME_IMAGE_SHIFT);
+    size_t cand = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy) {
+            const long row = cq + dz * sxy + dy * sx;
+            cand += (size_t)(start[row + 2] - start[row - 1]);
+        }
+    if (!reserve(L, cand + 2 * LANES))
+        return -1;
+    int n_in = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy) {
+            const long row = cq + dz * sxy + dy * sx;
+            for (int j = start[row - 1]; j < start[row + 2]; ++j) {
+                float dx = q[0] - v->x[j], dyy = q[1] - v->y[j], dzz = q[2] - v->z[j];
+                float r2 = dx * dx + dyy * dyy + dzz * dzz;
+                float side = (v->x[j] - c[0]) * n[0] + (v->y[j] - c[1]) * n[1] +
+                             (v->z[j] - c[2]) * n[2];
+                if (r2 < h2 && side > 0.0f) {
+                    L->idx[L->len] = j | tag;
+                    L->r2[L->len] = r2;
+                    L->len++;
+                    n_in++;
+                }
+            }
+        }
+    return n_in;
+}
+
 /* Pad a run that began at `begin` to a multiple of the lanes. */
 static void pad(ms_nlist *L, size_t begin, int index, float h2)
 {
@@ -278,6 +322,14 @@ static void density_part(void *ctxp, int part, int b, int e)
             }
             nghost += got;
         }
+        if (v->c_d[i] < v->K.h) {
+            int got = gather_plane(v, G, p, i);
+            if (got < 0) {
+                v->list_failed[part] = 1;
+                return;
+            }
+            nghost += got;
+        }
         pad(G, gbegin, i, h2);
         v->nl_begin[i] = (int)begin;
         v->nl_count[i] = nreal;
@@ -292,7 +344,7 @@ static void density_part(void *ctxp, int part, int b, int e)
         pairs += nreal + nghost;
         int is_surface = ms_volume_is_surface(v, i);
         surface += is_surface;
-        float rho = mw * sum + v->b_rho[i];
+        float rho = mw * sum;
         v->rho[i] = rho;
         v->inv_rho[i] = 1.0f / rho;
         v->prs[i] = ms_volume_pressure(v, rho);

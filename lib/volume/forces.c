@@ -26,8 +26,10 @@
  * A particle near the domain's walls also sums over the wall images of its
  * neighbours (density.c): their positions and velocities reflected, the
  * same pressure and density, so a wall is frictionless and holds the
- * liquid up with its own pressure. Colliders add the pressure force of a
- * mirrored lattice and the eq. 15 field (collide.c).
+ * liquid up with its own pressure; a particle at a shape collider likewise
+ * over the images across the shape's tangent plane (velocities mirrored in
+ * the shape's frame, so a moving shape pushes). The walls and colliders
+ * add the eq. 15 field (collide.c).
  *
  * Each particle gathers over its 27 neighbour cells in a fixed order; no
  * sum is shared between particles, so any thread split gives the same bytes.
@@ -111,11 +113,26 @@ static pair_sums sums_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist
         const unsigned f = (unsigned)gidx[k] >> MS_VOLUME_IMAGE_SHIFT;
         const int j = gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
         float pj[3] = {x[j], y[j], z[j]}, uj[3] = {vx[j], vy[j], vz[j]};
-        for (int a = 0; a < 3; ++a)
-            if (f & (1u << a)) {
-                pj[a] = 2.0f * wall[a] - pj[a];
-                uj[a] = -uj[a];
+        if (f == MS_VOLUME_IMAGE_SHAPE) {
+            /* across the tangent plane (point c, normal nn) of the nearest
+             * shape; velocity mirrored in the shape's frame */
+            const float dd = v->c_d[i];
+            const float nn[3] = {v->c_nx[i], v->c_ny[i], v->c_nz[i]};
+            const float vs[3] = {v->c_vx[i], v->c_vy[i], v->c_vz[i]};
+            const float c[3] = {xi - dd * nn[0], yi - dd * nn[1], zi - dd * nn[2]};
+            float sp = (pj[0] - c[0]) * nn[0] + (pj[1] - c[1]) * nn[1] + (pj[2] - c[2]) * nn[2];
+            float su = (uj[0] - vs[0]) * nn[0] + (uj[1] - vs[1]) * nn[1] + (uj[2] - vs[2]) * nn[2];
+            for (int a = 0; a < 3; ++a) {
+                pj[a] -= 2.0f * sp * nn[a];
+                uj[a] -= 2.0f * su * nn[a];
             }
+        } else {
+            for (int a = 0; a < 3; ++a)
+                if (f & (1u << a)) {
+                    pj[a] = 2.0f * wall[a] - pj[a];
+                    uj[a] = -uj[a];
+                }
+        }
         float dx = xi - pj[0], dyy = yi - pj[1], dzz = zi - pj[2];
         float r = sqrtf(gr2[k]);
         float hr = h - r;
@@ -143,11 +160,10 @@ static void forces_part(void *ctxp, int part, int b, int e)
     const float gx = v->desc.gravity[0], gy = v->desc.gravity[1], gz = v->desc.gravity[2];
     for (int i = b; i < e; ++i) {
         pair_sums s = sums_of(v, lst, gst, i);
-        const float ri = v->inv_rho[i], pi = v->prs[i];
-        const float pw = v->press_scale * pi * ri * ri; /* colliders: p_i / rho_i^2 */
-        v->ax[i] = cp * ri * s.px + cv * ri * s.vx + pw * v->b_gx[i] + v->b_ax[i] + gx;
-        v->ay[i] = cp * ri * s.py + cv * ri * s.vy + pw * v->b_gy[i] + v->b_ay[i] + gy;
-        v->az[i] = cp * ri * s.pz + cv * ri * s.vz + pw * v->b_gz[i] + v->b_az[i] + gz;
+        const float ri = v->inv_rho[i];
+        v->ax[i] = cp * ri * s.px + cv * ri * s.vx + v->b_ax[i] + gx;
+        v->ay[i] = cp * ri * s.py + cv * ri * s.vy + v->b_ay[i] + gy;
+        v->az[i] = cp * ri * s.pz + cv * ri * s.vz + v->b_az[i] + gz;
         v->visc_rate[i] = cv * ri * s.d;
     }
 }

@@ -106,6 +106,8 @@ ms_status ms_volume_step(ms_volume *v, float dt)
     const float lambda = v->desc.courant, h = v->K.h;
     double rest = dt, tau = 0.0;
     long taken = 0;
+    if (dt > 0.0f)
+        ms_volume_colliders_begin(v, dt);
     while (rest > 0.0 && v->n > 0) {
         ms_volume_grid_build(v);
         ms_volume_boundary(v, tau);
@@ -177,6 +179,8 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         v->counts_valid = 0;
         taken++;
     }
+    if (dt > 0.0f)
+        ms_volume_colliders_end(v, dt);
     if (v->n == 0)
         v->time += dt;
     if (taken > 0 || v->n == 0)

@@ -97,8 +97,9 @@ static void free_particles(ms_volume *v)
 {
     float **f[] = {&v->x,  &v->y,   &v->z,       &v->vx, &v->vy, &v->vz, &v->x2,
                    &v->y2, &v->z2,  &v->vx2,     &v->vy2, &v->vz2, &v->rho, &v->prs,
-                   &v->inv_rho, &v->ax, &v->ay, &v->az, &v->visc_rate, &v->b_rho,
-                   &v->b_nbr, &v->b_gx, &v->b_gy, &v->b_gz, &v->b_ax, &v->b_ay, &v->b_az};
+                   &v->inv_rho, &v->ax, &v->ay, &v->az, &v->visc_rate, &v->b_ax,
+                   &v->b_ay, &v->b_az, &v->c_d, &v->c_w, &v->c_nx, &v->c_ny, &v->c_nz,
+                   &v->c_vx, &v->c_vy, &v->c_vz};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) {
         ms_free(*f[k]);
         *f[k] = NULL;
@@ -156,7 +157,8 @@ ms_status ms_volume_reserve(ms_volume *v, int n)
     float **state[] = {&t.x, &t.y, &t.z, &t.vx, &t.vy, &t.vz};
     float **other[] = {&t.x2,  &t.y2, &t.z2, &t.vx2, &t.vy2, &t.vz2, &t.rho,
                        &t.prs, &t.inv_rho, &t.ax, &t.ay, &t.az, &t.visc_rate,
-                       &t.b_rho, &t.b_nbr, &t.b_gx, &t.b_gy, &t.b_gz, &t.b_ax, &t.b_ay, &t.b_az};
+                       &t.b_ax, &t.b_ay, &t.b_az, &t.c_d, &t.c_w, &t.c_nx, &t.c_ny, &t.c_nz,
+                       &t.c_vx, &t.c_vy, &t.c_vz};
     int ok = 1;
     for (size_t k = 0; k < 6; ++k) {
         float *p = ms_alloc_array(alloc, sizeof(float));
@@ -367,7 +369,7 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *out)
     out->count = v->n;
     out->surface_count = v->surface_count;
     out->pairs = v->pairs;
-    size_t per = 27 * sizeof(float) + 8 * sizeof(int) + 1;
+    size_t per = 30 * sizeof(float) + 8 * sizeof(int) + 1;
     out->bytes = sizeof *v + (size_t)v->cap * per +
                  ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
                  v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int);
@@ -392,10 +394,9 @@ ms_status ms_volume_add_collider(ms_volume *v, ms_shape *shape)
     if (v->ncolliders >= MS_VOLUME_MAX_COLLIDERS)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: add_collider: at most %d colliders",
                        MS_VOLUME_MAX_COLLIDERS);
-    /* TEMPORARY (milestone 1): shape colliders land with the next commit */
-    return ms_fail(MS_ERR_UNSUPPORTED,
-                   "volume: shape colliders are not in this build yet; the domain box is the "
-                   "only collider");
+    v->col_expect_valid[v->ncolliders] = 0;
+    v->colliders[v->ncolliders++] = shape;
+    return MS_OK;
 }
 
 ms_status ms_volume_remove_collider(ms_volume *v, ms_shape *shape)
@@ -405,8 +406,11 @@ ms_status ms_volume_remove_collider(ms_volume *v, ms_shape *shape)
                        "volume: remove_collider needs a volume and a shape");
     for (int i = 0; i < v->ncolliders; ++i)
         if (v->colliders[i] == shape) {
-            memmove(&v->colliders[i], &v->colliders[i + 1],
-                    (size_t)(v->ncolliders - i - 1) * sizeof v->colliders[0]);
+            size_t rest = (size_t)(v->ncolliders - i - 1);
+            memmove(&v->colliders[i], &v->colliders[i + 1], rest * sizeof v->colliders[0]);
+            memmove(&v->col_expect[i], &v->col_expect[i + 1], rest * sizeof v->col_expect[0]);
+            memmove(&v->col_expect_valid[i], &v->col_expect_valid[i + 1],
+                    rest * sizeof v->col_expect_valid[0]);
             v->ncolliders--;
             return MS_OK;
         }

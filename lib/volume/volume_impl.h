@@ -58,9 +58,12 @@ int ms_vpool_threads(const ms_vpool *p);
  * multiple of MS_VOLUME_LANES with (the particle itself, r^2 = h^2) so the
  * pair loops need no masks (a padding pair is at r = h: weight 0). Its
  * wall-image neighbours are a second run in `ghost`, packed as
- * j | image << MS_VOLUME_IMAGE_SHIFT (bit k of the image: reflected across
- * the nearer wall of axis k). Rebuilt by every density pass. */
+ * j | image << MS_VOLUME_IMAGE_SHIFT (bit k < 3 of the image: reflected
+ * across the nearer domain wall of axis k; MS_VOLUME_IMAGE_SHAPE: across
+ * the tangent plane of the particle's nearest shape collider). Rebuilt by
+ * every density pass. */
 #define MS_VOLUME_IMAGE_SHIFT 24
+#define MS_VOLUME_IMAGE_SHAPE 8u
 typedef struct ms_nlist {
     int *idx;
     float *r2;  /* m^2 */
@@ -103,11 +106,13 @@ struct ms_volume {
     float *rho, *prs, *inv_rho; /* kg/m^3, Pa, m^3/kg */
     float *ax, *ay, *az;        /* m/s^2 */
     float *visc_rate;           /* 1/s, D_i of the viscous bound */
-    /* boundary terms of the walls and colliders near each particle (collide.c) */
-    float *b_rho;               /* kg/m^3, density of the liquid mirrored beyond them */
-    float *b_nbr;               /* neighbours the mirrored liquid stands for */
-    float *b_gx, *b_gy, *b_gz;  /* kg/m^4, pressure gradient weight: a += p/rho^2 b_g */
-    float *b_ax, *b_ay, *b_az;  /* m/s^2, the eq. 15 field */
+    /* boundary terms near each particle (collide.c) */
+    float *b_ax, *b_ay, *b_az;  /* m/s^2, the eq. 15 field of the walls and colliders */
+    /* the nearest shape collider within h: its distance (m, > h: none), the
+     * outward normal and velocity there, and the weight of its eq. 15
+     * field; the particle's images across its tangent plane stand for the
+     * liquid beyond it, and the damping uses its normal */
+    float *c_d, *c_w, *c_nx, *c_ny, *c_nz, *c_vx, *c_vy, *c_vz;
     int *nbr;                   /* neighbours within h, self and wall images included */
     int *nl_begin, *nl_count;   /* its run in its chunk's list: first entry, neighbours */
     int *gl_begin, *gl_count;   /* its run of wall-image neighbours */
@@ -124,6 +129,14 @@ struct ms_volume {
 
     ms_shape *colliders[MS_VOLUME_MAX_COLLIDERS];
     int ncolliders;
+    /* where each collider's velocity took it at the end of the last step,
+     * and, during a step, the velocity (m/s) it is swept with and the jump
+     * (m) the caller moved it by on top of that (collide.c) */
+    float col_expect[MS_VOLUME_MAX_COLLIDERS][3];
+    int col_expect_valid[MS_VOLUME_MAX_COLLIDERS];
+    float col_vel[MS_VOLUME_MAX_COLLIDERS][3];
+    float col_jump[MS_VOLUME_MAX_COLLIDERS][3];
+    int in_step;
     ms_action actions[MS_VOLUME_MAX_ACTIONS];
     int nactions;
 
@@ -155,11 +168,11 @@ struct ms_volume {
     int coincident;      /* pairs closer than eps in the last density pass */
 };
 
-/* A surface particle: fewer neighbours (self and the mirrored liquid of the
- * walls included) than 3/4 of a particle inside the liquid has. */
+/* A surface particle: fewer neighbours (self and wall images included)
+ * than 3/4 of a particle inside the liquid has. */
 static inline int ms_volume_is_surface(const ms_volume *v, int i)
 {
-    return (float)v->nbr[i] + v->b_nbr[i] < v->surface_nbrs;
+    return (float)v->nbr[i] < v->surface_nbrs;
 }
 
 /* The domain walls within h of (x, y, z): bit k set when the nearer wall
@@ -220,16 +233,22 @@ ms_status ms_volume_count_neighbours(ms_volume *v);
 void ms_volume_forces(ms_volume *v);
 
 /* collide.c */
-/* The boundary terms b_* of the domain box and the colliders at the
- * current positions; tau is the time (s) since the start of the
- * ms_volume_step (moving colliders). */
+/* The eq. 15 field b_a of the domain box and the colliders, and each
+ * particle's nearest shape collider (c_*), at the current positions; tau
+ * is the time (s) since the start of the ms_volume_step (moving
+ * colliders). */
 void ms_volume_boundary(ms_volume *v, double tau);
 /* After the kick: implicit damping of the approach inside the field. */
 void ms_volume_collider_damp(ms_volume *v, double tau, float dt);
-/* After the drift from (x2, y2, z2): no particle inside a collider (swept
- * test in the collider's frame, so none tunnels) or outside the domain. */
-void ms_volume_collider_resolve(ms_volume *v, double tau, float dt);
+/* Largest collider speed (m/s) in the current step, for the CFL bound. */
 float ms_volume_collider_speed(const ms_volume *v);
+/* At the start and end of a step of dt seconds (dt > 0). */
+void ms_volume_colliders_begin(ms_volume *v, float dt);
+void ms_volume_colliders_end(ms_volume *v, float dt);
+/* After the drift from (x2, y2, z2) at tau to the positions at tau + dt:
+ * no particle inside a collider (swept test in the collider's frame, so
+ * none tunnels) or outside the domain. */
+void ms_volume_collider_resolve(ms_volume *v, double tau, float dt);
 
 /* extract.c: the eq. 16 iso-level that puts a still, flat liquid's surface
  * half a spacing above its top layer. */
