@@ -160,11 +160,8 @@ static int dispatch(int argc, char **argv)
                MS_FILE_FORMAT_VERSION);
         return EXIT_OK;
     }
-    if (!strcmp(cmd, "run")) { /* held back until lib/sim is on main */
-        tool_error("run: this build has no sim yet (lib/sim has not landed); info, check and "
-                   "plugins work");
-        return EXIT_USAGE;
-    }
+    if (!strcmp(cmd, "run"))
+        return cmd_run(argc - 1, argv + 1);
     if (!strcmp(cmd, "info"))
         return cmd_info(argc - 1, argv + 1);
     if (!strcmp(cmd, "check"))
