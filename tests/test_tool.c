@@ -25,6 +25,7 @@
 #include "support.h"
 
 #define DEFAULT_SCENE "data/scenes/default.json"
+#define SMALL_SCENE "tests/data/small_run.json" /* fast: 64x48 waves, 450 particles */
 #define BAD_DIR "tests/data/bad_scenes"
 
 /* ---- helpers ---------------------------------------------------------- */
@@ -541,7 +542,7 @@ START_TEST(sigkill_mid_run_leaves_a_file_h5dump_and_info_read)
     const char *out = tmp_path("killed.h5");
     for (int round = 0; round < 3; ++round) {
         remove(out);
-        pid_t pid = spawn_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "100000",
+        pid_t pid = spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
                                                 "--out", out, "--quiet", NULL},
                                tmp_path("o.txt"), tmp_path("e.txt"));
         /* readable while the run goes on */
@@ -575,7 +576,7 @@ START_TEST(sigint_and_sigterm_finish_the_frame_and_close_the_file)
     for (int i = 0; i < 2; ++i) {
         const char *out = tmp_path("stopped.h5");
         remove(out);
-        pid_t pid = spawn_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "100000",
+        pid_t pid = spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
                                                 "--out", out, NULL},
                                tmp_path("o.txt"), tmp_path("e.txt"));
         ck_assert(wait_for_frames(out, 2, 60));
@@ -627,7 +628,7 @@ START_TEST(unwritable_outputs_exit_1_with_a_sentence)
 }
 END_TEST
 
-/* A full disk: a 4 MiB tmpfs in a private mount namespace (root only; it
+/* A full disk: a 1 MiB tmpfs in a private mount namespace (root only; it
  * vanishes with the process). The run stops with status 1 and a sentence,
  * and the file keeps the frames written before. */
 START_TEST(full_disk_exits_1_and_keeps_the_frames)
@@ -641,7 +642,7 @@ START_TEST(full_disk_exits_1_and_keeps_the_frames)
     char disk[600];
     snprintf(disk, sizeof disk, "%s/disk", tmp_dir);
     ck_assert_int_eq(mkdir(disk, 0700), 0);
-    if (mount("tmpfs", disk, "tmpfs", 0, "size=4m") != 0) {
+    if (mount("tmpfs", disk, "tmpfs", 0, "size=1m") != 0) {
         fprintf(stderr, "test_tool: full-disk case skipped (cannot mount a tmpfs: %s)\n",
                 strerror(errno));
         remove_tmp_dir();
@@ -649,7 +650,7 @@ START_TEST(full_disk_exits_1_and_keeps_the_frames)
     }
     char out[700];
     snprintf(out, sizeof out, "%s/run.h5", disk);
-    result r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "100000", "--out", out,
+    result r = run_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000", "--out", out,
                                          "--quiet", NULL});
     ASSERT_EXIT(r, 1);
     ck_assert_msg(strstr(r.err, "are free on the file system") || strstr(r.err, "No space left"),
@@ -684,7 +685,7 @@ START_TEST(progress_is_a_bar_on_a_terminal)
         int o = open("/dev/null", O_WRONLY);
         dup2(s, 2);
         dup2(o, 1);
-        execl(tool_path(), tool_path(), "run", DEFAULT_SCENE, "--frames", "8", "--no-out",
+        execl(tool_path(), tool_path(), "run", SMALL_SCENE, "--frames", "8", "--no-out",
               (char *)NULL);
         _exit(127);
     }

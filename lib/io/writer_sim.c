@@ -7,21 +7,13 @@
 
 #include "io/io_internal.h"
 
-/* Does the sim hold this part? */
+/* Does the sim hold this part? (Its grids exist from creation on; its
+ * views only after the first step.) */
 static int sim_has(const ms_sim *sim, unsigned bit)
 {
-    int nx = 0, ny = 0;
-    switch (bit) {
-    case MS_FIELD_COMBINED:
-        return ms_sim_height(sim, &nx, &ny) != NULL && nx > 0;
-    case MS_FIELD_SURFACE:
-        return ms_sim_surface_height(sim, &nx, &ny) != NULL && nx > 0;
-    case MS_FIELD_VOLUME:
-    case MS_FIELD_PARTICLES: /* particles come with the volume */
-        return ms_sim_volume_height(sim, &nx, &ny) != NULL && nx > 0;
-    default:
-        return 0;
-    }
+    ms_grid g;
+    unsigned grid_of = bit == MS_FIELD_PARTICLES ? MS_FIELD_VOLUME : bit;
+    return ms_sim_field_grid(sim, grid_of, &g) == MS_OK;
 }
 
 ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields, ms_writer **out)
@@ -76,7 +68,11 @@ ms_status ms_writer_frame(ms_writer *w, const ms_sim *sim)
         d.field[i] = i == MS_IO_COMBINED  ? ms_sim_height(sim, &nx, &ny)
                      : i == MS_IO_SURFACE ? ms_sim_surface_height(sim, &nx, &ny)
                                           : ms_sim_volume_height(sim, &nx, &ny);
-        if (!d.field[i] || nx != l->grid[i].nx || ny != l->grid[i].ny)
+        if (!d.field[i])
+            return ms_fail(MS_ERR_STATE,
+                           "io: the sim has published no %s field yet (step it before writing "
+                           "a frame)", ms_io_field_names[i]);
+        if (nx != l->grid[i].nx || ny != l->grid[i].ny)
             return ms_fail(MS_ERR_STATE,
                            "io: the sim's %s field is %d x %d, the file's %d x %d: not the sim "
                            "the writer was opened with", ms_io_field_names[i], nx, ny,

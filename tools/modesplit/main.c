@@ -127,7 +127,8 @@ int tool_scene_frames(const ms_scene *sc, const char *path, double duration, lon
     double dt = ms_scene_frame_dt(sc);
     if (duration < 0)
         duration = ms_scene_duration(sc);
-    double f = dt > 0 ? ceil(duration / dt - 1e-9) : INFINITY;
+    /* frame_dt is a float: 1 s / 0.02f is 50.0000001, which is 50 frames */
+    double f = dt > 0 ? ceil(duration / dt * (1.0 - 1e-7)) : INFINITY;
     if (!(f <= 1e9)) {
         tool_error("%s: duration %g s at frame_dt %g s (as a float) is more than 1e9 frames",
                    path, duration, dt);
