@@ -2,6 +2,43 @@
  * (paper section 3.6): cubemap reflection and refraction mixed by Fresnel,
  * a caustics light map from Snell's law, shader plugins (water, milk, oil).
  * Every call returns MS_ERR_UNSUPPORTED in a build without OSMesa.
+ *
+ *     ms_renderer *r;
+ *     if (ms_renderer_create(scene, &r) != MS_OK)       // the scene's `render`
+ *         fprintf(stderr, "%s\n", ms_last_error());
+ *     for (...) {
+ *         ms_sim_step(sim, dt);
+ *         ms_renderer_draw(r, sim);                       // the combined field
+ *         ms_renderer_write_png(r, "frame_0001.png");     // or ms_renderer_pixels
+ *     }
+ *     ms_renderer_destroy(r);
+ *
+ * An engine or a test that has no scene file fills an ms_renderer_desc
+ * (ms_renderer_desc_default, then the fields it cares about) and hands
+ * ms_renderer_draw_field any height field with its grid.
+ *
+ * What is drawn: the height field as a mesh (normals by central
+ * differences) shaded by the shader plugin; a tiled pool (floor, inner
+ * walls, a deck at the rim) under and around it; the sky cubemap behind.
+ * The renderer runs only the passes the shader's flags ask for:
+ *   MS_SHADER_NEEDS_REFLECTION  ms_env = the sky cubemap;
+ *   MS_SHADER_NEEDS_REFRACTION  ms_env = the sky with the pool drawn into
+ *       it, seen from the centre of the still water surface (the paper's
+ *       cubemap refraction: the part under water split off into the
+ *       environment map), made once at create;
+ *   MS_SHADER_NEEDS_CAUSTICS    with `caustics` on, the light map ms_caustics
+ *       is traced each frame on the CPU (Snell's law, light carried by rays
+ *       from the surface to the floor); with it off, a map of 1 (unfocused).
+ * With _CAUSTICS the part of ms_env under water holds the pool's colour
+ * lit by the sky only (the shader adds the sun through the light map);
+ * without it, lit by the sun too.
+ *
+ * Colours: shaders work in linear RGB; the image is sRGB-encoded, 8 bits.
+ * The same field, desc and build give the same bytes (llvmpipe rasterises
+ * each tile in one thread; any LP_NUM_THREADS gives the same image).
+ *
+ * Threads: a renderer is used by one thread at a time (any thread: each
+ * call makes its GL context current and releases it again).
  */
 #ifndef MODESPLIT_RENDER_H
 #define MODESPLIT_RENDER_H
@@ -14,12 +51,82 @@
 extern "C" {
 #endif
 
+/* Largest image side (pixels), and largest cubemap face / light map side. */
+#define MS_RENDER_MAX_SIDE 8192
+#define MS_RENDER_MAX_CAUSTICS 4096
+
+typedef struct ms_renderer_desc {
+    int width, height;           /* pixels, [16, MS_RENDER_MAX_SIDE]; default 950 x 950 */
+    const char *shader;          /* shader plugin name; default "water" */
+    const char *shader_params;   /* its parameters as a JSON object text; NULL = defaults */
+    /* "builtin" (a procedural sky), a directory holding six PNG faces
+     * px.png nx.png py.png ny.png pz.png nz.png (or posx.png ... negz.png),
+     * or one PNG holding the six square faces stacked top to bottom in
+     * that order (height = 6 x width). Faces are named by world axes (z up)
+     * and laid out as OpenGL cube map faces. Default "builtin". */
+    const char *cubemap;
+    int caustics;                /* 1: trace the caustics light map (if the shader uses it); default 1 */
+    int caustics_resolution;     /* light map texels per side, [16, MS_RENDER_MAX_CAUSTICS]; 512 */
+    float caustics_intensity;    /* contrast of the light map, [0, 100]; 1 = physical */
+    float light_dir[3];          /* direction the sun's light travels (not all 0); [0.3, 0.2, -1] */
+    float light_color[3];        /* linear RGB, each [0, 100]; default [1, 1, 1] */
+    float ior;                   /* refractive index used to trace caustics, [1, 3]; 1.333 */
+    float eye[3], target[3], up[3]; /* camera, m; default: from the -y side, above the pool */
+    float fov;                   /* degrees, vertical, [1, 179]; default 45 */
+    /* The pool: pool_min = x, y of one corner and z of the floor; pool_max =
+     * x, y of the other corner and z of the rim (top of the walls). The
+     * height field's values are heights above the floor (the scene's
+     * heights above domain.min z). Default [0, 0, 0] .. [1, 1, 0.3]. */
+    float pool_min[3], pool_max[3]; /* m */
+    float water_level;           /* m (world z) of still water, in [floor, rim]; default 0.25 */
+    float tile_size;             /* m, edge of a floor tile, >= 0; 0 = 1/12 of the shorter side */
+    float floor_color[3];        /* linear RGB of the tiles, each [0, 1]; [0.30, 0.52, 0.60] */
+} ms_renderer_desc;
+
+MS_API ms_renderer_desc ms_renderer_desc_default(void);
+/* The desc of a scene: its `render` section (defaults where it has none)
+ * and its pool: domain.min / domain.max x-y, the floor at domain.min z, the
+ * still water at surface.level, the rim a little above. The strings point
+ * into the scene: valid while it lives. */
+MS_API ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out);
+/* Validates every field (MS_ERR_INVALID_ARGUMENT naming it), loads the
+ * shader plugin (MS_ERR_PLUGIN; a GLSL compile or link error carries the
+ * info log), the cubemap (MS_ERR_IO, MS_ERR_PARSE), makes the GL context
+ * (MS_ERR_UNSUPPORTED without OSMesa). */
+MS_API ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out);
+/* ms_renderer_desc_from_scene + ms_renderer_create_desc; a scene without a
+ * `render` section is refused (it asks for no image). */
 MS_API ms_status ms_renderer_create(const ms_scene *sc, ms_renderer **out);
 MS_API void ms_renderer_destroy(ms_renderer *r);
+
+/* Draws the sim's combined field (ms_sim_height, ms_sim_field_grid of
+ * MS_FIELD_COMBINED) at ms_sim_time. */
 MS_API ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim);
+/* Draws any height field: h holds g->nx * g->ny heights (m above the pool
+ * floor, row-major, x fastest) at the cell centres of grid g; time (s) is
+ * the shader's ms_time. A non-finite height is refused. */
+MS_API ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *g,
+                                        double time);
+
 /* RGBA8, top row first; view valid until the next draw. */
 MS_API const unsigned char *ms_renderer_pixels(const ms_renderer *r, int *w, int *h);
 MS_API ms_status ms_renderer_write_png(const ms_renderer *r, const char *path);
+
+/* What the last draw cost and did. */
+typedef struct ms_render_stats {
+    unsigned passes;      /* MS_SHADER_NEEDS_* bits of the passes that run (plugin.h) */
+    long frames;          /* draws finished */
+    double mesh_ms;       /* normals and vertex upload, last draw */
+    double caustics_ms;   /* light map tracing and upload (0 when not run) */
+    double draw_ms;       /* GL drawing until finished */
+    double readback_ms;   /* pixels read back and flipped */
+    double total_ms;      /* the whole last draw */
+} ms_render_stats;
+MS_API void ms_renderer_stats(const ms_renderer *r, ms_render_stats *out);
+
+/* The caustics light map of the last draw (texels over the pool, row-major
+ * from pool_min, 1 = unfocused light); NULL when it was not traced. */
+MS_API const float *ms_renderer_caustics(const ms_renderer *r, int *n);
 
 #ifdef __cplusplus
 }

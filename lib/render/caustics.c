@@ -1,0 +1,225 @@
+/* The caustics light map (paper section 3.6: "a planar light map is
+ * generated via light raytracing using Snell's law"), on the CPU.
+ *
+ * Parallel sunlight (direction L, |L| = 1, L_z < 0) crosses the liquid
+ * surface z = floor + h(x, y). A patch of the surface whose horizontal
+ * projection has area A takes the flux E0 |L_z| A whatever its tilt (the
+ * surface is a graph over the floor); the Fresnel transmission T (Schlick:
+ * R = R0 + (1 - R0)(1 - cos i)^5, R0 = ((n - 1)/(n + 1))^2) lets 1 - R of it
+ * in, along the refracted direction (Snell's law, vector form, eta = 1/n:
+ *     t = eta L + (eta cos i - sqrt(1 - eta^2 (1 - cos i^2))) N ),
+ * to the floor. Where neighbouring rays converge the floor is brighter.
+ * Rays start on a lattice over the pool, m per texel and axis (m as small
+ * as makes them at least as fine as the field's cells), each at its
+ * patch's centre with height and gradient interpolated bilinearly, and are
+ * splat bilinearly where they meet the floor; flat water gives 1 in every
+ * texel exactly (the map is scaled by flat water's flux E0 |L_z| T0), so
+ * the map's mean over the pool is the share of light that reaches the
+ * floor, relative to flat water: conserved up to the slopes' extra
+ * reflection and the rays that meet the walls. A [1 2 1]/4 blur each way
+ * hides the ray lattice where rays diverge.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "core/internal.h"
+#include "render/render_internal.h"
+
+#define MAX_RAYS_PER_TEXEL 8 /* per axis */
+
+void ms_caustics_free(ms_caustics *c)
+{
+    if (!c)
+        return;
+    ms_free(c->map);
+    ms_free(c->tmp);
+    ms_free(c->gx);
+    ms_free(c->gy);
+    memset(c, 0, sizeof *c);
+}
+
+static ms_status reserve(ms_caustics *c, int n, size_t cells)
+{
+    if (c->n != n) {
+        ms_free(c->map);
+        ms_free(c->tmp);
+        c->map = ms_alloc_array((size_t)n * (size_t)n, sizeof(float));
+        c->tmp = ms_alloc_array((size_t)n * (size_t)n, sizeof(float));
+        c->n = c->map && c->tmp ? n : 0;
+        if (!c->n)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for a %d x %d caustics "
+                                                 "light map", n, n);
+    }
+    if (c->field_cap < cells) {
+        ms_free(c->gx);
+        ms_free(c->gy);
+        c->gx = ms_alloc_array(cells, sizeof(float));
+        c->gy = ms_alloc_array(cells, sizeof(float));
+        c->field_cap = c->gx && c->gy ? cells : 0;
+        if (!c->field_cap)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "render: out of memory for the caustics tracer's gradients");
+    }
+    return MS_OK;
+}
+
+static float schlick_transmission(float cosi, float r0)
+{
+    float m = 1.0f - cosi;
+    float m2 = m * m;
+    return 1.0f - (r0 + (1.0f - r0) * m2 * m2 * m);
+}
+
+/* Gradients at the cell centres by central differences, one-sided at the
+ * edges. */
+static void gradients(const float *h, int nx, int ny, float dx, float dy, float *restrict gx,
+                      float *restrict gy)
+{
+    for (int j = 0; j < ny; ++j) {
+        const float *row = h + (size_t)j * (size_t)nx;
+        const float *lo = h + (size_t)(j > 0 ? j - 1 : j) * (size_t)nx;
+        const float *hi = h + (size_t)(j < ny - 1 ? j + 1 : j) * (size_t)nx;
+        const float iy = (j > 0 && j < ny - 1 ? 0.5f : 1.0f) / dy;
+        float *ox = gx + (size_t)j * (size_t)nx, *oy = gy + (size_t)j * (size_t)nx;
+        for (int i = 0; i < nx; ++i)
+            oy[i] = (hi[i] - lo[i]) * iy;
+        ox[0] = (row[1] - row[0]) / dx;
+        for (int i = 1; i < nx - 1; ++i)
+            ox[i] = (row[i + 1] - row[i - 1]) * (0.5f / dx);
+        ox[nx - 1] = (row[nx - 1] - row[nx - 2]) / dx;
+    }
+}
+
+/* Where world coordinate x (m) samples the nodes (cell centres) of an axis
+ * of `cells` cells from x0 with spacing dx: the node below and the
+ * fraction towards the next, clamped to the grid. */
+static void sample_axis(float x, float x0, float dx, int cells, int *i0, float *f)
+{
+    float u = (x - x0) / dx - 0.5f;
+    int i = (int)floorf(u);
+    float t = u - (float)i;
+    if (i < 0)
+        i = 0, t = 0;
+    if (i > cells - 2)
+        i = cells - 2, t = 1;
+    *i0 = i;
+    *f = t;
+}
+
+/* [1 2 1] / 4 along rows of src into dst (stride 1) with clamped edges;
+ * called on rows, then on the transpose's rows. */
+static void blur_rows(const float *src, float *dst, int n)
+{
+    for (int j = 0; j < n; ++j) {
+        const float *s = src + (size_t)j * (size_t)n;
+        float *d = dst + (size_t)j * (size_t)n;
+        d[0] = 0.25f * (3.0f * s[0] + s[1]);
+        for (int i = 1; i < n - 1; ++i)
+            d[i] = 0.25f * (s[i - 1] + 2.0f * s[i] + s[i + 1]);
+        d[n - 1] = 0.25f * (s[n - 2] + 3.0f * s[n - 1]);
+    }
+}
+
+static void blur_cols(const float *src, float *dst, int n)
+{
+    for (int j = 0; j < n; ++j) {
+        const float *up = src + (size_t)(j > 0 ? j - 1 : j) * (size_t)n;
+        const float *s = src + (size_t)j * (size_t)n;
+        const float *dn = src + (size_t)(j < n - 1 ? j + 1 : j) * (size_t)n;
+        float *d = dst + (size_t)j * (size_t)n;
+        for (int i = 0; i < n; ++i)
+            d[i] = 0.25f * (up[i] + 2.0f * s[i] + dn[i]);
+    }
+}
+
+ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const float *h,
+                            const ms_grid *g)
+{
+    const int n = d->resolution, nx = g->nx, ny = g->ny;
+    ms_status st = reserve(c, n, (size_t)nx * (size_t)ny);
+    if (st != MS_OK)
+        return st;
+    float *map = c->map;
+    memset(map, 0, (size_t)n * (size_t)n * sizeof *map);
+    const float Lx = d->light_dir[0], Ly = d->light_dir[1], Lz = d->light_dir[2];
+    if (!(Lz < -1e-3f)) {
+        /* the sun at or below the horizon: no direct light on the floor */
+        return MS_OK;
+    }
+    gradients(h, nx, ny, g->dx, g->dy, c->gx, c->gy);
+
+    /* m rays per texel and axis: as fine as the field's cells, and an
+     * integer fraction of a texel, so flat water splats exactly 1 in each */
+    const float tx = d->pool[2] / (float)n, ty = d->pool[3] / (float)n; /* m per texel */
+    const int mx = MS_CLAMP((int)ceilf(tx / g->dx - 1e-3f), 1, MAX_RAYS_PER_TEXEL);
+    const int my = MS_CLAMP((int)ceilf(ty / g->dy - 1e-3f), 1, MAX_RAYS_PER_TEXEL);
+    const int rx = n * mx, ry = n * my;
+    const float eta = 1.0f / d->ior;
+    const float r0 = ((d->ior - 1.0f) / (d->ior + 1.0f)) * ((d->ior - 1.0f) / (d->ior + 1.0f));
+    const float t0 = schlick_transmission(-Lz, r0);
+    /* light per ray over light per texel, both through flat water */
+    const float w_ray = 1.0f / ((float)(mx * my) * t0);
+    const float px0 = d->pool[0], py0 = d->pool[1];
+    const float itx = 1.0f / tx, ity = 1.0f / ty;
+
+    for (int kj = 0; kj < ry; ++kj) {
+        const float y = py0 + ((float)kj + 0.5f) * ty / (float)my;
+        int j0;
+        float fv;
+        sample_axis(y, g->origin[1], g->dy, ny, &j0, &fv);
+        const size_t r0i = (size_t)j0 * (size_t)nx, r1i = r0i + (size_t)nx;
+        for (int ki = 0; ki < rx; ++ki) {
+            const float x = px0 + ((float)ki + 0.5f) * tx / (float)mx;
+            int i0;
+            float fu;
+            sample_axis(x, g->origin[0], g->dx, nx, &i0, &fu);
+            const size_t a = r0i + (size_t)i0, b = a + 1, cc = r1i + (size_t)i0, dd = cc + 1;
+            const float w00 = (1 - fu) * (1 - fv), w10 = fu * (1 - fv);
+            const float w01 = (1 - fu) * fv, w11 = fu * fv;
+            float hh = w00 * h[a] + w10 * h[b] + w01 * h[cc] + w11 * h[dd];
+            float gxx = w00 * c->gx[a] + w10 * c->gx[b] + w01 * c->gx[cc] + w11 * c->gx[dd];
+            float gyy = w00 * c->gy[a] + w10 * c->gy[b] + w01 * c->gy[cc] + w11 * c->gy[dd];
+            float hx, hy, w;
+            if (hh > 0) {
+                float inv = 1.0f / sqrtf(gxx * gxx + gyy * gyy + 1.0f);
+                float Nx = -gxx * inv, Ny = -gyy * inv, Nz = inv;
+                float cosi = -(Lx * Nx + Ly * Ny + Lz * Nz);
+                if (cosi <= 0)
+                    continue; /* a slope facing away from the sun: no light enters */
+                float k = 1.0f - eta * eta * (1.0f - cosi * cosi);
+                float m = eta * cosi - sqrtf(k);
+                float tX = eta * Lx + m * Nx, tY = eta * Ly + m * Ny, tZ = eta * Lz + m * Nz;
+                if (!(tZ < -1e-6f))
+                    continue;
+                float s = hh / -tZ; /* path length to the floor, m */
+                hx = x + s * tX;
+                hy = y + s * tY;
+                w = w_ray * schlick_transmission(cosi, r0);
+            } else {
+                /* dry: the sun reaches the floor as through flat water */
+                hx = x;
+                hy = y;
+                w = w_ray * t0;
+            }
+            float u = (hx - px0) * itx - 0.5f, v = (hy - py0) * ity - 0.5f;
+            if (!(u >= -0.5f && u <= (float)n - 0.5f && v >= -0.5f && v <= (float)n - 0.5f))
+                continue; /* into a wall */
+            int iu = (int)floorf(u), iv = (int)floorf(v);
+            float au = u - (float)iu, av = v - (float)iv;
+            int iu1 = MS_MIN(iu + 1, n - 1), iv1 = MS_MIN(iv + 1, n - 1);
+            iu = MS_MAX(iu, 0);
+            iv = MS_MAX(iv, 0);
+            float *r_lo = map + (size_t)iv * (size_t)n, *r_hi = map + (size_t)iv1 * (size_t)n;
+            r_lo[iu] += w * (1 - au) * (1 - av);
+            r_lo[iu1] += w * au * (1 - av);
+            r_hi[iu] += w * (1 - au) * av;
+            r_hi[iu1] += w * au * av;
+        }
+    }
+    blur_rows(map, c->tmp, n);
+    blur_cols(c->tmp, map, n);
+    const float k = d->intensity;
+    for (size_t i = 0; i < (size_t)n * (size_t)n; ++i)
+        map[i] = MS_MAX(1.0f + k * (map[i] - 1.0f), 0.0f);
+    return MS_OK;
+}

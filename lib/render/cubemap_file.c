@@ -1,0 +1,140 @@
+/* Cubemaps from files (libpng's simplified API): a directory of six square
+ * PNG faces named by world axes (px nx py ny pz nz, or posx ... negz), or
+ * one PNG of the six faces stacked top to bottom in that order. Faces are
+ * taken as they are (sRGB, OpenGL's cube map layout); grey or paletted
+ * PNGs are converted to RGBA by libpng. */
+#include <png.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "core/internal.h"
+#include "render/render_internal.h"
+
+#define MAX_FACE 4096 /* texels per side */
+
+static const char *const short_names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+static const char *const long_names[6] = {"posx", "negx", "posy", "negy", "posz", "negz"};
+
+/* Reads a PNG as RGBA8; *w, *h its size. */
+static ms_status read_png(const char *path, unsigned char **out, int *w, int *h)
+{
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    *out = NULL;
+    if (!png_image_begin_read_from_file(&img, path)) {
+        FILE *f = fopen(path, "rb");
+        int exists = f != NULL;
+        if (f)
+            fclose(f);
+        ms_status st = ms_fail(exists ? MS_ERR_PARSE : MS_ERR_IO,
+                               "render: cubemap \"%s\" is not a readable PNG (%s)", path,
+                               img.message);
+        png_image_free(&img);
+        return st;
+    }
+    if (img.width < 1 || img.height < 1 || img.width > 6 * MAX_FACE ||
+        img.height > 6 * MAX_FACE) {
+        png_image_free(&img);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: cubemap \"%s\" is %u x %u pixels; faces may be at most %d "
+                       "texels a side",
+                       path, (unsigned)img.width, (unsigned)img.height, MAX_FACE);
+    }
+    img.format = PNG_FORMAT_RGBA;
+    unsigned char *px = ms_alloc(PNG_IMAGE_SIZE(img));
+    if (!px) {
+        png_image_free(&img);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"", path);
+    }
+    if (!png_image_finish_read(&img, NULL, px, 0, NULL)) {
+        ms_status st = ms_fail(MS_ERR_PARSE, "render: cubemap \"%s\" cannot be decoded (%s)",
+                               path, img.message);
+        png_image_free(&img);
+        ms_free(px);
+        return st;
+    }
+    *w = (int)img.width;
+    *h = (int)img.height;
+    *out = px;
+    return MS_OK;
+}
+
+static int file_exists(const char *path)
+{
+    struct stat sb;
+    return stat(path, &sb) == 0 && S_ISREG(sb.st_mode);
+}
+
+static ms_status load_dir(const char *dir, ms_cubemap *out)
+{
+    for (int f = 0; f < 6; ++f) {
+        char path[4096];
+        snprintf(path, sizeof path, "%s/%s.png", dir, short_names[f]);
+        if (!file_exists(path))
+            snprintf(path, sizeof path, "%s/%s.png", dir, long_names[f]);
+        if (!file_exists(path))
+            return ms_fail(MS_ERR_IO,
+                           "render: cubemap directory \"%s\" has no %s.png (or %s.png); it "
+                           "needs six faces px nx py ny pz nz",
+                           dir, short_names[f], long_names[f]);
+        int w, h;
+        ms_status st = read_png(path, &out->face[f], &w, &h);
+        if (st != MS_OK)
+            return st;
+        if (w != h || (f > 0 && w != out->size))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "render: cubemap face \"%s\" is %d x %d texels; faces must be "
+                           "square and all of one size (%d)",
+                           path, w, h, f > 0 ? out->size : w);
+        out->size = w;
+    }
+    return MS_OK;
+}
+
+static ms_status load_strip(const char *path, ms_cubemap *out)
+{
+    unsigned char *px;
+    int w, h;
+    ms_status st = read_png(path, &px, &w, &h);
+    if (st != MS_OK)
+        return st;
+    if (h != 6 * w || w > MAX_FACE) {
+        ms_free(px);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: cubemap \"%s\" is %d x %d pixels; a single-file cubemap is six "
+                       "square faces stacked (height = 6 x width, width <= %d)",
+                       path, w, h, MAX_FACE);
+    }
+    size_t face = (size_t)w * (size_t)w * 4;
+    for (int f = 0; f < 6; ++f) {
+        out->face[f] = ms_alloc(face);
+        if (!out->face[f]) {
+            ms_free(px);
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"",
+                           path);
+        }
+        memcpy(out->face[f], px + (size_t)f * face, face);
+    }
+    out->size = w;
+    ms_free(px);
+    return MS_OK;
+}
+
+ms_status ms_cubemap_load(const char *path, ms_cubemap *out)
+{
+    out->size = 0;
+    for (int f = 0; f < 6; ++f)
+        out->face[f] = NULL;
+    struct stat sb;
+    if (stat(path, &sb) != 0)
+        return ms_fail(MS_ERR_IO,
+                       "render: cubemap \"%s\" does not exist; allowed: \"builtin\", a "
+                       "directory of six PNG faces or one PNG strip",
+                       path);
+    ms_status st = S_ISDIR(sb.st_mode) ? load_dir(path, out) : load_strip(path, out);
+    if (st != MS_OK)
+        ms_cubemap_free(out);
+    return st;
+}

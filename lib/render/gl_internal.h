@@ -1,0 +1,95 @@
+/* The GL side of the renderer (compiled only with OSMesa): what the gl_*.c
+ * files share. One OSMesa context per renderer, made current for each call
+ * and released after it; drawing goes to an sRGB framebuffer object of the
+ * image's size, read back at the end of the frame. */
+#ifndef MS_RENDER_GL_INTERNAL_H
+#define MS_RENDER_GL_INTERNAL_H
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "render/render_internal.h"
+
+/* Column-major 4 x 4 matrices, as OpenGL takes them. */
+void ms_mat4_look_at(const float eye[3], const float target[3], const float up[3], float m[16]);
+void ms_mat4_perspective(float fov_y_deg, float aspect, float znear, float zfar, float m[16]);
+/* A view from eye along the basis right, up, forward (world vectors;
+ * the eye looks along forward). */
+void ms_mat4_basis_view(const float eye[3], const float right[3], const float up[3],
+                        const float forward[3], float m[16]);
+
+typedef struct ms_gl_program {
+    GLuint prog;
+} ms_gl_program;
+
+/* A program from GLSL sources; `what` names it in the error sentence, which
+ * carries the compiler's or linker's log. MS_ERR_PLUGIN on failure. */
+ms_status ms_gl_program_build(const char *what, const char *vs, const char *fs,
+                              ms_gl_program *out);
+void ms_gl_program_free(ms_gl_program *p);
+/* The table a shader plugin sets its uniforms through (bound program). */
+ms_shader_uniforms ms_gl_uniform_table(ms_gl_program *p);
+
+/* The OSMesa context (gl_context.c). */
+typedef struct ms_gl_context {
+    OSMesaContext ctx;
+    unsigned char buffer[16 * 16 * 4]; /* the context's own (unused) framebuffer */
+} ms_gl_context;
+
+ms_status ms_gl_context_create(ms_gl_context *c);
+/* Makes c current in this thread; MS_ERR_UNSUPPORTED if OSMesa refuses. */
+ms_status ms_gl_context_begin(ms_gl_context *c);
+/* Releases the thread's current context. */
+void ms_gl_context_end(void);
+void ms_gl_context_destroy(ms_gl_context *c);
+
+/* Floats per pool vertex: position 3, normal 3, texture coordinate 2,
+ * colour 3. */
+#define MS_POOL_STRIDE 11
+
+struct ms_gl {
+    ms_gl_context context;
+    GLuint fbo, color_rb, depth_rb; /* the image */
+    GLuint sky_tex;       /* the sky cubemap */
+    GLuint env_tex;       /* ms_env: the sky, or the sky with the pool (refraction) */
+    int env_size;
+    GLuint tiles_tex;     /* the tile pattern */
+    GLuint caustics_tex;  /* ms_caustics: the light map, or 1 x 1 of 1 */
+    int caustics_n;       /* its size as uploaded */
+    ms_gl_program liquid; /* the shader plugin's */
+    ms_gl_program pool;   /* tiles: floor, walls, deck */
+    ms_gl_program sky;    /* the background */
+    GLuint pool_vbo;
+    int pool_count;       /* vertices (triangles x 3) */
+    int pool_apron_count; /* the same with the apron under water (gl_pool.c) */
+    GLuint mesh_vbo, mesh_ibo;
+    int mesh_nx, mesh_ny; /* the grid the index buffer is for */
+    float *vertices;      /* mesh vertices, CPU side */
+    size_t vertices_cap;  /* floats */
+};
+
+/* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */
+ms_status ms_gl_pool_create(ms_renderer *r);
+/* Draws the pool with the current matrices; sun_under = 0 lights the parts
+ * under still water by the sky only; keep = +1 draws only what is above
+ * the still water, -1 only what is below (with an apron of floor around
+ * the pool), 0 all. */
+void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep);
+/* gl_sky.c: the sky program, the sky cubemap texture from faces. */
+ms_status ms_gl_sky_create(ms_renderer *r, const ms_cubemap *sky);
+/* Draws the sky behind everything for a camera looking along forward
+ * with the given right / up vectors scaled to the view's half-extents at
+ * unit distance. */
+void ms_gl_sky_draw(const ms_renderer *r, const float forward[3], const float right[3],
+                    const float up[3]);
+/* gl_env.c: ms_env for a shader with reflection or refraction: the sky
+ * and the pool, split by the water plane and seen from the eye's mirror
+ * and refracted images. */
+ms_status ms_gl_env_create(ms_renderer *r);
+
+/* A sentence for the first pending GL error, "" if none (clears them). */
+ms_status ms_gl_check(const char *doing);
+
+#endif /* MS_RENDER_GL_INTERNAL_H */

@@ -1,0 +1,211 @@
+/* The pool around and under the liquid: a tiled floor, four inner walls up
+ * to the rim, a deck around the rim and its outer side, lit by the sun
+ * (Lambert) and the sky (a constant share). Static: built once. */
+#include <math.h>
+#include <string.h>
+
+#include "core/internal.h"
+#include "render/gl_internal.h"
+
+#define AMBIENT 0.4f      /* the sky's share of the light on the pool */
+#define TILE_TEXELS 64
+
+static const char pool_vs[] =
+    "#version 120\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "varying vec2 v_uv;\n"
+    "varying vec3 v_color;\n"
+    "void main()\n"
+    "{\n"
+    "    v_pos = gl_Vertex.xyz;\n"
+    "    v_normal = gl_Normal;\n"
+    "    v_uv = gl_MultiTexCoord0.xy;\n"
+    "    v_color = gl_Color.rgb;\n"
+    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
+    "}\n";
+
+static const char pool_fs[] =
+    "#version 120\n"
+    "uniform sampler2D u_tiles;\n"
+    "uniform vec3 u_light_to;\n"
+    "uniform vec3 u_light_color;\n"
+    "uniform float u_water_level;\n"
+    "uniform float u_sun_under;\n"
+    "uniform float u_ambient;\n"
+    "uniform float u_keep;\n"
+    "varying vec3 v_pos;\n"
+    "varying vec3 v_normal;\n"
+    "varying vec2 v_uv;\n"
+    "varying vec3 v_color;\n"
+    "void main()\n"
+    "{\n"
+    "    if (u_keep * (v_pos.z - u_water_level) < 0.0)\n"
+    "        discard;\n"
+    "    vec3 albedo = v_color * texture2D(u_tiles, v_uv).r;\n"
+    "    float sun = max(dot(normalize(v_normal), u_light_to), 0.0);\n"
+    "    if (v_pos.z < u_water_level)\n"
+    "        sun *= u_sun_under;\n"
+    "    vec3 light = u_light_color * (u_ambient + (1.0 - u_ambient) * sun);\n"
+    "    gl_FragColor = vec4(albedo * light, 1.0);\n"
+    "}\n";
+
+typedef struct builder {
+    float *v;
+    int n; /* vertices written */
+    float tile;
+} builder;
+
+static void vertex(builder *b, const float p[3], const float nrm[3], const float color[3])
+{
+    float *o = b->v + (size_t)b->n * MS_POOL_STRIDE;
+    float u, v;
+    if (fabsf(nrm[2]) > 0.5f)
+        u = p[0], v = p[1];
+    else if (fabsf(nrm[0]) > 0.5f)
+        u = p[1], v = p[2];
+    else
+        u = p[0], v = p[2];
+    o[0] = p[0], o[1] = p[1], o[2] = p[2];
+    o[3] = nrm[0], o[4] = nrm[1], o[5] = nrm[2];
+    o[6] = u / b->tile, o[7] = v / b->tile;
+    o[8] = color[0], o[9] = color[1], o[10] = color[2];
+    b->n++;
+}
+
+/* Two triangles, wound counter-clockwise seen from the side nrm points to. */
+static void quad(builder *b, float p[4][3], const float nrm[3], const float color[3])
+{
+    float e1[3], e2[3];
+    for (int k = 0; k < 3; ++k)
+        e1[k] = p[1][k] - p[0][k], e2[k] = p[2][k] - p[0][k];
+    float c[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                  e1[0] * e2[1] - e1[1] * e2[0]};
+    int flip = c[0] * nrm[0] + c[1] * nrm[1] + c[2] * nrm[2] < 0;
+    static const int fwd[6] = {0, 1, 2, 0, 2, 3}, rev[6] = {0, 2, 1, 0, 3, 2};
+    for (int i = 0; i < 6; ++i)
+        vertex(b, p[flip ? rev[i] : fwd[i]], nrm, color);
+}
+
+/* An axis-aligned horizontal rectangle at height z. */
+static void rect(builder *b, float xa, float ya, float xb, float yb, float z, const float col[3])
+{
+    static const float up[3] = {0, 0, 1};
+    float p[4][3] = {{xa, ya, z}, {xb, ya, z}, {xb, yb, z}, {xa, yb, z}};
+    quad(b, p, up, col);
+}
+
+/* A vertical wall along x = const (axis 0) or y = const (axis 1) from
+ * (a0 .. a1) along the other axis, z from z0 to z1, facing dir (+1, -1). */
+static void wall(builder *b, int axis, float at, float a0, float a1, float z0, float z1, float dir,
+                 const float col[3])
+{
+    float nrm[3] = {0, 0, 0};
+    nrm[axis] = dir;
+    float p[4][3];
+    const float as[4] = {a0, a1, a1, a0}, zs[4] = {z0, z0, z1, z1};
+    for (int i = 0; i < 4; ++i) {
+        p[i][axis] = at;
+        p[i][1 - axis] = as[i];
+        p[i][2] = zs[i];
+    }
+    quad(b, p, nrm, col);
+}
+
+ms_status ms_gl_pool_create(ms_renderer *r)
+{
+    ms_gl *gl = r->gl;
+    ms_status st = ms_gl_program_build("the pool program", pool_vs, pool_fs, &gl->pool);
+    if (st != MS_OK)
+        return st;
+
+    unsigned char texels[TILE_TEXELS * TILE_TEXELS];
+    ms_tile_texture(TILE_TEXELS, texels);
+    glGenTextures(1, &gl->tiles_tex);
+    glBindTexture(GL_TEXTURE_2D, gl->tiles_tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, TILE_TEXELS, TILE_TEXELS, 0, GL_RED, GL_UNSIGNED_BYTE,
+                 texels);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glGenerateMipmap(GL_TEXTURE_2D);
+
+    const ms_renderer_desc *d = &r->desc;
+    const float x0 = d->pool_min[0], y0 = d->pool_min[1], zf = d->pool_min[2];
+    const float x1 = d->pool_max[0], y1 = d->pool_max[1], zr = r->rim_z;
+    const float deck = 0.3f * MS_MAX(x1 - x0, y1 - y0); /* m */
+    const float X0 = x0 - deck, Y0 = y0 - deck, X1 = x1 + deck, Y1 = y1 + deck;
+    static const float stone[3] = {0.50f, 0.45f, 0.36f}, side[3] = {0.36f, 0.33f, 0.27f};
+    const float *tiles = d->floor_color;
+
+    enum { QUADS = 1 + 4 + 4 + 4 + 4 };
+    float v[QUADS * 6 * MS_POOL_STRIDE];
+    builder b = {v, 0, r->tile_size};
+    rect(&b, x0, y0, x1, y1, zf, tiles);                    /* floor */
+    wall(&b, 0, x0, y0, y1, zf, zr, +1, tiles);             /* inner walls */
+    wall(&b, 0, x1, y0, y1, zf, zr, -1, tiles);
+    wall(&b, 1, y0, x0, x1, zf, zr, +1, tiles);
+    wall(&b, 1, y1, x0, x1, zf, zr, -1, tiles);
+    b.tile = 2 * r->tile_size;                              /* the deck's larger slabs */
+    rect(&b, X0, Y0, x0, Y1, zr, stone);
+    rect(&b, x1, Y0, X1, Y1, zr, stone);
+    rect(&b, x0, Y0, x1, y0, zr, stone);
+    rect(&b, x0, y1, x1, Y1, zr, stone);
+    wall(&b, 0, X0, Y0, Y1, zf, zr, -1, side);              /* its outer side */
+    wall(&b, 0, X1, Y0, Y1, zf, zr, +1, side);
+    wall(&b, 1, Y0, X0, X1, zf, zr, -1, side);
+    wall(&b, 1, Y1, X0, X1, zf, zr, +1, side);
+    gl->pool_count = b.n;
+    /* an apron of floor tiles around the pool, drawn only into the
+     * refraction half of the environment cubemap: a refracted lookup that
+     * misses the pool (its viewpoint is exact only for the ray to the
+     * view's target) then still finds tiled floor, not the sky's ground */
+    const float A = MS_MAX(x1 - x0, y1 - y0);
+    b.tile = r->tile_size;
+    rect(&b, x0 - A, y0 - A, x0, y1 + A, zf, tiles);
+    rect(&b, x1, y0 - A, x1 + A, y1 + A, zf, tiles);
+    rect(&b, x0, y0 - A, x1, y0, zf, tiles);
+    rect(&b, x0, y1, x1, y1 + A, zf, tiles);
+    gl->pool_apron_count = b.n;
+
+    glGenBuffers(1, &gl->pool_vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, gl->pool_vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)b.n * MS_POOL_STRIDE * sizeof(float)), v,
+                 GL_STATIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    return ms_gl_check("making the pool");
+}
+
+void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
+{
+    const ms_gl *gl = r->gl;
+    const GLsizei stride = MS_POOL_STRIDE * sizeof(float);
+    GLuint p = gl->pool.prog;
+    glUseProgram(p);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, gl->tiles_tex);
+    glUniform1i(glGetUniformLocation(p, "u_tiles"), 0);
+    glUniform3fv(glGetUniformLocation(p, "u_light_to"), 1, r->light_to);
+    glUniform3fv(glGetUniformLocation(p, "u_light_color"), 1, r->desc.light_color);
+    glUniform1f(glGetUniformLocation(p, "u_water_level"), r->desc.water_level);
+    glUniform1f(glGetUniformLocation(p, "u_sun_under"), sun_under);
+    glUniform1f(glGetUniformLocation(p, "u_ambient"), AMBIENT);
+    glUniform1f(glGetUniformLocation(p, "u_keep"), keep);
+    glBindBuffer(GL_ARRAY_BUFFER, gl->pool_vbo);
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_NORMAL_ARRAY);
+    glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, stride, (const void *)0);
+    glNormalPointer(GL_FLOAT, stride, (const void *)(3 * sizeof(float)));
+    glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(6 * sizeof(float)));
+    glColorPointer(3, GL_FLOAT, stride, (const void *)(8 * sizeof(float)));
+    glDrawArrays(GL_TRIANGLES, 0, keep < 0 ? gl->pool_apron_count : gl->pool_count);
+    glDisableClientState(GL_COLOR_ARRAY);
+    glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+    glDisableClientState(GL_NORMAL_ARRAY);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}

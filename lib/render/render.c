@@ -1,0 +1,377 @@
+/* The renderer's public calls that need no GL: the desc, its defaults and
+ * checks, the desc of a scene, the pixels, the PNG, the statistics. The GL
+ * side (gl_*.c) exists only in a build with OSMesa; without it create
+ * returns MS_ERR_UNSUPPORTED with a sentence saying so. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "core/internal.h"
+#include "render/render_internal.h"
+#include "scene/scene_internal.h"
+
+#define PART "render"
+#define MAX_PIXELS (1L << 25) /* 32 Mpixel: 128 MB of RGBA8, as much again on the GL side */
+
+ms_renderer_desc ms_renderer_desc_default(void)
+{
+    ms_renderer_desc d = {
+        .width = 950,
+        .height = 950,
+        .shader = "water",
+        .shader_params = NULL,
+        .cubemap = "builtin",
+        .caustics = 1,
+        .caustics_resolution = 512,
+        .caustics_intensity = 1.0f,
+        .light_dir = {0.3f, 0.2f, -1.0f},
+        .light_color = {1.0f, 1.0f, 1.0f},
+        .ior = 1.333f,
+        .eye = {0.5f, -0.7f, 1.25f},
+        .target = {0.5f, 0.5f, 0.15f},
+        .up = {0.0f, 0.0f, 1.0f},
+        .fov = 45.0f,
+        .pool_min = {0.0f, 0.0f, 0.0f},
+        .pool_max = {1.0f, 1.0f, 0.3f},
+        .water_level = 0.25f,
+        .tile_size = 0.0f,
+        .floor_color = {0.30f, 0.52f, 0.60f},
+    };
+    return d;
+}
+
+ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "scene", sc)) != MS_OK ||
+        (st = ms_check_not_null(PART, "out", out)) != MS_OK)
+        return st;
+    ms_renderer_desc d = ms_renderer_desc_default();
+    const float *lo = sc->domain_min, *hi = sc->domain_max;
+    float ext_xy = MS_MIN(hi[0] - lo[0], hi[1] - lo[1]);
+    d.pool_min[0] = lo[0];
+    d.pool_min[1] = lo[1];
+    d.pool_min[2] = lo[2];
+    d.pool_max[0] = hi[0];
+    d.pool_max[1] = hi[1];
+    d.water_level = lo[2] + sc->level;
+    /* the rim a little above still water (so the walls hide little of
+     * it), within the domain */
+    d.pool_max[2] = MS_MIN(hi[2], d.water_level + 0.05f * ext_xy);
+    if (!(d.pool_max[2] > lo[2]))
+        d.pool_max[2] = hi[2];
+    if (sc->has_render) {
+        const ms_scene_render *r = &sc->render;
+        d.width = r->width;
+        d.height = r->height;
+        d.shader = r->shader;
+        d.cubemap = r->cubemap;
+        d.caustics = r->has_caustics;
+        d.caustics_resolution = r->caustics_resolution;
+        d.caustics_intensity = r->caustics_intensity;
+        memcpy(d.light_dir, r->light_dir, sizeof d.light_dir);
+        memcpy(d.eye, r->eye, sizeof d.eye);
+        memcpy(d.target, r->target, sizeof d.target);
+        memcpy(d.up, r->up, sizeof d.up);
+        d.fov = r->fov;
+    } else {
+        /* the scene's default camera: the domain's centre from the -y side */
+        float ext = 0;
+        for (int k = 0; k < 3; ++k) {
+            d.target[k] = 0.5f * (lo[k] + hi[k]);
+            ext = MS_MAX(ext, hi[k] - lo[k]);
+        }
+        d.eye[0] = d.target[0];
+        d.eye[1] = d.target[1] - 1.2f * ext;
+        d.eye[2] = d.target[2] + 1.0f * ext;
+        d.caustics = 0;
+    }
+    *out = d;
+    return MS_OK;
+}
+
+static double norm3(const float v[3])
+{
+    return sqrt((double)v[0] * v[0] + (double)v[1] * v[1] + (double)v[2] * v[2]);
+}
+
+static ms_status check_vec(const char *key, const float v[3], double lo, double hi,
+                           const char *unit)
+{
+    static const char axis[3] = {'0', '1', '2'};
+    for (int k = 0; k < 3; ++k) {
+        char name[64];
+        snprintf(name, sizeof name, "%s[%c]", key, axis[k]);
+        ms_status st = ms_check_range(PART, name, v[k], lo, hi, unit);
+        if (st != MS_OK)
+            return st;
+    }
+    return MS_OK;
+}
+
+static ms_status check_desc(const ms_renderer_desc *d)
+{
+    ms_status st;
+    const double big = 1e6; /* m */
+    if ((st = ms_check_int_range(PART, "width", d->width, 16, MS_RENDER_MAX_SIDE)) != MS_OK ||
+        (st = ms_check_int_range(PART, "height", d->height, 16, MS_RENDER_MAX_SIDE)) != MS_OK)
+        return st;
+    if ((long)d->width * d->height > MAX_PIXELS)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: image %d x %d pixels is over %ld pixels", d->width, d->height,
+                       MAX_PIXELS);
+    if ((st = ms_check_not_null(PART, "shader", d->shader)) != MS_OK ||
+        (st = ms_check_not_null(PART, "cubemap", d->cubemap)) != MS_OK)
+        return st;
+    if (!d->shader[0])
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "render: shader \"\" is empty; name a shader "
+                                                "plugin (\"water\", \"milk\", \"oil\")");
+    if (!d->cubemap[0])
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: cubemap \"\" is empty; allowed: \"builtin\", a directory of "
+                       "six PNG faces or one PNG strip");
+    if ((st = ms_check_int_range(PART, "caustics", d->caustics, 0, 1)) != MS_OK ||
+        (st = ms_check_int_range(PART, "caustics_resolution", d->caustics_resolution, 16,
+                                 MS_RENDER_MAX_CAUSTICS)) != MS_OK ||
+        (st = ms_check_range(PART, "caustics_intensity", d->caustics_intensity, 0, 100, "")) !=
+            MS_OK ||
+        (st = check_vec("light_dir", d->light_dir, -big, big, "")) != MS_OK ||
+        (st = check_vec("light_color", d->light_color, 0, 100, "")) != MS_OK ||
+        (st = ms_check_range(PART, "ior", d->ior, 1, 3, "")) != MS_OK ||
+        (st = check_vec("eye", d->eye, -big, big, "m")) != MS_OK ||
+        (st = check_vec("target", d->target, -big, big, "m")) != MS_OK ||
+        (st = check_vec("up", d->up, -big, big, "")) != MS_OK ||
+        (st = ms_check_range(PART, "fov", d->fov, 1, 179, "degrees")) != MS_OK ||
+        (st = check_vec("pool_min", d->pool_min, -big, big, "m")) != MS_OK ||
+        (st = check_vec("pool_max", d->pool_max, -big, big, "m")) != MS_OK ||
+        (st = ms_check_range(PART, "tile_size", d->tile_size, 0, big, "m")) != MS_OK ||
+        (st = check_vec("floor_color", d->floor_color, 0, 1, "")) != MS_OK)
+        return st;
+    if (!(norm3(d->light_dir) > 1e-6))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: light_dir [%g, %g, %g] is the zero vector; it must be a "
+                       "direction",
+                       (double)d->light_dir[0], (double)d->light_dir[1],
+                       (double)d->light_dir[2]);
+    for (int k = 0; k < 3; ++k)
+        if (!(d->pool_max[k] > d->pool_min[k]))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "render: pool_max[%d] %g m must be above pool_min[%d] %g m", k,
+                           (double)d->pool_max[k], k, (double)d->pool_min[k]);
+    if ((st = ms_check_range(PART, "water_level", d->water_level, d->pool_min[2],
+                             d->pool_max[2], "m")) != MS_OK)
+        return st;
+    float view[3], side[3];
+    for (int k = 0; k < 3; ++k)
+        view[k] = d->target[k] - d->eye[k];
+    double lv = norm3(view);
+    if (!(lv > 1e-9))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: target [%g, %g, %g] m equals eye; it must be away from the eye",
+                       (double)d->target[0], (double)d->target[1], (double)d->target[2]);
+    side[0] = view[1] * d->up[2] - view[2] * d->up[1];
+    side[1] = view[2] * d->up[0] - view[0] * d->up[2];
+    side[2] = view[0] * d->up[1] - view[1] * d->up[0];
+    if (!(norm3(side) > 1e-6 * lv * norm3(d->up)) || !(norm3(d->up) > 0))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: up [%g, %g, %g] is zero or along the view direction; it must "
+                       "point across it",
+                       (double)d->up[0], (double)d->up[1], (double)d->up[2]);
+    return MS_OK;
+}
+
+#if MS_HAVE_OSMESA
+static char *dup_or_null(const char *s)
+{
+    if (!s)
+        return NULL;
+    size_t n = strlen(s) + 1;
+    char *p = ms_alloc(n);
+    if (p)
+        memcpy(p, s, n);
+    return p;
+}
+#endif
+
+ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "out", out)) != MS_OK)
+        return st;
+    *out = NULL;
+    if ((st = ms_check_not_null(PART, "desc", d)) != MS_OK || (st = check_desc(d)) != MS_OK)
+        return st;
+#if !MS_HAVE_OSMESA
+    return ms_fail(MS_ERR_UNSUPPORTED,
+                   "render: this build of libmodesplit has no OSMesa (off-screen OpenGL); "
+                   "install libosmesa6-dev and rebuild to render images");
+#else
+    ms_renderer *r = ms_alloc(sizeof *r);
+    if (!r)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the renderer");
+    r->desc = *d;
+    r->shader_name = dup_or_null(d->shader);
+    r->shader_params = dup_or_null(d->shader_params);
+    r->cubemap_path = dup_or_null(d->cubemap);
+    r->pixels = ms_alloc_array((size_t)d->width * (size_t)d->height, 4);
+    if (!r->shader_name || (d->shader_params && !r->shader_params) || !r->cubemap_path ||
+        !r->pixels) {
+        ms_renderer_destroy(r);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for a %d x %d image",
+                       d->width, d->height);
+    }
+    r->desc.shader = r->shader_name;
+    r->desc.shader_params = r->shader_params;
+    r->desc.cubemap = r->cubemap_path;
+    double ln = norm3(d->light_dir);
+    for (int k = 0; k < 3; ++k) {
+        r->desc.light_dir[k] = (float)(d->light_dir[k] / ln);
+        r->light_to[k] = -r->desc.light_dir[k];
+    }
+    r->rim_z = d->pool_max[2];
+    float side = MS_MIN(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
+    r->tile_size = d->tile_size > 0 ? d->tile_size : side / 12.0f;
+
+    if ((st = ms_shader_instance_create(d->shader, d->shader_params, &r->shader)) != MS_OK) {
+        ms_renderer_destroy(r);
+        return st;
+    }
+    r->passes = r->shader.vt->passes &
+                (MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION |
+                 MS_SHADER_NEEDS_CAUSTICS);
+    r->trace_caustics = (r->passes & MS_SHADER_NEEDS_CAUSTICS) && d->caustics;
+    if (!r->trace_caustics)
+        r->passes &= ~(unsigned)MS_SHADER_NEEDS_CAUSTICS;
+    r->stats.passes = r->passes;
+
+    ms_cubemap sky = {0, {NULL}};
+    if (strcmp(d->cubemap, "builtin") == 0)
+        st = ms_sky_builtin(256, r->desc.light_dir, &sky);
+    else
+        st = ms_cubemap_load(d->cubemap, &sky);
+    if (st == MS_OK)
+        st = ms_gl_create(r, &sky);
+    ms_cubemap_free(&sky);
+    if (st != MS_OK) {
+        ms_renderer_destroy(r);
+        return st;
+    }
+    *out = r;
+    return MS_OK;
+#endif
+}
+
+ms_status ms_renderer_create(const ms_scene *sc, ms_renderer **out)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "out", out)) != MS_OK)
+        return st;
+    *out = NULL;
+    if ((st = ms_check_not_null(PART, "scene", sc)) != MS_OK)
+        return st;
+    if (!sc->has_render)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: scene \"%s\" has no \"render\" section, so it asks for no "
+                       "image; add one or use ms_renderer_create_desc",
+                       sc->name ? sc->name : "");
+    ms_renderer_desc d;
+    if ((st = ms_renderer_desc_from_scene(sc, &d)) != MS_OK)
+        return st;
+    return ms_renderer_create_desc(&d, out);
+}
+
+void ms_renderer_destroy(ms_renderer *r)
+{
+    if (!r)
+        return;
+#if MS_HAVE_OSMESA
+    ms_gl_destroy(r->gl);
+#endif
+    ms_shader_instance_destroy(&r->shader);
+    ms_caustics_free(&r->caustics);
+    ms_free(r->pixels);
+    ms_free(r->shader_name);
+    ms_free(r->shader_params);
+    ms_free(r->cubemap_path);
+    ms_free(r);
+}
+
+ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *g, double time)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
+        (st = ms_check_not_null(PART, "height field", h)) != MS_OK ||
+        (st = ms_check_not_null(PART, "grid", g)) != MS_OK ||
+        (st = ms_check_int_range(PART, "grid nx", g->nx, 2, 16384)) != MS_OK ||
+        (st = ms_check_int_range(PART, "grid ny", g->ny, 2, 16384)) != MS_OK ||
+        (st = ms_check_positive(PART, "grid dx", g->dx, "m")) != MS_OK ||
+        (st = ms_check_positive(PART, "grid dy", g->dy, "m")) != MS_OK ||
+        (st = ms_check_finite(PART, "grid origin[0]", g->origin[0])) != MS_OK ||
+        (st = ms_check_finite(PART, "grid origin[1]", g->origin[1])) != MS_OK ||
+        (st = ms_check_finite(PART, "time", time)) != MS_OK)
+        return st;
+#if MS_HAVE_OSMESA
+    double t0 = ms_now();
+    st = ms_gl_draw(r, h, g, time);
+    if (st != MS_OK)
+        return st;
+    r->have_frame = 1;
+    r->stats.frames++;
+    r->stats.total_ms = 1e3 * (ms_now() - t0);
+    return MS_OK;
+#else
+    return ms_fail(MS_ERR_UNSUPPORTED, "render: this build has no OSMesa");
+#endif
+}
+
+ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
+        (st = ms_check_not_null(PART, "sim", sim)) != MS_OK)
+        return st;
+    return ms_fail(MS_ERR_UNSUPPORTED,
+                   "render: ms_renderer_draw needs the sim (lib/sim), which this build does "
+                   "not have yet; draw its combined field with ms_renderer_draw_field");
+}
+
+const unsigned char *ms_renderer_pixels(const ms_renderer *r, int *w, int *h)
+{
+    if (w)
+        *w = r ? r->desc.width : 0;
+    if (h)
+        *h = r ? r->desc.height : 0;
+    return r ? r->pixels : NULL;
+}
+
+ms_status ms_renderer_write_png(const ms_renderer *r, const char *path)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
+        (st = ms_check_not_null(PART, "path", path)) != MS_OK)
+        return st;
+    if (!r->have_frame)
+        return ms_fail(MS_ERR_STATE, "render: nothing drawn yet; call ms_renderer_draw before "
+                                     "writing \"%s\"",
+                       path);
+    return ms_png_write_rgba(path, r->pixels, r->desc.width, r->desc.height);
+}
+
+void ms_renderer_stats(const ms_renderer *r, ms_render_stats *out)
+{
+    if (!out)
+        return;
+    if (!r) {
+        memset(out, 0, sizeof *out);
+        return;
+    }
+    *out = r->stats;
+}
+
+const float *ms_renderer_caustics(const ms_renderer *r, int *n)
+{
+    int ok = r && r->trace_caustics && r->have_frame && r->caustics.map;
+    if (n)
+        *n = ok ? r->caustics.n : 0;
+    return ok ? r->caustics.map : NULL;
+}

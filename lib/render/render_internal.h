@@ -1,0 +1,127 @@
+/* lib/render: the off-screen renderer of the paper's section 3.6 (internal).
+ *
+ * Owns: the renderer desc and its checks (render.c), the CPU parts that
+ * need no GL (caustics.c: the caustics light map traced by Snell's law;
+ * mesh.c: the height-field mesh and its normals by central differences;
+ * sky.c: the builtin procedural sky; cubemap_file.c: cubemap faces from PNG
+ * files; tiles.c: the pool's tile texture; png_out.c: the PNG writer), and
+ * the GL side, compiled only with OSMesa (gl_*.c: context, programs, the
+ * pool and sky geometry, the refraction cubemap, the frame).
+ *
+ * Implements: Snell's law (n1 sin t1 = n2 sin t2) in vector form for the
+ * caustics rays, Schlick's approximation of the Fresnel equations for
+ * their transmission (the shaders use it for the reflection/refraction
+ * mix). The paper gives these in words (section 3.6), not as numbered
+ * equations.
+ */
+#ifndef MS_RENDER_INTERNAL_H
+#define MS_RENDER_INTERNAL_H
+
+#include <stddef.h>
+
+#include "modesplit/plugin.h"
+#include "modesplit/render.h"
+#include "plugin/registry.h"
+
+/* ---- cubemaps (CPU) ---------------------------------------------------- */
+
+/* Six square faces of sRGB-encoded RGBA8 texels, in OpenGL order
+ * (+x, -x, +y, -y, +z, -z), each row-major from the first row GL takes. */
+typedef struct ms_cubemap {
+    int size;               /* texels per side */
+    unsigned char *face[6]; /* size * size * 4 bytes each, ms_alloc'd */
+} ms_cubemap;
+
+void ms_cubemap_free(ms_cubemap *c);
+/* The world direction (unit not needed) of texel centre (i, j) of face f,
+ * OpenGL's cube map convention: s = column, t = row, both in (-1, 1). */
+void ms_cubemap_direction(int f, float s, float t, float dir[3]);
+/* The builtin sky: a blue gradient with soft clouds, a sun disc towards
+ * -light_dir, a grey-green ground below the horizon. Deterministic. */
+ms_status ms_sky_builtin(int size, const float light_dir[3], ms_cubemap *out);
+/* Loads "path": a directory of six faces or one PNG strip (render.h). */
+ms_status ms_cubemap_load(const char *path, ms_cubemap *out);
+
+/* ---- tiles (CPU) -------------------------------------------------------- */
+
+/* One square tile with its grout, size x size luminance texels in [0, 255]
+ * (1 = tile, darker = grout), to repeat. */
+void ms_tile_texture(int size, unsigned char *texels);
+
+/* ---- mesh (CPU) --------------------------------------------------------- */
+
+/* Interleaved vertices of the height field, 6 floats each: x, y, z (world,
+ * m) and the unit normal. Vertex (i, j) sits at the centre of cell (i, j),
+ * except that the outermost row and column sit on the grid's edge, so the
+ * mesh meets the walls. Returns the index of a non-finite height, or -1. */
+long ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restrict vertices);
+/* Triangle indices of an nx x ny vertex grid: 6 (nx-1)(ny-1) of them. */
+void ms_mesh_indices(int nx, int ny, unsigned *restrict indices);
+
+/* ---- caustics (CPU) ----------------------------------------------------- */
+
+typedef struct ms_caustics_desc {
+    float pool[4];        /* x0, y0, size x, size y (m): where the map lies */
+    float floor_z;        /* m, world */
+    float light_dir[3];   /* unit, the direction light travels (z < 0) */
+    float ior;            /* refractive index of the liquid */
+    float intensity;      /* 1 = physical contrast, 0 = flat */
+    int resolution;       /* texels per side */
+} ms_caustics_desc;
+
+/* Scratch and result of the tracer (reused frame to frame). */
+typedef struct ms_caustics {
+    int n;                /* resolution */
+    float *map;           /* n * n, 1 = unfocused light */
+    float *tmp;           /* n * n, the blur's scratch */
+    float *gx, *gy;       /* field gradients */
+    size_t field_cap;     /* cells gx, gy hold */
+} ms_caustics;
+
+/* Traces light through the surface h (heights above floor_z over grid g)
+ * to the floor by Snell's law: rays on a lattice over the pool, an integer
+ * number per texel and axis, at least as fine as the field's cells, each
+ * carrying the light of the patch of surface it starts from, times
+ * Schlick's transmission over the flat water's; the rays' light is splat bilinearly onto the floor, blurred by
+ * [1 2 1]/4, and scaled so flat water gives 1 everywhere. Rays that leave
+ * the pool (into the walls) are lost. */
+ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const float *h,
+                            const ms_grid *g);
+void ms_caustics_free(ms_caustics *c);
+
+/* ---- PNG ---------------------------------------------------------------- */
+
+/* Writes w x h RGBA8 pixels, top row first, to path (through "path.tmp"
+ * and a rename). */
+ms_status ms_png_write_rgba(const char *path, const unsigned char *rgba, int w, int h);
+
+/* ---- the renderer ------------------------------------------------------- */
+
+typedef struct ms_gl ms_gl; /* the GL side (gl_*.c) */
+
+struct ms_renderer {
+    ms_renderer_desc desc;  /* checked; strings below are owned copies */
+    char *shader_name, *shader_params, *cubemap_path;
+    float light_to[3];      /* unit vector towards the light */
+    float rim_z;            /* m */
+    float tile_size;        /* m, resolved */
+    ms_shader_instance shader;
+    unsigned passes;        /* MS_SHADER_NEEDS_* that run */
+    int trace_caustics;     /* 1: the caustics pass runs */
+    ms_caustics caustics;
+    unsigned char *pixels;  /* width * height * 4, top row first */
+    int have_frame;
+    ms_render_stats stats;
+    ms_gl *gl;
+};
+
+#if MS_HAVE_OSMESA
+/* gl_renderer.c: make the GL side for r (desc checked, shader and passes
+ * set); on failure r->gl stays NULL and the error is set. */
+ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky);
+void ms_gl_destroy(ms_gl *gl);
+/* gl_frame.c: one frame of h over g into r->pixels. */
+ms_status ms_gl_draw(ms_renderer *r, const float *h, const ms_grid *g, double time);
+#endif
+
+#endif /* MS_RENDER_INTERNAL_H */

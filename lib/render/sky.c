@@ -1,0 +1,153 @@
+/* The builtin environment cubemap: a procedural sky (a blue gradient, soft
+ * value-noise clouds, the sun), a plain ground below the horizon. World
+ * directions, z up; texels are made in linear RGB and stored sRGB-encoded.
+ * Deterministic: the noise is an integer hash, no RNG state. */
+#include <math.h>
+#include <stdint.h>
+
+#include "core/internal.h"
+#include "render/render_internal.h"
+
+void ms_cubemap_free(ms_cubemap *c)
+{
+    if (!c)
+        return;
+    for (int f = 0; f < 6; ++f) {
+        ms_free(c->face[f]);
+        c->face[f] = NULL;
+    }
+    c->size = 0;
+}
+
+/* OpenGL's table (major axis, sc, tc): for +x the texel (s, t) looks along
+ * (1, -t, -s), and so on. */
+void ms_cubemap_direction(int f, float s, float t, float dir[3])
+{
+    switch (f) {
+    case 0: dir[0] = 1, dir[1] = -t, dir[2] = -s; break;
+    case 1: dir[0] = -1, dir[1] = -t, dir[2] = s; break;
+    case 2: dir[0] = s, dir[1] = 1, dir[2] = t; break;
+    case 3: dir[0] = s, dir[1] = -1, dir[2] = -t; break;
+    case 4: dir[0] = s, dir[1] = -t, dir[2] = 1; break;
+    default: dir[0] = -s, dir[1] = -t, dir[2] = -1; break;
+    }
+}
+
+static unsigned char srgb_byte(float linear)
+{
+    float v = MS_CLAMP(linear, 0.0f, 1.0f);
+    float e = v <= 0.0031308f ? 12.92f * v : 1.055f * powf(v, 1.0f / 2.4f) - 0.055f;
+    return (unsigned char)lrintf(255.0f * e);
+}
+
+static float hash01(int32_t x, int32_t y)
+{
+    uint32_t h = (uint32_t)x * 0x8da6b343u ^ (uint32_t)y * 0xd8163841u;
+    h ^= h >> 15;
+    h *= 0x2c1b3c6du;
+    h ^= h >> 12;
+    h *= 0x297a2d39u;
+    h ^= h >> 15;
+    return (float)(h >> 8) * (1.0f / 16777216.0f);
+}
+
+/* Value noise with a smooth (cubic Hermite) fade, in [0, 1). */
+static float value_noise(float x, float y)
+{
+    float fx = floorf(x), fy = floorf(y);
+    int32_t ix = (int32_t)fx, iy = (int32_t)fy;
+    float u = x - fx, v = y - fy;
+    u = u * u * (3 - 2 * u);
+    v = v * v * (3 - 2 * v);
+    float a = hash01(ix, iy), b = hash01(ix + 1, iy);
+    float c = hash01(ix, iy + 1), d = hash01(ix + 1, iy + 1);
+    return (a + (b - a) * u) + ((c + (d - c) * u) - (a + (b - a) * u)) * v;
+}
+
+static float fbm(float x, float y)
+{
+    float sum = 0, amp = 0.5f;
+    for (int o = 0; o < 4; ++o) {
+        sum += amp * value_noise(x, y);
+        x = 2.03f * x + 17.1f;
+        y = 2.03f * y + 5.7f;
+        amp *= 0.5f;
+    }
+    return sum / 0.9375f;
+}
+
+static float smoothstepf(float a, float b, float x)
+{
+    float t = MS_CLAMP((x - a) / (b - a), 0.0f, 1.0f);
+    return t * t * (3 - 2 * t);
+}
+
+/* Linear RGB of the sky in unit direction d; sun = unit vector to the sun. */
+static void sky_color(const float d[3], const float sun[3], float rgb[3])
+{
+    static const float zenith[3] = {0.08f, 0.22f, 0.62f}, horizon[3] = {0.52f, 0.68f, 0.88f};
+    static const float ground_near[3] = {0.30f, 0.31f, 0.25f}, ground_far[3] = {0.13f, 0.15f,
+                                                                                0.10f};
+    float z = d[2];
+    if (z >= 0) {
+        float k = powf(1.0f - z, 2.5f);
+        for (int c = 0; c < 3; ++c)
+            rgb[c] = zenith[c] + (horizon[c] - zenith[c]) * k;
+        if (z > 0.02f) {
+            /* clouds on a plane above: denser patches, thinning at the horizon */
+            float px = 1.5f * d[0] / z, py = 1.5f * d[1] / z;
+            float dens = smoothstepf(0.5f, 0.78f, fbm(px, py)) * smoothstepf(0.02f, 0.25f, z);
+            for (int c = 0; c < 3; ++c)
+                rgb[c] += (0.85f - rgb[c]) * 0.85f * dens;
+        }
+    } else {
+        float k = sqrtf(-z);
+        for (int c = 0; c < 3; ++c)
+            rgb[c] = ground_near[c] + (ground_far[c] - ground_near[c]) * k;
+    }
+    if (sun[2] > 0 && z > 0) {
+        float cs = d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2];
+        if (cs > 0) {
+            float glow = 0.5f * powf(cs, 64.0f) + (cs > 0.99985f ? 4.0f : 0.0f);
+            rgb[0] += glow;
+            rgb[1] += 0.92f * glow;
+            rgb[2] += 0.75f * glow;
+        }
+    }
+}
+
+ms_status ms_sky_builtin(int size, const float light_dir[3], ms_cubemap *out)
+{
+    out->size = 0;
+    for (int f = 0; f < 6; ++f)
+        out->face[f] = NULL;
+    float sun[3] = {-light_dir[0], -light_dir[1], -light_dir[2]};
+    float ls = sqrtf(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2]);
+    for (int k = 0; k < 3; ++k)
+        sun[k] /= ls;
+    for (int f = 0; f < 6; ++f) {
+        unsigned char *p = ms_alloc_array((size_t)size * (size_t)size, 4);
+        if (!p) {
+            ms_cubemap_free(out);
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the sky");
+        }
+        out->face[f] = p;
+        for (int j = 0; j < size; ++j) {
+            float t = 2.0f * ((float)j + 0.5f) / (float)size - 1.0f;
+            for (int i = 0; i < size; ++i, p += 4) {
+                float s = 2.0f * ((float)i + 0.5f) / (float)size - 1.0f, d[3], rgb[3];
+                ms_cubemap_direction(f, s, t, d);
+                float l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                for (int k = 0; k < 3; ++k)
+                    d[k] /= l;
+                sky_color(d, sun, rgb);
+                p[0] = srgb_byte(rgb[0]);
+                p[1] = srgb_byte(rgb[1]);
+                p[2] = srgb_byte(rgb[2]);
+                p[3] = 255;
+            }
+        }
+    }
+    out->size = size;
+    return MS_OK;
+}

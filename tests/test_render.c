@@ -1,0 +1,943 @@
+/* The renderer (paper section 3.6): the caustics light map conserves light
+ * and focuses it where a lens-shaped bump converges it (Snell's law); with
+ * OSMesa, flat water reflects the Fresnel share of the sky (Schlick: about
+ * 2 % at normal incidence, 14 % at 70 degrees), a bump changes the image
+ * where it is and nowhere else, milk hides the pool floor that water
+ * shows, caustics brighten the floor under the lens, the same field gives
+ * the same bytes for any llvmpipe thread count, PNGs round-trip, and every
+ * bad input is refused with a sentence naming it. Images are small
+ * (128 x 128) to keep the suite fast. */
+#include <check.h>
+#include <errno.h>
+#include <math.h>
+#include <png.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core/internal.h"
+#include "modesplit/modesplit.h"
+#include "modesplit/plugin.h"
+#include "render/render_internal.h"
+#include "support.h"
+
+#define N 64   /* field cells per side in the image tests */
+#define W 128  /* image side */
+
+/* ---- helpers ------------------------------------------------------------ */
+
+static float *field(int n, float level)
+{
+    float *h = malloc(sizeof *h * (size_t)n * (size_t)n);
+    ck_assert_ptr_nonnull(h);
+    for (int i = 0; i < n * n; ++i)
+        h[i] = level;
+    return h;
+}
+
+static ms_grid grid(int n)
+{
+    ms_grid g = {n, n, 1.0f / (float)n, 1.0f / (float)n, {0, 0}};
+    return g;
+}
+
+/* A Gaussian bump of amplitude a (m) and width sigma (m) at (x, y). */
+static void add_bump(float *h, int n, float x, float y, float a, float sigma)
+{
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            float dx = ((float)i + 0.5f) / (float)n - x, dy = ((float)j + 0.5f) / (float)n - y;
+            h[j * n + i] += a * expf(-(dx * dx + dy * dy) / (2 * sigma * sigma));
+        }
+}
+
+/* Looking straight down on the 1 m pool from 1.75 m above the water: the
+ * water fills the image, +y up, +x right. */
+static ms_renderer_desc top_down(const char *shader)
+{
+    ms_renderer_desc d = ms_renderer_desc_default();
+    d.width = d.height = W;
+    d.shader = shader;
+    d.caustics_resolution = 128;
+    const float eye[3] = {0.5f, 0.5f, 2.0f}, target[3] = {0.5f, 0.5f, 0.25f}, up[3] = {0, 1, 0};
+    memcpy(d.eye, eye, sizeof eye);
+    memcpy(d.target, target, sizeof target);
+    memcpy(d.up, up, sizeof up);
+    d.fov = 30;
+    return d;
+}
+
+#if MS_HAVE_OSMESA
+static ms_renderer *create_ok(const ms_renderer_desc *d)
+{
+    ms_renderer *r = NULL;
+    ms_status st = ms_renderer_create_desc(d, &r);
+    ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
+    return r;
+}
+
+static void draw_ok(ms_renderer *r, const float *h, int n)
+{
+    ms_grid g = grid(n);
+    ms_status st = ms_renderer_draw_field(r, h, &g, 0.0);
+    ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
+}
+
+/* A copy of the image of one draw of h by a renderer made from d. */
+static unsigned char *render(const ms_renderer_desc *d, const float *h, int n)
+{
+    ms_renderer *r = create_ok(d);
+    draw_ok(r, h, n);
+    int w, hh;
+    const unsigned char *px = ms_renderer_pixels(r, &w, &hh);
+    ck_assert_int_eq(w, d->width);
+    ck_assert_int_eq(hh, d->height);
+    size_t bytes = (size_t)w * (size_t)hh * 4;
+    unsigned char *copy = malloc(bytes);
+    ck_assert_ptr_nonnull(copy);
+    memcpy(copy, px, bytes);
+    ms_renderer_destroy(r);
+    return copy;
+}
+
+static double srgb_to_linear(unsigned char c)
+{
+    double v = c / 255.0;
+    return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
+}
+
+/* Mean over the channels and the pixels of a box (top-first rows) of a
+ * function of two images' pixels. */
+static double box_mean_abs_diff(const unsigned char *a, const unsigned char *b, int x0, int y0,
+                                int x1, int y1)
+{
+    double s = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+            for (int c = 0; c < 3; ++c) {
+                size_t i = ((size_t)y * W + (size_t)x) * 4 + (size_t)c;
+                s += fabs((double)a[i] - b[i]);
+            }
+    return s / (3.0 * (x1 - x0) * (y1 - y0));
+}
+
+static int box_max_abs_diff(const unsigned char *a, const unsigned char *b, int x0, int y0,
+                            int x1, int y1)
+{
+    int m = 0;
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+            for (int c = 0; c < 3; ++c) {
+                size_t i = ((size_t)y * W + (size_t)x) * 4 + (size_t)c;
+                m = MS_MAX(m, abs((int)a[i] - (int)b[i]));
+            }
+    return m;
+}
+
+/* Writes a size x size PNG of one colour. */
+static void write_face(const char *path, int size, int height, const unsigned char rgb[3])
+{
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    img.width = (png_uint_32)size;
+    img.height = (png_uint_32)height;
+    img.format = PNG_FORMAT_RGB;
+    unsigned char *px = malloc((size_t)size * (size_t)height * 3);
+    ck_assert_ptr_nonnull(px);
+    for (int i = 0; i < size * height; ++i)
+        memcpy(px + 3 * i, rgb, 3);
+    ck_assert(png_image_write_to_file(&img, path, 0, px, 0, NULL));
+    free(px);
+}
+
+/* A directory of six one-colour faces; colours[f] for face f. */
+static void write_cubemap_dir(const char *dir, const unsigned char colours[6][3])
+{
+    static const char *const names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+    ck_assert(mkdir(dir, 0700) == 0 || errno == EEXIST);
+    for (int f = 0; f < 6; ++f) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/%s.png", dir, names[f]);
+        write_face(path, 8, 8, colours[f]);
+    }
+}
+
+static char tmpdir[256];
+
+static void make_tmpdir(void)
+{
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/ms_test_render_XXXXXX");
+    ck_assert_ptr_nonnull(mkdtemp(tmpdir));
+}
+
+static void remove_tmpdir(void)
+{
+    char cmd[512];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
+    ck_assert_int_eq(system(cmd), 0);
+}
+
+#endif /* MS_HAVE_OSMESA */
+
+/* ---- the caustics light map (CPU: no GL needed) ------------------------- */
+
+static ms_caustics_desc caustics_desc(int n, float lx, float ly)
+{
+    ms_caustics_desc d = {.pool = {0, 0, 1, 1}, .floor_z = 0, .ior = 1.333f,
+                          .intensity = 1, .resolution = n};
+    double l = sqrt((double)lx * lx + (double)ly * ly + 1);
+    d.light_dir[0] = (float)(lx / l);
+    d.light_dir[1] = (float)(ly / l);
+    d.light_dir[2] = (float)(-1 / l);
+    return d;
+}
+
+static double map_mean(const float *m, int n)
+{
+    double s = 0;
+    for (int i = 0; i < n * n; ++i)
+        s += m[i];
+    return s / ((double)n * n);
+}
+
+START_TEST(flat_water_lights_the_floor_evenly)
+{
+    /* vertical light: exactly 1 everywhere; oblique light: 1 away from the
+     * walls (the strip in the walls' shadow gets none; light is lost into
+     * the far walls) */
+    const int n = 96;
+    float *h = field(N, 0.25f);
+    ms_grid g = grid(N);
+    ms_caustics c = {0};
+    ms_caustics_desc d = caustics_desc(n, 0, 0);
+    ck_assert_int_eq(ms_caustics_trace(&c, &d, h, &g), MS_OK);
+    for (int i = 0; i < n * n; ++i)
+        ck_assert_msg(fabsf(c.map[i] - 1) < 1e-4f, "texel %d: %g", i, (double)c.map[i]);
+    d = caustics_desc(n, 0.3f, 0.2f);
+    ck_assert_int_eq(ms_caustics_trace(&c, &d, h, &g), MS_OK);
+    /* refracted: tan t = sin(i)/n / cos t; shift = depth * tan t, per axis */
+    double sin_i = sqrt(0.13 / 1.13), sin_t = sin_i / 1.333, tan_t = sin_t / sqrt(1 - sin_t * sin_t);
+    double shift = 0.25 * tan_t; /* m, along (0.3, 0.2) / |.| */
+    int lost_x = (int)ceil(shift * 0.3 / sqrt(0.13) * n) + 2, lost_y = (int)ceil(shift * 0.2 / sqrt(0.13) * n) + 2;
+    for (int j = lost_y; j < n - 2; ++j)
+        for (int i = lost_x; i < n - 2; ++i)
+            ck_assert_msg(fabsf(c.map[j * n + i] - 1) < 1e-4f, "texel (%d, %d): %g", i, j,
+                          (double)c.map[j * n + i]);
+    ck_assert_float_lt(c.map[0], 0.05f); /* the corner towards the light is in shadow */
+    ms_caustics_free(&c);
+    free(h);
+}
+END_TEST
+
+/* A lens: a paraboloidal cap of radius rho (m) and curvature radius R (m)
+ * at (x, y), h += (rho^2 - r^2) / (2 R) for r < rho. */
+static void add_cap(float *h, int n, float x, float y, float R, float rho)
+{
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            float dx = ((float)i + 0.5f) / (float)n - x, dy = ((float)j + 0.5f) / (float)n - y;
+            float r2 = dx * dx + dy * dy;
+            if (r2 < rho * rho)
+                h[j * n + i] += (rho * rho - r2) / (2 * R);
+        }
+}
+
+/* Peak and mean of the light map, and the light at the centre, under a
+ * lens of curvature radius R over water `depth` deep (below its rim). */
+static void lens(float depth, float R, float rho, double *peak, double *mean, double *centre)
+{
+    const int n = 128, fn = 128;
+    float *h = field(fn, depth);
+    add_cap(h, fn, 0.5f, 0.5f, R, rho);
+    ms_grid g = grid(fn);
+    ms_caustics c = {0};
+    ms_caustics_desc d = caustics_desc(n, 0, 0);
+    ck_assert_int_eq(ms_caustics_trace(&c, &d, h, &g), MS_OK);
+    *peak = 0;
+    for (int i = 0; i < n * n; ++i)
+        *peak = MS_MAX(*peak, c.map[i]);
+    *mean = map_mean(c.map, n);
+    *centre = 0.25 * (c.map[63 * n + 63] + c.map[63 * n + 64] + c.map[64 * n + 63] +
+                      c.map[64 * n + 64]);
+    ms_caustics_free(&c);
+    free(h);
+}
+
+START_TEST(a_lens_shaped_bump_focuses_light_and_conserves_it)
+{
+    /* A convex cap is a lens: curvature radius R focuses parallel light at
+     * f = n R / (n - 1) below it (refraction at one surface, paraxial).
+     * R = 0.16 m: f = 0.64 m. The light of the cap's area pi rho^2 reaches
+     * the floor through a disc (1 - z / f) times as wide at depth z: at
+     * f / 4 the centre gets 1 / (3/4)^2 = 1.78 times the light; at the
+     * focus it is gathered into a spot; at 3 f the rays have crossed and
+     * spread over twice the cap's width (a quarter of the light each, but
+     * the rays from the cap's rim, where the grid smooths the kink, land
+     * in between, so only "far dimmer than the focus" is asserted). */
+    const float R = 0.16f, rho = 0.06f, n = 1.333f;
+    const float f = n * R / (n - 1);
+    double peak_f, mean_f, c_f, peak_near, mean_near, c_near, peak_far, mean_far, c_far;
+    lens(f, R, rho, &peak_f, &mean_f, &c_f);
+    lens(f / 4, R, rho, &peak_near, &mean_near, &c_near);
+    lens(3 * f, R, rho, &peak_far, &mean_far, &c_far);
+    ck_assert_msg(c_f > 10.0, "centre at the focus %g", c_f);
+    ck_assert_msg(fabs(c_near - 1.78) < 0.15, "centre at f/4 %g, expected 1.78", c_near);
+    ck_assert_msg(c_far < 0.1 * c_f, "centre at 3f %g, at f %g", c_far, c_f);
+    ck_assert_msg(peak_f > peak_near && peak_f > peak_far, "peaks %g %g %g", peak_near, peak_f,
+                  peak_far);
+    /* the light is only moved: the mean stays 1 up to the slopes' extra
+     * Fresnel reflection (under 1 % for these slopes) */
+    ck_assert_msg(fabs(mean_f - 1) < 0.01, "mean at f %g", mean_f);
+    ck_assert_msg(fabs(mean_near - 1) < 0.01, "mean at f/4 %g", mean_near);
+    ck_assert_msg(fabs(mean_far - 1) < 0.01, "mean at 3f %g", mean_far);
+    ck_assert_double_le(mean_f, 1.0 + 1e-6);
+}
+END_TEST
+
+START_TEST(a_dip_spreads_light_and_intensity_scales_contrast)
+{
+    const int n = 128;
+    float *h = field(n, 0.3f);
+    add_bump(h, n, 0.5f, 0.5f, -0.01f, 0.04f);
+    ms_grid g = grid(n);
+    ms_caustics c = {0};
+    ms_caustics_desc d = caustics_desc(n, 0, 0);
+    ck_assert_int_eq(ms_caustics_trace(&c, &d, h, &g), MS_OK);
+    double centre = c.map[64 * n + 64], far = c.map[10 * n + 10];
+    ck_assert_msg(centre < 0.8, "centre under a dip %g", centre);
+    ck_assert_double_eq_tol(far, 1.0, 1e-4);
+    /* intensity k: 1 + k (E - 1) */
+    d.intensity = 0.5f;
+    ck_assert_int_eq(ms_caustics_trace(&c, &d, h, &g), MS_OK);
+    ck_assert_double_eq_tol(c.map[64 * n + 64], 1 + 0.5 * (centre - 1), 1e-4);
+    d.intensity = 0;
+    ck_assert_int_eq(ms_caustics_trace(&c, &d, h, &g), MS_OK);
+    ck_assert_double_eq_tol(c.map[64 * n + 64], 1.0, 1e-6);
+    /* the sun under the horizon: no light on the floor */
+    d.intensity = 1;
+    d.light_dir[0] = 0, d.light_dir[1] = 0, d.light_dir[2] = 1;
+    ck_assert_int_eq(ms_caustics_trace(&c, &d, h, &g), MS_OK);
+    ck_assert_double_eq_tol(map_mean(c.map, n), 0.0, 1e-9);
+    ms_caustics_free(&c);
+    free(h);
+}
+END_TEST
+
+/* ---- descs, scenes, refusals (no GL needed) ----------------------------- */
+
+START_TEST(a_scene_gives_the_desc_of_its_render_section)
+{
+    const char *text = "{\"domain\": {\"min\": [-1, 0, 0.5], \"max\": [1, 1, 1.5]},"
+                       " \"surface\": {\"cells\": [64, 32], \"level\": 0.4},"
+                       " \"render\": {\"width\": 64, \"height\": 48, \"shader\": \"milk\","
+                       "   \"caustics\": {\"resolution\": 32, \"intensity\": 2,"
+                       "                  \"light\": [0, 0, -2]},"
+                       "   \"camera\": {\"eye\": [0, -3, 2], \"target\": [0, 0.5, 0.5],"
+                       "                \"fov\": 50}}}";
+    ms_scene *sc = NULL;
+    ck_assert_int_eq(ms_scene_parse(text, strlen(text), &sc), MS_OK);
+    ms_renderer_desc d;
+    ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
+    ck_assert_int_eq(d.width, 64);
+    ck_assert_int_eq(d.height, 48);
+    ck_assert_str_eq(d.shader, "milk");
+    ck_assert_str_eq(d.cubemap, "builtin");
+    ck_assert_int_eq(d.caustics, 1);
+    ck_assert_int_eq(d.caustics_resolution, 32);
+    ck_assert_float_eq_tol(d.caustics_intensity, 2, 1e-6f);
+    ck_assert_float_eq_tol(d.light_dir[2], -1, 1e-6f); /* normalised by the scene */
+    ck_assert_float_eq_tol(d.eye[1], -3, 1e-6f);
+    ck_assert_float_eq_tol(d.fov, 50, 1e-6f);
+    /* the pool is the domain; heights are above its floor */
+    ck_assert_float_eq_tol(d.pool_min[0], -1, 1e-6f);
+    ck_assert_float_eq_tol(d.pool_max[1], 1, 1e-6f);
+    ck_assert_float_eq_tol(d.pool_min[2], 0.5f, 1e-6f);
+    ck_assert_float_eq_tol(d.water_level, 0.9f, 1e-6f);
+    ck_assert_float_gt(d.pool_max[2], d.water_level);
+    ck_assert_float_le(d.pool_max[2], 1.5f);
+    ms_scene_destroy(sc);
+
+    /* no render section: the desc still has the pool, but create refuses */
+    const char *bare = "{\"surface\": {}}";
+    ck_assert_int_eq(ms_scene_parse(bare, strlen(bare), &sc), MS_OK);
+    ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
+    ck_assert_int_eq(d.caustics, 0);
+    ck_assert_float_eq_tol(d.water_level, 0.25f, 1e-6f);
+    ms_renderer *r = (ms_renderer *)sc; /* must be set to NULL */
+    MS_ASSERT_REFUSED(ms_renderer_create(sc, &r), MS_ERR_INVALID_ARGUMENT,
+                      "no \"render\" section");
+    ck_assert_ptr_null(r);
+    ms_scene_destroy(sc);
+    MS_ASSERT_REFUSED(ms_renderer_desc_from_scene(NULL, &d), MS_ERR_INVALID_ARGUMENT, "scene");
+}
+END_TEST
+
+START_TEST(bad_descs_are_refused_with_the_value)
+{
+    ms_renderer *r = NULL;
+    ms_renderer_desc d = top_down("water");
+#define REFUSE(field_set, status, word)                                            \
+    do {                                                                           \
+        d = top_down("water");                                                     \
+        field_set;                                                                 \
+        MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), (status), (word));      \
+        ck_assert_ptr_null(r);                                                     \
+    } while (0)
+    REFUSE(d.width = 0, MS_ERR_INVALID_ARGUMENT, "width 0 is outside [16, 8192]");
+    REFUSE(d.height = 100000, MS_ERR_INVALID_ARGUMENT, "height 100000");
+    REFUSE((d.width = 8192, d.height = 8192), MS_ERR_INVALID_ARGUMENT, "over 33554432 pixels");
+    REFUSE(d.shader = NULL, MS_ERR_INVALID_ARGUMENT, "shader is NULL");
+    REFUSE(d.shader = "", MS_ERR_INVALID_ARGUMENT, "shader \"\" is empty");
+    REFUSE(d.cubemap = "", MS_ERR_INVALID_ARGUMENT, "cubemap \"\" is empty");
+    REFUSE(d.caustics = 2, MS_ERR_INVALID_ARGUMENT, "caustics 2");
+    REFUSE(d.caustics_resolution = 8, MS_ERR_INVALID_ARGUMENT, "caustics_resolution 8");
+    REFUSE(d.caustics_intensity = -1, MS_ERR_INVALID_ARGUMENT, "caustics_intensity -1");
+    REFUSE(d.light_dir[0] = d.light_dir[1] = d.light_dir[2] = 0, MS_ERR_INVALID_ARGUMENT,
+           "light_dir [0, 0, 0] is the zero vector");
+    REFUSE(d.light_dir[1] = NAN, MS_ERR_INVALID_ARGUMENT, "light_dir[1] nan");
+    REFUSE(d.light_color[2] = -0.5f, MS_ERR_INVALID_ARGUMENT, "light_color[2] -0.5");
+    REFUSE(d.ior = 0.5f, MS_ERR_INVALID_ARGUMENT, "ior 0.5");
+    REFUSE(d.fov = 180, MS_ERR_INVALID_ARGUMENT, "fov 180 degrees");
+    REFUSE(memcpy(d.target, d.eye, sizeof d.eye), MS_ERR_INVALID_ARGUMENT, "equals eye");
+    REFUSE((d.up[0] = 0, d.up[1] = 0, d.up[2] = 1), MS_ERR_INVALID_ARGUMENT,
+           "along the view direction");
+    REFUSE(d.pool_max[0] = -1, MS_ERR_INVALID_ARGUMENT, "pool_max[0] -1 m must be above");
+    REFUSE(d.water_level = 0.5f, MS_ERR_INVALID_ARGUMENT, "water_level 0.5 m is outside [0, 0.3]");
+    REFUSE(d.tile_size = -1, MS_ERR_INVALID_ARGUMENT, "tile_size -1 m");
+    REFUSE(d.floor_color[0] = 2, MS_ERR_INVALID_ARGUMENT, "floor_color[0] 2");
+#undef REFUSE
+    d = top_down("water");
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(NULL, &r), MS_ERR_INVALID_ARGUMENT, "desc is NULL");
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, NULL), MS_ERR_INVALID_ARGUMENT, "out is NULL");
+    /* calls on no renderer */
+    ck_assert_ptr_null(ms_renderer_pixels(NULL, NULL, NULL));
+    ck_assert_ptr_null(ms_renderer_caustics(NULL, NULL));
+    ms_renderer_destroy(NULL);
+    float h = 0;
+    ms_grid g = grid(2);
+    MS_ASSERT_REFUSED(ms_renderer_draw_field(NULL, &h, &g, 0), MS_ERR_INVALID_ARGUMENT,
+                      "renderer is NULL");
+    MS_ASSERT_REFUSED(ms_renderer_write_png(NULL, "x.png"), MS_ERR_INVALID_ARGUMENT,
+                      "renderer is NULL");
+}
+END_TEST
+
+#if !MS_HAVE_OSMESA
+START_TEST(without_osmesa_create_says_so)
+{
+    ms_renderer *r = NULL;
+    ms_renderer_desc d = top_down("water");
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_UNSUPPORTED, "no OSMesa");
+    ck_assert_ptr_null(r);
+}
+END_TEST
+#endif
+
+/* ---- with OSMesa -------------------------------------------------------- */
+#if MS_HAVE_OSMESA
+
+/* Fresnel reflectance measured at the image's centre: the same flat water
+ * under a black and under a white sky (uniform cubemaps); the difference
+ * of the linear colours is the reflected share of the sky. */
+static double measured_reflectance(const ms_renderer_desc *base)
+{
+    static const unsigned char black[6][3] = {{0}}, white[6][3] = {
+        {255, 255, 255}, {255, 255, 255}, {255, 255, 255},
+        {255, 255, 255}, {255, 255, 255}, {255, 255, 255}};
+    char dark[300], bright[300];
+    snprintf(dark, sizeof dark, "%s/black", tmpdir);
+    snprintf(bright, sizeof bright, "%s/white", tmpdir);
+    write_cubemap_dir(dark, black);
+    write_cubemap_dir(bright, white);
+    float *h = field(N, 0.25f);
+    ms_renderer_desc d = *base;
+    d.cubemap = dark;
+    unsigned char *a = render(&d, h, N);
+    d.cubemap = bright;
+    unsigned char *b = render(&d, h, N);
+    double s = 0;
+    int k = 0;
+    for (int y = W / 2 - 2; y < W / 2 + 2; ++y)
+        for (int x = W / 2 - 2; x < W / 2 + 2; ++x)
+            for (int c = 0; c < 3; ++c, ++k) {
+                size_t i = ((size_t)y * W + (size_t)x) * 4 + (size_t)c;
+                ck_assert_int_lt(b[i], 250); /* not clipped */
+                s += srgb_to_linear(b[i]) - srgb_to_linear(a[i]);
+            }
+    free(a);
+    free(b);
+    free(h);
+    return s / k;
+}
+
+START_TEST(flat_water_reflects_the_fresnel_share_of_the_sky)
+{
+    make_tmpdir();
+    ms_renderer_desc d = top_down("water");
+    /* a dark floor, no caustics, the sun low at the side: no highlight */
+    d.floor_color[0] = d.floor_color[1] = d.floor_color[2] = 0.05f;
+    d.caustics = 0;
+    const float low_sun[3] = {1, 0, -0.2f};
+    memcpy(d.light_dir, low_sun, sizeof low_sun);
+    /* Schlick with n = 1.333: R0 = ((n - 1)/(n + 1))^2 = 0.0204 */
+    const double n = 1.333, r0 = ((n - 1) / (n + 1)) * ((n - 1) / (n + 1));
+    double normal = measured_reflectance(&d);
+    ck_assert_msg(fabs(normal - r0) < 0.005, "reflectance at normal incidence %g, Schlick %g",
+                  normal, r0);
+    /* 70 degrees from the normal: R = R0 + (1 - R0)(1 - cos 70)^5 = 0.141 */
+    const double inc = 70 * 3.14159265358979 / 180;
+    const float dist = 2.5f;
+    d.eye[0] = 0.5f;
+    d.eye[1] = 0.5f - dist * (float)sin(inc);
+    d.eye[2] = 0.25f + dist * (float)cos(inc);
+    d.up[0] = 0, d.up[1] = 0, d.up[2] = 1;
+    double oblique = measured_reflectance(&d);
+    double schlick = r0 + (1 - r0) * pow(1 - cos(inc), 5);
+    ck_assert_msg(fabs(oblique - schlick) < 0.015, "reflectance at 70 degrees %g, Schlick %g",
+                  oblique, schlick);
+    remove_tmpdir();
+}
+END_TEST
+
+START_TEST(a_bump_changes_the_image_where_it_is_only)
+{
+    ms_renderer_desc d = top_down("water");
+    float *flat = field(N, 0.25f), *bumped = field(N, 0.25f);
+    add_bump(bumped, N, 0.3f, 0.7f, 0.01f, 0.03f);
+    unsigned char *a = render(&d, flat, N), *b = render(&d, bumped, N);
+    /* world (x, y) on the water to pixels: 1.75 m away, 30 degrees of view */
+    const double half = 1.75 * tan(15 * 3.14159265358979 / 180); /* m */
+    int bx = (int)((0.3 - 0.5) / half * (W / 2) + W / 2);
+    int by = (int)(-(0.7 - 0.5) / half * (W / 2) + W / 2);
+    double near = box_mean_abs_diff(a, b, bx - 6, by - 6, bx + 6, by + 6);
+    int most = box_max_abs_diff(a, b, bx - 6, by - 6, bx + 6, by + 6);
+    ck_assert_msg(near > 2 && most > 20, "the bump changed its pixels by %g levels on average, "
+                  "%d at most", near, most);
+    /* the opposite quadrant, well away from the bump and its light */
+    int far = box_max_abs_diff(a, b, W / 2 + 16, W / 2 + 16, W - 8, W - 8);
+    ck_assert_msg(far <= 1, "pixels far from the bump changed by %d levels", far);
+    free(a);
+    free(b);
+    free(flat);
+    free(bumped);
+}
+END_TEST
+
+START_TEST(milk_hides_the_floor_that_water_shows)
+{
+    float *h = field(N, 0.25f);
+    add_bump(h, N, 0.5f, 0.5f, 0.004f, 0.05f);
+    const int lo = W / 4, hi = 3 * W / 4; /* the middle of the water */
+    const char *const shaders[2] = {"water", "milk"};
+    double diff[2];
+    for (int s = 0; s < 2; ++s) {
+        ms_renderer_desc d = top_down(shaders[s]);
+        d.floor_color[0] = 0.9f, d.floor_color[1] = 0.2f, d.floor_color[2] = 0.1f;
+        unsigned char *red = render(&d, h, N);
+        d.floor_color[0] = 0.1f, d.floor_color[1] = 0.2f, d.floor_color[2] = 0.9f;
+        unsigned char *blue = render(&d, h, N);
+        diff[s] = box_mean_abs_diff(red, blue, lo, lo, hi, hi);
+        free(red);
+        free(blue);
+    }
+    ck_assert_msg(diff[0] > 10, "water shows the floor's colour by %g levels", diff[0]);
+    ck_assert_msg(diff[1] == 0, "milk shows the floor's colour by %g levels", diff[1]);
+
+    /* the passes: milk asks for reflection only, so neither the refraction
+     * half of the cubemap nor the caustics are made */
+    ms_renderer_desc d = top_down("milk");
+    ms_renderer *r = create_ok(&d);
+    draw_ok(r, h, N);
+    ms_render_stats st;
+    ms_renderer_stats(r, &st);
+    ck_assert_uint_eq(st.passes, MS_SHADER_NEEDS_REFLECTION);
+    ck_assert_double_eq(st.caustics_ms, 0);
+    ck_assert_int_eq(st.frames, 1);
+    int n = -1;
+    ck_assert_ptr_null(ms_renderer_caustics(r, &n));
+    ck_assert_int_eq(n, 0);
+    ms_renderer_destroy(r);
+    d = top_down("water");
+    r = create_ok(&d);
+    draw_ok(r, h, N);
+    ms_renderer_stats(r, &st);
+    ck_assert_uint_eq(st.passes, MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION |
+                                     MS_SHADER_NEEDS_CAUSTICS);
+    ck_assert_ptr_nonnull(ms_renderer_caustics(r, &n));
+    ck_assert_int_eq(n, 128);
+    ms_renderer_destroy(r);
+    d.caustics = 0; /* the scene asks for none: not traced */
+    r = create_ok(&d);
+    draw_ok(r, h, N);
+    ms_renderer_stats(r, &st);
+    ck_assert_uint_eq(st.passes, MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION);
+    ck_assert_ptr_null(ms_renderer_caustics(r, &n));
+    ms_renderer_destroy(r);
+    free(h);
+}
+END_TEST
+
+START_TEST(caustics_brighten_the_floor_under_a_lens)
+{
+    ms_renderer_desc d = top_down("water");
+    const float down[3] = {0, 0, -1};
+    memcpy(d.light_dir, down, sizeof down);
+    /* focal length n R / (n - 1) = the depth: R = 0.25 (n - 1) / n */
+    const float sigma = 0.04f, R = 0.25f * 0.333f / 1.333f, a = sigma * sigma / R;
+    float *h = field(N, 0.25f - a);
+    add_bump(h, N, 0.5f, 0.5f, a, sigma);
+    unsigned char *on = render(&d, h, N);
+    d.caustics = 0;
+    unsigned char *off = render(&d, h, N);
+    double lum_on = 0, lum_off = 0;
+    for (int y = W / 2 - 3; y < W / 2 + 3; ++y)
+        for (int x = W / 2 - 3; x < W / 2 + 3; ++x)
+            for (int c = 0; c < 3; ++c) {
+                size_t i = ((size_t)y * W + (size_t)x) * 4 + (size_t)c;
+                lum_on += srgb_to_linear(on[i]);
+                lum_off += srgb_to_linear(off[i]);
+            }
+    ck_assert_msg(lum_on > 1.3 * lum_off, "under the lens: %g with caustics, %g without", lum_on,
+                  lum_off);
+    /* away from the lens the light map is 1, as without caustics */
+    int far = box_max_abs_diff(on, off, 8, 8, 32, 32);
+    ck_assert_msg(far <= 1, "far from the lens the caustics changed pixels by %d", far);
+    free(on);
+    free(off);
+    free(h);
+}
+END_TEST
+
+/* FNV-1a of the image. */
+static uint64_t image_hash(const unsigned char *px, size_t n)
+{
+    uint64_t hsh = 1469598103934665603ull;
+    for (size_t i = 0; i < n; ++i)
+        hsh = (hsh ^ px[i]) * 1099511628211ull;
+    return hsh;
+}
+
+static uint64_t hash_in_child(const char *threads)
+{
+    int fd[2];
+    ck_assert_int_eq(pipe(fd), 0);
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        close(fd[0]);
+        setenv("LP_NUM_THREADS", threads, 1);
+        ms_renderer_desc d = top_down("water");
+        d.eye[1] = -0.5f; /* oblique: every part of the scene in view */
+        d.up[0] = 0, d.up[1] = 0, d.up[2] = 1;
+        float *h = field(N, 0.25f);
+        add_bump(h, N, 0.4f, 0.6f, 0.01f, 0.05f);
+        ms_renderer *r = NULL;
+        ms_grid g = grid(N);
+        uint64_t v = 0;
+        if (ms_renderer_create_desc(&d, &r) == MS_OK &&
+            ms_renderer_draw_field(r, h, &g, 1.5) == MS_OK)
+            v = image_hash(ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
+        ms_renderer_destroy(r);
+        free(h);
+        ssize_t wr = write(fd[1], &v, sizeof v);
+        _exit(wr == (ssize_t)sizeof v ? 0 : 1);
+    }
+    close(fd[1]);
+    uint64_t v = 0;
+    ck_assert_int_eq(read(fd[0], &v, sizeof v), (ssize_t)sizeof v);
+    close(fd[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ck_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    return v;
+}
+
+START_TEST(the_same_field_gives_the_same_bytes_for_any_thread_count)
+{
+    uint64_t one = hash_in_child("1"), two = hash_in_child("2"), three = hash_in_child("3");
+    ck_assert_uint_ne(one, 0);
+    ck_assert_uint_eq(one, two);
+    ck_assert_uint_eq(one, three);
+    /* and one renderer drawing the same field again */
+    ms_renderer_desc d = top_down("water");
+    float *h = field(N, 0.25f);
+    add_bump(h, N, 0.4f, 0.6f, 0.01f, 0.05f);
+    ms_renderer *r = create_ok(&d);
+    draw_ok(r, h, N);
+    uint64_t first = image_hash(ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
+    float *other = field(N, 0.2f);
+    draw_ok(r, other, N);
+    ck_assert_uint_ne(image_hash(ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4), first);
+    draw_ok(r, h, N);
+    ck_assert_uint_eq(image_hash(ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4), first);
+    ms_renderer_destroy(r);
+    free(h);
+    free(other);
+}
+END_TEST
+
+START_TEST(png_round_trips)
+{
+    make_tmpdir();
+    ms_renderer_desc d = top_down("water");
+    d.width = 96; /* not square: rows and columns are not swapped */
+    float *h = field(N, 0.25f);
+    add_bump(h, N, 0.3f, 0.3f, 0.01f, 0.03f);
+    ms_renderer *r = create_ok(&d);
+    char path[300];
+    snprintf(path, sizeof path, "%s/frame.png", tmpdir);
+    MS_ASSERT_REFUSED(ms_renderer_write_png(r, path), MS_ERR_STATE, "nothing drawn yet");
+    draw_ok(r, h, N);
+    ck_assert_int_eq(ms_renderer_write_png(r, path), MS_OK);
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    ck_assert(png_image_begin_read_from_file(&img, path));
+    ck_assert_uint_eq(img.width, 96);
+    ck_assert_uint_eq(img.height, W);
+    img.format = PNG_FORMAT_RGBA;
+    unsigned char *back = malloc(PNG_IMAGE_SIZE(img));
+    ck_assert(png_image_finish_read(&img, NULL, back, 0, NULL));
+    ck_assert_int_eq(memcmp(back, ms_renderer_pixels(r, NULL, NULL), (size_t)96 * W * 4), 0);
+    free(back);
+    /* alpha is opaque everywhere; the sky is at the top of an oblique view */
+    const unsigned char *px = ms_renderer_pixels(r, NULL, NULL);
+    for (int i = 0; i < 96 * W; ++i)
+        ck_assert_int_eq(px[4 * i + 3], 255);
+    char tmp[320];
+    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    ck_assert_int_ne(access(tmp, F_OK), 0); /* renamed into place */
+    snprintf(path, sizeof path, "%s/no/such/dir/frame.png", tmpdir);
+    MS_ASSERT_REFUSED(ms_renderer_write_png(r, path), MS_ERR_IO, "cannot write");
+    MS_ASSERT_REFUSED(ms_renderer_write_png(r, NULL), MS_ERR_INVALID_ARGUMENT, "path is NULL");
+    ms_renderer_destroy(r);
+    free(h);
+    remove_tmpdir();
+}
+END_TEST
+
+START_TEST(cubemaps_load_from_a_directory_or_a_strip)
+{
+    make_tmpdir();
+    static const unsigned char colours[6][3] = {{200, 40, 40}, {40, 200, 40}, {40, 40, 200},
+                                                {200, 200, 40}, {40, 200, 200}, {200, 40, 200}};
+    char dir[300], strip[300];
+    snprintf(dir, sizeof dir, "%s/sky", tmpdir);
+    write_cubemap_dir(dir, colours);
+    /* the same faces as one strip, +x at the top */
+    snprintf(strip, sizeof strip, "%s/strip.png", tmpdir);
+    {
+        png_image img;
+        memset(&img, 0, sizeof img);
+        img.version = PNG_IMAGE_VERSION;
+        img.width = 8;
+        img.height = 48;
+        img.format = PNG_FORMAT_RGB;
+        unsigned char px[8 * 48 * 3];
+        for (int i = 0; i < 8 * 48; ++i)
+            memcpy(px + 3 * i, colours[i / 64], 3);
+        ck_assert(png_image_write_to_file(&img, strip, 0, px, 0, NULL));
+    }
+    /* looking along +y, level: the sky above the pool is the +y face */
+    ms_renderer_desc d = top_down("milk");
+    const float eye[3] = {0.5f, -2.0f, 0.6f}, target[3] = {0.5f, 0.5f, 0.6f};
+    memcpy(d.eye, eye, sizeof eye);
+    memcpy(d.target, target, sizeof target);
+    d.up[0] = 0, d.up[1] = 0, d.up[2] = 1;
+    float *h = field(N, 0.25f);
+    d.cubemap = dir;
+    unsigned char *a = render(&d, h, N);
+    d.cubemap = strip;
+    unsigned char *b = render(&d, h, N);
+    ck_assert_int_eq(memcmp(a, b, (size_t)W * W * 4), 0);
+    const unsigned char *top = a + ((size_t)4 * W + W / 2) * 4;
+    for (int c = 0; c < 3; ++c)
+        ck_assert_msg(abs((int)top[c] - colours[2][c]) <= 2, "sky pixel %d %d %d", top[0],
+                      top[1], top[2]);
+    free(a);
+    free(b);
+
+    /* refusals: a missing file, a directory without faces, not a PNG, a
+     * strip of the wrong shape, faces of different sizes */
+    ms_renderer *r = NULL;
+    char path[320];
+    snprintf(path, sizeof path, "%s/nothing.png", tmpdir);
+    d.cubemap = path;
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_IO, "does not exist");
+    snprintf(path, sizeof path, "%s/empty", tmpdir);
+    ck_assert_int_eq(mkdir(path, 0700), 0);
+    d.cubemap = path;
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_IO, "has no px.png (or posx.png)");
+    snprintf(path, sizeof path, "%s/notes.png", tmpdir);
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs("not a png\n", f);
+    fclose(f);
+    d.cubemap = path;
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_PARSE, "is not a readable PNG");
+    snprintf(path, sizeof path, "%s/square.png", tmpdir);
+    write_face(path, 8, 8, colours[0]);
+    d.cubemap = path;
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_INVALID_ARGUMENT,
+                      "height = 6 x width");
+    snprintf(path, sizeof path, "%s/sky/nz.png", tmpdir);
+    write_face(path, 16, 16, colours[5]);
+    d.cubemap = dir;
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_INVALID_ARGUMENT,
+                      "all of one size (8)");
+    ck_assert_ptr_null(r);
+    free(h);
+    remove_tmpdir();
+}
+END_TEST
+
+START_TEST(bad_fields_and_shaders_are_refused)
+{
+    ms_renderer_desc d = top_down("water");
+    ms_renderer *r = create_ok(&d);
+    float *h = field(N, 0.25f);
+    ms_grid g = grid(N);
+    h[5 * N + 7] = NAN;
+    MS_ASSERT_REFUSED(ms_renderer_draw_field(r, h, &g, 0), MS_ERR_INVALID_ARGUMENT,
+                      "at cell (7, 5) is not finite");
+    h[5 * N + 7] = 0.25f;
+    g.nx = 1;
+    MS_ASSERT_REFUSED(ms_renderer_draw_field(r, h, &g, 0), MS_ERR_INVALID_ARGUMENT, "grid nx 1");
+    g = grid(N);
+    g.dx = 0;
+    MS_ASSERT_REFUSED(ms_renderer_draw_field(r, h, &g, 0), MS_ERR_INVALID_ARGUMENT, "grid dx 0");
+    g = grid(N);
+    MS_ASSERT_REFUSED(ms_renderer_draw_field(r, NULL, &g, 0), MS_ERR_INVALID_ARGUMENT,
+                      "height field is NULL");
+    MS_ASSERT_REFUSED(ms_renderer_draw_field(r, h, &g, INFINITY), MS_ERR_INVALID_ARGUMENT,
+                      "time is inf");
+    /* after refusals it still draws */
+    draw_ok(r, h, N);
+    ms_renderer_destroy(r);
+    free(h);
+
+    d.shader = "lava";
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_PLUGIN, "available shaders");
+    d.shader = "sphere";
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_PLUGIN, "not a shader");
+    d.shader = "water";
+    d.shader_params = "{\"ior\": 9}";
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_INVALID_ARGUMENT, "ior 9");
+    ck_assert_ptr_null(r);
+}
+END_TEST
+
+/* A user's shader plugin whose fragment shader has a GLSL error: the
+ * refusal carries the compiler's log. */
+static const char broken_shader[] =
+    "#include <modesplit/plugin.h>\n"
+    "static const ms_shader_vtable vt = {\n"
+    "    .size = sizeof(ms_shader_vtable), .passes = MS_SHADER_NEEDS_REFLECTION,\n"
+    "    .vertex_source = \"#version 120\\nvoid main() { gl_Position = ftransform(); }\\n\",\n"
+    "    .fragment_source = \"#version 120\\nvoid main() { gl_FragColor = vec4(undeclared_thing, 1.0); }\\n\"};\n"
+    "static const ms_plugin_info info = {.abi = MS_PLUGIN_ABI, .size = sizeof(ms_plugin_info),\n"
+    "    .name = \"broken_glsl\", .version = \"1.0\", .kind = MS_PLUGIN_SHADER,\n"
+    "    .description = \"a shader that does not compile\", .vtable = &vt};\n"
+    "MS_PLUGIN_EXPORT const ms_plugin_info *ms_plugin_entry(void) { return &info; }\n";
+
+START_TEST(a_shader_that_does_not_compile_is_refused_with_its_log)
+{
+    make_tmpdir();
+    char src[320], so[320], cmd[1200];
+    snprintf(src, sizeof src, "%s/broken.c", tmpdir);
+    snprintf(so, sizeof so, "%s/broken.so", tmpdir);
+    FILE *f = fopen(src, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs(broken_shader, f);
+    fclose(f);
+    const char *cc = getenv("CC") ? getenv("CC") : "cc";
+    snprintf(cmd, sizeof cmd, "%s -std=c11 -shared -fPIC -fvisibility=hidden -Iinclude %s -o %s",
+             cc, src, so);
+    ck_assert_int_eq(system(cmd), 0);
+    ck_assert_int_eq(ms_plugin_load(so), MS_OK);
+    ms_renderer_desc d = top_down("broken_glsl");
+    ms_renderer *r = NULL;
+    MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), MS_ERR_PLUGIN,
+                      "shader \"broken_glsl\": the fragment shader does not compile:");
+    ck_assert_ptr_nonnull(strstr(ms_last_error(), "undeclared_thing"));
+    ck_assert_ptr_null(r);
+    remove_tmpdir();
+}
+END_TEST
+
+START_TEST(a_scene_renders_and_every_shader_draws)
+{
+    const char *text = "{\"surface\": {\"cells\": [64, 64]},"
+                       " \"render\": {\"width\": 64, \"height\": 64, \"shader\": \"oil\"}}";
+    ms_scene *sc = NULL;
+    ck_assert_int_eq(ms_scene_parse(text, strlen(text), &sc), MS_OK);
+    ms_renderer *r = NULL;
+    ck_assert_int_eq(ms_renderer_create(sc, &r), MS_OK);
+    float *h = field(N, 0.25f);
+    add_bump(h, N, 0.5f, 0.5f, 0.01f, 0.05f);
+    draw_ok(r, h, N);
+    int w, hh;
+    ck_assert_ptr_nonnull(ms_renderer_pixels(r, &w, &hh));
+    ck_assert_int_eq(w, 64);
+    ck_assert_int_eq(hh, 64);
+    ms_renderer_destroy(r);
+    ms_scene_destroy(sc);
+    /* each shipped shader: the liquid's colour at the image's centre */
+    static const char *const shaders[] = {"water", "milk", "oil", "honey"};
+    float lum[4], rgb[4][3];
+    for (int s = 0; s < 4; ++s) {
+        ms_renderer_desc d = top_down(shaders[s]);
+        const float low_sun[3] = {1, 0, -0.3f}; /* its glint out of view */
+        memcpy(d.light_dir, low_sun, sizeof low_sun);
+        unsigned char *px = render(&d, h, N);
+        const unsigned char *c = px + ((size_t)(W / 2) * W + W / 4) * 4;
+        for (int k = 0; k < 3; ++k)
+            rgb[s][k] = (float)srgb_to_linear(c[k]);
+        lum[s] = 0.2126f * rgb[s][0] + 0.7152f * rgb[s][1] + 0.0722f * rgb[s][2];
+        free(px);
+    }
+    ck_assert_msg(rgb[0][2] > rgb[0][0], "water is not blue");
+    ck_assert_msg(lum[1] > lum[0] && lum[1] > lum[2] && lum[1] > lum[3], "milk is not the brightest");
+    ck_assert_msg(lum[2] < 0.1f, "oil is not dark: %g", lum[2]);
+    ck_assert_msg(rgb[3][0] > rgb[3][1] && rgb[3][1] > rgb[3][2], "honey is not amber");
+    free(h);
+}
+END_TEST
+#endif /* MS_HAVE_OSMESA */
+
+static Suite *render_suite(void)
+{
+    Suite *s = suite_create("render");
+    TCase *tc = tcase_create("render");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, flat_water_lights_the_floor_evenly);
+    tcase_add_test(tc, a_lens_shaped_bump_focuses_light_and_conserves_it);
+    tcase_add_test(tc, a_dip_spreads_light_and_intensity_scales_contrast);
+    tcase_add_test(tc, a_scene_gives_the_desc_of_its_render_section);
+    tcase_add_test(tc, bad_descs_are_refused_with_the_value);
+#if !MS_HAVE_OSMESA
+    tcase_add_test(tc, without_osmesa_create_says_so);
+#else
+    tcase_add_test(tc, flat_water_reflects_the_fresnel_share_of_the_sky);
+    tcase_add_test(tc, a_bump_changes_the_image_where_it_is_only);
+    tcase_add_test(tc, milk_hides_the_floor_that_water_shows);
+    tcase_add_test(tc, caustics_brighten_the_floor_under_a_lens);
+    tcase_add_test(tc, the_same_field_gives_the_same_bytes_for_any_thread_count);
+    tcase_add_test(tc, png_round_trips);
+    tcase_add_test(tc, cubemaps_load_from_a_directory_or_a_strip);
+    tcase_add_test(tc, bad_fields_and_shaders_are_refused);
+    tcase_add_test(tc, a_shader_that_does_not_compile_is_refused_with_its_log);
+    tcase_add_test(tc, a_scene_renders_and_every_shader_draws);
+#endif
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    return ms_test_run(render_suite());
+}
