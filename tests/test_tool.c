@@ -416,13 +416,17 @@ START_TEST(run_writes_hdf5_xdmf_png_and_a_summary)
     free(scene);
     result_free(&r);
 
-    /* --quiet: nothing on either stream; --no-out: no file */
+    /* --quiet: nothing on either stream; --no-out: no file; --preview */
+    const char *pv = tmp_path("preview");
     r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--no-out", "--quiet",
-                                  NULL});
+                                  "--png", pv, "--preview", NULL});
     ASSERT_EXIT(r, 0);
     ck_assert_str_eq(r.out, "");
     ck_assert_str_eq(r.err, "");
     result_free(&r);
+    char pf[600];
+    snprintf(pf, sizeof pf, "%s/frame_00000.png", pv);
+    ck_assert_int_eq(access(pf, R_OK), 0);
     remove_tmp_dir();
 }
 END_TEST

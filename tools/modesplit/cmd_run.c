@@ -36,7 +36,7 @@ typedef struct run_opts {
     long frames;         /* -1: from the duration */
     double duration;     /* s, < 0: the scene's */
     int threads;         /* 0: the scene's */
-    int no_out, quiet;
+    int no_out, quiet, preview;
 } run_opts;
 
 static int parse_args(int argc, char **argv, run_opts *o)
@@ -89,6 +89,8 @@ static int parse_args(int argc, char **argv, run_opts *o)
                 return EXIT_USAGE;
             }
             o->threads = (int)t;
+        } else if (!strcmp(a, "--preview")) {
+            o->preview = 1;
         } else if (!strcmp(a, "--no-out")) {
             o->no_out = 1;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
@@ -105,7 +107,7 @@ static int parse_args(int argc, char **argv, run_opts *o)
     }
     if (!o->scene) {
         tool_error("run: which scene? usage: modesplit run SCENE.json [--frames N | --duration "
-                   "S] [--out RUN.h5] [--png DIR] [--threads 1|2] [--quiet]");
+                   "S] [--out RUN.h5] [--png DIR [--preview]] [--threads 1|2] [--quiet]");
         return EXIT_USAGE;
     }
     if (o->frames >= 0 && o->duration >= 0) {
@@ -195,7 +197,7 @@ int cmd_run(int argc, char **argv)
         }
     }
     tool_png png = {0};
-    if (o.png && png_begin(&png, o.png) != 0) {
+    if (o.png && png_begin(&png, o.png, sc, o.preview, o.quiet) != 0) {
         ms_writer_close(w);
         free(out);
         ms_sim_destroy(sim);
@@ -233,7 +235,7 @@ int cmd_run(int argc, char **argv)
             if (o.png) {
                 int nx, ny;
                 const float *h = ms_sim_height(sim, &nx, &ny);
-                if (png_frame(&png, written, h, &grid) != 0) {
+                if (png_frame(&png, written, h, &grid, ms_sim_time(sim)) != 0) {
                     progress_end(&prog);
                     rc = EXIT_RUNTIME;
                     break;
