@@ -409,6 +409,7 @@ START_TEST(bad_descs_are_refused_with_the_value)
     REFUSE(d.water_level = 0.5f, MS_ERR_INVALID_ARGUMENT, "water_level 0.5 m is outside [0, 0.3]");
     REFUSE(d.tile_size = -1, MS_ERR_INVALID_ARGUMENT, "tile_size -1 m");
     REFUSE(d.floor_color[0] = 2, MS_ERR_INVALID_ARGUMENT, "floor_color[0] 2");
+    REFUSE(d.mesh_step = 65, MS_ERR_INVALID_ARGUMENT, "mesh_step 65 is outside [0, 64]");
 #undef REFUSE
     d = top_down("water");
     MS_ASSERT_REFUSED(ms_renderer_create_desc(NULL, &r), MS_ERR_INVALID_ARGUMENT, "desc is NULL");
@@ -869,6 +870,52 @@ START_TEST(a_shader_that_does_not_compile_is_refused_with_its_log)
 }
 END_TEST
 
+START_TEST(a_coarser_mesh_averages_the_field)
+{
+    /* mesh_step 2 draws the field averaged over 2 x 2 blocks: the same
+     * image as the averaged field drawn cell by cell */
+    float *h = field(N, 0.25f), *half = field(N / 2, 0);
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i)
+            h[j * N + i] += 0.004f * sinf(0.9f * (float)i) * cosf(0.7f * (float)j);
+    for (int j = 0; j < N / 2; ++j)
+        for (int i = 0; i < N / 2; ++i)
+            half[j * (N / 2) + i] = 0.25f * (h[2 * j * N + 2 * i] + h[2 * j * N + 2 * i + 1] +
+                                             h[(2 * j + 1) * N + 2 * i] +
+                                             h[(2 * j + 1) * N + 2 * i + 1]);
+    ms_renderer_desc d = top_down("milk"); /* no caustics: they trace the full field */
+    d.mesh_step = 2;
+    ms_renderer *r = create_ok(&d);
+    draw_ok(r, h, N);
+    ms_render_stats st;
+    ms_renderer_stats(r, &st);
+    ck_assert_int_eq(st.mesh_nx, N / 2);
+    ck_assert_int_eq(st.mesh_ny, N / 2);
+    unsigned char *a = malloc((size_t)W * W * 4);
+    memcpy(a, ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
+    ms_renderer_destroy(r);
+    d.mesh_step = 1;
+    unsigned char *b = render(&d, half, N / 2);
+    ck_assert_int_le(box_max_abs_diff(a, b, 0, 0, W, W), 1);
+    free(b);
+    /* automatic: a small image of a fine field keeps a vertex every 2
+     * pixels at most */
+    d.mesh_step = 0;
+    d.width = d.height = 32;
+    r = create_ok(&d);
+    float *fine = field(256, 0.25f);
+    draw_ok(r, fine, 256);
+    ms_renderer_stats(r, &st);
+    /* 0.94 m of water across 32 pixels: 2 pixels = 5.9 cm, 15 cells */
+    ck_assert_int_eq(st.mesh_nx, 256 / 15);
+    ms_renderer_destroy(r);
+    free(fine);
+    free(a);
+    free(h);
+    free(half);
+}
+END_TEST
+
 START_TEST(a_scene_renders_and_every_shader_draws)
 {
     const char *text = "{\"surface\": {\"cells\": [64, 64]},"
@@ -931,6 +978,7 @@ static Suite *render_suite(void)
     tcase_add_test(tc, cubemaps_load_from_a_directory_or_a_strip);
     tcase_add_test(tc, bad_fields_and_shaders_are_refused);
     tcase_add_test(tc, a_shader_that_does_not_compile_is_refused_with_its_log);
+    tcase_add_test(tc, a_coarser_mesh_averages_the_field);
     tcase_add_test(tc, a_scene_renders_and_every_shader_draws);
 #endif
     suite_add_tcase(s, tc);

@@ -81,6 +81,12 @@ typedef struct ms_renderer_desc {
     float water_level;           /* m (world z) of still water, in [floor, rim]; default 0.25 */
     float tile_size;             /* m, edge of a floor tile, >= 0; 0 = 1/12 of the shorter side */
     float floor_color[3];        /* linear RGB of the tiles, each [0, 1]; [0.30, 0.52, 0.60] */
+    /* The mesh has a vertex every mesh_step cells (heights averaged over
+     * the step x step block), [0, 64]. 0 = automatic: the largest step whose
+     * vertices lie at most 2 pixels apart where the water is nearest the
+     * eye (so 1 whenever a cell covers 2 pixels or more). The caustics
+     * always trace the full field. Default 0. */
+    int mesh_step;
 } ms_renderer_desc;
 
 MS_API ms_renderer_desc ms_renderer_desc_default(void);
@@ -121,6 +127,7 @@ typedef struct ms_render_stats {
     double draw_ms;       /* GL drawing until finished */
     double readback_ms;   /* pixels read back and flipped */
     double total_ms;      /* the whole last draw */
+    int mesh_nx, mesh_ny; /* vertices of the last draw's mesh (mesh_step) */
 } ms_render_stats;
 MS_API void ms_renderer_stats(const ms_renderer *r, ms_render_stats *out);
 

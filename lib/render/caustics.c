@@ -35,11 +35,26 @@ void ms_caustics_free(ms_caustics *c)
     ms_free(c->tmp);
     ms_free(c->gx);
     ms_free(c->gy);
+    ms_free(c->row);
+    ms_free(c->col0);
+    ms_free(c->colf);
     memset(c, 0, sizeof *c);
 }
 
-static ms_status reserve(ms_caustics *c, int n, size_t cells)
+static ms_status reserve(ms_caustics *c, int n, size_t cells, size_t row)
 {
+    if (c->row_cap < row) {
+        ms_free(c->row);
+        ms_free(c->col0);
+        ms_free(c->colf);
+        c->row = ms_alloc_array(row, 6 * sizeof(float));
+        c->col0 = ms_alloc_array(row, sizeof(int));
+        c->colf = ms_alloc_array(row, sizeof(float));
+        c->row_cap = c->row && c->col0 && c->colf ? row : 0;
+        if (!c->row_cap)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "render: out of memory for the caustics tracer's rows");
+    }
     if (c->n != n) {
         ms_free(c->map);
         ms_free(c->tmp);
@@ -132,88 +147,108 @@ static void blur_cols(const float *src, float *dst, int n)
     }
 }
 
+/* One row of rays, from the field rows interpolated to the rays' y
+ * (rh, rgx, rgy over the field's nx nodes) to where each meets the floor
+ * (hx, hy, m) and the light it carries (w; 0 for none). No branches: the
+ * compiler may vectorise it. */
+static void trace_row(int rx, float y, const int *restrict col0, const float *restrict colf,
+                      const float *restrict rh, const float *restrict rgx,
+                      const float *restrict rgy, float x0, float step, const float L[3],
+                      float eta, float r0, float w_flat, float *restrict hx,
+                      float *restrict hy, float *restrict w)
+{
+    const float Lx = L[0], Ly = L[1], Lz = L[2];
+    for (int k = 0; k < rx; ++k) {
+        const int i = col0[k];
+        const float f = colf[k];
+        const float hh = rh[i] + f * (rh[i + 1] - rh[i]);
+        const float gx = rgx[i] + f * (rgx[i + 1] - rgx[i]);
+        const float gy = rgy[i] + f * (rgy[i + 1] - rgy[i]);
+        const float x = x0 + ((float)k + 0.5f) * step;
+        const float inv = 1.0f / sqrtf(gx * gx + gy * gy + 1.0f);
+        const float Nx = -gx * inv, Ny = -gy * inv, Nz = inv;
+        const float cosi = MS_MAX(-(Lx * Nx + Ly * Ny + Lz * Nz), 0.0f);
+        const float kk = MS_MAX(1.0f - eta * eta * (1.0f - cosi * cosi), 0.0f);
+        const float m = eta * cosi - sqrtf(kk);
+        const float tX = eta * Lx + m * Nx, tY = eta * Ly + m * Ny;
+        const float tZ = MS_MIN(eta * Lz + m * Nz, -1e-6f);
+        const float depth = MS_MAX(hh, 0.0f); /* dry: the sun straight onto the floor, */
+        const float s = depth / -tZ;          /* path length to the floor, m */
+        const float wet = hh > 0 ? 1.0f : 0.0f;
+        const float om = 1.0f - cosi, om2 = om * om;
+        const float t = 1.0f - (r0 + (1.0f - r0) * om2 * om2 * om); /* Schlick */
+        hx[k] = x + s * tX;
+        hy[k] = y + s * tY;
+        /* with no surface to reflect any (1 / T0 of flat water's light); a
+         * slope facing away from the sun takes none (cosi = 0: t = 0) */
+        w[k] = w_flat * (wet * t + (1.0f - wet));
+    }
+}
+
 ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const float *h,
                             const ms_grid *g)
 {
     const int n = d->resolution, nx = g->nx, ny = g->ny;
-    ms_status st = reserve(c, n, (size_t)nx * (size_t)ny);
-    if (st != MS_OK)
-        return st;
-    float *map = c->map;
-    memset(map, 0, (size_t)n * (size_t)n * sizeof *map);
-    const float Lx = d->light_dir[0], Ly = d->light_dir[1], Lz = d->light_dir[2];
-    if (!(Lz < -1e-3f)) {
-        /* the sun at or below the horizon: no direct light on the floor */
-        return MS_OK;
-    }
-    gradients(h, nx, ny, g->dx, g->dy, c->gx, c->gy);
-
     /* m rays per texel and axis: as fine as the field's cells, and an
      * integer fraction of a texel, so flat water splats exactly 1 in each */
     const float tx = d->pool[2] / (float)n, ty = d->pool[3] / (float)n; /* m per texel */
     const int mx = MS_CLAMP((int)ceilf(tx / g->dx - 1e-3f), 1, MAX_RAYS_PER_TEXEL);
     const int my = MS_CLAMP((int)ceilf(ty / g->dy - 1e-3f), 1, MAX_RAYS_PER_TEXEL);
     const int rx = n * mx, ry = n * my;
+    ms_status st = reserve(c, n, (size_t)nx * (size_t)ny, (size_t)MS_MAX(rx, nx));
+    if (st != MS_OK)
+        return st;
+    float *map = c->map;
+    memset(map, 0, (size_t)n * (size_t)n * sizeof *map);
+    if (!(d->light_dir[2] < -1e-3f)) {
+        /* the sun at or below the horizon: no direct light on the floor */
+        return MS_OK;
+    }
+    gradients(h, nx, ny, g->dx, g->dy, c->gx, c->gy);
+
     const float eta = 1.0f / d->ior;
     const float r0 = ((d->ior - 1.0f) / (d->ior + 1.0f)) * ((d->ior - 1.0f) / (d->ior + 1.0f));
-    const float t0 = schlick_transmission(-Lz, r0);
+    const float t0 = schlick_transmission(-d->light_dir[2], r0);
     /* light per ray over light per texel, both through flat water */
     const float w_ray = 1.0f / ((float)(mx * my) * t0);
     const float px0 = d->pool[0], py0 = d->pool[1];
-    const float itx = 1.0f / tx, ity = 1.0f / ty;
+    const float itx = 1.0f / tx, ity = 1.0f / ty, stepx = tx / (float)mx;
+    for (int k = 0; k < rx; ++k)
+        sample_axis(px0 + ((float)k + 0.5f) * stepx, g->origin[0], g->dx, nx, &c->col0[k],
+                    &c->colf[k]);
+    float *rh = c->row, *rgx = rh + c->row_cap, *rgy = rgx + c->row_cap;
+    float *hx = rgy + c->row_cap, *hy = hx + c->row_cap, *w = hy + c->row_cap;
 
     for (int kj = 0; kj < ry; ++kj) {
         const float y = py0 + ((float)kj + 0.5f) * ty / (float)my;
         int j0;
         float fv;
         sample_axis(y, g->origin[1], g->dy, ny, &j0, &fv);
-        const size_t r0i = (size_t)j0 * (size_t)nx, r1i = r0i + (size_t)nx;
-        for (int ki = 0; ki < rx; ++ki) {
-            const float x = px0 + ((float)ki + 0.5f) * tx / (float)mx;
-            int i0;
-            float fu;
-            sample_axis(x, g->origin[0], g->dx, nx, &i0, &fu);
-            const size_t a = r0i + (size_t)i0, b = a + 1, cc = r1i + (size_t)i0, dd = cc + 1;
-            const float w00 = (1 - fu) * (1 - fv), w10 = fu * (1 - fv);
-            const float w01 = (1 - fu) * fv, w11 = fu * fv;
-            float hh = w00 * h[a] + w10 * h[b] + w01 * h[cc] + w11 * h[dd];
-            float gxx = w00 * c->gx[a] + w10 * c->gx[b] + w01 * c->gx[cc] + w11 * c->gx[dd];
-            float gyy = w00 * c->gy[a] + w10 * c->gy[b] + w01 * c->gy[cc] + w11 * c->gy[dd];
-            float hx, hy, w;
-            if (hh > 0) {
-                float inv = 1.0f / sqrtf(gxx * gxx + gyy * gyy + 1.0f);
-                float Nx = -gxx * inv, Ny = -gyy * inv, Nz = inv;
-                float cosi = -(Lx * Nx + Ly * Ny + Lz * Nz);
-                if (cosi <= 0)
-                    continue; /* a slope facing away from the sun: no light enters */
-                float k = 1.0f - eta * eta * (1.0f - cosi * cosi);
-                float m = eta * cosi - sqrtf(k);
-                float tX = eta * Lx + m * Nx, tY = eta * Ly + m * Ny, tZ = eta * Lz + m * Nz;
-                if (!(tZ < -1e-6f))
-                    continue;
-                float s = hh / -tZ; /* path length to the floor, m */
-                hx = x + s * tX;
-                hy = y + s * tY;
-                w = w_ray * schlick_transmission(cosi, r0);
-            } else {
-                /* dry: the sun reaches the floor as through flat water */
-                hx = x;
-                hy = y;
-                w = w_ray * t0;
-            }
-            float u = (hx - px0) * itx - 0.5f, v = (hy - py0) * ity - 0.5f;
-            if (!(u >= -0.5f && u <= (float)n - 0.5f && v >= -0.5f && v <= (float)n - 0.5f))
-                continue; /* into a wall */
+        /* the field's rows at the rays' y */
+        const size_t a0 = (size_t)j0 * (size_t)nx, a1 = a0 + (size_t)nx;
+        for (int i = 0; i < nx; ++i) {
+            rh[i] = h[a0 + i] + fv * (h[a1 + i] - h[a0 + i]);
+            rgx[i] = c->gx[a0 + i] + fv * (c->gx[a1 + i] - c->gx[a0 + i]);
+            rgy[i] = c->gy[a0 + i] + fv * (c->gy[a1 + i] - c->gy[a0 + i]);
+        }
+        trace_row(rx, y, c->col0, c->colf, rh, rgx, rgy, px0, stepx, d->light_dir, eta, r0,
+                  w_ray, hx, hy, w);
+        /* splat each ray's light bilinearly where it meets the floor */
+        for (int k = 0; k < rx; ++k) {
+            float u = (hx[k] - px0) * itx - 0.5f, v = (hy[k] - py0) * ity - 0.5f;
+            if (!(w[k] > 0 && u >= -0.5f && u <= (float)n - 0.5f && v >= -0.5f &&
+                  v <= (float)n - 0.5f))
+                continue; /* no light, or into a wall */
             int iu = (int)floorf(u), iv = (int)floorf(v);
-            float au = u - (float)iu, av = v - (float)iv;
+            float au = u - (float)iu, av = v - (float)iv, wk = w[k];
             int iu1 = MS_MIN(iu + 1, n - 1), iv1 = MS_MIN(iv + 1, n - 1);
             iu = MS_MAX(iu, 0);
             iv = MS_MAX(iv, 0);
             float *r_lo = map + (size_t)iv * (size_t)n, *r_hi = map + (size_t)iv1 * (size_t)n;
-            r_lo[iu] += w * (1 - au) * (1 - av);
-            r_lo[iu1] += w * au * (1 - av);
-            r_hi[iu] += w * (1 - au) * av;
-            r_hi[iu1] += w * au * av;
+            r_lo[iu] += wk * (1 - au) * (1 - av);
+            r_lo[iu1] += wk * au * (1 - av);
+            r_hi[iu] += wk * (1 - au) * av;
+            r_hi[iu1] += wk * au * av;
         }
     }
     blur_rows(map, c->tmp, n);

@@ -7,15 +7,38 @@
 #include "core/internal.h"
 #include "render/gl_internal.h"
 
+#ifndef BAND_VERTICES
+#define BAND_VERTICES 4096
+#endif
+
 static void normalize3(float v[3])
 {
     float l = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     v[0] /= l, v[1] /= l, v[2] /= l;
 }
 
-static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *g)
+static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *full)
 {
     ms_gl *gl = r->gl;
+    int step = r->desc.mesh_step > 0 ? r->desc.mesh_step : ms_mesh_auto_step(&r->desc, full);
+    step = MS_MIN(step, MS_MIN(full->nx, full->ny) / 2);
+    ms_grid coarse;
+    const ms_grid *g = full;
+    if (step > 1) {
+        size_t cells = (size_t)(full->nx / step) * (size_t)(full->ny / step);
+        if (gl->coarse_cap < cells) {
+            ms_free(gl->coarse);
+            gl->coarse = ms_alloc_array(cells, sizeof(float));
+            gl->coarse_cap = gl->coarse ? cells : 0;
+            if (!gl->coarse)
+                return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                               "render: out of memory for the mesh of a %d x %d field",
+                               full->nx, full->ny);
+        }
+        ms_mesh_coarsen(h, full, step, gl->coarse, &coarse);
+        h = gl->coarse;
+        g = &coarse;
+    }
     const size_t nv = (size_t)g->nx * (size_t)g->ny, floats = nv * 6;
     if (gl->vertices_cap < floats) {
         ms_free(gl->vertices);
@@ -26,12 +49,9 @@ static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *g)
                            "render: out of memory for the mesh of a %d x %d field", g->nx,
                            g->ny);
     }
-    long bad = ms_mesh_build(h, g, r->desc.pool_min[2], gl->vertices);
-    if (bad >= 0)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: height %g m at cell (%ld, %ld) is not finite; every height "
-                       "must be a finite number",
-                       (double)h[bad], bad % g->nx, bad / g->nx);
+    ms_mesh_build(h, g, r->desc.pool_min[2], gl->vertices);
+    r->stats.mesh_nx = g->nx;
+    r->stats.mesh_ny = g->ny;
     glBindBuffer(GL_ARRAY_BUFFER, gl->mesh_vbo);
     if (gl->mesh_nx != g->nx || gl->mesh_ny != g->ny)
         glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(floats * sizeof(float)), gl->vertices,
@@ -150,8 +170,18 @@ static void draw_liquid(ms_renderer *r, double time)
     glEnableClientState(GL_NORMAL_ARRAY);
     glVertexPointer(3, GL_FLOAT, 6 * sizeof(float), (const void *)0);
     glNormalPointer(GL_FLOAT, 6 * sizeof(float), (const void *)(3 * sizeof(float)));
-    glDrawElements(GL_TRIANGLES, 6 * (gl->mesh_nx - 1) * (gl->mesh_ny - 1), GL_UNSIGNED_INT,
-                   (const void *)0);
+    {
+        const int quads_row = gl->mesh_nx - 1, rows = gl->mesh_ny - 1;
+        const int band = MS_MAX(1, BAND_VERTICES / gl->mesh_nx);
+        for (int j = 0; j < rows; j += band) {
+            int nrows = MS_MIN(band, rows - j);
+            size_t first = 6 * (size_t)quads_row * (size_t)j;
+            glDrawRangeElements(GL_TRIANGLES, (GLuint)(j * gl->mesh_nx),
+                                (GLuint)((j + nrows + 1) * gl->mesh_nx - 1),
+                                6 * quads_row * nrows, GL_UNSIGNED_INT,
+                                (const void *)(first * sizeof(unsigned)));
+        }
+    }
     glDisableClientState(GL_NORMAL_ARRAY);
     glDisableClientState(GL_VERTEX_ARRAY);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);

@@ -68,6 +68,8 @@ struct ms_gl {
     int mesh_nx, mesh_ny; /* the grid the index buffer is for */
     float *vertices;      /* mesh vertices, CPU side */
     size_t vertices_cap;  /* floats */
+    float *coarse;        /* the field averaged to the mesh's step */
+    size_t coarse_cap;    /* floats */
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */

@@ -111,5 +111,6 @@ void ms_gl_destroy(ms_gl *gl)
     /* the context takes its objects with it */
     ms_gl_context_destroy(&gl->context);
     ms_free(gl->vertices);
+    ms_free(gl->coarse);
     ms_free(gl);
 }

@@ -7,7 +7,15 @@
 #include "core/internal.h"
 #include "render/render_internal.h"
 
-long ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restrict vertices)
+long ms_field_nonfinite(const float *h, size_t n)
+{
+    for (size_t k = 0; k < n; ++k)
+        if (!isfinite(h[k]))
+            return (long)k;
+    return -1;
+}
+
+void ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restrict vertices)
 {
     const int nx = g->nx, ny = g->ny;
     const float x0 = g->origin[0], y0 = g->origin[1], dx = g->dx, dy = g->dy;
@@ -33,11 +41,51 @@ long ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restr
             v[6 * i + 5] = inv;
         }
     }
-    /* a NaN or infinity anywhere shows in the vertices */
-    for (size_t k = 0; k < (size_t)nx * (size_t)ny; ++k)
-        if (!isfinite(h[k]))
-            return (long)k;
-    return -1;
+}
+
+void ms_mesh_coarsen(const float *h, const ms_grid *g, int step, float *restrict out,
+                     ms_grid *out_g)
+{
+    const int nx = g->nx, ny = g->ny, cx = MS_MAX(nx / step, 2), cy = MS_MAX(ny / step, 2);
+    *out_g = *g;
+    out_g->nx = cx;
+    out_g->ny = cy;
+    out_g->dx = g->dx * (float)nx / (float)cx;
+    out_g->dy = g->dy * (float)ny / (float)cy;
+    for (int J = 0; J < cy; ++J) {
+        const int j0 = (int)((long)J * ny / cy), j1 = (int)((long)(J + 1) * ny / cy);
+        float *o = out + (size_t)J * (size_t)cx;
+        for (int I = 0; I < cx; ++I)
+            o[I] = 0;
+        for (int j = j0; j < j1; ++j) {
+            const float *row = h + (size_t)j * (size_t)nx;
+            for (int I = 0; I < cx; ++I) {
+                const int i0 = (int)((long)I * nx / cx), i1 = (int)((long)(I + 1) * nx / cx);
+                float s = 0;
+                for (int i = i0; i < i1; ++i)
+                    s += row[i];
+                o[I] += s / (float)((i1 - i0) * (j1 - j0));
+            }
+        }
+    }
+}
+
+int ms_mesh_auto_step(const ms_renderer_desc *d, const ms_grid *g)
+{
+    /* the nearest point of the field's rectangle, at the still water */
+    const float lo[2] = {g->origin[0], g->origin[1]};
+    const float hi[2] = {g->origin[0] + (float)g->nx * g->dx, g->origin[1] + (float)g->ny * g->dy};
+    double dist2 = 0;
+    for (int k = 0; k < 2; ++k) {
+        double e = d->eye[k], q = e < lo[k] ? lo[k] - e : e > hi[k] ? e - hi[k] : 0;
+        dist2 += q * q;
+    }
+    dist2 += ((double)d->eye[2] - d->water_level) * ((double)d->eye[2] - d->water_level);
+    /* metres per pixel there */
+    double px = 2.0 * sqrt(dist2) * tan(0.5 * d->fov * 3.14159265358979 / 180.0) / d->height;
+    double cell = MS_MIN(g->dx, g->dy);
+    int step = (int)floor(2.0 * px / cell);
+    return MS_CLAMP(step, 1, MS_MIN(64, MS_MIN(g->nx, g->ny) / 2));
 }
 
 void ms_mesh_indices(int nx, int ny, unsigned *restrict idx)

@@ -11,6 +11,7 @@
 #include "scene/scene_internal.h"
 
 #define PART "render"
+#define MAX_FIELD_CELLS (1L << 24) /* 4096 x 4096 */
 #define MAX_PIXELS (1L << 25) /* 32 Mpixel: 128 MB of RGBA8, as much again on the GL side */
 
 ms_renderer_desc ms_renderer_desc_default(void)
@@ -36,6 +37,7 @@ ms_renderer_desc ms_renderer_desc_default(void)
         .water_level = 0.25f,
         .tile_size = 0.0f,
         .floor_color = {0.30f, 0.52f, 0.60f},
+        .mesh_step = 0,
     };
     return d;
 }
@@ -145,7 +147,8 @@ static ms_status check_desc(const ms_renderer_desc *d)
         (st = check_vec("pool_min", d->pool_min, -big, big, "m")) != MS_OK ||
         (st = check_vec("pool_max", d->pool_max, -big, big, "m")) != MS_OK ||
         (st = ms_check_range(PART, "tile_size", d->tile_size, 0, big, "m")) != MS_OK ||
-        (st = check_vec("floor_color", d->floor_color, 0, 1, "")) != MS_OK)
+        (st = check_vec("floor_color", d->floor_color, 0, 1, "")) != MS_OK ||
+        (st = ms_check_int_range(PART, "mesh_step", d->mesh_step, 0, 64)) != MS_OK)
         return st;
     if (!(norm3(d->light_dir) > 1e-6))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
@@ -310,6 +313,16 @@ ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *
         (st = ms_check_finite(PART, "grid origin[1]", g->origin[1])) != MS_OK ||
         (st = ms_check_finite(PART, "time", time)) != MS_OK)
         return st;
+    if ((long)g->nx * g->ny > MAX_FIELD_CELLS)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: grid %d x %d cells is over the %ld cells a mesh may have",
+                       g->nx, g->ny, MAX_FIELD_CELLS);
+    long bad = ms_field_nonfinite(h, (size_t)g->nx * (size_t)g->ny);
+    if (bad >= 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: height %g m at cell (%ld, %ld) is not finite; every height "
+                       "must be a finite number",
+                       (double)h[bad], bad % g->nx, bad / g->nx);
 #if MS_HAVE_OSMESA
     double t0 = ms_now();
     st = ms_gl_draw(r, h, g, time);

@@ -50,11 +50,20 @@ void ms_tile_texture(int size, unsigned char *texels);
 
 /* ---- mesh (CPU) --------------------------------------------------------- */
 
+/* The index of the first non-finite value of h[0 .. n), or -1. */
+long ms_field_nonfinite(const float *h, size_t n);
 /* Interleaved vertices of the height field, 6 floats each: x, y, z (world,
  * m) and the unit normal. Vertex (i, j) sits at the centre of cell (i, j),
  * except that the outermost row and column sit on the grid's edge, so the
- * mesh meets the walls. Returns the index of a non-finite height, or -1. */
-long ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restrict vertices);
+ * mesh meets the walls. */
+void ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restrict vertices);
+/* The field averaged over blocks of about step x step cells: out gets
+ * (nx / step) x (ny / step) heights over the same extent (*out_g). */
+void ms_mesh_coarsen(const float *h, const ms_grid *g, int step, float *restrict out,
+                     ms_grid *out_g);
+/* The automatic mesh step (render.h, mesh_step = 0) for grid g seen by a
+ * camera of desc d. */
+int ms_mesh_auto_step(const ms_renderer_desc *d, const ms_grid *g);
 /* Triangle indices of an nx x ny vertex grid: 6 (nx-1)(ny-1) of them. */
 void ms_mesh_indices(int nx, int ny, unsigned *restrict indices);
 
@@ -76,6 +85,10 @@ typedef struct ms_caustics {
     float *tmp;           /* n * n, the blur's scratch */
     float *gx, *gy;       /* field gradients */
     size_t field_cap;     /* cells gx, gy hold */
+    float *row;           /* scratch of one row of rays: 3 field rows, 3 ray rows */
+    int *col0;            /* per ray column: the field node left of it */
+    float *colf;          /* and the fraction towards the next */
+    size_t row_cap;       /* floats row holds / 6; ints col0 holds */
 } ms_caustics;
 
 /* Traces light through the surface h (heights above floor_z over grid g)

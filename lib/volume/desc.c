@@ -1,0 +1,132 @@
+/* ms_volume_desc: the defaults and the checks ms_volume_create makes. Every
+ * refusal names the key, the value and the bound it broke. */
+#include <math.h>
+
+#include "volume/volume_impl.h"
+
+ms_volume_desc ms_volume_desc_default(void)
+{
+    ms_volume_desc d = {
+        .domain_min = {0.0f, 0.0f, 0.0f},
+        .domain_max = {1.0f, 1.0f, 1.0f},
+        .spacing = 0.04f,
+        .smoothing_length = 0.08f,
+        .rest_density = 1000.0f,
+        .gas_constant = 400.0f,
+        .viscosity = 1.0f,
+        .gravity = {0.0f, 0.0f, -9.81f},
+        .pressure = MS_PRESSURE_IDEAL_GAS,
+        .max_particles = 262144,
+        .sound_speed = 20.0f,
+        .courant = 0.4f,
+        .max_substeps = 100000,
+        .threads = 1,
+        .smooth_steps = 4,
+        .smooth_energy = 0.02f,
+        .density_kernel = MS_DENSITY_SPIKY,
+    };
+    return d;
+}
+
+#define CHECK(call)                    \
+    do {                               \
+        ms_status st_ = (call);        \
+        if (st_ != MS_OK)              \
+            return st_;                \
+    } while (0)
+
+ms_status ms_volume_desc_check(const ms_volume_desc *d)
+{
+    static const char *const axis[3] = {"x", "y", "z"};
+    const char *P = "volume";
+    for (int k = 0; k < 3; ++k) {
+        if (!isfinite(d->domain_min[k]) || !isfinite(d->domain_max[k]))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "volume: domain %s from %g to %g m; both must be finite numbers",
+                           axis[k], d->domain_min[k], d->domain_max[k]);
+        if (fabsf(d->domain_min[k]) > 1e6f || fabsf(d->domain_max[k]) > 1e6f)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "volume: domain %s from %g to %g m lies outside [-1e6, 1e6] m",
+                           axis[k], d->domain_min[k], d->domain_max[k]);
+        if (!(d->domain_max[k] > d->domain_min[k]))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "volume: domain is empty: %s from %g to %g m needs max > min",
+                           axis[k], d->domain_min[k], d->domain_max[k]);
+    }
+    CHECK(ms_check_positive(P, "spacing", d->spacing, "m"));
+    CHECK(ms_check_positive(P, "smoothing_length", d->smoothing_length, "m"));
+    if (d->smoothing_length < d->spacing)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: smoothing_length %g m is below spacing %g m; h must be >= "
+                       "spacing or particles have no neighbours",
+                       d->smoothing_length, d->spacing);
+    if (d->smoothing_length > 4.0f * d->spacing)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: smoothing_length %g m is over 4 x spacing (%g m); more than "
+                       "~270 neighbours per particle is refused",
+                       d->smoothing_length, 4.0f * d->spacing);
+    for (int k = 0; k < 3; ++k) {
+        float ext = d->domain_max[k] - d->domain_min[k];
+        if (2.0f * d->smoothing_length > ext)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "volume: smoothing_length %g m is over half the domain's %s extent "
+                           "%g m; the domain must span at least 2 h",
+                           d->smoothing_length, axis[k], ext);
+    }
+    double cells = 1.0;
+    for (int k = 0; k < 3; ++k)
+        cells *= ceil((double)(d->domain_max[k] - d->domain_min[k]) / d->smoothing_length) + 2.0;
+    if (cells > (double)MS_VOLUME_MAX_CELLS)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: the domain holds %.3g neighbour cells of h = %g m; at most %ld "
+                       "(raise smoothing_length or shrink the domain)",
+                       cells, d->smoothing_length, MS_VOLUME_MAX_CELLS);
+    CHECK(ms_check_range(P, "rest_density", d->rest_density, 1e-3, 1e5, "kg/m^3"));
+    CHECK(ms_check_range(P, "viscosity", d->viscosity, 0.0, 1e6, "Pa s"));
+    for (int k = 0; k < 3; ++k)
+        if (!isfinite(d->gravity[k]) || fabsf(d->gravity[k]) > 1000.0f)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "volume: gravity %s %g m/s^2 is outside [-1000, 1000]", axis[k],
+                           d->gravity[k]);
+    switch (d->pressure) {
+    case MS_PRESSURE_IDEAL_GAS:
+        CHECK(ms_check_positive(P, "gas_constant", d->gas_constant, "m^2/s^2"));
+        if (d->gas_constant > 1e8f)
+            return ms_check_range(P, "gas_constant", d->gas_constant, 0, 1e8, "m^2/s^2");
+        break;
+    case MS_PRESSURE_TAIT:
+        CHECK(ms_check_positive(P, "sound_speed", d->sound_speed, "m/s"));
+        if (d->sound_speed > 1e4f)
+            return ms_check_range(P, "sound_speed", d->sound_speed, 0, 1e4, "m/s");
+        break;
+    case MS_PRESSURE_DFSPH:
+        return ms_fail(MS_ERR_UNSUPPORTED,
+                       "volume: pressure MS_PRESSURE_DFSPH (divergence-free SPH) is not "
+                       "implemented yet; use MS_PRESSURE_IDEAL_GAS or MS_PRESSURE_TAIT");
+    default:
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: pressure %d is not a ms_pressure value (0 ideal gas, 1 Tait, "
+                       "2 DFSPH)",
+                       (int)d->pressure);
+    }
+    /* each law checks its own constant's range; a non-finite value is
+     * refused whichever law is chosen */
+    CHECK(ms_check_finite(P, "gas_constant", d->gas_constant));
+    CHECK(ms_check_finite(P, "sound_speed", d->sound_speed));
+    CHECK(ms_check_int_range(P, "max_particles", d->max_particles, 1, 1L << 24));
+    if (!isfinite(d->courant) || !(d->courant > 0.0f) || d->courant > 0.5f)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: courant %g is outside (0, 0.5]; 0.5 is the largest CFL number "
+                       "this solver is tested stable at",
+                       d->courant);
+    CHECK(ms_check_int_range(P, "max_substeps", d->max_substeps, 1, 10000000));
+    CHECK(ms_check_int_range(P, "threads", d->threads, 1, MS_VOLUME_MAX_THREADS));
+    CHECK(ms_check_int_range(P, "smooth_steps", d->smooth_steps, 0, 64));
+    CHECK(ms_check_positive(P, "smooth_energy", d->smooth_energy, "J/kg"));
+    if (d->density_kernel != MS_DENSITY_SPIKY && d->density_kernel != MS_DENSITY_POLY6)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: density_kernel %d is not a ms_density_kernel value (0 spiky, "
+                       "1 poly6)",
+                       (int)d->density_kernel);
+    return MS_OK;
+}

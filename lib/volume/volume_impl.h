@@ -1,0 +1,242 @@
+/* lib/volume: the SPH liquid volume (paper section 3.3; Mueller, Charypar &
+ * Gross 2003). Internal, never installed.
+ *
+ * Files, one job each:
+ *   kernels.h    the smoothing kernels of eqs. 9, 11, 12 (poly6, spiky, viscosity)
+ *   desc.c       ms_volume_desc defaults and validation
+ *   volume.c     the handle: create, particles in and out, info
+ *   pool.c       the worker threads of a step (static split, same bytes for any count)
+ *   grid.c       neighbour grid of cell size h, counting sort into cell order
+ *   density.c    density (eq. 9 with poly6) and pressure (ideal gas, Tait)
+ *   forces.c     pressure force (eq. 13), viscosity force (eq. 14), gravity
+ *   collide.c    the collider force field (eq. 15), the domain box, no tunnelling
+ *   step.c       ms_volume_step: time-step bounds, sub-steps, symplectic Euler
+ *   interact.c   drag, push, remove, viscosity change, coupling from the waves
+ *   extract.c    height field: eq. 16-17 iso-surface, eq. 18 adaptive smoothing
+ *
+ * Storage is structure-of-arrays float, kept in cell order (the order of
+ * the last counting sort), so the neighbour loops stream through memory.
+ * Every per-particle sum is a gather over the 27 neighbour cells in a fixed
+ * order (9 rows of 3 cells, each contiguous in memory), so the bytes do not
+ * depend on how particles are split among threads.
+ */
+#ifndef MS_VOLUME_IMPL_H
+#define MS_VOLUME_IMPL_H
+
+#include <stddef.h>
+
+#include "core/internal.h"
+#include "modesplit/shape.h"
+#include "modesplit/volume.h"
+#include "volume/kernels.h"
+
+#define MS_VOLUME_MAX_COLLIDERS 64
+#define MS_VOLUME_MAX_ACTIONS 16
+#define MS_VOLUME_MAX_THREADS 64
+#define MS_VOLUME_MAX_CELLS (1L << 24)
+/* The pair loops run over neighbours in blocks of MS_VOLUME_LANES with one
+ * accumulator per lane, summed in lane order at the end: a fixed order the
+ * compiler can put in vector registers, the same bytes on any ISA. The
+ * particle arrays have MS_VOLUME_LANES elements of padding at the end, so
+ * a block may read past the last particle (those lanes are masked). */
+#define MS_VOLUME_LANES 16
+
+/* ---- worker threads (pool.c) ---- */
+typedef struct ms_vpool ms_vpool;
+/* Work on items [begin, end) of a parallel loop; `part` is the chunk index. */
+typedef void ms_vpool_fn(void *ctx, int part, int begin, int end);
+ms_status ms_vpool_create(int threads, ms_vpool **out);
+void ms_vpool_destroy(ms_vpool *p);
+/* Split [0, n) into `parts` contiguous chunks (parts <= threads of the
+ * pool, or 1 with a NULL pool) and run fn on each; returns when all are
+ * done. The chunk bounds depend only on n and parts. */
+void ms_vpool_run(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n);
+int ms_vpool_threads(const ms_vpool *p);
+
+/* The neighbour lists of one chunk of particles (one per thread). Each
+ * particle's real neighbours are one run of entries, padded up to a
+ * multiple of MS_VOLUME_LANES with (the particle itself, r^2 = h^2) so the
+ * pair loops need no masks (a padding pair is at r = h: weight 0). Its
+ * wall-image neighbours are a second run in `ghost`, packed as
+ * j | image << MS_VOLUME_IMAGE_SHIFT (bit k of the image: reflected across
+ * the nearer wall of axis k). Rebuilt by every density pass. */
+#define MS_VOLUME_IMAGE_SHIFT 24
+typedef struct ms_nlist {
+    int *idx;
+    float *r2;  /* m^2 */
+    size_t cap; /* entries */
+    size_t len;
+} ms_nlist;
+
+typedef enum { MS_ACTION_DRAG, MS_ACTION_PUSH } ms_action_kind;
+typedef struct ms_action {
+    ms_action_kind kind;
+    float centre[3]; /* m */
+    float radius;    /* m */
+    float vec[3];    /* drag: target velocity m/s; push: acceleration m/s^2 */
+    float strength;  /* drag: 1/s */
+} ms_action;
+
+struct ms_volume {
+    ms_volume_desc desc;
+    ms_sph_kernels K;
+    float mass;          /* kg per particle: a full lattice has rho = rho0 */
+    float press_scale;   /* 2/M: eq. 13 renormalised to -grad p / rho (volume.c) */
+    float c0;            /* m/s, sound speed at rest density */
+    float tait_b;        /* Pa, B of Tait's law */
+    float col_range;     /* m, reach of the collider field (eq. 15) */
+    float col_accel;     /* m/s^2, its strength at contact */
+    float col_damp;      /* 1/s, damping of the approach inside the field */
+    float surface_nbrs;  /* fewer neighbours (self included) = surface particle */
+    float iso_level;     /* eq. 16 threshold of phi */
+    float eps2;          /* m^2, pairs closer than this are "coincident" */
+
+    /* particles, cell order: state */
+    int n, cap;
+    float *x, *y, *z, *vx, *vy, *vz;
+    int *id;             /* 0..n-1, insertion order (get_particles order) */
+    /* scratch of the same size, swapped with the state when sorting; it
+     * also holds the positions before the drift (for the no-tunnel test) */
+    float *x2, *y2, *z2, *vx2, *vy2, *vz2;
+    int *id2;
+    /* derived per particle, valid for the current order after a pass */
+    float *rho, *prs, *inv_rho; /* kg/m^3, Pa, m^3/kg */
+    float *ax, *ay, *az;        /* m/s^2 */
+    float *visc_rate;           /* 1/s, D_i of the viscous bound */
+    /* boundary terms of the walls and colliders near each particle (collide.c) */
+    float *b_rho;               /* kg/m^3, density of the liquid mirrored beyond them */
+    float *b_nbr;               /* neighbours the mirrored liquid stands for */
+    float *b_gx, *b_gy, *b_gz;  /* kg/m^4, pressure gradient weight: a += p/rho^2 b_g */
+    float *b_ax, *b_ay, *b_az;  /* m/s^2, the eq. 15 field */
+    int *nbr;                   /* neighbours within h, self and wall images included */
+    int *nl_begin, *nl_count;   /* its run in its chunk's list: first entry, neighbours */
+    int *gl_begin, *gl_count;   /* its run of wall-image neighbours */
+    int *cell;                  /* cell of each particle (sorted order) */
+    unsigned char *mark;        /* extraction: 1 surface, 2 neighbour of one */
+    int counts_valid;           /* nbr[] matches the current positions */
+
+    /* neighbour grid, 1 cell of padding on each side */
+    int gx, gy, gz;
+    long ncells;
+    float inv_h;
+    int *cell_start;     /* ncells + 1 */
+    int *cell_fill;      /* ncells, scratch of the sort */
+
+    ms_shape *colliders[MS_VOLUME_MAX_COLLIDERS];
+    int ncolliders;
+    ms_action actions[MS_VOLUME_MAX_ACTIONS];
+    int nactions;
+
+    /* coupling from the waves: the previous wave field */
+    float *wave_prev;
+    size_t wave_cap;
+    ms_grid wave_grid;
+    double wave_time;
+    int wave_valid;
+
+    /* extraction scratch */
+    float *ex_buf;
+    size_t ex_cap;
+    int *ex_start, *ex_list;
+    size_t ex_start_cap, ex_list_cap;
+
+    ms_vpool *pool;
+    ms_nlist lists[MS_VOLUME_MAX_THREADS], ghosts[MS_VOLUME_MAX_THREADS];
+    int list_failed[MS_VOLUME_MAX_THREADS];
+
+    /* statistics */
+    double time;
+    long steps, substeps;
+    float last_dt, max_dt;
+    const char *dt_limit;
+    float max_speed, max_density_error;
+    int surface_count;
+    double pairs;
+    int coincident;      /* pairs closer than eps in the last density pass */
+};
+
+/* A surface particle: fewer neighbours (self and the mirrored liquid of the
+ * walls included) than 3/4 of a particle inside the liquid has. */
+static inline int ms_volume_is_surface(const ms_volume *v, int i)
+{
+    return (float)v->nbr[i] + v->b_nbr[i] < v->surface_nbrs;
+}
+
+/* The domain walls within h of (x, y, z): bit k set when the nearer wall
+ * of axis k is closer than h; wall[k] is that wall's coordinate (m). The
+ * wall images (ghost particles) of a particle are the reflections of the
+ * real particles across each non-empty subset of these walls. */
+static inline unsigned ms_volume_walls_near(const ms_volume *v, float x, float y, float z,
+                                            float wall[3])
+{
+    const float p[3] = {x, y, z}, h = v->K.h;
+    unsigned mask = 0;
+    for (int k = 0; k < 3; ++k) {
+        float lo = v->desc.domain_min[k], hi = v->desc.domain_max[k];
+        wall[k] = p[k] - lo <= hi - p[k] ? lo : hi;
+        if (fabsf(p[k] - wall[k]) < h)
+            mask |= 1u << k;
+    }
+    return mask;
+}
+
+/* desc.c */
+ms_status ms_volume_desc_check(const ms_volume_desc *d);
+
+/* volume.c */
+ms_status ms_volume_reserve(ms_volume *v, int n);
+
+/* grid.c: sort the particles into cell order; fills cell[] and cell_start. */
+void ms_volume_grid_build(ms_volume *v);
+/* Cell of a position (padded indices; a position outside the domain, a
+ * wall image, gets the nearest cell inside it). */
+static inline long ms_volume_cell_of(const ms_volume *v, float x, float y, float z)
+{
+    const float *lo = v->desc.domain_min;
+    /* "a > 0 ? a : 0" also turns a NaN into 0: never cast a NaN */
+    float fx = (x - lo[0]) * v->inv_h, fy = (y - lo[1]) * v->inv_h, fz = (z - lo[2]) * v->inv_h;
+    fx = fx > 0.0f ? fx : 0.0f;
+    fy = fy > 0.0f ? fy : 0.0f;
+    fz = fz > 0.0f ? fz : 0.0f;
+    fx = fx < (float)(v->gx - 3) ? fx : (float)(v->gx - 3);
+    fy = fy < (float)(v->gy - 3) ? fy : (float)(v->gy - 3);
+    fz = fz < (float)(v->gz - 3) ? fz : (float)(v->gz - 3);
+    long cx = (long)fx + 1, cy = (long)fy + 1, cz = (long)fz + 1;
+    return (cz * v->gy + cy) * v->gx + cx;
+}
+
+
+/* density.c: the neighbour lists, and rho, prs, inv_rho, nbr for every
+ * particle; surface count and density error statistics. MS_ERR_OUT_OF_MEMORY
+ * if a list could not grow. */
+ms_status ms_volume_density(ms_volume *v);
+/* Pressure of a density (the equation of state of desc.pressure). */
+float ms_volume_pressure(const ms_volume *v, float rho);
+/* The boundary terms and a density pass at the current positions
+ * (extraction and coupling between steps). */
+ms_status ms_volume_count_neighbours(ms_volume *v);
+
+/* forces.c: ax, ay, az (pressure, viscosity, gravity) and visc_rate. */
+void ms_volume_forces(ms_volume *v);
+
+/* collide.c */
+/* The boundary terms b_* of the domain box and the colliders at the
+ * current positions; tau is the time (s) since the start of the
+ * ms_volume_step (moving colliders). */
+void ms_volume_boundary(ms_volume *v, double tau);
+/* After the kick: implicit damping of the approach inside the field. */
+void ms_volume_collider_damp(ms_volume *v, double tau, float dt);
+/* After the drift from (x2, y2, z2): no particle inside a collider (swept
+ * test in the collider's frame, so none tunnels) or outside the domain. */
+void ms_volume_collider_resolve(ms_volume *v, double tau, float dt);
+float ms_volume_collider_speed(const ms_volume *v);
+
+/* extract.c: the eq. 16 iso-level that puts a still, flat liquid's surface
+ * half a spacing above its top layer. */
+float ms_volume_iso_level(const ms_volume *v);
+
+/* interact.c: accelerations of the pending pushes, relaxation of drags. */
+void ms_volume_actions_accel(ms_volume *v);
+void ms_volume_actions_drag(ms_volume *v, float dt);
+
+#endif

@@ -1,0 +1,125 @@
+/* Renderer benchmark: milliseconds per frame of ms_renderer_draw_field for
+ * 256^2, 512^2 and 950^2 images (950 x 950 is the paper's Table 1) of a
+ * 200^2 and a 400^2 field (the paper's wave grids), water shader with the
+ * scenes' 512^2 caustics map, the full mesh (mesh_step 1) and the
+ * automatic one. The field moves every frame (travelling waves), so every
+ * frame uploads a new mesh and traces new caustics. Reports the median,
+ * the 10th and 90th percentiles, and the stages' medians. llvmpipe renders
+ * on the CPU with LP_NUM_THREADS threads (default: one per core); the
+ * machine's load average is printed with each row, since other work on the
+ * cores slows it. Writes render.csv. */
+#include <math.h>
+
+#include "bench_common.h"
+#include "modesplit/modesplit.h"
+
+static void waves(float *h, int n, double t)
+{
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            double x = (i + 0.5) / n, y = (j + 0.5) / n;
+            double r = sqrt((x - 0.3) * (x - 0.3) + (y - 0.6) * (y - 0.6));
+            h[(size_t)j * n + i] = (float)(0.25 + 0.004 * sin(40 * x + 3 * t) * cos(31 * y - 2 * t) +
+                                           0.003 * cos(90 * r - 8 * t) * exp(-5 * r));
+        }
+}
+
+static double loadavg(void)
+{
+    double l = -1;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf", &l) != 1)
+            l = -1;
+        fclose(f);
+    }
+    return l;
+}
+
+int main(int argc, char **argv)
+{
+    const int quick = bench_quick(argc, argv);
+    const int reps = quick ? 3 : 8, warm = 2;
+    char machine[320], commit[64];
+    bench_machine(machine, sizeof machine);
+    bench_commit(commit, sizeof commit);
+    const char *lp = getenv("LP_NUM_THREADS");
+    printf("render: water shader, caustics 512^2, ms per frame of ms_renderer_draw_field\n");
+    printf("machine: %s; commit %s; LP_NUM_THREADS %s; load average %.2f\n", machine, commit,
+           lp ? lp : "default (one per core)", loadavg());
+    {
+        ms_renderer_desc d = ms_renderer_desc_default();
+        d.width = d.height = 16;
+        ms_renderer *r;
+        if (ms_renderer_create_desc(&d, &r) != MS_OK) {
+            printf("render: skipped: %s\n", ms_last_error());
+            return 0;
+        }
+        ms_renderer_destroy(r);
+    }
+    FILE *csv = bench_csv_open(bench_csv_dir(argc, argv), "render.csv",
+                               "commit,machine,lp_num_threads,width,height,field,mesh_step,"
+                               "mesh_vertices,frames,ms_median,ms_p10,ms_p90,mesh_ms,"
+                               "caustics_ms,draw_ms,readback_ms,loadavg");
+    if (!csv)
+        return 1;
+    printf("%6s %6s %5s %9s %9s %9s %9s %8s %9s %8s %9s %5s\n", "image", "field", "step",
+           "vertices", "ms/frame", "p10", "p90", "mesh", "caustics", "draw", "readback", "load");
+    static const int sizes[3] = {256, 512, 950}, fields[2] = {200, 400}, steps[2] = {1, 0};
+    for (int fi = 0; fi < 2; ++fi) {
+        const int n = fields[fi];
+        float *h = malloc(sizeof *h * (size_t)n * n);
+        if (!h)
+            return 1;
+        ms_grid g = {n, n, 1.0f / n, 1.0f / n, {0, 0}};
+        for (int si = 0; si < 3; ++si)
+            for (int k = 0; k < 2; ++k) {
+                ms_renderer_desc d = ms_renderer_desc_default();
+                d.width = d.height = sizes[si];
+                d.mesh_step = steps[k];
+                ms_renderer *r;
+                if (ms_renderer_create_desc(&d, &r) != MS_OK) {
+                    fprintf(stderr, "bench_render: %s\n", ms_last_error());
+                    return 1;
+                }
+                double t[64], mesh[64], caus[64], draw[64], rb[64];
+                ms_render_stats st = {0};
+                for (int f = 0; f < warm + reps; ++f) {
+                    waves(h, n, f / 30.0);
+                    double t0 = bench_now();
+                    if (ms_renderer_draw_field(r, h, &g, f / 30.0) != MS_OK) {
+                        fprintf(stderr, "bench_render: %s\n", ms_last_error());
+                        return 1;
+                    }
+                    double dt = bench_now() - t0;
+                    ms_renderer_stats(r, &st);
+                    if (f >= warm) {
+                        int i = f - warm;
+                        t[i] = 1e3 * dt;
+                        mesh[i] = st.mesh_ms;
+                        caus[i] = st.caustics_ms;
+                        draw[i] = st.draw_ms;
+                        rb[i] = st.readback_ms;
+                    }
+                }
+                bench_stats s = bench_summarise(t, reps);
+                double m = bench_summarise(mesh, reps).median;
+                double c = bench_summarise(caus, reps).median;
+                double dr = bench_summarise(draw, reps).median;
+                double b = bench_summarise(rb, reps).median;
+                double load = loadavg();
+                int step = st.mesh_nx > 0 ? n / st.mesh_nx : 0;
+                printf("%4d^2 %4d^2 %5s %9d %9.1f %9.1f %9.1f %8.2f %9.2f %8.1f %9.2f %5.2f\n",
+                       sizes[si], n, steps[k] ? "1" : "auto", st.mesh_nx * st.mesh_ny, s.median,
+                       s.p10, s.p90, m, c, dr, b, load);
+                fprintf(csv, "%s,%s,%s,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f\n",
+                        commit, machine, lp ? lp : "default", sizes[si], sizes[si], n, step,
+                        st.mesh_nx * st.mesh_ny, reps, s.median, s.p10, s.p90, m, c, dr, b, load);
+                fflush(stdout);
+                ms_renderer_destroy(r);
+            }
+        free(h);
+    }
+    fclose(csv);
+    return 0;
+}
