@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <pthread.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -916,6 +917,155 @@ START_TEST(a_coarser_mesh_averages_the_field)
 }
 END_TEST
 
+START_TEST(floating_discs_are_drawn_on_the_surface)
+{
+    ms_renderer_desc d = top_down("water");
+    ms_renderer *r = create_ok(&d);
+    float *h = field(N, 0.25f);
+    draw_ok(r, h, N);
+    unsigned char *plain = malloc((size_t)W * W * 4);
+    memcpy(plain, ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
+    /* a red leaf at the centre, a boat at the lower left */
+    const ms_render_disc discs[2] = {{{0.5f, 0.5f, 0.25f}, 0.05f, {0.9f, 0.05f, 0.05f}},
+                                     {{0.25f, 0.25f, 0.25f}, 0.08f, {0.4f, 0.2f, 0.1f}}};
+    ck_assert_int_eq(ms_renderer_set_discs(r, discs, 2), MS_OK);
+    draw_ok(r, h, N);
+    const unsigned char *px = ms_renderer_pixels(r, NULL, NULL);
+    const unsigned char *c = px + ((size_t)(W / 2) * W + W / 2) * 4;
+    ck_assert_msg(c[0] > 150 && c[1] < 80 && c[2] < 80, "the leaf is %d %d %d", c[0], c[1], c[2]);
+    /* nothing changed away from the discs */
+    ck_assert_int_eq(box_max_abs_diff(px, plain, W / 2 + 20, 8, W - 8, W / 2 - 20), 0);
+    /* removed again */
+    ck_assert_int_eq(ms_renderer_set_discs(r, NULL, 0), MS_OK);
+    draw_ok(r, h, N);
+    ck_assert_int_eq(memcmp(ms_renderer_pixels(r, NULL, NULL), plain, (size_t)W * W * 4), 0);
+    ms_render_disc bad = discs[0];
+    bad.radius = 0;
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, &bad, 1), MS_ERR_INVALID_ARGUMENT,
+                      "disc 0 radius 0 m must be finite and > 0");
+    bad = discs[0];
+    bad.color[1] = 1.5f;
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, &bad, 1), MS_ERR_INVALID_ARGUMENT,
+                      "disc 0 color[1] 1.5");
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, discs, -1), MS_ERR_INVALID_ARGUMENT,
+                      "discs n -1");
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, NULL, 1), MS_ERR_INVALID_ARGUMENT,
+                      "discs is NULL");
+    ms_renderer_destroy(r);
+    free(plain);
+    free(h);
+}
+END_TEST
+
+START_TEST(the_shipped_scenes_render)
+{
+    /* each paper scene's render section makes a renderer (made small) that
+     * draws still water over the scene's domain */
+    static const char *const scenes[] = {"fig1", "fig9a", "fig9b", "fig10"};
+    for (size_t k = 0; k < sizeof scenes / sizeof scenes[0]; ++k) {
+        char path[128];
+        snprintf(path, sizeof path, "data/scenes/%s.json", scenes[k]);
+        ms_scene *sc = NULL;
+        ms_status st = ms_scene_load(path, &sc);
+        ck_assert_msg(st == MS_OK, "%s: %s", path, ms_last_error());
+        ck_assert(ms_scene_has_render(sc));
+        ms_renderer_desc d;
+        ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
+        d.width = d.height = 48;
+        d.caustics_resolution = 32;
+        ms_renderer *r = NULL;
+        st = ms_renderer_create_desc(&d, &r);
+        ck_assert_msg(st == MS_OK, "%s: %s", path, ms_last_error());
+        float *h = field(32, d.water_level - d.pool_min[2]);
+        ms_grid g = {32, 32, (d.pool_max[0] - d.pool_min[0]) / 32,
+                     (d.pool_max[1] - d.pool_min[1]) / 32, {d.pool_min[0], d.pool_min[1]}};
+        st = ms_renderer_draw_field(r, h, &g, 0);
+        ck_assert_msg(st == MS_OK, "%s: %s", path, ms_last_error());
+        ms_renderer_destroy(r);
+        ms_scene_destroy(sc);
+        free(h);
+    }
+}
+END_TEST
+
+START_TEST(moving_the_camera_is_creating_with_it)
+{
+    float *h = field(N, 0.25f);
+    add_bump(h, N, 0.4f, 0.6f, 0.01f, 0.05f);
+    ms_renderer_desc a = top_down("water"), b = a;
+    const float eye[3] = {1.6f, -0.4f, 1.1f}, target[3] = {0.5f, 0.5f, 0.2f}, up[3] = {0, 0, 1};
+    memcpy(b.eye, eye, sizeof eye);
+    memcpy(b.target, target, sizeof target);
+    memcpy(b.up, up, sizeof up);
+    b.fov = 50;
+    unsigned char *want = render(&b, h, N);
+    ms_renderer *r = create_ok(&a);
+    draw_ok(r, h, N);
+    ck_assert_int_eq(ms_renderer_set_camera(r, eye, target, up, 50), MS_OK);
+    draw_ok(r, h, N);
+    ck_assert_int_eq(memcmp(ms_renderer_pixels(r, NULL, NULL), want, (size_t)W * W * 4), 0);
+    /* refused moves leave the camera where it was */
+    MS_ASSERT_REFUSED(ms_renderer_set_camera(r, eye, eye, up, 50), MS_ERR_INVALID_ARGUMENT,
+                      "equals eye");
+    MS_ASSERT_REFUSED(ms_renderer_set_camera(r, eye, target, up, 0), MS_ERR_INVALID_ARGUMENT,
+                      "fov 0 degrees");
+    MS_ASSERT_REFUSED(ms_renderer_set_camera(r, NULL, target, up, 50), MS_ERR_INVALID_ARGUMENT,
+                      "eye is NULL");
+    draw_ok(r, h, N);
+    ck_assert_int_eq(memcmp(ms_renderer_pixels(r, NULL, NULL), want, (size_t)W * W * 4), 0);
+    ms_renderer_destroy(r);
+    free(want);
+    free(h);
+}
+END_TEST
+
+typedef struct job {
+    const float *h;
+    unsigned char *px;
+    int ok;
+} job;
+
+static void *render_job(void *arg)
+{
+    job *j = arg;
+    ms_renderer_desc d = top_down("water");
+    ms_renderer *r = NULL;
+    ms_grid g = grid(N);
+    j->ok = ms_renderer_create_desc(&d, &r) == MS_OK;
+    for (int f = 0; j->ok && f < 3; ++f)
+        j->ok = ms_renderer_draw_field(r, j->h, &g, 0.5) == MS_OK;
+    if (j->ok)
+        memcpy(j->px, ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
+    ms_renderer_destroy(r);
+    return NULL;
+}
+
+START_TEST(renderers_in_two_threads_draw_what_one_draws)
+{
+    float *h = field(N, 0.25f);
+    add_bump(h, N, 0.6f, 0.4f, 0.01f, 0.05f);
+    job jobs[3];
+    pthread_t t[2];
+    for (int k = 0; k < 3; ++k) {
+        jobs[k].h = h;
+        jobs[k].px = malloc((size_t)W * W * 4);
+        jobs[k].ok = 0;
+    }
+    render_job(&jobs[2]); /* alone */
+    for (int k = 0; k < 2; ++k)
+        ck_assert_int_eq(pthread_create(&t[k], NULL, render_job, &jobs[k]), 0);
+    for (int k = 0; k < 2; ++k)
+        ck_assert_int_eq(pthread_join(t[k], NULL), 0);
+    for (int k = 0; k < 3; ++k)
+        ck_assert_msg(jobs[k].ok, "job %d failed: %s", k, ms_last_error());
+    for (int k = 0; k < 2; ++k)
+        ck_assert_int_eq(memcmp(jobs[k].px, jobs[2].px, (size_t)W * W * 4), 0);
+    for (int k = 0; k < 3; ++k)
+        free(jobs[k].px);
+    free(h);
+}
+END_TEST
+
 START_TEST(a_scene_renders_and_every_shader_draws)
 {
     const char *text = "{\"surface\": {\"cells\": [64, 64]},"
@@ -979,6 +1129,10 @@ static Suite *render_suite(void)
     tcase_add_test(tc, bad_fields_and_shaders_are_refused);
     tcase_add_test(tc, a_shader_that_does_not_compile_is_refused_with_its_log);
     tcase_add_test(tc, a_coarser_mesh_averages_the_field);
+    tcase_add_test(tc, floating_discs_are_drawn_on_the_surface);
+    tcase_add_test(tc, the_shipped_scenes_render);
+    tcase_add_test(tc, moving_the_camera_is_creating_with_it);
+    tcase_add_test(tc, renderers_in_two_threads_draw_what_one_draws);
     tcase_add_test(tc, a_scene_renders_and_every_shader_draws);
 #endif
     suite_add_tcase(s, tc);

@@ -20,12 +20,15 @@
  * What is drawn: the height field as a mesh (normals by central
  * differences) shaded by the shader plugin; a tiled pool (floor, inner
  * walls, a deck at the rim) under and around it; the sky cubemap behind.
- * The renderer runs only the passes the shader's flags ask for:
- *   MS_SHADER_NEEDS_REFLECTION  ms_env = the sky cubemap;
- *   MS_SHADER_NEEDS_REFRACTION  ms_env = the sky with the pool drawn into
- *       it, seen from the centre of the still water surface (the paper's
- *       cubemap refraction: the part under water split off into the
- *       environment map), made once at create;
+ * The renderer runs only the passes the shader's flags ask for. ms_env is
+ * the sky with the pool drawn into it, split by the still water plane (the
+ * paper's cubemap reflection and refraction; lib/render/gl_env.c), drawn
+ * at create and again when the camera moves:
+ *   MS_SHADER_NEEDS_REFLECTION  its upper half: the pool above the water,
+ *       the deck and the sky, seen from the eye's mirror image;
+ *   MS_SHADER_NEEDS_REFRACTION  its lower half: the pool under the water,
+ *       seen from the eye's refracted image (the floor where it lies);
+ *   (a half no flag asks for is the plain sky)
  *   MS_SHADER_NEEDS_CAUSTICS    with `caustics` on, the light map ms_caustics
  *       is traced each frame on the CPU (Snell's law, light carried by rays
  *       from the surface to the floor); with it off, a map of 1 (unfocused).
@@ -113,6 +116,25 @@ MS_API ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim);
  * the shader's ms_time. A non-finite height is refused. */
 MS_API ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *g,
                                         double time);
+
+/* Moves the camera (the desc's eye, target, up, fov; the same checks). The
+ * environment cubemap is drawn again for the new eye: about the cost of a
+ * frame. */
+MS_API ms_status ms_renderer_set_camera(ms_renderer *r, const float eye[3], const float target[3],
+                                        const float up[3], float fov);
+
+/* Things floating on the surface (the paper's leaves and boat, Fig. 10),
+ * drawn as flat discs lit by the sun and the sky. */
+typedef struct ms_render_disc {
+    float pos[3];   /* m, world: the centre, on the surface */
+    float radius;   /* m, > 0 */
+    float color[3]; /* linear RGB, each [0, 1] */
+} ms_render_disc;
+/* The discs drawn with the next draws (copied; n = 0 removes them), at
+ * most MS_RENDER_MAX_DISCS. ms_renderer_draw sets the sim's floaters and
+ * the scene's boat itself. */
+#define MS_RENDER_MAX_DISCS 20000
+MS_API ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int n);
 
 /* RGBA8, top row first; view valid until the next draw. */
 MS_API const unsigned char *ms_renderer_pixels(const ms_renderer *r, int *w, int *h);

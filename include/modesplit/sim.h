@@ -26,6 +26,15 @@ typedef void ms_task_fn(void *task_context);
 typedef void *ms_enqueue_task_fn(ms_task_fn *task, void *task_context, void *user_context);
 typedef void ms_finish_task_fn(void *user_task, void *user_context);
 
+/* threads = 2 runs the volume and the surface tasks at the same time (a
+ * volume-only sim instead gives the volume solver two threads; otherwise
+ * the volume desc's own `threads` may add threads inside the SPH step);
+ * threads = 1 runs everything on the calling thread (the volume's threads
+ * is then 1); all give the same bytes. The fields a
+ * step publishes are one frame old (the pipeline of Fig. 8): after the n-th
+ * ms_sim_step they show time (n - 1) * frame_dt, the first step publishes
+ * the start. ms_sim_volume / ms_sim_surface may be used between steps
+ * (to add particles, drops, ...), never during one. */
 typedef struct ms_sim_desc {
     const ms_volume_desc *volume;    /* NULL: no volume flow */
     const ms_surface_desc *surface;  /* NULL: no surface waves */
@@ -41,8 +50,20 @@ typedef struct ms_sim_desc {
 
 MS_API ms_sim_desc ms_sim_desc_default(void);
 MS_API ms_status ms_sim_create(const ms_sim_desc *d, ms_sim **out);
+/* A sim of the scene's parts and effects, filled as the scene says.
+ * threads: 1, 2, or 0 = the scene's `threads`. The scene must outlive the
+ * sim (ms_sim_scene returns it). */
 MS_API ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out);
 MS_API void ms_sim_destroy(ms_sim *sim);
+/* Hand the two-core split to an engine's task system (as ms_sim_desc's
+ * enqueue_task/finish_task, for a sim made from a scene), or with both
+ * NULL back to the sim's own thread. Between steps only. */
+MS_API ms_status ms_sim_set_tasks(ms_sim *sim, ms_enqueue_task_fn *enqueue_task,
+                                  ms_finish_task_fn *finish_task, void *user_task_context);
+/* Advance one frame of frame_dt seconds, (0, 10]. MS_ERR_UNSTABLE (with
+ * the bound) when a solver cannot keep it stable, e.g. a scene's n_time
+ * too small for the CFL bound; after a failed step every further step
+ * returns MS_ERR_STATE. */
 MS_API ms_status ms_sim_step(ms_sim *sim, float frame_dt);
 MS_API const float *ms_sim_height(const ms_sim *sim, int *nx, int *ny); /* combined field */
 MS_API ms_volume *ms_sim_volume(ms_sim *sim);   /* NULL when the scene has no volume */
@@ -62,12 +83,62 @@ MS_API double ms_sim_time(const ms_sim *sim);   /* s, time of the fields above *
 MS_API long ms_sim_frame(const ms_sim *sim);    /* frames finished */
 MS_API const ms_scene *ms_sim_scene(const ms_sim *sim); /* NULL when made from a desc */
 
+/* Statistics since creation. The stage times are the milliseconds each
+ * stage ran (with threads = 2 the volume and surface stages overlap, so
+ * they may add up to more than total_ms, the wall time of ms_sim_step).
+ *   volume_ms   interaction, surface->volume coupling and SPH (volume thread)
+ *   extract_ms  height-field extraction (eqs. 16-18) and the particle copy
+ *   surface_ms  scripted effects, volume->surface coupling, wave steps
+ *   combine_ms  up-sampling and sum (eq. 20), floaters
+ * volume_steps / surface_steps are the SPH / leapfrog sub-steps taken;
+ * bytes is all memory held, split below. An effect the scene does not name
+ * adds nothing to any of them. */
 typedef struct ms_stats {
     double volume_ms, surface_ms, extract_ms, combine_ms, render_ms, total_ms;
     long volume_steps, surface_steps, frames;
     size_t bytes;
+    /* --- grown at the end --- */
+    size_t volume_bytes;  /* SPH solver, its height fields and particle copies */
+    size_t surface_bytes; /* wave solver, combined field, up-sampling, coupling buffers */
+    size_t effects_bytes; /* obstacle masks, floaters, shapes' bookkeeping */
+    long drops;           /* drops added to the waves (scripted and rain) */
+    int n_time;           /* wave steps in the last frame (eq. 19) */
 } ms_stats;
 MS_API void ms_sim_stats(const ms_sim *sim, ms_stats *out);
+
+/* What the sim runs (for listings such as `modesplit info`). */
+typedef struct ms_sim_info {
+    int has_volume, has_surface;
+    int threads;             /* 1 or 2 as created */
+    int field_nx, field_ny;  /* X_SPH x Y_SPH (0 without a volume) */
+    int surface_nx, surface_ny; /* X_WE x Y_WE (0 without a surface) */
+    float n_surf_x, n_surf_y;   /* eq. 20: X_WE / X_SPH, Y_WE / Y_SPH (0 if either is absent) */
+    int n_time;              /* eq. 19: as given, or 0 = derived each frame */
+    int particles;           /* particles now */
+    int floaters;            /* floating objects */
+    int obstacles;           /* obstacles + container */
+} ms_sim_info;
+MS_API void ms_sim_get_info(const ms_sim *sim, ms_sim_info *out);
+
+/* Objects carried by the flow (scene effects.floaters, the paper's
+ * leaves): 3n floats x, y, z (m; z on the combined surface) of the
+ * published frame; NULL and *n = 0 without floaters. View valid until the
+ * next ms_sim_step. */
+MS_API const float *ms_sim_floaters(const ms_sim *sim, int *n);
+
+/* The user dragging the water (paper Fig. 1), for engines: during the
+ * next frame's volume step, water within radius (m) of the point `depth`
+ * (m) below the surface at (pos[0], pos[1]) (m) is pulled towards the
+ * velocity vel (m/s, horizontal) at `strength` (1/s). Up to 8 per frame.
+ * MS_ERR_STATE without a volume. */
+MS_API ms_status ms_sim_drag(ms_sim *sim, const float pos[2], const float vel[2], float radius,
+                             float depth, float strength);
+
+/* Move the scene's container (the glass of water) or obstacle i (scene
+ * order) to pos (m) with velocity vel (m/s) from the next frame on,
+ * replacing its scripted path. MS_ERR_STATE without one. */
+MS_API ms_status ms_sim_move_container(ms_sim *sim, const float pos[3], const float vel[3]);
+MS_API ms_status ms_sim_move_obstacle(ms_sim *sim, int i, const float pos[3], const float vel[3]);
 
 #ifdef __cplusplus
 }

@@ -14,7 +14,7 @@
  *     to the view's target; n H when looking straight down), so for flat
  *     water the floor under each pixel is where the lookup finds it.
  * A shader that needs no reflection (refraction) gets the plain sky in that
- * half. Drawn once at create: the pool and the camera do not move. With a
+ * half. Drawn at create and again when the camera moves. With a
  * caustics shader the pool under water is lit by the sky alone: the shader
  * brings the sun through the caustics light map. */
 #include <math.h>
@@ -105,16 +105,18 @@ ms_status ms_gl_env_create(ms_renderer *r)
     ms_gl *gl = r->gl;
     const ms_renderer_desc *d = &r->desc;
     const int n = gl->env_size;
-    glGenTextures(1, &gl->env_tex);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, gl->env_tex);
-    for (int f = 0; f < 6; ++f)
-        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_SRGB8_ALPHA8, n, n, 0,
-                     GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    if (!gl->env_tex) {
+        glGenTextures(1, &gl->env_tex);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, gl->env_tex);
+        for (int f = 0; f < 6; ++f)
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_SRGB8_ALPHA8, n, n, 0,
+                         GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    }
 
     GLuint fbo, depth;
     glGenFramebuffers(1, &fbo);

@@ -261,6 +261,8 @@ static ms_status frame(ms_renderer *r, const float *h, const ms_grid *g, double 
     double t1 = ms_now();
     if (r->trace_caustics && (st = upload_caustics(r, h, g)) != MS_OK)
         return st;
+    if (r->discs_changed && (st = ms_gl_discs_upload(r)) != MS_OK)
+        return st;
     double t2 = ms_now();
     draw_scene(r, time);
     glFinish();

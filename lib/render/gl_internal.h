@@ -64,6 +64,8 @@ struct ms_gl {
     GLuint pool_vbo;
     int pool_count;       /* vertices (triangles x 3) */
     int pool_apron_count; /* the same with the apron under water (gl_pool.c) */
+    GLuint discs_vbo;     /* the floating discs (ms_renderer_set_discs) */
+    int discs_count;      /* their vertices */
     GLuint mesh_vbo, mesh_ibo;
     int mesh_nx, mesh_ny; /* the grid the index buffer is for */
     float *vertices;      /* mesh vertices, CPU side */
@@ -77,8 +79,10 @@ ms_status ms_gl_pool_create(ms_renderer *r);
 /* Draws the pool with the current matrices; sun_under = 0 lights the parts
  * under still water by the sky only; keep = +1 draws only what is above
  * the still water, -1 only what is below (with an apron of floor around
- * the pool), 0 all. */
+ * the pool), 0 all, and then the floating discs too. */
 void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep);
+/* The discs' triangles into gl->discs_vbo (after ms_renderer_set_discs). */
+ms_status ms_gl_discs_upload(ms_renderer *r);
 /* gl_sky.c: the sky program, the sky cubemap texture from faces. */
 ms_status ms_gl_sky_create(ms_renderer *r, const ms_cubemap *sky);
 /* Draws the sky behind everything for a camera looking along forward
@@ -90,6 +94,8 @@ void ms_gl_sky_draw(const ms_renderer *r, const float forward[3], const float ri
  * and the pool, split by the water plane and seen from the eye's mirror
  * and refracted images. */
 ms_status ms_gl_env_create(ms_renderer *r);
+/* gl_renderer.c: after r->desc's camera changed: ms_env drawn again. */
+ms_status ms_gl_camera_moved(ms_renderer *r);
 
 /* A sentence for the first pending GL error, "" if none (clears them). */
 ms_status ms_gl_check(const char *doing);

@@ -34,6 +34,7 @@ static const char pool_fs[] =
     "uniform float u_sun_under;\n"
     "uniform float u_ambient;\n"
     "uniform float u_keep;\n"
+    "uniform float u_textured;\n"
     "varying vec3 v_pos;\n"
     "varying vec3 v_normal;\n"
     "varying vec2 v_uv;\n"
@@ -42,7 +43,7 @@ static const char pool_fs[] =
     "{\n"
     "    if (u_keep * (v_pos.z - u_water_level) < 0.0)\n"
     "        discard;\n"
-    "    vec3 albedo = v_color * texture2D(u_tiles, v_uv).r;\n"
+    "    vec3 albedo = v_color * mix(1.0, texture2D(u_tiles, v_uv).r, u_textured);\n"
     "    float sun = max(dot(normalize(v_normal), u_light_to), 0.0);\n"
     "    if (v_pos.z < u_water_level)\n"
     "        sun *= u_sun_under;\n"
@@ -178,6 +179,47 @@ ms_status ms_gl_pool_create(ms_renderer *r)
     return ms_gl_check("making the pool");
 }
 
+ms_status ms_gl_discs_upload(ms_renderer *r)
+{
+    ms_gl *gl = r->gl;
+    r->discs_changed = 0;
+    gl->discs_count = 0;
+    if (r->ndiscs == 0)
+        return MS_OK;
+    enum { SEGMENTS = 10 };
+    const size_t verts = (size_t)r->ndiscs * SEGMENTS * 3;
+    float *v = ms_alloc_array(verts, MS_POOL_STRIDE * sizeof(float));
+    if (!v)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d discs", r->ndiscs);
+    static const float up[3] = {0, 0, 1};
+    builder b = {v, 0, 1.0f};
+    for (int i = 0; i < r->ndiscs; ++i) {
+        const ms_render_disc *c = &r->discs[i];
+        const float lift = 0.02f * c->radius; /* m: clear of the water it floats on */
+        const float ctr[3] = {c->pos[0], c->pos[1], c->pos[2] + lift};
+        for (int s = 0; s < SEGMENTS; ++s) {
+            const float a0 = 6.2831853f * (float)s / SEGMENTS;
+            const float a1 = 6.2831853f * (float)(s + 1) / SEGMENTS;
+            const float p0[3] = {ctr[0] + c->radius * cosf(a0), ctr[1] + c->radius * sinf(a0),
+                                 ctr[2]};
+            const float p1[3] = {ctr[0] + c->radius * cosf(a1), ctr[1] + c->radius * sinf(a1),
+                                 ctr[2]};
+            vertex(&b, ctr, up, c->color);
+            vertex(&b, p0, up, c->color);
+            vertex(&b, p1, up, c->color);
+        }
+    }
+    if (!gl->discs_vbo)
+        glGenBuffers(1, &gl->discs_vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, gl->discs_vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)b.n * MS_POOL_STRIDE * sizeof(float)), v,
+                 GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    ms_free(v);
+    gl->discs_count = b.n;
+    return MS_OK;
+}
+
 void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
 {
     const ms_gl *gl = r->gl;
@@ -193,6 +235,7 @@ void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
     glUniform1f(glGetUniformLocation(p, "u_sun_under"), sun_under);
     glUniform1f(glGetUniformLocation(p, "u_ambient"), AMBIENT);
     glUniform1f(glGetUniformLocation(p, "u_keep"), keep);
+    glUniform1f(glGetUniformLocation(p, "u_textured"), 1.0f);
     glBindBuffer(GL_ARRAY_BUFFER, gl->pool_vbo);
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_NORMAL_ARRAY);
@@ -203,6 +246,21 @@ void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
     glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(6 * sizeof(float)));
     glColorPointer(3, GL_FLOAT, stride, (const void *)(8 * sizeof(float)));
     glDrawArrays(GL_TRIANGLES, 0, keep < 0 ? gl->pool_apron_count : gl->pool_count);
+    if (keep == 0 && r->ndiscs > 0 && gl->discs_count > 0) {
+        /* the floating discs: untextured, lifted off the water by the
+         * depth offset */
+        glUniform1f(glGetUniformLocation(p, "u_textured"), 0.0f);
+        glBindBuffer(GL_ARRAY_BUFFER, gl->discs_vbo);
+        glVertexPointer(3, GL_FLOAT, stride, (const void *)0);
+        glNormalPointer(GL_FLOAT, stride, (const void *)(3 * sizeof(float)));
+        glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(6 * sizeof(float)));
+        glColorPointer(3, GL_FLOAT, stride, (const void *)(8 * sizeof(float)));
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(-1.0f, -4.0f);
+        glDisable(GL_CULL_FACE);
+        glDrawArrays(GL_TRIANGLES, 0, gl->discs_count);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+    }
     glDisableClientState(GL_COLOR_ARRAY);
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);
     glDisableClientState(GL_NORMAL_ARRAY);

@@ -104,6 +104,19 @@ ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky)
     return st;
 }
 
+ms_status ms_gl_camera_moved(ms_renderer *r)
+{
+    ms_gl *gl = r->gl;
+    if (gl->env_tex == gl->sky_tex)
+        return MS_OK; /* the plain sky: no viewpoint */
+    ms_status st = ms_gl_context_begin(&gl->context);
+    if (st != MS_OK)
+        return st;
+    st = ms_gl_env_create(r);
+    ms_gl_context_end();
+    return st;
+}
+
 void ms_gl_destroy(ms_gl *gl)
 {
     if (!gl)

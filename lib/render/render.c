@@ -111,6 +111,35 @@ static ms_status check_vec(const char *key, const float v[3], double lo, double 
     return MS_OK;
 }
 
+static ms_status check_camera(const float eye[3], const float target[3], const float up[3],
+                              float fov)
+{
+    ms_status st;
+    const double big = 1e6; /* m */
+    if ((st = check_vec("eye", eye, -big, big, "m")) != MS_OK ||
+        (st = check_vec("target", target, -big, big, "m")) != MS_OK ||
+        (st = check_vec("up", up, -big, big, "")) != MS_OK ||
+        (st = ms_check_range(PART, "fov", fov, 1, 179, "degrees")) != MS_OK)
+        return st;
+    float view[3], side[3];
+    for (int k = 0; k < 3; ++k)
+        view[k] = target[k] - eye[k];
+    double lv = norm3(view);
+    if (!(lv > 1e-9))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: target [%g, %g, %g] m equals eye; it must be away from the eye",
+                       (double)target[0], (double)target[1], (double)target[2]);
+    side[0] = view[1] * up[2] - view[2] * up[1];
+    side[1] = view[2] * up[0] - view[0] * up[2];
+    side[2] = view[0] * up[1] - view[1] * up[0];
+    if (!(norm3(side) > 1e-6 * lv * norm3(up)) || !(norm3(up) > 0))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: up [%g, %g, %g] is zero or along the view direction; it must "
+                       "point across it",
+                       (double)up[0], (double)up[1], (double)up[2]);
+    return MS_OK;
+}
+
 static ms_status check_desc(const ms_renderer_desc *d)
 {
     ms_status st;
@@ -140,10 +169,6 @@ static ms_status check_desc(const ms_renderer_desc *d)
         (st = check_vec("light_dir", d->light_dir, -big, big, "")) != MS_OK ||
         (st = check_vec("light_color", d->light_color, 0, 100, "")) != MS_OK ||
         (st = ms_check_range(PART, "ior", d->ior, 1, 3, "")) != MS_OK ||
-        (st = check_vec("eye", d->eye, -big, big, "m")) != MS_OK ||
-        (st = check_vec("target", d->target, -big, big, "m")) != MS_OK ||
-        (st = check_vec("up", d->up, -big, big, "")) != MS_OK ||
-        (st = ms_check_range(PART, "fov", d->fov, 1, 179, "degrees")) != MS_OK ||
         (st = check_vec("pool_min", d->pool_min, -big, big, "m")) != MS_OK ||
         (st = check_vec("pool_max", d->pool_max, -big, big, "m")) != MS_OK ||
         (st = ms_check_range(PART, "tile_size", d->tile_size, 0, big, "m")) != MS_OK ||
@@ -164,23 +189,7 @@ static ms_status check_desc(const ms_renderer_desc *d)
     if ((st = ms_check_range(PART, "water_level", d->water_level, d->pool_min[2],
                              d->pool_max[2], "m")) != MS_OK)
         return st;
-    float view[3], side[3];
-    for (int k = 0; k < 3; ++k)
-        view[k] = d->target[k] - d->eye[k];
-    double lv = norm3(view);
-    if (!(lv > 1e-9))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: target [%g, %g, %g] m equals eye; it must be away from the eye",
-                       (double)d->target[0], (double)d->target[1], (double)d->target[2]);
-    side[0] = view[1] * d->up[2] - view[2] * d->up[1];
-    side[1] = view[2] * d->up[0] - view[0] * d->up[2];
-    side[2] = view[0] * d->up[1] - view[1] * d->up[0];
-    if (!(norm3(side) > 1e-6 * lv * norm3(d->up)) || !(norm3(d->up) > 0))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: up [%g, %g, %g] is zero or along the view direction; it must "
-                       "point across it",
-                       (double)d->up[0], (double)d->up[1], (double)d->up[2]);
-    return MS_OK;
+    return check_camera(d->eye, d->target, d->up, d->fov);
 }
 
 #if MS_HAVE_OSMESA
@@ -193,6 +202,19 @@ static char *dup_or_null(const char *s)
     if (p)
         memcpy(p, s, n);
     return p;
+}
+#endif
+
+#if MS_HAVE_OSMESA
+/* Texels per side of the builtin sky's faces: about half the image's
+ * longer side (a face spans 90 degrees, the clouds are soft), a power of
+ * two in [32, 512]. */
+static int sky_size_for(int w, int h)
+{
+    int want = MS_MAX(w, h) / 2, n = 32;
+    while (n < want && n < 512)
+        n *= 2;
+    return n;
 }
 #endif
 
@@ -249,7 +271,7 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
 
     ms_cubemap sky = {0, {NULL}};
     if (strcmp(d->cubemap, "builtin") == 0)
-        st = ms_sky_builtin(256, r->desc.light_dir, &sky);
+        st = ms_sky_builtin(sky_size_for(d->width, d->height), r->desc.light_dir, &sky);
     else
         st = ms_cubemap_load(d->cubemap, &sky);
     if (st == MS_OK)
@@ -292,6 +314,7 @@ void ms_renderer_destroy(ms_renderer *r)
 #endif
     ms_shader_instance_destroy(&r->shader);
     ms_caustics_free(&r->caustics);
+    ms_free(r->discs);
     ms_free(r->pixels);
     ms_free(r->shader_name);
     ms_free(r->shader_params);
@@ -346,6 +369,69 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
     return ms_fail(MS_ERR_UNSUPPORTED,
                    "render: ms_renderer_draw needs the sim (lib/sim), which this build does "
                    "not have yet; draw its combined field with ms_renderer_draw_field");
+}
+
+ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int n)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
+        (st = ms_check_int_range(PART, "discs n", n, 0, MS_RENDER_MAX_DISCS)) != MS_OK ||
+        (n > 0 && (st = ms_check_not_null(PART, "discs", discs)) != MS_OK))
+        return st;
+    for (int i = 0; i < n; ++i) {
+        const ms_render_disc *c = &discs[i];
+        char key[64];
+        for (int k = 0; k < 3; ++k) {
+            snprintf(key, sizeof key, "disc %d pos[%d]", i, k);
+            if ((st = ms_check_range(PART, key, c->pos[k], -1e6, 1e6, "m")) != MS_OK)
+                return st;
+            snprintf(key, sizeof key, "disc %d color[%d]", i, k);
+            if ((st = ms_check_range(PART, key, c->color[k], 0, 1, "")) != MS_OK)
+                return st;
+        }
+        snprintf(key, sizeof key, "disc %d radius", i);
+        if ((st = ms_check_positive(PART, key, c->radius, "m")) != MS_OK)
+            return st;
+    }
+    if (n > r->discs_cap) {
+        ms_render_disc *p = ms_alloc_array((size_t)n, sizeof *p);
+        if (!p)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d discs", n);
+        ms_free(r->discs);
+        r->discs = p;
+        r->discs_cap = n;
+    }
+    if (n > 0)
+        memcpy(r->discs, discs, (size_t)n * sizeof *discs);
+    r->ndiscs = n;
+    r->discs_changed = 1;
+    return MS_OK;
+}
+
+ms_status ms_renderer_set_camera(ms_renderer *r, const float eye[3], const float target[3],
+                                 const float up[3], float fov)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
+        (st = ms_check_not_null(PART, "eye", eye)) != MS_OK ||
+        (st = ms_check_not_null(PART, "target", target)) != MS_OK ||
+        (st = ms_check_not_null(PART, "up", up)) != MS_OK ||
+        (st = check_camera(eye, target, up, fov)) != MS_OK)
+        return st;
+    ms_renderer_desc old = r->desc;
+    memcpy(r->desc.eye, eye, sizeof r->desc.eye);
+    memcpy(r->desc.target, target, sizeof r->desc.target);
+    memcpy(r->desc.up, up, sizeof r->desc.up);
+    r->desc.fov = fov;
+#if MS_HAVE_OSMESA
+    if ((st = ms_gl_camera_moved(r)) != MS_OK) {
+        r->desc = old;
+        return st;
+    }
+#else
+    (void)old;
+#endif
+    return MS_OK;
 }
 
 const unsigned char *ms_renderer_pixels(const ms_renderer *r, int *w, int *h)

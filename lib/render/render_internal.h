@@ -122,6 +122,9 @@ struct ms_renderer {
     unsigned passes;        /* MS_SHADER_NEEDS_* that run */
     int trace_caustics;     /* 1: the caustics pass runs */
     ms_caustics caustics;
+    ms_render_disc *discs;  /* floating things, ms_renderer_set_discs */
+    int ndiscs, discs_cap;
+    int discs_changed;      /* the GL side must rebuild their vertices */
     unsigned char *pixels;  /* width * height * 4, top row first */
     int have_frame;
     ms_render_stats stats;
@@ -133,6 +136,8 @@ struct ms_renderer {
  * set); on failure r->gl stays NULL and the error is set. */
 ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky);
 void ms_gl_destroy(ms_gl *gl);
+/* gl_renderer.c: the environment drawn again for r->desc's new camera. */
+ms_status ms_gl_camera_moved(ms_renderer *r);
 /* gl_frame.c: one frame of h over g into r->pixels. */
 ms_status ms_gl_draw(ms_renderer *r, const float *h, const ms_grid *g, double time);
 #endif

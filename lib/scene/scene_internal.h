@@ -88,6 +88,13 @@ struct ms_scene {
         float gravity[3];        /* m/s^2 */
         ms_pressure pressure;
         int max_particles;       /* 0 = what the fill boxes need */
+        /* NAN / 0: the solver's default */
+        float sound_speed;       /* m/s, Tait's c0 */
+        float courant;           /* CFL number */
+        int max_substeps;
+        int threads;             /* threads inside the SPH step */
+        int smooth_steps;        /* eq. 18 smoothing passes (-1 = default) */
+        float smooth_energy;     /* J/kg, eq. 18 threshold */
     } volume;
     int nfill;
     float fill_lo[MS_SCENE_MAX_FILLS][3], fill_hi[MS_SCENE_MAX_FILLS][3]; /* m */

@@ -208,7 +208,9 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
     static const char *const keys[] = {"spacing", "smoothing_length", "rest_density",
                                        "gas_constant", "viscosity", "gravity", "pressure",
-                                       "max_particles", "fill", "field", NULL};
+                                       "max_particles", "fill", "field", "sound_speed",
+                                       "courant", "max_substeps", "threads", "smooth_steps",
+                                       "smooth_energy", NULL};
     static const char *const pressures[] = {"ideal_gas", "tait", "dfsph", NULL};
     static const float g[3] = {0, 0, -9.81f};
     json_t *o, *fill;
@@ -237,6 +239,18 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     sc->volume.pressure = (ms_pressure)pressure;
     TRY(ms_scene_get_int(c, o, "max_particles", 0, 0, MAX_PARTICLES, &maxp));
     sc->volume.max_particles = (int)maxp;
+    /* NAN / 0 / -1: the volume solver's default (see sim/create.c) */
+    long maxsub, vthreads, smooth;
+    TRY(ms_scene_get_float(c, o, "sound_speed", NAN, 0, 1e4, 1, "m/s", &sc->volume.sound_speed));
+    TRY(ms_scene_get_float(c, o, "courant", NAN, 0, 0.5, 1, "", &sc->volume.courant));
+    TRY(ms_scene_get_int(c, o, "max_substeps", 0, 1, 10000000, &maxsub));
+    TRY(ms_scene_get_int(c, o, "threads", 0, 1, 64, &vthreads));
+    TRY(ms_scene_get_int(c, o, "smooth_steps", -1, 0, 64, &smooth));
+    TRY(ms_scene_get_float(c, o, "smooth_energy", NAN, 0, 1e6, 1, "J/kg",
+                           &sc->volume.smooth_energy));
+    sc->volume.max_substeps = (int)maxsub;
+    sc->volume.threads = (int)vthreads;
+    sc->volume.smooth_steps = (int)smooth;
     TRY(ms_scene_get_ivec(c, o, "field", 2, field, 2, 4096, field));
     sc->field_nx = field[0];
     sc->field_ny = field[1];

@@ -1,0 +1,380 @@
+/* Creating a sim from a desc (engines) or a scene: the two solvers, the
+ * grids of eq. 20, the hand-over buffers of the pipeline, and the scene's
+ * effects. Only what is asked for is allocated. */
+#include <string.h>
+
+#include "modesplit/volume.h"
+#include "sim/sim_internal.h"
+
+#define TRY(call)                   \
+    do {                            \
+        ms_status try_st_ = (call); \
+        if (try_st_ != MS_OK)       \
+            return try_st_;         \
+    } while (0)
+
+ms_sim_desc ms_sim_desc_default(void)
+{
+    ms_sim_desc d;
+    memset(&d, 0, sizeof d);
+    d.volume = NULL;
+    d.surface = NULL;
+    d.field_nx = d.field_ny = 0;   /* derived */
+    d.surface_substeps = 0;        /* derived (eq. 19) */
+    d.couple_surface_from_volume = 0;
+    d.couple_volume_from_surface = 0;
+    d.threads = 1;
+    return d;
+}
+
+static void *sim_alloc(size_t *account, size_t count, size_t size)
+{
+    void *p = ms_alloc_array(count, size);
+    if (p)
+        *account += count * size;
+    return p;
+}
+
+static ms_status oom(const char *what)
+{
+    return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory for %s", what);
+}
+
+static ms_status check_desc(const ms_sim_desc *d)
+{
+    TRY(ms_check_not_null("sim", "desc", d));
+    if (!d->volume && !d->surface)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: desc has neither a volume nor a surface; give at least one");
+    TRY(ms_check_int_range("sim", "field_nx", d->field_nx, 0, 4096));
+    TRY(ms_check_int_range("sim", "field_ny", d->field_ny, 0, 4096));
+    if ((d->field_nx == 0) != (d->field_ny == 0))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: field_nx %d and field_ny %d must both be 0 (derived) or both set",
+                       d->field_nx, d->field_ny);
+    if (d->field_nx == 1 || d->field_ny == 1)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: field %d x %d must be at least 2 x 2",
+                       d->field_nx, d->field_ny);
+    TRY(ms_check_int_range("sim", "surface_substeps", d->surface_substeps, 0, 100000));
+    TRY(ms_check_range("sim", "couple_surface_from_volume", d->couple_surface_from_volume, 0,
+                       100, ""));
+    TRY(ms_check_range("sim", "couple_volume_from_surface", d->couple_volume_from_surface, 0, 1,
+                       ""));
+    TRY(ms_check_int_range("sim", "threads", d->threads, 1, 2));
+    if ((d->enqueue_task == NULL) != (d->finish_task == NULL))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: enqueue_task and finish_task must both be set or both be NULL");
+    if (d->volume && d->surface) {
+        /* one x-y extent for both fields */
+        const ms_volume_desc *v = d->volume;
+        const ms_surface_desc *s = d->surface;
+        double ex = (double)v->domain_max[0] - v->domain_min[0];
+        double ey = (double)v->domain_max[1] - v->domain_min[1];
+        double sx = (double)s->nx * s->dx, sy = (double)s->ny * s->dx;
+        if (!(fabs(sx - ex) <= 1e-3 * ex) || !(fabs(sy - ey) <= 1e-3 * ey))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "sim: the wave grid spans %g m x %g m (nx %d, ny %d, dx %g m) but the "
+                           "volume domain %g m x %g m; both fields must cover the same x-y "
+                           "extent",
+                           sx, sy, s->nx, s->ny, (double)s->dx, ex, ey);
+    }
+    return MS_OK;
+}
+
+static ms_status alloc_buffers(ms_sim *sim, int floaters)
+{
+    size_t nf = (size_t)sim->fnx * (size_t)sim->fny;
+    size_t ns = (size_t)sim->snx * (size_t)sim->sny;
+    if (sim->volume) {
+        for (int k = 0; k < 2; ++k) {
+            sim->hfield[k] = sim_alloc(&sim->own_volume_bytes, nf, sizeof(float));
+            if (!sim->hfield[k])
+                return oom("the SPH height field");
+            if (floaters) {
+                sim->flow[k] = sim_alloc(&sim->own_effects_bytes, 2 * nf, sizeof(float));
+                if (!sim->flow[k])
+                    return oom("the surface flow of the floaters");
+            }
+        }
+        if (floaters) {
+            sim->flow_count = sim_alloc(&sim->own_effects_bytes, nf, sizeof(float));
+            if (!sim->flow_count)
+                return oom("the surface flow of the floaters");
+        }
+    }
+    if (sim->surface) {
+        sim->combined = sim_alloc(&sim->own_surface_bytes, ns, sizeof(float));
+        if (!sim->combined)
+            return oom("the combined field");
+        sim->wave_grid = (ms_grid){.nx = sim->snx, .ny = sim->sny, .dx = sim->sdx,
+                                   .dy = sim->sdx,
+                                   .origin = {sim->domain_min[0], sim->domain_min[1]}};
+        if (sim->volume) {
+            TRY(ms_sim_upsample_init(sim));
+            if (sim->gain_sv > 0) {
+                sim->hprev = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
+                sim->dh = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
+                sim->u_prev = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
+                sim->excite = sim_alloc(&sim->own_surface_bytes, ns, sizeof(float));
+                if (!sim->hprev || !sim->dh || !sim->u_prev || !sim->excite)
+                    return oom("the volume->surface coupling");
+            }
+            if (sim->gain_vs > 0) {
+                /* the waves averaged over each SPH cell, for the volume */
+                for (int k = 0; k < 2; ++k) {
+                    sim->wave_snap[k] = sim_alloc(&sim->own_volume_bytes, nf, sizeof(float));
+                    if (!sim->wave_snap[k])
+                        return oom("the surface->volume coupling");
+                }
+                sim->wave_colmap = sim_alloc(&sim->own_surface_bytes, (size_t)sim->snx,
+                                             sizeof *sim->wave_colmap);
+                sim->wave_rowsum = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
+                if (!sim->wave_colmap || !sim->wave_rowsum)
+                    return oom("the surface->volume coupling");
+                for (int i = 0; i < sim->snx; ++i) /* the SPH column of wave column i */
+                    sim->wave_colmap[i] = (int)(((2L * i + 1) * sim->fnx) / (2L * sim->snx));
+                sim->field_grid = (ms_grid){
+                    .nx = sim->fnx, .ny = sim->fny,
+                    .dx = (sim->domain_max[0] - sim->domain_min[0]) / (float)sim->fnx,
+                    .dy = (sim->domain_max[1] - sim->domain_min[1]) / (float)sim->fny,
+                    .origin = {sim->domain_min[0], sim->domain_min[1]}};
+            }
+        }
+    }
+    return MS_OK;
+}
+
+/* About two field cells per particle spacing, the finest the particles
+ * resolve, and no finer than the wave grid. */
+static int derive_field(float extent, float spacing, int wave_n)
+{
+    double n = floor(2.0 * extent / spacing + 0.5);
+    n = MS_CLAMP(n, 2.0, 4096.0);
+    if (wave_n > 0 && n > wave_n)
+        n = wave_n;
+    return (int)n;
+}
+
+static ms_status create_common(const ms_sim_desc *d, const float *origin, float level,
+                               const ms_scene *sc, ms_sim **out)
+{
+    TRY(ms_check_not_null("sim", "out", out));
+    *out = NULL;
+    TRY(check_desc(d));
+    ms_sim *sim = ms_alloc(sizeof *sim);
+    if (!sim)
+        return oom("the sim");
+    sim->scene = sc;
+    sim->threads = d->threads;
+    sim->enqueue = d->enqueue_task;
+    sim->finish = d->finish_task;
+    sim->user_ctx = d->user_task_context;
+    sim->n_time_fixed = d->surface_substeps;
+    sim->gain_sv = d->couple_surface_from_volume;
+    sim->gain_vs = d->couple_volume_from_surface;
+    sim->level = level;
+    sim->gravity = 9.81f;
+    sim->container = -1;
+    sim->boat_id = sim->drag_id = 0;
+
+    ms_status st = MS_OK;
+    if (d->volume) {
+        ms_volume_desc vd = *d->volume;
+        /* threads is the sim's whole budget: one thread runs everything on
+         * it; a volume-only sim on two has nothing to put on the second
+         * core but the volume solver (any count gives the same bytes) */
+        if (d->threads == 1)
+            vd.threads = 1;
+        else if (!d->surface && vd.threads < 2)
+            vd.threads = 2;
+        st = ms_volume_create(&vd, &sim->volume);
+        if (st == MS_OK) {
+            memcpy(sim->domain_min, vd.domain_min, sizeof sim->domain_min);
+            memcpy(sim->domain_max, vd.domain_max, sizeof sim->domain_max);
+            sim->spacing = vd.spacing;
+            double g = sqrt((double)vd.gravity[0] * vd.gravity[0] +
+                            (double)vd.gravity[1] * vd.gravity[1] +
+                            (double)vd.gravity[2] * vd.gravity[2]);
+            sim->gravity = (float)g;
+        }
+    }
+    if (st == MS_OK && d->surface) {
+        st = ms_surface_create(d->surface, &sim->surface);
+        if (st == MS_OK) {
+            sim->snx = d->surface->nx;
+            sim->sny = d->surface->ny;
+            sim->sdx = d->surface->dx;
+            if (!d->volume) {
+                float o[2] = {0, 0};
+                if (origin)
+                    memcpy(o, origin, sizeof o);
+                sim->domain_min[0] = o[0];
+                sim->domain_min[1] = o[1];
+                sim->domain_max[0] = o[0] + (float)sim->snx * sim->sdx;
+                sim->domain_max[1] = o[1] + (float)sim->sny * sim->sdx;
+                sim->domain_min[2] = origin ? origin[2] : 0;
+                sim->domain_max[2] = origin ? origin[3] : 0;
+            }
+        }
+    }
+    if (st == MS_OK && sim->volume) {
+        sim->fnx = d->field_nx ? d->field_nx
+                               : derive_field(sim->domain_max[0] - sim->domain_min[0],
+                                              sim->spacing, sim->snx);
+        sim->fny = d->field_ny ? d->field_ny
+                               : derive_field(sim->domain_max[1] - sim->domain_min[1],
+                                              sim->spacing, sim->sny);
+    }
+    int floaters = sc && sc->has_floaters;
+    if (st == MS_OK)
+        st = alloc_buffers(sim, floaters);
+    if (st == MS_OK && sc)
+        st = ms_sim_setup_effects(sim, sc);
+    if (st == MS_OK && sim->threads == 2 && sim->volume && sim->surface && !sim->enqueue)
+        st = ms_sim_worker_start(sim);
+    if (st != MS_OK) {
+        ms_sim_destroy(sim);
+        return st;
+    }
+    *out = sim;
+    return MS_OK;
+}
+
+ms_status ms_sim_create(const ms_sim_desc *d, ms_sim **out)
+{
+    return create_common(d, NULL, 0, NULL, out);
+}
+
+ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out)
+{
+    TRY(ms_check_not_null("sim", "out", out));
+    *out = NULL;
+    TRY(ms_check_not_null("sim", "scene", sc));
+    TRY(ms_check_int_range("sim", "threads", threads, 0, 2));
+    ms_sim_desc d = ms_sim_desc_default();
+    ms_volume_desc vd;
+    ms_surface_desc sd;
+    long particles = 0;
+    if (sc->has_volume) {
+        vd = ms_volume_desc_default();
+        float ratio = vd.smoothing_length / vd.spacing; /* the solver's default h / spacing */
+        memcpy(vd.domain_min, sc->domain_min, sizeof vd.domain_min);
+        memcpy(vd.domain_max, sc->domain_max, sizeof vd.domain_max);
+        vd.spacing = sc->volume.spacing;
+        vd.smoothing_length = isnan(sc->volume.smoothing_length) ? ratio * sc->volume.spacing
+                                                                 : sc->volume.smoothing_length;
+        vd.rest_density = sc->volume.rest_density;
+        if (!isnan(sc->volume.gas_constant))
+            vd.gas_constant = sc->volume.gas_constant;
+        if (!isnan(sc->volume.viscosity))
+            vd.viscosity = sc->volume.viscosity;
+        memcpy(vd.gravity, sc->volume.gravity, sizeof vd.gravity);
+        vd.pressure = sc->volume.pressure;
+        if (!isnan(sc->volume.sound_speed))
+            vd.sound_speed = sc->volume.sound_speed;
+        if (!isnan(sc->volume.courant))
+            vd.courant = sc->volume.courant;
+        if (sc->volume.max_substeps > 0)
+            vd.max_substeps = sc->volume.max_substeps;
+        if (sc->volume.threads > 0)
+            vd.threads = sc->volume.threads;
+        if (sc->volume.smooth_steps >= 0)
+            vd.smooth_steps = sc->volume.smooth_steps;
+        if (!isnan(sc->volume.smooth_energy))
+            vd.smooth_energy = sc->volume.smooth_energy;
+        for (int i = 0; i < sc->nfill; ++i) {
+            long n = 1;
+            for (int k = 0; k < 3; ++k)
+                n *= (long)floor((double)(sc->fill_hi[i][k] - sc->fill_lo[i][k]) /
+                                     sc->volume.spacing +
+                                 1e-6) +
+                     1;
+            particles += n;
+        }
+        /* room for what the fill makes (counted generously: one more per
+         * axis) unless the scene says */
+        vd.max_particles =
+            sc->volume.max_particles > 0 ? sc->volume.max_particles : (int)MS_MAX(particles, 64);
+        d.volume = &vd;
+        d.field_nx = sc->field_nx;
+        d.field_ny = sc->field_ny;
+    }
+    if (sc->has_surface) {
+        sd = ms_surface_desc_default();
+        sd.nx = sc->surface.nx;
+        sd.ny = sc->surface.ny;
+        sd.dx = sc->surface.dx;
+        sd.wave_speed = sc->surface.wave_speed;
+        sd.damping = sc->surface.damping;
+        sd.boundary = sc->surface.boundary;
+        sd.max_substeps = sc->surface.max_substeps;
+        sd.seed = sc->seed;
+        d.surface = &sd;
+    }
+    d.surface_substeps = sc->n_time;
+    d.couple_surface_from_volume = sc->couple_surface_from_volume;
+    d.couple_volume_from_surface = sc->couple_volume_from_surface;
+    d.threads = threads ? threads : sc->threads;
+    float origin[4] = {sc->domain_min[0], sc->domain_min[1], sc->domain_min[2],
+                       sc->domain_max[2]};
+    ms_sim *sim;
+    TRY(create_common(&d, origin, sc->level, sc, &sim));
+    for (int i = 0; i < sc->nfill; ++i) {
+        ms_status st = ms_volume_fill_box(sim->volume, sc->fill_lo[i], sc->fill_hi[i]);
+        if (st != MS_OK) {
+            ms_sim_destroy(sim);
+            return st;
+        }
+    }
+    *out = sim;
+    return MS_OK;
+}
+
+void ms_sim_destroy(ms_sim *sim)
+{
+    if (!sim)
+        return;
+    ms_sim_worker_stop(sim);
+    for (int i = 0; i < sim->nshapes; ++i) {
+        ms_sim_shape *sh = &sim->shapes[i];
+        if (sh->vol && sim->volume)
+            ms_volume_remove_collider(sim->volume, sh->vol);
+        ms_shape_destroy(sh->vol);
+        ms_shape_destroy(sh->surf);
+    }
+    ms_free(sim->shapes);
+    ms_volume_destroy(sim->volume);
+    ms_surface_destroy(sim->surface);
+    for (int k = 0; k < 2; ++k) {
+        ms_free(sim->hfield[k]);
+        ms_free(sim->flow[k]);
+        ms_free(sim->wave_snap[k]);
+        for (int a = 0; a < 3; ++a) {
+            ms_free(sim->ppos[k][a]);
+            ms_free(sim->pvel[k][a]);
+        }
+    }
+    ms_free(sim->paos);
+    ms_free(sim->wave_colmap);
+    ms_free(sim->wave_rowsum);
+    ms_free(sim->flow_count);
+    ms_free(sim->hprev);
+    ms_free(sim->dh);
+    ms_free(sim->u_prev);
+    ms_free(sim->excite);
+    ms_free(sim->combined);
+    ms_free(sim->ix0);
+    ms_free(sim->ix1);
+    ms_free(sim->iy0);
+    ms_free(sim->iy1);
+    ms_free(sim->wx);
+    ms_free(sim->wy);
+    ms_free(sim->rowtmp);
+    ms_free(sim->mask_static);
+    ms_free(sim->mask);
+    ms_free(sim->drop_order);
+    ms_free(sim->boat_xy);
+    ms_free(sim->floater_xyz);
+    ms_free(sim->floater_vel);
+    ms_free(sim);
+}

@@ -1,0 +1,137 @@
+/* Setting up the scene's effects, each only when the scene names it:
+ * obstacles and the container (volume colliders, eq. 15, and solid cells
+ * of the wave grid at the water level), rain, the boat (a disturber that
+ * makes bow waves, Fig. 10b), scripted drops (Fig. 3a), floaters. */
+#include <string.h>
+
+#include "modesplit/surface.h"
+#include "modesplit/volume.h"
+#include "sim/sim_internal.h"
+
+static ms_status add_shape(ms_sim *sim, const ms_scene_shape *spec, ms_sim_shape *sh)
+{
+    ms_status st = MS_OK;
+    sh->spec = spec;
+    sh->moving = spec->path.npoints > 1 || spec->velocity[0] != 0 || spec->velocity[1] != 0 ||
+                 spec->velocity[2] != 0;
+    float pos[3], vel[3];
+    ms_sim_shape_pose(sh, 0.0, pos, vel);
+    if (sim->volume) {
+        st = ms_shape_create(spec->kind, spec->params_json, &sh->vol);
+        if (st == MS_OK)
+            st = ms_shape_set_pose(sh->vol, pos, vel);
+        if (st == MS_OK)
+            st = ms_volume_add_collider(sim->volume, sh->vol);
+        if (st != MS_OK) {
+            ms_shape_destroy(sh->vol);
+            sh->vol = NULL;
+            return st;
+        }
+    }
+    if (sim->surface && spec->surface_mask) {
+        st = ms_shape_create(spec->kind, spec->params_json, &sh->surf);
+        if (st == MS_OK)
+            st = ms_shape_set_pose(sh->surf, pos, vel);
+    }
+    return st;
+}
+
+static ms_status setup_shapes(ms_sim *sim, const ms_scene *sc)
+{
+    int n = sc->nobstacles + (sc->has_container ? 1 : 0);
+    if (n == 0)
+        return MS_OK;
+    sim->shapes = ms_alloc_array((size_t)n, sizeof *sim->shapes);
+    if (!sim->shapes)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory for %d shapes", n);
+    sim->own_effects_bytes += (size_t)n * sizeof *sim->shapes;
+    int any_surf = 0;
+    for (int i = 0; i < n; ++i) {
+        const ms_scene_shape *spec = i < sc->nobstacles ? &sc->obstacles[i] : &sc->container;
+        sim->nshapes = i + 1;
+        ms_status st = add_shape(sim, spec, &sim->shapes[i]);
+        if (st != MS_OK)
+            return st;
+        any_surf |= sim->shapes[i].surf != NULL;
+        if (i >= sc->nobstacles)
+            sim->container = i;
+    }
+    if (!any_surf)
+        return MS_OK;
+    /* the obstacle mask: static footprints once, moving ones each frame */
+    size_t ns = (size_t)sim->snx * sim->sny;
+    sim->mask_static = ms_alloc(ns);
+    sim->mask = ms_alloc(ns);
+    if (!sim->mask_static || !sim->mask)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory for the obstacle mask");
+    sim->own_effects_bytes += 2 * ns;
+    float z = sim->domain_min[2] + sim->level; /* m, the water level */
+    for (int i = 0; i < n; ++i) {
+        ms_sim_shape *sh = &sim->shapes[i];
+        if (!sh->surf)
+            continue;
+        if (sh->moving)
+            sim->have_moving_mask = 1;
+        ms_status st = ms_shape_footprint(sh->surf, &sim->wave_grid, z,
+                                          sh->moving ? sim->mask : sim->mask_static);
+        if (st != MS_OK)
+            return st;
+    }
+    for (size_t c = 0; c < ns; ++c)
+        sim->mask[c] |= sim->mask_static[c];
+    return ms_surface_set_obstacle_mask(sim->surface, sim->mask);
+}
+
+ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
+{
+    ms_status st = setup_shapes(sim, sc);
+    if (st != MS_OK)
+        return st;
+    if (sim->surface && sc->has_rain)
+        st = ms_surface_set_rain(sim->surface, &sc->rain);
+    if (st == MS_OK && sim->surface && sc->has_boat) {
+        /* the path in the wave grid's coordinates (from its corner) */
+        int n = sc->boat_path.npoints;
+        sim->boat_xy = ms_alloc_array((size_t)n * 2, sizeof *sim->boat_xy);
+        if (!sim->boat_xy)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory for the boat's path");
+        sim->own_effects_bytes += (size_t)n * 2 * sizeof *sim->boat_xy;
+        for (int i = 0; i < n; ++i) {
+            sim->boat_xy[2 * i] = sc->boat_path.points[2 * i] - sim->domain_min[0];
+            sim->boat_xy[2 * i + 1] = sc->boat_path.points[2 * i + 1] - sim->domain_min[1];
+        }
+        ms_disturber_desc d = {sim->boat_xy[0], sim->boat_xy[1], 0, 0, sc->boat_radius,
+                               sc->boat_depth};
+        st = ms_surface_add_disturber(sim->surface, &d, &sim->boat_id);
+    }
+    if (st == MS_OK && sim->surface && sc->ndrops > 0) {
+        /* drops in time order (stable: equal times keep the scene's order) */
+        sim->drop_order = ms_alloc_array((size_t)sc->ndrops, sizeof *sim->drop_order);
+        if (!sim->drop_order)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory for %d drops", sc->ndrops);
+        sim->own_effects_bytes += (size_t)sc->ndrops * sizeof *sim->drop_order;
+        for (int i = 0; i < sc->ndrops; ++i) {
+            int k = i;
+            while (k > 0 && sc->drops[sim->drop_order[k - 1]].time > sc->drops[i].time) {
+                sim->drop_order[k] = sim->drop_order[k - 1];
+                --k;
+            }
+            sim->drop_order[k] = i;
+        }
+    }
+    if (st == MS_OK && sc->has_floaters) {
+        int n = sc->nfloaters;
+        sim->floater_xyz = ms_alloc_array((size_t)n * 3, sizeof(float));
+        sim->floater_vel = ms_alloc_array((size_t)n * 2, sizeof(float));
+        if (!sim->floater_xyz || !sim->floater_vel)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory for %d floaters", n);
+        sim->own_effects_bytes += (size_t)n * 5 * sizeof(float);
+        for (int i = 0; i < n; ++i) {
+            sim->floater_xyz[3 * i] = sc->floater_xy[2 * i];
+            sim->floater_xyz[3 * i + 1] = sc->floater_xy[2 * i + 1];
+            sim->floater_xyz[3 * i + 2] = sim->domain_min[2] + sim->level;
+        }
+        sim->nfloaters = n;
+    }
+    return st;
+}

@@ -1,0 +1,187 @@
+/* lib/sim: the mode-splitting coupler (internal layout).
+ *
+ * Owns: running the volume (SPH) and the surface (wave equation) side by
+ * side at their own time steps and resolutions (paper 3.1), N_time wave
+ * steps per volume step (eq. 19), the bilinear up-sampling of the SPH
+ * height field by N_surf onto the wave grid and the sum (eq. 20, Fig. 7),
+ * the two-way coupling (3.5), the scene's effects (rain, boat, drops,
+ * obstacles, the dragging pointer, the moved container, floating leaves),
+ * the two-core split of Fig. 8 and the stage statistics.
+ *
+ * The one-frame pipeline. Call n of ms_sim_step (n = 1, 2, ...) runs two
+ * tasks that share no mutable data:
+ *   V (volume thread):  interaction at t_{n-1} (drag, moved container and
+ *                       obstacles, surface->volume coupling with the wave
+ *                       field W_{n-2}), SPH from t_{n-1} to t_n, extraction
+ *                       of the height field H_n (eqs. 16-18), a copy of the
+ *                       particles and, with floaters, the surface flow.
+ *   S (surface thread): frame m = n-1: scripted effects at t_{m-1}, the
+ *                       waves excited by the SPH field's rate
+ *                       (H_m - H_{m-1}) / dt (3.5), N_time wave steps from
+ *                       t_{m-1} to t_m, the combined field up(H_m) + W_m,
+ *                       floaters.
+ * V writes slot n % 2 of the hand-over buffers and S reads slot (n-1) % 2
+ * (what V wrote in the previous call); the same for the wave field copy
+ * handed from S to V. With threads = 1 the two tasks run one after the
+ * other, with threads = 2 at the same time: same inputs, same operations,
+ * same bytes. The extraction runs on the volume thread because
+ * ms_volume_extract_height reads the volume handle, which the volume thread
+ * is stepping (DESIGN 2 draws it there too).
+ */
+#ifndef MS_SIM_INTERNAL_H
+#define MS_SIM_INTERNAL_H
+
+#include <pthread.h>
+
+#include "core/internal.h"
+#include "modesplit/shape.h"
+#include "modesplit/sim.h"
+#include "scene/scene_internal.h"
+
+#define MS_SIM_MAX_DRAGS 8
+#define MS_SIM_ERR_LEN 1024
+
+/* A shape of the scene: one instance for the volume thread (collider) and
+ * one for the surface thread (footprint), so the threads never share one. */
+typedef struct ms_sim_shape {
+    ms_shape *vol;  /* NULL without a volume */
+    ms_shape *surf; /* NULL without a surface or without surface_mask */
+    const ms_scene_shape *spec;
+    int moving;             /* has a path, a velocity or was moved by the API */
+    int api_set;            /* pose given by ms_sim_move_* (overrides the path) */
+    float api_pos[3], api_vel[3];
+} ms_sim_shape;
+
+typedef struct ms_sim_drag_req {
+    float pos[2], vel[2]; /* m, m/s */
+    float radius, depth, strength;
+} ms_sim_drag_req;
+
+/* A running task's result: the status and the sentence of the thread that
+ * ran it (ms_last_error is thread-local), and its stage times. */
+typedef struct ms_sim_task {
+    ms_sim *sim;
+    ms_status status;
+    char err[MS_SIM_ERR_LEN];
+    double ms_a, ms_b; /* V: step, extract; S: waves, combine */
+} ms_sim_task;
+
+struct ms_sim {
+    const ms_scene *scene; /* NULL when made from a desc; not owned */
+    int threads;
+    ms_enqueue_task_fn *enqueue;
+    ms_finish_task_fn *finish;
+    void *user_ctx;
+
+    ms_volume *volume;
+    ms_surface *surface;
+    float domain_min[3], domain_max[3]; /* m */
+    float level;     /* m above domain_min z: still water (no volume) */
+    float gravity;   /* m/s^2, |g| for floaters on wave slopes */
+    float spacing;   /* m, particle spacing (near-surface band) */
+
+    /* grids */
+    int fnx, fny;    /* X_SPH x Y_SPH */
+    int snx, sny;    /* X_WE x Y_WE */
+    float sdx;       /* m */
+    int n_time_fixed;       /* eq. 19 from the scene/desc; 0 = derived */
+    int n_time_last;        /* wave steps of the last frame */
+    float gain_sv, gain_vs; /* surface<-volume, volume<-surface */
+
+    /* hand-over buffers (slot = call % 2, see above) */
+    float *hfield[2];        /* fnx * fny: H from V */
+    float *flow[2];          /* 2 * fnx * fny: surface flow (vx, vy) from V, floaters only */
+    float *flow_count;       /* fnx * fny: V's scratch for the flow */
+    float *ppos[2][3], *pvel[2][3]; /* particle copies, SoA */
+    int pcount[2], pcap[2];
+    float *paos;             /* 6 * paos_cap scratch for ms_volume_get_particles */
+    int paos_cap;
+    float *wave_snap[2];     /* fnx * fny: W averaged per SPH cell, from S (gain_vs > 0) */
+    int *wave_colmap;        /* snx: SPH column of each wave column */
+    float *wave_rowsum;      /* fnx * fny: S's scratch for the average */
+    ms_grid wave_grid, field_grid;
+
+    /* surface-thread buffers */
+    float *hprev;            /* fnx * fny: H_{m-1} */
+    float *dh;               /* fnx * fny: the coupling's impulse (m) */
+    float *u_prev;           /* fnx * fny: the coupling's velocity offset of the last frame (m/s) */
+    float wave_dt_last;      /* s, the last wave step taken */
+    float *excite;           /* snx * sny: up(dh) */
+    float *combined;         /* snx * sny (with a surface) */
+    int *ix0, *ix1, *iy0, *iy1; /* bilinear taps per column / row (eq. 20) */
+    float *wx, *wy;
+    float *rowtmp;           /* fny * snx: SPH rows up-sampled along x */
+    unsigned char *mask_static, *mask; /* snx * sny obstacle masks */
+    int have_moving_mask;
+
+    /* effects */
+    ms_sim_shape *shapes;    /* obstacles then the container */
+    int nshapes, container;  /* container: index into shapes, -1 = none */
+    int boat_id, boat_started;
+    float *boat_xy;          /* the boat's path from the wave grid's corner (m) */
+    int drag_id;             /* surface disturber for a drag without volume */
+    int next_drop;           /* scripted drops applied so far (scene order is by time) */
+    int *drop_order;
+    int nfloaters;
+    float *floater_xyz;      /* 3 * n: x, y, z (m) */
+    float *floater_vel;      /* 2 * n: m/s */
+    ms_sim_drag_req drags[MS_SIM_MAX_DRAGS];
+    int ndrags;
+
+    /* time */
+    long calls;              /* ms_sim_step calls done = frames finished */
+    double t_volume;         /* s, the volume's time (t_n after call n) */
+    double t_fields;         /* s, time of the published fields (t_{n-1}) */
+    float dt_prev;           /* s, frame_dt of the previous call */
+    float dt_cur;            /* s, frame_dt of the call running */
+    int primed;              /* H_0 and the particle copy of t_0 taken */
+    int failed;
+    char fail_msg[MS_SIM_ERR_LEN];
+    ms_status fail_status;
+
+    /* statistics */
+    ms_stats stats;
+    size_t own_volume_bytes, own_surface_bytes, own_effects_bytes;
+
+    /* the sim's own worker thread (threads = 2, no engine callbacks) */
+    int have_worker;
+    pthread_t worker;
+    pthread_mutex_t mu;
+    pthread_cond_t cv_go, cv_done;
+    long go_gen, done_gen;
+    int quit;
+    ms_task_fn *worker_fn;
+    void *worker_arg;
+};
+
+/* create.c */
+ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc);
+
+/* upsample.c: up[j*snx + i] = bilinear(f at the wave cell centre) (eq. 20) */
+ms_status ms_sim_upsample_init(ms_sim *sim);
+void ms_sim_upsample(const ms_sim *sim, const float *field, float *rowtmp, float *out);
+/* out = up(field) + wave */
+void ms_sim_upsample_add(const ms_sim *sim, const float *field, const float *wave, float add,
+                         float *rowtmp, float *out);
+
+/* volume_task.c / surface_task.c */
+void ms_sim_shape_pose(const ms_sim_shape *sh, double t, float pos[3], float vel[3]);
+int ms_sim_motion_active(const ms_scene_motion *p, double t);
+void ms_sim_volume_task(void *task);
+void ms_sim_surface_task(void *task);
+ms_status ms_sim_volume_grab(ms_sim *sim, int slot);
+
+/* The wave field averaged over each SPH cell (fnx * fny), for the volume. */
+void ms_sim_average_waves(ms_sim *sim, const float *wave, float *out);
+
+/* worker.c */
+ms_status ms_sim_worker_start(ms_sim *sim);
+void ms_sim_worker_stop(ms_sim *sim);
+void ms_sim_worker_run(ms_sim *sim, ms_task_fn *fn, void *arg);
+void ms_sim_worker_wait(ms_sim *sim);
+
+/* floaters.c */
+void ms_sim_floaters_step(ms_sim *sim, const float *flow, const float *wave, float dt);
+void ms_sim_floaters_height(ms_sim *sim);
+
+#endif /* MS_SIM_INTERNAL_H */

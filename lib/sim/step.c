@@ -1,0 +1,140 @@
+/* One frame of the pipeline (see sim_internal.h): N_time for the wave
+ * interval (eq. 19), then the volume task and the surface task, at the
+ * same time (threads = 2) or one after the other (threads = 1). */
+#include <stdio.h>
+#include <string.h>
+
+#include "modesplit/surface.h"
+#include "modesplit/volume.h"
+#include "sim/sim_internal.h"
+
+/* Before the first frame: the SPH field and particles of the start (t_0),
+ * which the surface task of the first call shows. Done lazily so that an
+ * engine can fill the volume between ms_sim_create and the first step. */
+static ms_status prime(ms_sim *sim)
+{
+    if (sim->volume) {
+        double c0 = ms_now();
+        ms_status st = ms_volume_extract_height(sim->volume, sim->fnx, sim->fny, sim->hfield[0]);
+        if (st == MS_OK)
+            st = ms_sim_volume_grab(sim, 0);
+        if (st != MS_OK)
+            return st;
+        if (sim->hprev)
+            memcpy(sim->hprev, sim->hfield[0], (size_t)sim->fnx * sim->fny * sizeof(float));
+        sim->stats.extract_ms += (ms_now() - c0) * 1e3;
+    }
+    sim->primed = 1;
+    return MS_OK;
+}
+
+/* Eq. 19: N_time = dt_volume / dt_surface wave steps for a frame of dt:
+ * the fewest that keep each step within the CFL bound, or the scene's,
+ * which must keep within it. */
+static ms_status wave_steps(ms_sim *sim, float dt, int *n_time)
+{
+    ms_surface_info info;
+    ms_surface_get_info(sim->surface, &info);
+    double max_dt = info.max_dt; /* s */
+    if (sim->n_time_fixed > 0) {
+        double step = (double)dt / sim->n_time_fixed;
+        if (step > max_dt * (1 + 1e-6))
+            return ms_fail(MS_ERR_UNSTABLE,
+                           "sim: n_time %d gives wave steps of %.3g s for a frame of %g s; the "
+                           "CFL bound of the wave grid allows at most %.3g s (n_time >= %.0f)",
+                           sim->n_time_fixed, step, (double)dt, max_dt,
+                           ceil((double)dt / max_dt));
+        *n_time = sim->n_time_fixed;
+        return MS_OK;
+    }
+    double n = ceil((double)dt / max_dt * (1 - 1e-7));
+    if (!(n <= 1e7))
+        return ms_fail(MS_ERR_UNSTABLE,
+                       "sim: a frame of %g s needs %.3g wave steps of at most %.3g s; allowed: "
+                       "at most 1e7",
+                       (double)dt, n, max_dt);
+    *n_time = (int)MS_MAX(n, 1.0);
+    return MS_OK;
+}
+
+static void run_tasks(ms_sim *sim, ms_sim_task *v, ms_sim_task *s)
+{
+    int split = sim->threads == 2 && v && s;
+    if (split && sim->enqueue) {
+        void *h = sim->enqueue(ms_sim_surface_task, s, sim->user_ctx);
+        ms_sim_volume_task(v);
+        if (h)
+            sim->finish(h, sim->user_ctx);
+    } else if (split && sim->have_worker) {
+        ms_sim_worker_run(sim, ms_sim_surface_task, s);
+        ms_sim_volume_task(v);
+        ms_sim_worker_wait(sim);
+    } else {
+        if (v)
+            ms_sim_volume_task(v);
+        if (s)
+            ms_sim_surface_task(s);
+    }
+}
+
+ms_status ms_sim_step(ms_sim *sim, float frame_dt)
+{
+    ms_status st = ms_check_not_null("sim", "sim", sim);
+    if (st != MS_OK)
+        return st;
+    if (sim->failed)
+        return ms_fail(MS_ERR_STATE, "sim: a previous step failed (%s); destroy the sim",
+                       sim->fail_msg);
+    if (!isfinite(frame_dt) || !(frame_dt > 0) || frame_dt > 10)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: frame_dt %g s is outside (0, 10] s",
+                       (double)frame_dt);
+    double c0 = ms_now();
+    if (!sim->primed && (st = prime(sim)) != MS_OK)
+        return st;
+    long n = sim->calls + 1;
+    if (sim->surface && n >= 2 && (st = wave_steps(sim, sim->dt_prev, &sim->n_time_last)) != MS_OK)
+        return st;
+    sim->dt_cur = frame_dt;
+    ms_sim_task vt = {.sim = sim, .status = MS_OK}, stt = {.sim = sim, .status = MS_OK};
+    int need_s = sim->surface || sim->nfloaters;
+    run_tasks(sim, sim->volume ? &vt : NULL, need_s ? &stt : NULL);
+    sim->ndrags = 0; /* an engine's drags last one frame */
+
+    ms_sim_task *bad = vt.status != MS_OK ? &vt : stt.status != MS_OK ? &stt : NULL;
+    if (bad) {
+        sim->failed = 1;
+        sim->fail_status = bad->status;
+        snprintf(sim->fail_msg, sizeof sim->fail_msg, "%s", bad->err);
+        return ms_fail(bad->status, "%s", bad->err);
+    }
+    sim->stats.volume_ms += vt.ms_a;
+    sim->stats.extract_ms += vt.ms_b;
+    sim->stats.surface_ms += stt.ms_a;
+    sim->stats.combine_ms += stt.ms_b;
+    sim->calls = n;
+    sim->t_fields = sim->t_volume; /* t_{n-1} */
+    sim->t_volume += frame_dt;
+    sim->dt_prev = frame_dt;
+    sim->stats.frames = n;
+    sim->stats.total_ms += (ms_now() - c0) * 1e3;
+    return MS_OK;
+}
+
+ms_status ms_sim_set_tasks(ms_sim *sim, ms_enqueue_task_fn *enqueue_task,
+                           ms_finish_task_fn *finish_task, void *user_task_context)
+{
+    ms_status st = ms_check_not_null("sim", "sim", sim);
+    if (st != MS_OK)
+        return st;
+    if ((enqueue_task == NULL) != (finish_task == NULL))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: enqueue_task and finish_task must both be set or both be NULL");
+    if (enqueue_task)
+        ms_sim_worker_stop(sim);
+    sim->enqueue = enqueue_task;
+    sim->finish = finish_task;
+    sim->user_ctx = user_task_context;
+    if (!enqueue_task && !sim->have_worker && sim->threads == 2 && sim->volume && sim->surface)
+        return ms_sim_worker_start(sim);
+    return MS_OK;
+}

@@ -1,0 +1,202 @@
+/* The surface thread's task (Fig. 8, core 2) for frame m = n - 1: the
+ * scripted effects, the coupling from the volume (3.5), N_time wave steps
+ * (eq. 19), the up-sampled SPH field plus the waves (eq. 20), floaters. */
+#include <stdio.h>
+#include <string.h>
+
+#include "modesplit/surface.h"
+#include "sim/sim_internal.h"
+
+/* Obstacle mask at time t: the static footprints and the moving ones. */
+static ms_status update_mask(ms_sim *sim, double t)
+{
+    ms_grid g = sim->wave_grid;
+    float z = sim->domain_min[2] + sim->level;
+    size_t ns = (size_t)sim->snx * sim->sny;
+    memcpy(sim->mask, sim->mask_static, ns);
+    for (int i = 0; i < sim->nshapes; ++i) {
+        ms_sim_shape *sh = &sim->shapes[i];
+        if (!sh->surf || !(sh->moving || sh->api_set))
+            continue;
+        float pos[3], vel[3];
+        ms_sim_shape_pose(sh, t, pos, vel);
+        ms_status st = ms_shape_set_pose(sh->surf, pos, vel);
+        if (st == MS_OK)
+            st = ms_shape_footprint(sh->surf, &g, z, sim->mask);
+        if (st != MS_OK)
+            return st;
+    }
+    return ms_surface_set_obstacle_mask(sim->surface, sim->mask);
+}
+
+/* Effects scripted for the interval [t0, t1) of the wave field. */
+static ms_status scripted_effects(ms_sim *sim, double t0, double t1)
+{
+    const ms_scene *sc = sim->scene;
+    ms_status st = MS_OK;
+    if (!sc)
+        return MS_OK;
+    while (st == MS_OK && sim->next_drop < sc->ndrops &&
+           sc->drops[sim->drop_order[sim->next_drop]].time < t1) {
+        const ms_scene_drop *d = &sc->drops[sim->drop_order[sim->next_drop++]];
+        /* the wave grid's coordinates start at its corner, the domain's min */
+        st = ms_surface_add_drop(sim->surface, d->x - sim->domain_min[0],
+                                 d->y - sim->domain_min[1], d->radius, d->amplitude);
+    }
+    if (st == MS_OK && sc->has_boat && !sim->boat_started && t0 >= sc->boat_path.start) {
+        sim->boat_started = 1;
+        if (sc->boat_path.npoints > 1)
+            st = ms_surface_set_disturber_path(sim->surface, sim->boat_id, sc->boat_path.npoints,
+                                               sim->boat_xy, sc->boat_path.speed,
+                                               sc->boat_path.loop);
+    }
+    if (st == MS_OK && sc->has_drag && !sim->volume) {
+        /* without a volume the pointer presses a dent that it drags along */
+        int active = ms_sim_motion_active(&sc->drag_path, t0);
+        float pos[2], vel[2];
+        ms_scene_motion_eval(&sc->drag_path, t0, pos, vel);
+        pos[0] -= sim->domain_min[0];
+        pos[1] -= sim->domain_min[1];
+        if (active && !sim->drag_id) {
+            ms_disturber_desc dd = {pos[0], pos[1], vel[0], vel[1], sc->drag_radius,
+                                    sc->drag_depth};
+            st = ms_surface_add_disturber(sim->surface, &dd, &sim->drag_id);
+        } else if (active) {
+            st = ms_surface_move_disturber(sim->surface, sim->drag_id, pos[0], pos[1], vel[0],
+                                           vel[1]);
+        } else if (sim->drag_id) {
+            st = ms_surface_remove_disturber(sim->surface, sim->drag_id);
+            sim->drag_id = 0;
+        }
+    }
+    if (st == MS_OK && sim->have_moving_mask)
+        st = update_mask(sim, t0);
+    return st;
+}
+
+/* 3.5: "increasing the value of f depending on the scaled derivative of
+ * the extracted SPH field": during frame m the wave field moves with the
+ * extra vertical velocity u_m = gain * dH/dt = gain * (H_m - H_{m-1}) /
+ * dt_frame, with its mean removed (the volume already carries the water; the
+ * coupling adds none), so over the frame it is displaced by gain times the
+ * SPH field's change, whatever the frame rate, and the displacement runs off
+ * as ripples where the volume moves. The offset starts and ends as impulses
+ * (ms_surface_excite moves f^n, not f^{n-1}); frame m's start and frame
+ * m-1's end are one impulse, (u_m - u_{m-1}) times the wave step it acts
+ * over, so a frame costs one pass over the wave grid. */
+static ms_status couple_from_volume(ms_sim *sim, const float *h, float dt_frame, float dt_step)
+{
+    size_t nf = (size_t)sim->fnx * sim->fny;
+    double mean = 0;
+    for (size_t c = 0; c < nf; ++c)
+        mean += (double)h[c] - sim->hprev[c];
+    mean /= (double)nf;
+    /* the impulse's velocity is its size over the step the surface last took
+     * (the solver rescales its velocity to each new step) */
+    const float dref = sim->wave_dt_last > 0 ? sim->wave_dt_last : dt_step;
+    const float k = sim->gain_sv / dt_frame; /* 1/s */
+    float *restrict e = sim->dh, *restrict up = sim->u_prev;
+    for (size_t c = 0; c < nf; ++c) {
+        float u = k * (float)((double)h[c] - sim->hprev[c] - mean); /* m/s */
+        e[c] = (u - up[c]) * dref;                                 /* m */
+        up[c] = u;
+    }
+    ms_sim_upsample(sim, e, sim->rowtmp, sim->excite);
+    return ms_surface_excite(sim->surface, sim->excite, 1.0f);
+}
+
+/* The wave field averaged over each SPH cell (box filter; each wave cell
+ * counts in the SPH cell holding its centre), in a fixed order. */
+void ms_sim_average_waves(ms_sim *sim, const float *w, float *out)
+{
+    const int snx = sim->snx, fnx = sim->fnx;
+    size_t nf = (size_t)fnx * sim->fny;
+    float *restrict acc = sim->wave_rowsum;
+    memset(acc, 0, nf * sizeof *acc);
+    memset(out, 0, nf * sizeof *out); /* SPH cells no wave cell centre falls in */
+    int count_x[4096] = {0}, count_y = 0, row = 0;
+    for (int i = 0; i < snx; ++i)
+        ++count_x[sim->wave_colmap[i]];
+    for (int j = 0; j < sim->sny; ++j) {
+        int r = (int)(((2L * j + 1) * sim->fny) / (2L * sim->sny));
+        if (r != row) {
+            for (int c = 0; c < fnx; ++c)
+                out[(size_t)row * fnx + c] = count_y ? acc[(size_t)row * fnx + c] /
+                                                           (float)(count_y * count_x[c])
+                                                     : 0.0f;
+            row = r;
+            count_y = 0;
+        }
+        ++count_y;
+        const float *restrict src = w + (size_t)j * snx;
+        float *restrict dst = acc + (size_t)r * fnx;
+        for (int i = 0; i < snx; ++i)
+            dst[sim->wave_colmap[i]] += src[i];
+    }
+    for (int c = 0; c < fnx; ++c)
+        out[(size_t)row * fnx + c] =
+            count_y ? acc[(size_t)row * fnx + c] / (float)(count_y * count_x[c]) : 0.0f;
+}
+
+void ms_sim_surface_task(void *arg)
+{
+    ms_sim_task *task = arg;
+    ms_sim *sim = task->sim;
+    long n = sim->calls + 1, m = n - 1;
+    int slot = (int)(m % 2);
+    const float *h = sim->volume ? sim->hfield[slot] : NULL; /* H_m */
+    double c0 = ms_now();
+    ms_status st = MS_OK;
+    if (!sim->surface) {
+        /* a volume-only sim: the SPH field is the surface; only floaters */
+        if (m >= 1)
+            ms_sim_floaters_step(sim, sim->flow[slot], NULL, sim->dt_prev);
+        ms_sim_floaters_height(sim);
+        task->ms_a = 0;
+        task->ms_b = (ms_now() - c0) * 1e3;
+        task->status = MS_OK;
+        return;
+    }
+    if (m >= 1) {
+        double t1 = sim->t_fields + sim->dt_prev; /* t_m */
+        float dt = sim->dt_prev;
+        int n_time = sim->n_time_last;
+        const float dt_step = dt / (float)n_time;
+        st = scripted_effects(sim, sim->t_fields, t1);
+        if (st == MS_OK && h && sim->hprev)
+            st = couple_from_volume(sim, h, dt, dt_step);
+        for (int k = 0; st == MS_OK && k < n_time; ++k)
+            st = ms_surface_step(sim->surface, dt_step);
+        sim->wave_dt_last = dt_step;
+    }
+    double c1 = ms_now();
+    int nx, ny;
+    const float *w = st == MS_OK ? ms_surface_height(sim->surface, &nx, &ny) : NULL;
+    if (w) {
+        if (h)
+            ms_sim_upsample_add(sim, h, w, 0.0f, sim->rowtmp, sim->combined);
+        else {
+            size_t ns = (size_t)nx * ny;
+            float *restrict out = sim->combined;
+            const float lvl = sim->level;
+#pragma omp simd
+            for (size_t c = 0; c < ns; ++c)
+                out[c] = w[c] + lvl;
+        }
+        if (sim->wave_snap[n % 2])
+            ms_sim_average_waves(sim, w, sim->wave_snap[n % 2]);
+        if (sim->hprev)
+            memcpy(sim->hprev, h, (size_t)sim->fnx * sim->fny * sizeof *h);
+        if (sim->nfloaters) {
+            if (m >= 1)
+                ms_sim_floaters_step(sim, h ? sim->flow[slot] : NULL, w, sim->dt_prev);
+            ms_sim_floaters_height(sim);
+        }
+    }
+    double c2 = ms_now();
+    task->ms_a = (c1 - c0) * 1e3;
+    task->ms_b = (c2 - c1) * 1e3;
+    task->status = st;
+    if (st != MS_OK)
+        snprintf(task->err, sizeof task->err, "%s", ms_last_error());
+}

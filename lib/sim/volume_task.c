@@ -1,0 +1,192 @@
+/* The volume thread's task (Fig. 8, core 1): interaction, the coupling
+ * from the surface (3.5), the SPH step (eqs. 9-15), the height field
+ * (eqs. 16-18) and the copies the surface thread and the public views read
+ * in the next call. */
+#include <stdio.h>
+#include <string.h>
+
+#include "modesplit/volume.h"
+#include "sim/sim_internal.h"
+
+/* Pose of a scene shape at time t (s). */
+void ms_sim_shape_pose(const ms_sim_shape *sh, double t, float pos[3], float vel[3])
+{
+    if (sh->api_set) {
+        memcpy(pos, sh->api_pos, 3 * sizeof *pos);
+        memcpy(vel, sh->api_vel, 3 * sizeof *vel);
+    } else if (sh->spec->path.npoints > 0) {
+        ms_scene_motion_eval(&sh->spec->path, t, pos, vel);
+    } else {
+        for (int k = 0; k < 3; ++k) {
+            pos[k] = (float)(sh->spec->position[k] + sh->spec->velocity[k] * t);
+            vel[k] = sh->spec->velocity[k];
+        }
+    }
+}
+
+/* Is a scripted pointer pressed at time t: after its start, and while it
+ * moves (a path that does not loop lets go at its end). */
+int ms_sim_motion_active(const ms_scene_motion *p, double t)
+{
+    if (p->npoints <= 0 || t < p->start)
+        return 0;
+    if (p->loop || p->npoints == 1)
+        return 1;
+    double len = 0;
+    for (int s = 0; s + 1 < p->npoints; ++s) {
+        double d2 = 0;
+        for (int k = 0; k < p->dim; ++k) {
+            double d = (double)p->points[(s + 1) * p->dim + k] - p->points[s * p->dim + k];
+            d2 += d * d;
+        }
+        len += sqrt(d2);
+    }
+    return (t - p->start) * p->speed < len;
+}
+
+/* Height (m above domain_min z) of the field h at world (x, y), nearest cell. */
+static float field_at(const ms_sim *sim, const float *h, float x, float y)
+{
+    float fx = (x - sim->domain_min[0]) / (sim->domain_max[0] - sim->domain_min[0]) * sim->fnx;
+    float fy = (y - sim->domain_min[1]) / (sim->domain_max[1] - sim->domain_min[1]) * sim->fny;
+    int i = (int)MS_CLAMP(fx, 0.0f, (float)(sim->fnx - 1));
+    int j = (int)MS_CLAMP(fy, 0.0f, (float)(sim->fny - 1));
+    return h[(size_t)j * sim->fnx + i];
+}
+
+static ms_status apply_drag(ms_sim *sim, const float *h, const float pos[2], const float vel[2],
+                            float radius, float depth, float strength)
+{
+    float surf = sim->domain_min[2] + field_at(sim, h, pos[0], pos[1]);
+    float centre[3] = {pos[0], pos[1], MS_MAX(surf - depth, sim->domain_min[2])};
+    float v[3] = {vel[0], vel[1], 0};
+    return ms_volume_drag(sim->volume, centre, radius, v, strength);
+}
+
+/* Copy the particles (stable order) into slot `slot`, structure of arrays;
+ * with floaters, the mean horizontal velocity of the particles within two
+ * spacings of the surface, per field cell. */
+ms_status ms_sim_volume_grab(ms_sim *sim, int slot)
+{
+    int n = ms_volume_count(sim->volume);
+    if (n > sim->pcap[slot]) {
+        int cap = n + n / 8 + 64;
+        for (int a = 0; a < 3; ++a) {
+            ms_free(sim->ppos[slot][a]);
+            ms_free(sim->pvel[slot][a]);
+            sim->ppos[slot][a] = ms_alloc_array((size_t)cap, sizeof(float));
+            sim->pvel[slot][a] = ms_alloc_array((size_t)cap, sizeof(float));
+            if (!sim->ppos[slot][a] || !sim->pvel[slot][a]) {
+                sim->pcap[slot] = 0;
+                return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory copying %d particles", n);
+            }
+        }
+        sim->pcap[slot] = cap;
+    }
+    if (n > sim->paos_cap) {
+        int cap = n + n / 8 + 64;
+        ms_free(sim->paos);
+        sim->paos = ms_alloc_array((size_t)cap * 6, sizeof(float));
+        if (!sim->paos) {
+            sim->paos_cap = 0;
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory copying %d particles", n);
+        }
+        sim->paos_cap = cap;
+    }
+    sim->pcount[slot] = n;
+    if (n == 0)
+        return MS_OK;
+    float *pos = sim->paos, *vel = sim->paos + (size_t)3 * sim->paos_cap;
+    ms_status st = ms_volume_get_particles(sim->volume, pos, vel);
+    if (st != MS_OK)
+        return st;
+    for (int a = 0; a < 3; ++a) {
+        float *restrict px = sim->ppos[slot][a], *restrict vx = sim->pvel[slot][a];
+        for (int i = 0; i < n; ++i) {
+            px[i] = pos[3 * i + a];
+            vx[i] = vel[3 * i + a];
+        }
+    }
+    if (sim->flow[slot]) {
+        /* surface flow for the floaters: the mean horizontal velocity of
+         * the particles within two spacings of the surface, per field cell
+         * (sums in the stable particle order: deterministic) */
+        size_t nf = (size_t)sim->fnx * sim->fny;
+        float *restrict flow = sim->flow[slot], *restrict cnt = sim->flow_count;
+        const float *h = sim->hfield[slot];
+        memset(flow, 0, 2 * nf * sizeof *flow);
+        memset(cnt, 0, nf * sizeof *cnt);
+        float sx = sim->fnx / (sim->domain_max[0] - sim->domain_min[0]);
+        float sy = sim->fny / (sim->domain_max[1] - sim->domain_min[1]);
+        float band = 2 * sim->spacing; /* m */
+        for (int i = 0; i < n; ++i) {
+            int ci = (int)MS_CLAMP((sim->ppos[slot][0][i] - sim->domain_min[0]) * sx, 0.0f,
+                                   (float)(sim->fnx - 1));
+            int cj = (int)MS_CLAMP((sim->ppos[slot][1][i] - sim->domain_min[1]) * sy, 0.0f,
+                                   (float)(sim->fny - 1));
+            size_t c = (size_t)cj * sim->fnx + ci;
+            if (sim->ppos[slot][2][i] - sim->domain_min[2] < h[c] - band)
+                continue;
+            flow[2 * c] += sim->pvel[slot][0][i];
+            flow[2 * c + 1] += sim->pvel[slot][1][i];
+            cnt[c] += 1.0f;
+        }
+        for (size_t c = 0; c < nf; ++c)
+            if (cnt[c] > 0) {
+                flow[2 * c] /= cnt[c];
+                flow[2 * c + 1] /= cnt[c];
+            }
+    }
+    return MS_OK;
+}
+
+void ms_sim_volume_task(void *arg)
+{
+    ms_sim_task *task = arg;
+    ms_sim *sim = task->sim;
+    long n = sim->calls + 1;
+    int slot = (int)(n % 2), prev = 1 - slot;
+    double t0 = sim->t_volume; /* s, start of this volume step */
+    double c0 = ms_now();
+    ms_status st = MS_OK;
+
+    /* interaction at t0: moved shapes, the pointer, the engine's drags */
+    for (int i = 0; st == MS_OK && i < sim->nshapes; ++i) {
+        ms_sim_shape *sh = &sim->shapes[i];
+        if (!sh->vol || !(sh->moving || sh->api_set))
+            continue;
+        float pos[3], vel[3];
+        ms_sim_shape_pose(sh, t0, pos, vel);
+        st = ms_shape_set_pose(sh->vol, pos, vel);
+    }
+    const ms_scene *sc = sim->scene;
+    if (st == MS_OK && sc && sc->has_drag && ms_sim_motion_active(&sc->drag_path, t0)) {
+        float pos[2], vel[2];
+        ms_scene_motion_eval(&sc->drag_path, t0, pos, vel);
+        st = apply_drag(sim, sim->hfield[prev], pos, vel, sc->drag_radius, sc->drag_depth,
+                        sc->drag_strength);
+    }
+    for (int i = 0; st == MS_OK && i < sim->ndrags; ++i) {
+        const ms_sim_drag_req *r = &sim->drags[i];
+        st = apply_drag(sim, sim->hfield[prev], r->pos, r->vel, r->radius, r->depth, r->strength);
+    }
+    /* 3.5: particles near the surface follow high waves (W_{n-2} averaged
+     * over each SPH cell, handed over by the surface thread in the previous
+     * call: the particles resolve nothing finer) */
+    if (st == MS_OK && sim->wave_snap[prev] && n >= 2)
+        st = ms_volume_adapt_to_waves(sim->volume, sim->wave_snap[prev], &sim->field_grid,
+                                      sim->gain_vs);
+    if (st == MS_OK)
+        st = ms_volume_step(sim->volume, sim->dt_cur);
+    double c1 = ms_now();
+    if (st == MS_OK)
+        st = ms_volume_extract_height(sim->volume, sim->fnx, sim->fny, sim->hfield[slot]);
+    if (st == MS_OK)
+        st = ms_sim_volume_grab(sim, slot);
+    double c2 = ms_now();
+    task->ms_a = (c1 - c0) * 1e3;
+    task->ms_b = (c2 - c1) * 1e3;
+    task->status = st;
+    if (st != MS_OK)
+        snprintf(task->err, sizeof task->err, "%s", ms_last_error());
+}

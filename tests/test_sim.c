@@ -1,0 +1,769 @@
+/* The coupler: only what the scene calls for is simulated, eq. 19 and
+ * eq. 20 hold, the coupling adds no water and stays bounded, the effects
+ * act, and every misuse is refused with a sentence. (1 and 2 threads
+ * giving the same bytes: test_determinism.c.) */
+#include <check.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/internal.h"
+#include "modesplit/modesplit.h"
+#include "sim/sim_internal.h"
+#include "support.h"
+
+static ms_scene *scene(const char *text)
+{
+    ms_scene *sc = NULL;
+    ms_status st = ms_scene_parse(text, strlen(text), &sc);
+    ck_assert_msg(st == MS_OK, "%s", ms_last_error());
+    return sc;
+}
+
+static ms_sim *sim_of(const ms_scene *sc, int threads)
+{
+    ms_sim *sim = NULL;
+    ms_status st = ms_sim_create_from_scene(sc, threads, &sim);
+    ck_assert_msg(st == MS_OK, "%s", ms_last_error());
+    return sim;
+}
+
+static void steps(ms_sim *sim, int n, float dt)
+{
+    for (int i = 0; i < n; ++i) {
+        ms_status st = ms_sim_step(sim, dt);
+        ck_assert_msg(st == MS_OK, "step %d: %s", i, ms_last_error());
+    }
+}
+
+/* A small pool: 10 x 10 x 3 = 300 particles, a 16 x 16 SPH field, a
+ * 64 x 64 wave grid. */
+#define POOL_DOMAIN "\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]}"
+#define POOL_VOLUME                                                                           \
+    "\"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.4, " \
+    "0.12]}], \"field\": [16, 16]}"
+#define POOL_SURFACE "\"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.9}"
+
+/* Does this build's volume solver take shape colliders? */
+static int colliders_supported(void)
+{
+    ms_volume *v;
+    ms_shape *sh;
+    ms_volume_desc d = ms_volume_desc_default();
+    ck_assert_int_eq(ms_volume_create(&d, &v), MS_OK);
+    ck_assert_int_eq(ms_shape_create("sphere", NULL, &sh), MS_OK);
+    ms_status st = ms_volume_add_collider(v, sh);
+    ck_assert_msg(st == MS_OK || st == MS_ERR_UNSUPPORTED, "%s", ms_last_error());
+    ms_volume_destroy(v);
+    ms_shape_destroy(sh);
+    return st == MS_OK;
+}
+
+/* ---- only what the scene calls for --------------------------------------- */
+
+START_TEST(surface_only_scene_holds_no_particles_and_runs_no_sph)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_SURFACE
+                         ", \"effects\": {\"drops\": [{\"at\": [0.2, 0.2]}]}}");
+    ms_sim *sim = sim_of(sc, 2);
+    steps(sim, 10, 1.0f / 60);
+    ms_stats s;
+    ms_sim_stats(sim, &s);
+    ck_assert_int_eq(s.volume_steps, 0);
+    ck_assert_uint_eq(s.volume_bytes, 0);
+    ck_assert(s.volume_ms == 0 && s.extract_ms == 0);
+    ck_assert_int_gt(s.surface_steps, 0);
+    ck_assert_ptr_null(ms_sim_volume(sim));
+    int n = -1;
+    const float *pos[3];
+    ck_assert_int_eq(ms_sim_particles(sim, &n, pos, NULL), MS_OK);
+    ck_assert_int_eq(n, 0);
+    ck_assert_ptr_null(pos[0]);
+    int nx, ny, vx = -1;
+    ck_assert_ptr_null(ms_sim_volume_height(sim, &vx, NULL));
+    ck_assert_int_eq(vx, 0);
+    /* the combined field is the still level plus the waves */
+    const float *c = ms_sim_height(sim, &nx, &ny);
+    const float *w = ms_sim_surface_height(sim, NULL, NULL);
+    ck_assert_int_eq(nx, 64);
+    double maxw = 0;
+    for (int i = 0; i < nx * ny; ++i) {
+        ck_assert_float_eq(c[i], w[i] + 0.15f);
+        maxw = fmax(maxw, fabs(w[i]));
+    }
+    ck_assert(maxw > 1e-4); /* the drop made waves */
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+START_TEST(volume_only_scene_is_the_sph_field_alone)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME "}");
+    ms_sim *sim = sim_of(sc, 2);
+    steps(sim, 5, 1.0f / 60);
+    ms_stats s;
+    ms_sim_stats(sim, &s);
+    ck_assert_int_eq(s.surface_steps, 0);
+    ck_assert_uint_eq(s.surface_bytes, 0);
+    ck_assert_uint_eq(s.effects_bytes, 0);
+    ck_assert_int_gt(s.volume_steps, 0);
+    ck_assert_ptr_null(ms_sim_surface(sim));
+    int nx, ny, vnx, vny;
+    const float *c = ms_sim_height(sim, &nx, &ny);
+    const float *h = ms_sim_volume_height(sim, &vnx, &vny);
+    ck_assert_ptr_eq(c, h);
+    ck_assert_int_eq(nx, 16);
+    ck_assert_int_eq(vny, 16);
+    /* 0.12 m of water: the extracted surface is near it */
+    double mean = 0;
+    for (int i = 0; i < nx * ny; ++i)
+        mean += h[i];
+    mean /= nx * ny;
+    ck_assert_msg(mean > 0.08 && mean < 0.2, "mean height %g m", mean);
+    ms_grid g;
+    ck_assert_int_eq(ms_sim_field_grid(sim, MS_FIELD_COMBINED, &g), MS_OK);
+    ck_assert_int_eq(g.nx, 16);
+    ck_assert_float_eq_tol(g.dx, 0.025f, 1e-7f);
+    MS_ASSERT_REFUSED(ms_sim_field_grid(sim, MS_FIELD_SURFACE, &g), MS_ERR_STATE, "no surface");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* threads is the sim's whole budget: 1 means one thread, also inside the
+ * SPH step; with 2 a volume-only sim gives the volume solver both. */
+START_TEST(threads_is_the_whole_budget)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", \"volume\": {\"spacing\": 0.04, \"threads\": 4}}");
+    ms_scene *both = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
+    ms_sim *one = sim_of(sc, 1), *two = sim_of(sc, 2), *split = sim_of(both, 2);
+    ms_volume_info vi;
+    ms_volume_get_info(ms_sim_volume(one), &vi);
+    ck_assert_int_eq(vi.threads, 1);
+    ms_volume_get_info(ms_sim_volume(two), &vi);
+    ck_assert_int_eq(vi.threads, 4);
+    ms_volume_get_info(ms_sim_volume(split), &vi);
+    ck_assert_int_eq(vi.threads, 1); /* the surface thread has the second core */
+    ms_sim_info info;
+    ms_sim_get_info(split, &info);
+    ck_assert_int_eq(info.threads, 2);
+    ck_assert_int_eq(info.has_volume + info.has_surface, 2);
+    ck_assert_int_eq(info.particles, 300);
+    ms_sim_destroy(one);
+    ms_sim_destroy(two);
+    ms_sim_destroy(split);
+    ms_scene_destroy(sc);
+    ms_scene_destroy(both);
+}
+END_TEST
+
+/* An effect the scene does not name costs no step, no random number and no
+ * byte; naming it costs exactly its buffers. */
+START_TEST(absent_effects_cost_nothing)
+{
+    ms_scene *plain = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
+    ms_scene *fx = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE ","
+                         " \"coupling\": {\"surface_from_volume\": 0.1, \"volume_from_surface\": 0.3},"
+                         " \"effects\": {\"rain\": {\"rate\": 100}, \"floaters\": {\"count\": 7}}}");
+    ms_sim *a = sim_of(plain, 1), *b = sim_of(fx, 1);
+    steps(a, 6, 1.0f / 60);
+    steps(b, 6, 1.0f / 60);
+    ms_stats sa, sb;
+    ms_sim_stats(a, &sa);
+    ms_sim_stats(b, &sb);
+    ck_assert_int_eq(sa.drops, 0); /* no rain: no drops, no random numbers drawn */
+    ck_assert_int_gt(sb.drops, 0);
+    ck_assert_uint_eq(sa.effects_bytes, 0);
+    ck_assert_ptr_null(ms_sim_floaters(a, NULL));
+    /* floaters: 7 x (x, y, z, vx, vy) and the surface flow (2 slots of 2
+     * floats per field cell, one count per cell) */
+    ck_assert_uint_eq(sb.effects_bytes, 7 * 5 * sizeof(float) + 5 * 16 * 16 * sizeof(float));
+    /* coupling: H_{m-1}, the impulse and the velocity offset (field) and
+     * the up-sampled impulse (waves) one way; the other way the wave field
+     * averaged per SPH cell (a sum and a column map on the surface side,
+     * two copies handed to the volume) */
+    ck_assert_uint_eq(sb.surface_bytes - sa.surface_bytes,
+                      (4 * 16 * 16 + 64 * 64) * sizeof(float) + 64 * sizeof(int));
+    ck_assert_uint_ge(sb.volume_bytes - sa.volume_bytes, 2 * 16 * 16 * sizeof(float));
+    int n;
+    ck_assert_ptr_nonnull(ms_sim_floaters(b, &n));
+    ck_assert_int_eq(n, 7);
+    ms_sim_destroy(a);
+    ms_sim_destroy(b);
+    ms_scene_destroy(plain);
+    ms_scene_destroy(fx);
+}
+END_TEST
+
+/* ---- eq. 19 and eq. 20 ------------------------------------------------------- */
+
+START_TEST(n_time_is_the_fewest_stable_wave_steps)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_SURFACE "}");
+    ms_sim *sim = sim_of(sc, 1);
+    ms_surface_info info;
+    ms_surface_get_info(ms_sim_surface(sim), &info);
+    const float dt = 1.0f / 30;
+    int expect = (int)ceil(dt / info.max_dt);
+    ck_assert_int_ge(expect, 2);
+    steps(sim, 3, dt); /* the first frame shows the start: two wave intervals */
+    ms_stats s;
+    ms_sim_stats(sim, &s);
+    ck_assert_int_eq(s.n_time, expect);
+    ck_assert_int_eq(s.surface_steps, 2 * expect); /* one leapfrog step each */
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+START_TEST(a_given_n_time_must_keep_within_the_cfl_bound)
+{
+    ms_scene *ok = scene("{" POOL_DOMAIN ", " POOL_SURFACE ", \"coupling\": {\"n_time\": 9}}");
+    ms_sim *sim = sim_of(ok, 1);
+    steps(sim, 3, 1.0f / 60);
+    ms_stats s;
+    ms_sim_stats(sim, &s);
+    ck_assert_int_eq(s.n_time, 9);
+    ck_assert_int_eq(s.surface_steps, 18);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(ok);
+    ms_scene *bad = scene("{" POOL_DOMAIN ", " POOL_SURFACE ", \"coupling\": {\"n_time\": 1}}");
+    sim = sim_of(bad, 1);
+    steps(sim, 1, 1.0f / 60);
+    MS_ASSERT_REFUSED(ms_sim_step(sim, 1.0f / 60), MS_ERR_UNSTABLE, "n_time 1");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(bad);
+}
+END_TEST
+
+/* Bilinear up-sampling reproduces a linear field exactly between the outer
+ * SPH cell centres, for integer and fractional N_surf. */
+START_TEST(upsampling_is_exact_for_linear_fields)
+{
+    static const int sizes[][4] = {{8, 6, 32, 24}, {10, 10, 64, 64}, {7, 5, 7, 5}};
+    for (size_t t = 0; t < sizeof sizes / sizeof *sizes; ++t) {
+        ms_sim sim;
+        memset(&sim, 0, sizeof sim);
+        sim.fnx = sizes[t][0];
+        sim.fny = sizes[t][1];
+        sim.snx = sizes[t][2];
+        sim.sny = sizes[t][3];
+        ck_assert_int_eq(ms_sim_upsample_init(&sim), MS_OK);
+        float *f = malloc(sizeof *f * sim.fnx * sim.fny);
+        float *out = malloc(sizeof *out * sim.snx * sim.sny);
+        /* f(x, y) = 0.3 + 0.2 x - 0.1 y on the unit square, at cell centres */
+        for (int j = 0; j < sim.fny; ++j)
+            for (int i = 0; i < sim.fnx; ++i)
+                f[j * sim.fnx + i] = 0.3f + 0.2f * (i + 0.5f) / sim.fnx - 0.1f * (j + 0.5f) / sim.fny;
+        ms_sim_upsample(&sim, f, sim.rowtmp, out);
+        for (int j = 0; j < sim.sny; ++j)
+            for (int i = 0; i < sim.snx; ++i) {
+                float x = (i + 0.5f) / sim.snx, y = (j + 0.5f) / sim.sny;
+                /* outside the outer SPH cell centres the edge value is held */
+                float xc = MS_CLAMP(x, 0.5f / sim.fnx, 1 - 0.5f / sim.fnx);
+                float yc = MS_CLAMP(y, 0.5f / sim.fny, 1 - 0.5f / sim.fny);
+                ck_assert_float_eq_tol(out[j * sim.snx + i], 0.3f + 0.2f * xc - 0.1f * yc, 2e-6f);
+            }
+        free(f);
+        free(out);
+        ms_free(sim.ix0);
+        ms_free(sim.ix1);
+        ms_free(sim.iy0);
+        ms_free(sim.iy1);
+        ms_free(sim.wx);
+        ms_free(sim.wy);
+        ms_free(sim.rowtmp);
+    }
+}
+END_TEST
+
+/* The volume sees the waves averaged over each SPH cell: a linear field
+ * averages to its value at the cell centre. */
+START_TEST(waves_are_averaged_per_sph_cell)
+{
+    ms_sim sim;
+    memset(&sim, 0, sizeof sim);
+    sim.fnx = 4;
+    sim.fny = 3;
+    sim.snx = 16;
+    sim.sny = 12;
+    int colmap[16];
+    float rowsum[12], out[12], w[16 * 12];
+    sim.wave_colmap = colmap;
+    sim.wave_rowsum = rowsum;
+    for (int i = 0; i < 16; ++i)
+        colmap[i] = ((2 * i + 1) * 4) / 32;
+    for (int j = 0; j < 12; ++j)
+        for (int i = 0; i < 16; ++i)
+            w[j * 16 + i] = 0.01f * (i + 0.5f) / 16 - 0.02f * (j + 0.5f) / 12;
+    ms_sim_average_waves(&sim, w, out);
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 4; ++i)
+            ck_assert_float_eq_tol(out[j * 4 + i], 0.01f * (i + 0.5f) / 4 - 0.02f * (j + 0.5f) / 3,
+                                   1e-8f);
+}
+END_TEST
+
+/* Eq. 20: combined = up-sampled SPH field + wave field, bit for bit. */
+START_TEST(combined_is_upsampled_volume_plus_waves)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE
+                         ", \"effects\": {\"drops\": [{\"at\": [0.2, 0.2], \"radius\": 0.03}]}}");
+    ms_sim *sim = sim_of(sc, 2);
+    steps(sim, 8, 1.0f / 60);
+    int nx, ny, fnx, fny;
+    const float *c = ms_sim_height(sim, &nx, &ny);
+    const float *w = ms_sim_surface_height(sim, NULL, NULL);
+    const float *h = ms_sim_volume_height(sim, &fnx, &fny);
+    float *up = malloc(sizeof *up * nx * ny), *row = malloc(sizeof *row * fny * nx);
+    ms_sim_upsample(sim, h, row, up);
+    double maxw = 0;
+    for (int i = 0; i < nx * ny; ++i) {
+        ck_assert_float_eq(c[i], up[i] + w[i]);
+        maxw = fmax(maxw, fabs(w[i]));
+    }
+    ck_assert(maxw > 1e-4);
+    ms_grid g;
+    ck_assert_int_eq(ms_sim_field_grid(sim, MS_FIELD_COMBINED, &g), MS_OK);
+    ck_assert_int_eq(g.nx, 64);
+    ck_assert_float_eq_tol(g.dx, 0.4f / 64, 1e-8f);
+    ms_sim_info info;
+    ms_sim_get_info(sim, &info);
+    ck_assert_float_eq(info.n_surf_x, 4.0f); /* eq. 20: 64 / 16 */
+    free(up);
+    free(row);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* The pipeline of Fig. 8: the n-th step publishes frame n - 1. */
+START_TEST(fields_lag_one_frame)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
+    ms_sim *sim = sim_of(sc, 1);
+    ck_assert_ptr_null(ms_sim_height(sim, NULL, NULL)); /* nothing finished yet */
+    steps(sim, 1, 0.02f);
+    ck_assert_int_eq(ms_sim_frame(sim), 1);
+    ck_assert_double_eq(ms_sim_time(sim), 0);
+    /* frame 0 is the start: flat water, no waves */
+    const float *w = ms_sim_surface_height(sim, NULL, NULL);
+    for (int i = 0; i < 64 * 64; ++i)
+        ck_assert_float_eq(w[i], 0);
+    steps(sim, 2, 0.02f);
+    ck_assert_int_eq(ms_sim_frame(sim), 3);
+    ck_assert_double_eq_tol(ms_sim_time(sim), 0.04, 1e-9);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* ---- coupling (3.5) -------------------------------------------------------- */
+
+static double wave_sum(const ms_sim *sim, double *maxabs)
+{
+    int nx, ny;
+    const float *w = ms_sim_surface_height(sim, &nx, &ny);
+    double s = 0, m = 0;
+    for (int i = 0; i < nx * ny; ++i) {
+        s += w[i];
+        m = fmax(m, fabs(w[i]));
+    }
+    *maxabs = m;
+    return s;
+}
+
+/* A sloshing volume makes waves through the coupling, but adds no water
+ * to the wave field (its mean stays 0), and gain 0 is off. */
+START_TEST(volume_makes_waves_without_adding_water)
+{
+    const char *fmt = "{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]},"
+                      " \"volume\": {\"spacing\": 0.04, \"field\": [16, 16], \"fill\": "
+                      "[{\"min\": [0, 0, 0], \"max\": [0.2, 0.4, 0.2]}]}, " POOL_SURFACE ","
+                      " \"coupling\": {\"surface_from_volume\": %g}}";
+    char text[1024];
+    snprintf(text, sizeof text, fmt, 0.5);
+    ms_scene *on = scene(text);
+    snprintf(text, sizeof text, fmt, 0.0);
+    ms_scene *off = scene(text);
+    ms_sim *a = sim_of(on, 1), *b = sim_of(off, 1);
+    for (int f = 0; f < 30; ++f) {
+        steps(a, 1, 1.0f / 60);
+        steps(b, 1, 1.0f / 60);
+        double ma, mb;
+        double sa = wave_sum(a, &ma);
+        wave_sum(b, &mb);
+        ck_assert_msg(fabs(sa) / (64 * 64) < 1e-6 * fmax(ma, 1e-3), "mean %g, max %g", sa / 4096,
+                      ma);
+        ck_assert(mb == 0); /* off: the waves stay flat */
+    }
+    double ma;
+    wave_sum(a, &ma);
+    ck_assert_msg(ma > 1e-4, "the dam break made no waves (max %g m)", ma);
+    ms_sim_destroy(a);
+    ms_sim_destroy(b);
+    ms_scene_destroy(on);
+    ms_scene_destroy(off);
+}
+END_TEST
+
+/* Both directions on, after a dam break: the waves stay finite, low and
+ * do not grow (no feedback loop between the two couplings). */
+START_TEST(two_way_coupling_stays_bounded)
+{
+    ms_scene *sc = scene("{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]},"
+                         " \"volume\": {\"spacing\": 0.04, \"field\": [16, 16], \"fill\": "
+                         "[{\"min\": [0, 0, 0], \"max\": [0.2, 0.4, 0.2]}]},"
+                         " \"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.5},"
+                         " \"coupling\": {\"surface_from_volume\": 0.2, \"volume_from_surface\": 1}}");
+    ms_sim *sim = sim_of(sc, 2);
+    double peak[3] = {0, 0, 0}; /* max |wave| in frames 0-99, 100-199, 200-299 */
+    for (int f = 0; f < 300; ++f) {
+        steps(sim, 1, 1.0f / 60);
+        double m;
+        wave_sum(sim, &m);
+        /* finite and below the domain's height */
+        ck_assert_msg(isfinite(m) && m < 0.3, "frame %d: max |wave| %g m", f, m);
+        peak[f / 100] = fmax(peak[f / 100], m);
+        const float *h = ms_sim_volume_height(sim, NULL, NULL);
+        for (int i = 0; i < 16 * 16; ++i)
+            ck_assert(isfinite(h[i]) && h[i] >= 0 && h[i] <= 0.3f + 1e-6f);
+    }
+    /* no feedback loop between the two couplings: a loop would grow
+     * geometrically; the damped, driven waves stay at their level */
+    ck_assert_msg(peak[0] > 1e-4 && peak[2] < 2 * peak[1] && peak[1] < 2 * peak[0],
+                  "max |wave| %g m, %g m, %g m", peak[0], peak[1], peak[2]);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* ---- effects ---------------------------------------------------------------- */
+
+static double mean_vx(const ms_sim *sim)
+{
+    int n;
+    const float *pos[3], *vel[3];
+    ck_assert_int_eq(ms_sim_particles(sim, &n, pos, vel), MS_OK);
+    ck_assert_int_gt(n, 0);
+    double s = 0;
+    for (int i = 0; i < n; ++i)
+        s += vel[0][i];
+    return s / n;
+}
+
+/* Fig. 1: dragging the water moves it along, from the scene and by API. */
+START_TEST(dragging_moves_the_water)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME ","
+                         " \"effects\": {\"drag\": {\"path\": {\"points\": [[0.05, 0.2], [0.35, 0.2]],"
+                         " \"speed\": 0.5}, \"radius\": 0.1, \"strength\": 10}}}");
+    ms_scene *still = scene("{" POOL_DOMAIN ", " POOL_VOLUME "}");
+    ms_sim *a = sim_of(sc, 1), *b = sim_of(still, 1), *c = sim_of(still, 1);
+    for (int f = 0; f < 20; ++f) {
+        steps(a, 1, 1.0f / 60);
+        steps(b, 1, 1.0f / 60);
+        const float p[2] = {0.05f + 0.5f * f / 60.0f, 0.2f}, v[2] = {0.5f, 0};
+        ck_assert_int_eq(ms_sim_drag(c, p, v, 0.1f, 0.05f, 10), MS_OK);
+        steps(c, 1, 1.0f / 60);
+    }
+    double va = mean_vx(a), vb = mean_vx(b), vc = mean_vx(c);
+    /* the pointer moves along +x at 0.5 m/s: the water follows it, the
+     * still pool does not move */
+    ck_assert_msg(va > 1e-3 && vc > 1e-3 && fabs(vb) < 0.1 * fmin(va, vc),
+                  "mean vx: dragged %g, by API %g, still %g m/s", va, vc, vb);
+    ms_sim_destroy(a);
+    ms_sim_destroy(b);
+    ms_sim_destroy(c);
+    ms_scene_destroy(sc);
+    ms_scene_destroy(still);
+}
+END_TEST
+
+/* A moving obstacle stirs the water and cuts its footprint out of the
+ * wave grid along its path; moved by API it follows the engine. */
+START_TEST(moving_obstacle_stirs_water_and_blocks_waves)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE ","
+                         " \"obstacles\": [{\"shape\": \"sphere\", \"params\": {\"radius\": 0.06},"
+                         "  \"path\": {\"points\": [[0.08, 0.2, 0.1], [0.32, 0.2, 0.1]], \"speed\": 0.4}}],"
+                         " \"effects\": {\"rain\": {\"rate\": 400, \"amplitude\": 0.003}}}");
+    ms_scene *still = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
+    if (!colliders_supported()) {
+        /* a volume solver without shape colliders refuses the scene, with
+         * its reason, rather than run it without them */
+        ms_sim *none = NULL;
+        MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 2, &none), MS_ERR_UNSUPPORTED,
+                          "shape colliders");
+        ck_assert_ptr_null(none);
+        ms_scene_destroy(still);
+        ms_scene_destroy(sc);
+        return;
+    }
+    ms_sim *sim = sim_of(sc, 2), *ref = sim_of(still, 2);
+    steps(sim, 20, 1.0f / 60);
+    steps(ref, 20, 1.0f / 60);
+    double ke = ms_volume_kinetic_energy(ms_sim_volume(sim));
+    double ke_still = ms_volume_kinetic_energy(ms_sim_volume(ref));
+    ck_assert_msg(ke > 10 * ke_still + 1e-6, "kinetic energy %g J, still pool %g J", ke, ke_still);
+    ms_sim_destroy(ref);
+    ms_scene_destroy(still);
+    /* the published frame is t = 19/60 s: the sphere's centre at x = 0.08 +
+     * 0.4 t; the wave field is held at 0 in its solid cells */
+    double t = ms_sim_time(sim);
+    float x = 0.08f + 0.4f * (float)t;
+    int nx;
+    const float *w = ms_sim_surface_height(sim, &nx, NULL);
+    int i = (int)(x / (0.4f / 64)), j = (int)(0.2f / (0.4f / 64));
+    ck_assert_float_eq(w[j * nx + i], 0);
+    double m;
+    wave_sum(sim, &m);
+    ck_assert(m > 0); /* rain elsewhere */
+    /* by API: parked at the start, the footprint goes there */
+    const float p[3] = {0.1f, 0.1f, 0.1f}, v[3] = {0, 0, 0};
+    ck_assert_int_eq(ms_sim_move_obstacle(sim, 0, p, v), MS_OK);
+    steps(sim, 3, 1.0f / 60);
+    w = ms_sim_surface_height(sim, NULL, NULL);
+    i = (int)(0.1f / (0.4f / 64));
+    j = i;
+    ck_assert_float_eq(w[j * nx + i], 0);
+    MS_ASSERT_REFUSED(ms_sim_move_obstacle(sim, 1, p, v), MS_ERR_INVALID_ARGUMENT, "obstacle 1");
+    MS_ASSERT_REFUSED(ms_sim_move_container(sim, p, v), MS_ERR_STATE, "container");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* Floaters take the surface flow's velocity and slide down wave slopes. */
+START_TEST(floaters_follow_flow_and_slopes)
+{
+    ms_sim sim;
+    memset(&sim, 0, sizeof sim);
+    sim.fnx = sim.fny = 4;
+    sim.snx = sim.sny = 8;
+    sim.sdx = 0.125f;
+    sim.domain_max[0] = sim.domain_max[1] = 1;
+    sim.gravity = 10;
+    float xyz[6] = {0.5f, 0.5f, 0, 0.5f, 0.5f, 0}, vel[4] = {0, 0, 0, 0};
+    sim.floater_xyz = xyz;
+    sim.floater_vel = vel;
+    sim.nfloaters = 1;
+    float flow[32];
+    for (int c = 0; c < 16; ++c) {
+        flow[2 * c] = 0.1f; /* m/s along x */
+        flow[2 * c + 1] = 0;
+    }
+    /* no scene: drag 4 1/s; after 2 s the floater moves at ~0.1 m/s */
+    ms_sim_floaters_step(&sim, flow, NULL, 2.0f);
+    ck_assert_float_eq_tol(vel[0], 0.1f * (1 - expf(-8)), 1e-4f);
+    ck_assert_float_eq_tol(xyz[0], 0.5f + 0.1f * (2 - (1 - expf(-8)) / 4), 2e-3f);
+    ck_assert_float_eq(xyz[1], 0.5f);
+    /* a wave field sloping up in y (slope 0.01): pushed to -y at g * 0.01 */
+    float wave[64];
+    for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i)
+            wave[j * 8 + i] = 0.01f * (j + 0.5f) * 0.125f;
+    xyz[0] = xyz[1] = 0.5f;
+    vel[0] = vel[1] = 0;
+    ms_sim_floaters_step(&sim, NULL, wave, 1.0f / 60);
+    ck_assert_float_lt(vel[1], 0);
+    ck_assert_float_eq_tol(vel[1], -10 * 0.01f / 60, 1e-4f);
+}
+END_TEST
+
+/* Scripted drops land in time, rain draws from the seed, the boat moves. */
+START_TEST(scripted_drops_land_on_time)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_SURFACE ","
+                         " \"effects\": {\"drops\": [{\"at\": [0.2, 0.2], \"time\": 0.1}]}}");
+    ms_sim *sim = sim_of(sc, 1);
+    double m = 0;
+    while (ms_sim_time(sim) < 0.099) {
+        steps(sim, 1, 0.02f);
+        wave_sum(sim, &m);
+        ck_assert_msg(m == 0, "waves before the drop at t = %g", ms_sim_time(sim));
+    }
+    steps(sim, 2, 0.02f);
+    wave_sum(sim, &m);
+    ck_assert(m > 1e-3);
+    ms_stats s;
+    ms_sim_stats(sim, &s);
+    ck_assert_int_eq(s.drops, 1);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* A stand-in for an engine's task system (the determinism suite runs a
+ * real one): runs the task inline. */
+static void *engine_enqueue(ms_task_fn *fn, void *ctx, void *user)
+{
+    (void)user;
+    fn(ctx);
+    return NULL;
+}
+
+/* Scene coordinates are world coordinates: a domain away from the origin
+ * puts drops, grids and floaters where the scene says. */
+START_TEST(effects_land_at_world_coordinates)
+{
+    ms_scene *sc = scene("{\"domain\": {\"min\": [10, -2, 1], \"max\": [10.4, -1.6, 1.3]},"
+                         " " POOL_SURFACE ", \"effects\": {\"drops\": [{\"at\": [10.1, -1.7],"
+                         " \"radius\": 0.02}], \"floaters\": {\"positions\": [[10.3, -1.9]]}}}");
+    ms_sim *sim = sim_of(sc, 1);
+    steps(sim, 2, 0.01f);
+    ms_grid g;
+    ck_assert_int_eq(ms_sim_field_grid(sim, MS_FIELD_SURFACE, &g), MS_OK);
+    ck_assert_float_eq(g.origin[0], 10);
+    ck_assert_float_eq(g.origin[1], -2);
+    int nx, ny, best = 0;
+    const float *w = ms_sim_surface_height(sim, &nx, &ny);
+    for (int i = 1; i < nx * ny; ++i)
+        if (w[i] > w[best])
+            best = i;
+    /* the crest is at the drop: cell (16, 48) of 6.25 mm cells */
+    ck_assert_int_eq(best % nx, 16);
+    ck_assert_int_eq(best / nx, 48);
+    int n;
+    const float *f = ms_sim_floaters(sim, &n);
+    ck_assert_int_eq(n, 1);
+    ck_assert_float_eq_tol(f[0], 10.3f, 1e-5f);
+    ck_assert_float_eq_tol(f[1], -1.9f, 1e-5f);
+    ck_assert_float_eq_tol(f[2], 1.15f, 1e-3f); /* on the water, level 0.15 m above the floor */
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* ---- refusals -------------------------------------------------------------- */
+
+START_TEST(bad_descs_are_refused)
+{
+    ms_sim *sim = NULL;
+    ms_sim_desc d = ms_sim_desc_default();
+    MS_ASSERT_REFUSED(ms_sim_create(NULL, &sim), MS_ERR_INVALID_ARGUMENT, "desc");
+    MS_ASSERT_REFUSED(ms_sim_create(&d, NULL), MS_ERR_INVALID_ARGUMENT, "out");
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "neither");
+    ms_volume_desc v = ms_volume_desc_default();
+    ms_surface_desc s = ms_surface_desc_default(); /* 256 x 0.01 m = 2.56 m */
+    d.volume = &v;
+    d.surface = &s;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "same x-y extent");
+    s.nx = s.ny = 100; /* 1 m, as the default volume */
+    d.field_nx = 1;
+    d.field_ny = 1;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "at least 2 x 2");
+    d.field_nx = 20;
+    d.field_ny = 0;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "both");
+    d.field_ny = 20;
+    d.threads = 3;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "threads 3");
+    d.threads = 2;
+    d.couple_surface_from_volume = NAN;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "couple_surface_from_volume");
+    d.couple_surface_from_volume = 0;
+    d.couple_volume_from_surface = 2;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "couple_volume_from_surface 2");
+    d.couple_volume_from_surface = 0;
+    d.surface_substeps = -1;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "surface_substeps");
+    d.surface_substeps = 0;
+    d.enqueue_task = engine_enqueue;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "finish_task");
+    d.enqueue_task = NULL;
+    s.dx = -1; /* the solvers' own checks come through */
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "dx");
+    ck_assert_ptr_null(sim);
+    MS_ASSERT_REFUSED(ms_sim_create_from_scene(NULL, 1, &sim), MS_ERR_INVALID_ARGUMENT, "scene");
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_SURFACE "}");
+    MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 3, &sim), MS_ERR_INVALID_ARGUMENT, "threads 3");
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+START_TEST(bad_calls_are_refused)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_SURFACE "}");
+    ms_sim *sim = sim_of(sc, 1);
+    MS_ASSERT_REFUSED(ms_sim_step(sim, 0), MS_ERR_INVALID_ARGUMENT, "frame_dt 0");
+    MS_ASSERT_REFUSED(ms_sim_step(sim, NAN), MS_ERR_INVALID_ARGUMENT, "frame_dt");
+    MS_ASSERT_REFUSED(ms_sim_step(sim, 11), MS_ERR_INVALID_ARGUMENT, "(0, 10]");
+    MS_ASSERT_REFUSED(ms_sim_step(NULL, 0.1f), MS_ERR_INVALID_ARGUMENT, "sim");
+    const float p[2] = {0.2f, 0.2f}, v[2] = {1, 0};
+    MS_ASSERT_REFUSED(ms_sim_drag(sim, p, v, 0.1f, 0.05f, 5), MS_ERR_STATE, "has none");
+    ms_grid g;
+    MS_ASSERT_REFUSED(ms_sim_field_grid(sim, MS_FIELD_VOLUME, &g), MS_ERR_STATE, "no volume");
+    MS_ASSERT_REFUSED(ms_sim_field_grid(sim, 7, &g), MS_ERR_INVALID_ARGUMENT, "field 7");
+    MS_ASSERT_REFUSED(ms_sim_move_obstacle(sim, 0, (float[3]){0, 0, 0}, NULL), MS_ERR_STATE,
+                      "no obstacles");
+    MS_ASSERT_REFUSED(ms_sim_set_tasks(sim, engine_enqueue, NULL, NULL), MS_ERR_INVALID_ARGUMENT,
+                      "both");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+
+    sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME "}");
+    sim = sim_of(sc, 1);
+    MS_ASSERT_REFUSED(ms_sim_drag(sim, p, v, -1, 0.05f, 5), MS_ERR_INVALID_ARGUMENT, "drag radius");
+    for (int i = 0; i < MS_SIM_MAX_DRAGS; ++i)
+        ck_assert_int_eq(ms_sim_drag(sim, p, v, 0.1f, 0.05f, 5), MS_OK);
+    MS_ASSERT_REFUSED(ms_sim_drag(sim, p, v, 0.1f, 0.05f, 5), MS_ERR_STATE, "queued");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* A solver that fails mid-frame leaves the sim refusing further steps. */
+START_TEST(failed_step_leaves_the_sim_refusing)
+{
+    ms_volume_desc v = ms_volume_desc_default();
+    v.max_substeps = 1; /* a 1/60 s frame needs more */
+    ms_sim_desc d = ms_sim_desc_default();
+    d.volume = &v;
+    ms_sim *sim;
+    ck_assert_int_eq(ms_sim_create(&d, &sim), MS_OK);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.3f, 0.3f, 0.3f};
+    ck_assert_int_eq(ms_volume_fill_box(ms_sim_volume(sim), lo, hi), MS_OK);
+    MS_ASSERT_REFUSED(ms_sim_step(sim, 1.0f / 60), MS_ERR_UNSTABLE, "");
+    MS_ASSERT_REFUSED(ms_sim_step(sim, 1.0f / 60), MS_ERR_STATE, "previous step failed");
+    ms_sim_destroy(sim);
+}
+END_TEST
+
+static Suite *sim_suite(void)
+{
+    Suite *s = suite_create("sim");
+    TCase *tc = tcase_create("sim");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, surface_only_scene_holds_no_particles_and_runs_no_sph);
+    tcase_add_test(tc, volume_only_scene_is_the_sph_field_alone);
+    tcase_add_test(tc, absent_effects_cost_nothing);
+    tcase_add_test(tc, threads_is_the_whole_budget);
+    tcase_add_test(tc, n_time_is_the_fewest_stable_wave_steps);
+    tcase_add_test(tc, a_given_n_time_must_keep_within_the_cfl_bound);
+    tcase_add_test(tc, upsampling_is_exact_for_linear_fields);
+    tcase_add_test(tc, combined_is_upsampled_volume_plus_waves);
+    tcase_add_test(tc, waves_are_averaged_per_sph_cell);
+    tcase_add_test(tc, fields_lag_one_frame);
+    tcase_add_test(tc, volume_makes_waves_without_adding_water);
+    tcase_add_test(tc, two_way_coupling_stays_bounded);
+    tcase_add_test(tc, dragging_moves_the_water);
+    tcase_add_test(tc, moving_obstacle_stirs_water_and_blocks_waves);
+    tcase_add_test(tc, floaters_follow_flow_and_slopes);
+    tcase_add_test(tc, scripted_drops_land_on_time);
+    tcase_add_test(tc, effects_land_at_world_coordinates);
+    tcase_add_test(tc, bad_descs_are_refused);
+    tcase_add_test(tc, bad_calls_are_refused);
+    tcase_add_test(tc, failed_step_leaves_the_sim_refusing);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void)
+{
+    return ms_test_run(sim_suite());
+}

@@ -1,0 +1,205 @@
+/* Scene benchmark: each scene of DESIGN 8 (the paper's Table 1) and its
+ * _x10 variant, simulated headless (no rendering) with 1 and 2 threads.
+ * Prints frames per second (median and spread over repeats of a fixed
+ * number of frames), the per-stage split in ms per frame, the paper's
+ * Table 1 figure beside it, the 2-thread speed-up, and the memory
+ * bandwidth measured in the same run with the bound it puts on the wave
+ * side of a frame. Writes <csv-dir>/scenes.csv.
+ *
+ *   bench_scenes [--csv-dir DIR] [--quick] [--scenes fig1,fig1_x10] [--data DIR]
+ *                [--frames N] [--repeats R]
+ *
+ * The first three frames are skipped (the first step only primes the
+ * pipeline); then `repeats` runs of `frames` frames each are timed, the
+ * same frames for 1 and 2 threads. Without --frames, the frames per repeat
+ * are chosen once per scene (from the 1-thread warm-up) so that a repeat
+ * lasts about 0.4 s (0.05 s with --quick). */
+#include <math.h>
+
+#include "bench_common.h"
+#include "modesplit/modesplit.h"
+
+typedef struct {
+    const char *name;
+    double paper_fps; /* Table 1, with rendering at 950 x 950; 0 = none */
+} scene_row;
+
+static const scene_row rows[] = {
+    {"fig1", 30},      {"fig1_x10", 0},  {"fig3", 46},       {"fig3_x10", 0},
+    {"fig4c", 102},    {"fig4c_x10", 0}, {"fig9a", 85},      {"fig9a_x10", 0},
+    {"fig9b", 93},     {"fig9b_x10", 0}, {"fig10", 75},      {"fig10_x10", 0},
+};
+
+/* Bytes the wave side moves per cell when nothing stays in cache: a
+ * leapfrog step reads h, v, a, delta and writes v, h (24 B); combining
+ * reads the wave field and writes the sum (8 B, the SPH rows stay cached). */
+#define WAVE_BYTES_PER_CELL_STEP 24.0
+#define COMBINE_BYTES_PER_CELL 8.0
+
+typedef struct {
+    double fps[64], ms[5][64]; /* per repeat: frames/s; ms/frame of total + 4 stages */
+    int frames, repeats, n_time, particles;
+    ms_sim_info info;
+} result;
+
+static const char *arg_value(int argc, char **argv, const char *key, const char *def)
+{
+    for (int i = 1; i + 1 < argc; ++i)
+        if (strcmp(argv[i], key) == 0)
+            return argv[i + 1];
+    return def;
+}
+
+static int wanted(const char *list, const char *name)
+{
+    if (!list)
+        return 1;
+    size_t n = strlen(name);
+    for (const char *p = list; *p;) {
+        const char *e = strchr(p, ',');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        if (len == n && strncmp(p, name, n) == 0)
+            return 1;
+        p += len + (e ? 1 : 0);
+    }
+    return 0;
+}
+
+/* Runs one scene with `threads`; frames per repeat chosen from the first
+ * run (frames_hint 0) so a repeat lasts about `target` seconds. */
+static int run(const ms_scene *sc, int threads, int frames_hint, int repeats, double target,
+               result *out)
+{
+    ms_sim *sim;
+    if (ms_sim_create_from_scene(sc, threads, &sim) != MS_OK) {
+        fprintf(stderr, "bench_scenes: %s: %s\n", ms_scene_name(sc), ms_last_error());
+        return 1;
+    }
+    const float dt = ms_scene_frame_dt(sc);
+    /* warm-up: the priming step and two more */
+    double t0 = bench_now();
+    for (int i = 0; i < 3; ++i)
+        if (ms_sim_step(sim, dt) != MS_OK) {
+            fprintf(stderr, "bench_scenes: %s: %s\n", ms_scene_name(sc), ms_last_error());
+            ms_sim_destroy(sim);
+            return 1;
+        }
+    double per_frame = (bench_now() - t0) / 3;
+    int frames = frames_hint;
+    if (frames <= 0)
+        frames = (int)fmax(5, fmin(400, round(target / fmax(per_frame, 1e-6))));
+    out->frames = frames;
+    out->repeats = repeats;
+    for (int r = 0; r < repeats; ++r) {
+        ms_stats a, b;
+        ms_sim_stats(sim, &a);
+        double s0 = bench_now();
+        for (int f = 0; f < frames; ++f)
+            if (ms_sim_step(sim, dt) != MS_OK) {
+                fprintf(stderr, "bench_scenes: %s: %s\n", ms_scene_name(sc), ms_last_error());
+                ms_sim_destroy(sim);
+                return 1;
+            }
+        double secs = bench_now() - s0;
+        ms_sim_stats(sim, &b);
+        out->fps[r] = frames / secs;
+        out->ms[0][r] = secs * 1e3 / frames;
+        out->ms[1][r] = (b.volume_ms - a.volume_ms) / frames;
+        out->ms[2][r] = (b.extract_ms - a.extract_ms) / frames;
+        out->ms[3][r] = (b.surface_ms - a.surface_ms) / frames;
+        out->ms[4][r] = (b.combine_ms - a.combine_ms) / frames;
+        out->n_time = b.n_time;
+    }
+    ms_sim_get_info(sim, &out->info);
+    out->particles = out->info.particles;
+    ms_sim_destroy(sim);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    const int quick = bench_quick(argc, argv);
+    const char *dir = arg_value(argc, argv, "--data", "data/scenes");
+    const char *only = arg_value(argc, argv, "--scenes", NULL);
+    const int repeats = (int)fmax(1, fmin(64, atoi(arg_value(argc, argv, "--repeats",
+                                                               quick ? "3" : "7"))));
+    const int frames_fixed = atoi(arg_value(argc, argv, "--frames", "0"));
+    const double target = quick ? 0.05 : 0.4; /* s per repeat */
+    char machine[320], commit[64];
+    bench_machine(machine, sizeof machine);
+    bench_commit(commit, sizeof commit);
+    const double gbps = bench_memcpy_gbps((size_t)256 << 20, quick ? 3 : 9);
+    printf("scenes: simulation only (no rendering), frames/s median [p10, p90] over %d repeats\n",
+           repeats);
+    printf("machine: %s; commit %s; memcpy %.1f GB/s (read + write)\n", machine, commit, gbps);
+    printf("paper: Table 1, dual-core Athlon 64 2.6 GHz, with rendering at 950x950\n");
+    printf("%-10s %3s %6s %6s %9s %9s %9s %7s %6s | %7s %7s %7s %7s %7s | %7s %6s\n", "scene",
+           "thr", "frames", "n_time", "fps", "p10", "p90", "paper", "x2", "ms/fr", "volume",
+           "extract", "waves", "combine", "bound", "parts");
+    FILE *csv = bench_csv_open(
+        bench_csv_dir(argc, argv), "scenes.csv",
+        "commit,machine,scene,threads,particles,field_cells,wave_cells,n_time,frames_per_repeat,"
+        "repeats,fps_median_per_s,fps_p10_per_s,fps_p90_per_s,ms_per_frame_median,"
+        "volume_ms_per_frame,extract_ms_per_frame,surface_ms_per_frame,combine_ms_per_frame,"
+        "speedup_vs_1_thread,paper_fps_per_s,memcpy_GBps,wave_bound_ms_per_frame");
+    if (!csv)
+        return 1;
+    int failed = 0;
+    for (size_t k = 0; k < sizeof rows / sizeof *rows; ++k) {
+        if (!wanted(only, rows[k].name))
+            continue;
+        char path[1024];
+        snprintf(path, sizeof path, "%s/%s.json", dir, rows[k].name);
+        ms_scene *sc;
+        if (ms_scene_load(path, &sc) != MS_OK) {
+            fprintf(stderr, "bench_scenes: %s\n", ms_last_error());
+            failed = 1;
+            continue;
+        }
+        double fps1 = 0;
+        int frames = frames_fixed > 0 ? frames_fixed : 0;
+        for (int threads = 1; threads <= 2; ++threads) {
+            result res;
+            memset(&res, 0, sizeof res);
+            if (run(sc, threads, frames, repeats, target, &res) != 0) {
+                failed = 1;
+                break;
+            }
+            frames = res.frames; /* the same frames for 1 and 2 threads */
+            bench_stats fps = bench_summarise(res.fps, repeats);
+            double med[5];
+            for (int s = 0; s < 5; ++s)
+                med[s] = bench_summarise(res.ms[s], repeats).median;
+            if (threads == 1)
+                fps1 = fps.median;
+            double speedup = fps1 > 0 ? fps.median / fps1 : 0;
+            double wave_cells = (double)res.info.surface_nx * res.info.surface_ny;
+            double bound_ms = wave_cells *
+                              (WAVE_BYTES_PER_CELL_STEP * res.n_time + COMBINE_BYTES_PER_CELL) /
+                              (gbps * 1e9) * 1e3;
+            char paper[16] = "-";
+            if (rows[k].paper_fps > 0)
+                snprintf(paper, sizeof paper, "%.0f", rows[k].paper_fps);
+            printf("%-10s %3d %6d %6d %9.1f %9.1f %9.1f %7s %6.2f | %7.3f %7.3f %7.3f %7.3f "
+                   "%7.3f | %7.3f %6d\n",
+                   rows[k].name, threads, frames, res.n_time, fps.median, fps.p10, fps.p90, paper,
+                   speedup, med[0], med[1], med[2], med[3], med[4], bound_ms, res.particles);
+            fprintf(csv,
+                    "%s,%s,%s,%d,%d,%d,%.0f,%d,%d,%d,%.3f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,"
+                    "%.3f,%.0f,%.2f,%.4f\n",
+                    commit, machine, rows[k].name, threads, res.particles,
+                    res.info.field_nx * res.info.field_ny, wave_cells, res.n_time, frames,
+                    repeats, fps.median, fps.p10, fps.p90, med[0], med[1], med[2], med[3],
+                    med[4], speedup, rows[k].paper_fps, gbps, bound_ms);
+            fflush(stdout);
+        }
+        ms_scene_destroy(sc);
+    }
+    fclose(csv);
+    printf("columns: ms per frame of the whole step and of each stage (volume = interaction + "
+           "SPH; extract = eqs. 16-18 + particle copy; waves = effects + coupling + N_time "
+           "steps; combine = eq. 20 + floaters); with 2 threads the stages overlap. bound = the "
+           "wave side's memory traffic at the measured bandwidth. x2 = frames/s over the "
+           "1-thread run.\n");
+    return failed;
+}
