@@ -23,6 +23,7 @@
 #include "modesplit/modesplit.h"
 #include "modesplit/plugin.h"
 #include "render/render_internal.h"
+#include "scene/scene_internal.h"
 #include "support.h"
 
 #define N 64   /* field cells per side in the image tests */
@@ -1066,6 +1067,72 @@ START_TEST(renderers_in_two_threads_draw_what_one_draws)
 }
 END_TEST
 
+/* A small scene of waves only, with a drop, leaves and a boat. */
+static const char sim_scene[] =
+    "{\"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3},"
+    " \"effects\": {\"drops\": [{\"at\": [0.4, 0.6], \"radius\": 0.05, \"amplitude\": 0.01}],"
+    "   \"floaters\": {\"positions\": [[0.3, 0.3], [0.7, 0.3], [0.5, 0.8]]},"
+    "   \"boat\": {\"path\": {\"points\": [[0.2, 0.5], [0.8, 0.5]], \"speed\": 0.2},"
+    "             \"radius\": 0.04, \"depth\": 0.005}},"
+    " \"render\": {\"width\": 128, \"height\": 128, \"caustics\": {\"resolution\": 64},"
+    "   \"camera\": {\"eye\": [0.5, 0.5, 2.0], \"target\": [0.5, 0.5, 0.25],"
+    "              \"up\": [0, 1, 0], \"fov\": 30}}}";
+
+START_TEST(draw_renders_the_sims_field_with_its_floaters_and_boat)
+{
+    ms_scene *sc = NULL;
+    ck_assert_int_eq(ms_scene_parse(sim_scene, strlen(sim_scene), &sc), MS_OK);
+    ms_sim *sim = NULL;
+    ms_status st = ms_sim_create_from_scene(sc, 1, &sim);
+    ck_assert_msg(st == MS_OK, "%s", ms_last_error());
+    ms_renderer *r = NULL;
+    st = ms_renderer_create(sc, &r);
+    ck_assert_msg(st == MS_OK, "%s", ms_last_error());
+    MS_ASSERT_REFUSED(ms_renderer_draw(r, sim), MS_ERR_STATE, "step it first");
+    MS_ASSERT_REFUSED(ms_renderer_draw(r, NULL), MS_ERR_INVALID_ARGUMENT, "sim is NULL");
+    for (int f = 0; f < 10; ++f)
+        ck_assert_int_eq(ms_sim_step(sim, 1.0f / 60), MS_OK);
+    st = ms_renderer_draw(r, sim);
+    ck_assert_msg(st == MS_OK, "%s", ms_last_error());
+    /* three leaves and the boat */
+    ck_assert_int_eq(r->ndiscs, 4);
+    int nf = 0;
+    const float *xyz = ms_sim_floaters(sim, &nf);
+    ck_assert_int_eq(nf, 3);
+    ck_assert_float_eq(r->discs[1].pos[0], xyz[3]);
+    ck_assert_float_eq(r->discs[1].pos[2], xyz[5]);
+    /* the boat has moved 0.2 m/s x the fields' time along its path */
+    ck_assert_float_eq_tol(r->discs[3].pos[0], 0.2f + 0.2f * (float)ms_sim_time(sim), 1e-5f);
+    ck_assert_float_eq_tol(r->discs[3].radius, 0.04f, 1e-7f);
+
+    /* the same as drawing the sim's combined field over its grid, with
+     * the same discs, by hand */
+    unsigned char *want = malloc((size_t)W * W * 4);
+    memcpy(want, ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
+    ms_render_disc discs[4];
+    memcpy(discs, r->discs, sizeof discs);
+    ms_renderer_destroy(r);
+    ck_assert_int_eq(ms_renderer_create(sc, &r), MS_OK);
+    ck_assert_int_eq(ms_renderer_set_discs(r, discs, 4), MS_OK);
+    int nx, ny;
+    const float *h = ms_sim_height(sim, &nx, &ny);
+    ms_grid g;
+    ck_assert_int_eq(ms_sim_field_grid(sim, MS_FIELD_COMBINED, &g), MS_OK);
+    ck_assert_int_eq(g.nx, nx);
+    ck_assert_int_eq(ms_renderer_draw_field(r, h, &g, ms_sim_time(sim)), MS_OK);
+    ck_assert_int_eq(memcmp(ms_renderer_pixels(r, NULL, NULL), want, (size_t)W * W * 4), 0);
+    /* and the drop shows: the image is not the still pool's */
+    float *still = field(64, sc->level);
+    ck_assert_int_eq(ms_renderer_draw_field(r, still, &g, 0), MS_OK);
+    ck_assert_int_gt(box_max_abs_diff(ms_renderer_pixels(r, NULL, NULL), want, 0, 0, W, W), 20);
+    free(still);
+    free(want);
+    ms_renderer_destroy(r);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 START_TEST(a_scene_renders_and_every_shader_draws)
 {
     const char *text = "{\"surface\": {\"cells\": [64, 64]},"
@@ -1131,6 +1198,7 @@ static Suite *render_suite(void)
     tcase_add_test(tc, a_coarser_mesh_averages_the_field);
     tcase_add_test(tc, floating_discs_are_drawn_on_the_surface);
     tcase_add_test(tc, the_shipped_scenes_render);
+    tcase_add_test(tc, draw_renders_the_sims_field_with_its_floaters_and_boat);
     tcase_add_test(tc, moving_the_camera_is_creating_with_it);
     tcase_add_test(tc, renderers_in_two_threads_draw_what_one_draws);
     tcase_add_test(tc, a_scene_renders_and_every_shader_draws);

@@ -538,6 +538,52 @@ START_TEST(moving_obstacle_stirs_water_and_blocks_waves)
 }
 END_TEST
 
+/* The glass of water: the container moved by the engine carries the
+ * water along, none spills. */
+START_TEST(moved_glass_carries_its_water)
+{
+    ms_scene *sc = scene("{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.3, 0.2]},"
+                         " \"volume\": {\"spacing\": 0.015, \"gas_constant\": 100, \"fill\":"
+                         " [{\"min\": [0.075, 0.12, 0.012], \"max\": [0.165, 0.18, 0.07]}]},"
+                         " \"effects\": {\"container\": {\"shape\": \"glass\", \"params\":"
+                         " {\"radius\": 0.06, \"height\": 0.15, \"wall\": 0.01, \"floor\": 0.01},"
+                         " \"position\": [0.12, 0.15, 0]}}}");
+    if (!colliders_supported()) {
+        ms_sim *none = NULL;
+        MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 1, &none), MS_ERR_UNSUPPORTED,
+                          "shape colliders");
+        ms_scene_destroy(sc);
+        return;
+    }
+    ms_sim *sim = sim_of(sc, 2);
+    steps(sim, 20, 1.0f / 60); /* settle */
+    const float v[3] = {0.1f, 0, 0};
+    for (int f = 0; f < 90; ++f) { /* 1.5 s at 0.1 m/s: 0.15 m along x */
+        float t = f / 60.0f;
+        const float p[3] = {0.12f + 0.1f * t, 0.15f, 0};
+        ck_assert_int_eq(ms_sim_move_container(sim, p, v), MS_OK);
+        steps(sim, 1, 1.0f / 60);
+    }
+    const float p[3] = {0.12f + 0.15f, 0.15f, 0}, rest[3] = {0, 0, 0};
+    ck_assert_int_eq(ms_sim_move_container(sim, p, rest), MS_OK);
+    steps(sim, 30, 1.0f / 60);
+    int n;
+    const float *pos[3], *vel[3];
+    ck_assert_int_eq(ms_sim_particles(sim, &n, pos, vel), MS_OK);
+    ck_assert_int_eq(n, 72); /* 6 x 4 x 3 */
+    double mx = 0;
+    for (int i = 0; i < n; ++i) {
+        double dx = pos[0][i] - 0.27, dy = pos[1][i] - 0.15;
+        ck_assert_msg(sqrt(dx * dx + dy * dy) < 0.06, "particle %d at (%g, %g) left the glass", i,
+                      pos[0][i], pos[1][i]);
+        mx += pos[0][i];
+    }
+    ck_assert_double_eq_tol(mx / n, 0.27, 0.02);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 /* Floaters take the surface flow's velocity and slide down wave slopes. */
 START_TEST(floaters_follow_flow_and_slopes)
 {
@@ -753,6 +799,7 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, two_way_coupling_stays_bounded);
     tcase_add_test(tc, dragging_moves_the_water);
     tcase_add_test(tc, moving_obstacle_stirs_water_and_blocks_waves);
+    tcase_add_test(tc, moved_glass_carries_its_water);
     tcase_add_test(tc, floaters_follow_flow_and_slopes);
     tcase_add_test(tc, scripted_drops_land_on_time);
     tcase_add_test(tc, effects_land_at_world_coordinates);

@@ -1,8 +1,10 @@
 /* tool: the `modesplit` command line, driven as a user would (fork + exec
  * of build/bin/modesplit): usage and exit codes, every malformed scene of
  * tests/data/bad_scenes refused with status 2 and a sentence that names
- * it, `info` and `plugins`. (`run` and its tests arrive with lib/sim.) */
-#define _POSIX_C_SOURCE 200809L
+ * it, a run's HDF5 + XDMF + PNG output, SIGKILL / SIGINT / SIGTERM in the
+ * middle of a run, unwritable paths, the progress display on a terminal
+ * and off it; and the writer on a real sim, read back bit for bit. */
+#define _GNU_SOURCE /* posix_openpt, grantpt, unlockpt, ptsname; unshare */
 #include <check.h>
 #include <dirent.h>
 #include <errno.h>
@@ -11,8 +13,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sched.h>
+#include <sys/mount.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "modesplit/modesplit.h"
@@ -20,6 +25,7 @@
 #include "support.h"
 
 #define DEFAULT_SCENE "data/scenes/default.json"
+#define SMALL_SCENE "tests/data/small_run.json" /* fast: 64x48 waves, 450 particles */
 #define BAD_DIR "tests/data/bad_scenes"
 
 /* ---- helpers ---------------------------------------------------------- */
@@ -54,9 +60,27 @@ static void remove_tree(const char *dir)
     rmdir(dir);
 }
 
+/* A path in the test's directory; each call returns a fresh string, all
+ * freed by remove_tmp_dir. */
+static char *paths[1024];
+static int npaths;
+
+static char *tmp_path(const char *name)
+{
+    size_t n = strlen(tmp_dir) + strlen(name) + 2;
+    char *p = malloc(n);
+    snprintf(p, n, "%s/%s", tmp_dir, name);
+    ck_assert_int_lt(npaths, 1024);
+    paths[npaths++] = p;
+    return p;
+}
+
 static void remove_tmp_dir(void)
 {
     remove_tree(tmp_dir);
+    for (int i = 0; i < npaths; ++i)
+        free(paths[i]);
+    npaths = 0;
 }
 
 static const char *tool_path(void)
@@ -150,9 +174,54 @@ static int exited(const result *r, int code)
                   WIFEXITED((r).status) ? WEXITSTATUS((r).status) : -1,                      \
                   WIFSIGNALED((r).status) ? WTERMSIG((r).status) : 0, code, (r).err)
 
+/* Frames a run file holds right now (-1 if it does not open). */
+static long frames_in(const char *path)
+{
+    ms_reader *r;
+    if (ms_reader_open(path, &r) != MS_OK)
+        return -1;
+    long n = ms_reader_frames(r);
+    ms_reader_close(r);
+    return n;
+}
 
+/* Frames `modesplit info` sees in a file (-1 if it cannot read it now).
+ * A file being written is read through the tool, as a user would: HDF5
+ * 1.10.8 can leak (and complain at exit) after opening a file caught in
+ * the middle of a flush, which must not count against this process. */
+static long frames_via_info(const char *path)
+{
+    result r = run_tool((const char *[]){"info", path, NULL});
+    long n = -1;
+    const char *p = strstr(r.out, "\n  frames    ");
+    if (exited(&r, 0) && p)
+        n = strtol(p + 14, NULL, 10);
+    result_free(&r);
+    return n;
+}
 
+/* Wait until the file holds at least n frames (reading it while the run
+ * goes on); 0 on time-out. */
+static int wait_for_frames(const char *path, long n, double timeout_s)
+{
+    double start = 0;
+    for (int i = 0; start < timeout_s; ++i, start += 0.05) {
+        if (frames_via_info(path) >= n)
+            return 1;
+        struct timespec ts = {0, 50000000};
+        nanosleep(&ts, NULL);
+    }
+    return 0;
+}
 
+static int h5dump_reads(const char *path)
+{
+    if (system("command -v h5dump > /dev/null 2>&1") != 0)
+        return 1;
+    char cmd[1024];
+    snprintf(cmd, sizeof cmd, "h5dump '%s' > /dev/null 2>&1", path);
+    return system(cmd) == 0;
+}
 
 /* ---- usage ---------------------------------------------------------------- */
 
@@ -165,7 +234,7 @@ START_TEST(help_version_and_usage_errors)
     ck_assert_ptr_nonnull(strstr(r.out, "--frames N"));
     ck_assert_str_eq(r.err, "");
     result_free(&r);
-    r = run_tool((const char *[]){"check", "--help", NULL});
+    r = run_tool((const char *[]){"run", "--help", NULL});
     ASSERT_EXIT(r, 0);
     result_free(&r);
     r = run_tool((const char *[]){"--version", NULL});
@@ -184,14 +253,26 @@ START_TEST(help_version_and_usage_errors)
 
     /* each bad option: status 2, one sentence naming it */
     static const char *const bad[][6] = {
+        {"run", NULL},
+        {"run", DEFAULT_SCENE, "--frames", "many", NULL},
+        {"run", DEFAULT_SCENE, "--frames", NULL},
+        {"run", DEFAULT_SCENE, "--duration", "-1", NULL},
+        {"run", DEFAULT_SCENE, "--frames", "3", "--duration", "1"},
+        {"run", DEFAULT_SCENE, "--threads", "3", NULL},
+        {"run", DEFAULT_SCENE, "--out", "x.h5", "--no-out", NULL},
+        {"run", DEFAULT_SCENE, "--fast", NULL},
+        {"run", DEFAULT_SCENE, DEFAULT_SCENE, NULL},
         {"info", NULL},
         {"info", "a.h5", "b.h5", NULL},
         {"check", NULL},
         {"check", "--deep", NULL},
         {"plugins", "extra", NULL},
     };
-    static const char *const word[] = {"which run file", "one run file", "which scenes",
-                                       "--deep", "no arguments"};
+    static const char *const word[] = {"which scene",  "--frames many", "needs a value",
+                                       "--duration -1", "not both",      "--threads 3",
+                                       "not both",      "--fast",        "one scene",
+                                       "which run file", "one run file", "which scenes",
+                                       "--deep",        "no arguments"};
     for (size_t i = 0; i < sizeof word / sizeof *word; ++i) {
         const char *args[8] = {0};
         for (int k = 0; k < 6 && bad[i][k]; ++k)
@@ -244,8 +325,9 @@ START_TEST(every_malformed_scene_exits_2_naming_the_problem)
             ++skipped;
             continue;
         }
-        const char *const *modes[1] = {(const char *[]){"check", path, NULL}};
-        for (int m = 0; m < 1; ++m) {
+        const char *const *modes[2] = {(const char *[]){"check", path, NULL},
+                                       (const char *[]){"run", path, "--no-out", NULL}};
+        for (int m = 0; m < 2; ++m) {
             result r = run_tool(modes[m]);
             ck_assert_msg(WIFEXITED(r.status), "%s crashed (signal %d)", name,
                           WTERMSIG(r.status));
@@ -283,21 +365,353 @@ END_TEST
 
 /* ---- runs ------------------------------------------------------------------ */
 
+START_TEST(run_writes_hdf5_xdmf_png_and_a_summary)
+{
+    make_tmp_dir();
+    const char *out = tmp_path("demo.h5");
+    const char *png = tmp_path("png/frames");
+    result r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "6", "--out", out,
+                                         "--png", png, NULL});
+    ASSERT_EXIT(r, 0);
+    ck_assert_msg(strstr(r.out, "6 of 6 frames"), "%s", r.out);
+    ck_assert_ptr_nonnull(strstr(r.out, "per frame: volume"));
+    ck_assert_ptr_nonnull(strstr(r.out, "demo.xmf"));
+    ck_assert_ptr_nonnull(strstr(r.out, "3 PNG frames"));
+    /* not a terminal: plain progress lines, ending at 100 % */
+    ck_assert_ptr_nonnull(strstr(r.err, "frame 6/6 (100%)"));
+    ck_assert_ptr_null(strstr(r.err, "\r"));
+    result_free(&r);
+
+    ms_scene *sc;
+    ck_assert_int_eq(ms_scene_load(DEFAULT_SCENE, &sc), MS_OK);
+    ms_reader *rd;
+    ck_assert_msg(ms_reader_open(out, &rd) == MS_OK, "%s", ms_last_error());
+    /* every 2nd frame of 6, the fields the scene asks for, its text */
+    ck_assert_int_eq(ms_reader_frames(rd), 6 / ms_scene_output_every(sc));
+    ck_assert_uint_eq(ms_reader_fields(rd), ms_scene_output_fields(sc));
+    ck_assert_str_eq(ms_reader_scene(rd), ms_scene_text(sc));
+    ck_assert_str_eq(ms_reader_scene_name(rd), "default");
+    ms_reader_close(rd);
+    ms_scene_destroy(sc);
+    ck_assert(h5dump_reads(out));
+    for (int i = 0; i < 3; ++i) {
+        char p[600];
+        snprintf(p, sizeof p, "%s/frame_%05d.png", png, i);
+        ck_assert_msg(access(p, R_OK) == 0, "%s missing", p);
+    }
+    char *x = slurp(tmp_path("demo.xmf"));
+    ck_assert_ptr_nonnull(strstr(x, "demo.h5:/fields/combined"));
+    free(x);
+
+    r = run_tool((const char *[]){"info", out, NULL});
+    ASSERT_EXIT(r, 0);
+    ck_assert_ptr_nonnull(strstr(r.out, "frames    3"));
+    ck_assert_ptr_nonnull(strstr(r.out, "combined"));
+    ck_assert_ptr_nonnull(strstr(r.out, "H5Part"));
+    result_free(&r);
+    r = run_tool((const char *[]){"info", "--scene", out, NULL});
+    ASSERT_EXIT(r, 0);
+    char *scene = slurp(DEFAULT_SCENE);
+    ck_assert_str_eq(r.out, scene);
+    free(scene);
+    result_free(&r);
+
+    /* --quiet: nothing on either stream; --no-out: no file; --preview */
+    const char *pv = tmp_path("preview");
+    r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--no-out", "--quiet",
+                                  "--png", pv, "--preview", NULL});
+    ASSERT_EXIT(r, 0);
+    ck_assert_str_eq(r.out, "");
+    ck_assert_str_eq(r.err, "");
+    result_free(&r);
+    char pf[600];
+    snprintf(pf, sizeof pf, "%s/frame_00000.png", pv);
+    ck_assert_int_eq(access(pf, R_OK), 0);
+    remove_tmp_dir();
+}
+END_TEST
 
 /* The writer on the real sim: what is read back is what the sim held. */
+START_TEST(run_file_holds_what_the_sim_held_bit_for_bit)
+{
+    make_tmp_dir();
+    ms_scene *sc;
+    ck_assert_int_eq(ms_scene_load(DEFAULT_SCENE, &sc), MS_OK);
+    ms_sim *sim;
+    ck_assert_msg(ms_sim_create_from_scene(sc, 1, &sim) == MS_OK, "%s", ms_last_error());
+    ms_writer *w;
+    const unsigned all = MS_FIELD_COMBINED | MS_FIELD_SURFACE | MS_FIELD_VOLUME |
+                         MS_FIELD_PARTICLES;
+    ck_assert_msg(ms_writer_open(tmp_path("rt.h5"), sim, all, &w) == MS_OK, "%s",
+                  ms_last_error());
+    enum { FRAMES = 4 };
+    float *copy[FRAMES][3];
+    float *pcopy[FRAMES][6];
+    int np[FRAMES];
+    double t[FRAMES];
+    for (int k = 0; k < FRAMES; ++k) {
+        ck_assert_int_eq(ms_sim_step(sim, ms_scene_frame_dt(sc)), MS_OK);
+        ck_assert_msg(ms_writer_frame(w, sim) == MS_OK, "%s", ms_last_error());
+        int nx, ny;
+        const float *v[3] = {ms_sim_height(sim, &nx, &ny), NULL, NULL};
+        for (int s = 0; s < 3; ++s) {
+            v[s] = s == 0 ? ms_sim_height(sim, &nx, &ny)
+                   : s == 1 ? ms_sim_surface_height(sim, &nx, &ny)
+                            : ms_sim_volume_height(sim, &nx, &ny);
+            copy[k][s] = malloc(sizeof(float) * (size_t)nx * ny);
+            memcpy(copy[k][s], v[s], sizeof(float) * (size_t)nx * ny);
+        }
+        const float *pos[3], *vel[3];
+        ck_assert_int_eq(ms_sim_particles(sim, &np[k], pos, vel), MS_OK);
+        ck_assert_int_gt(np[k], 0);
+        for (int c = 0; c < 6; ++c) {
+            pcopy[k][c] = malloc(sizeof(float) * (size_t)np[k]);
+            memcpy(pcopy[k][c], c < 3 ? pos[c] : vel[c - 3], sizeof(float) * (size_t)np[k]);
+        }
+        t[k] = ms_sim_time(sim);
+    }
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    /* a field the sim lacks is refused */
+    ms_sim_destroy(sim);
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(tmp_path("rt.h5"), &r), MS_OK);
+    ck_assert_int_eq(ms_reader_frames(r), FRAMES);
+    for (int k = 0; k < FRAMES; ++k) {
+        double tk;
+        ck_assert_int_eq(ms_reader_time(r, k, &tk), MS_OK);
+        ck_assert_mem_eq(&tk, &t[k], sizeof tk);
+        for (int s = 0; s < 3; ++s) {
+            ms_grid g;
+            ck_assert_int_eq(ms_reader_field_grid(r, 1u << s, &g), MS_OK);
+            size_t n = (size_t)g.nx * g.ny;
+            float *got = malloc(n * sizeof *got);
+            ck_assert_int_eq(ms_reader_read_field(r, 1u << s, k, got, n), MS_OK);
+            ck_assert_msg(memcmp(got, copy[k][s], n * sizeof *got) == 0, "field %d frame %d", s,
+                          k);
+            free(got);
+            free(copy[k][s]);
+        }
+        int n;
+        ck_assert_int_eq(ms_reader_particle_count(r, k, &n), MS_OK);
+        ck_assert_int_eq(n, np[k]);
+        float *p[6];
+        for (int c = 0; c < 6; ++c)
+            p[c] = malloc(sizeof(float) * (size_t)n);
+        ck_assert_int_eq(ms_reader_read_particles(r, k, n, p, p + 3), MS_OK);
+        for (int c = 0; c < 6; ++c) {
+            ck_assert_mem_eq(p[c], pcopy[k][c], sizeof(float) * (size_t)n);
+            free(p[c]);
+            free(pcopy[k][c]);
+        }
+    }
+    ms_reader_close(r);
+    ms_scene_destroy(sc);
+    remove_tmp_dir();
+}
+END_TEST
 
+START_TEST(writer_refuses_fields_the_sim_lacks)
+{
+    make_tmp_dir();
+    ms_scene *sc;
+    /* waves only (Fig. 3): no volume, so no volume field and no particles */
+    ck_assert_int_eq(ms_scene_load("data/scenes/fig3.json", &sc), MS_OK);
+    ms_sim *sim;
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 1, &sim), MS_OK);
+    ms_writer *w;
+    MS_ASSERT_REFUSED(ms_writer_open(tmp_path("x.h5"), sim, MS_FIELD_VOLUME, &w),
+                      MS_ERR_INVALID_ARGUMENT, "no volume");
+    MS_ASSERT_REFUSED(ms_writer_open(tmp_path("x.h5"), sim, MS_FIELD_PARTICLES, &w),
+                      MS_ERR_INVALID_ARGUMENT, "particles");
+    MS_ASSERT_REFUSED(ms_writer_open(tmp_path("x.h5"), NULL, 0, &w), MS_ERR_INVALID_ARGUMENT,
+                      "sim");
+    /* 0: what the scene asks for */
+    ck_assert_int_eq(ms_writer_open(tmp_path("x.h5"), sim, 0, &w), MS_OK);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(tmp_path("x.h5"), &r), MS_OK);
+    ck_assert_uint_eq(ms_reader_fields(r), ms_scene_output_fields(sc) & ~(unsigned)MS_FIELD_PARTICLES);
+    ms_reader_close(r);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    remove_tmp_dir();
+}
+END_TEST
 
 /* ---- interruptions ---------------------------------------------------------- */
 
+START_TEST(sigkill_mid_run_leaves_a_file_h5dump_and_info_read)
+{
+    make_tmp_dir();
+    const char *out = tmp_path("killed.h5");
+    for (int round = 0; round < 3; ++round) {
+        remove(out);
+        pid_t pid = spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
+                                                "--out", out, "--quiet", NULL},
+                               tmp_path("o.txt"), tmp_path("e.txt"));
+        /* readable while the run goes on */
+        int ok = wait_for_frames(out, 2 + round, 60);
+        long seen = frames_via_info(out);
+        struct timespec ts = {0, 1000000L * (7 * round)};
+        nanosleep(&ts, NULL);
+        kill(pid, SIGKILL);
+        int status;
+        waitpid(pid, &status, 0);
+        ck_assert_msg(ok, "no frames appeared");
+        ck_assert(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+        ck_assert_msg(h5dump_reads(out), "h5dump fails after SIGKILL");
+        ck_assert_int_ge(frames_in(out), seen);
+        result r = run_tool((const char *[]){"info", out, NULL});
+        ASSERT_EXIT(r, 0);
+        ck_assert_ptr_nonnull(strstr(r.out, "frames"));
+        result_free(&r);
+        char *x = slurp(tmp_path("killed.xmf"));
+        ck_assert_ptr_nonnull(strstr(x, "</Xdmf>"));
+        free(x);
+    }
+    remove_tmp_dir();
+}
+END_TEST
 
+START_TEST(sigint_and_sigterm_finish_the_frame_and_close_the_file)
+{
+    make_tmp_dir();
+    const int sigs[2] = {SIGINT, SIGTERM};
+    for (int i = 0; i < 2; ++i) {
+        const char *out = tmp_path("stopped.h5");
+        remove(out);
+        pid_t pid = spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
+                                                "--out", out, NULL},
+                               tmp_path("o.txt"), tmp_path("e.txt"));
+        ck_assert(wait_for_frames(out, 2, 60));
+        kill(pid, sigs[i]);
+        int status;
+        waitpid(pid, &status, 0);
+        /* ends by the signal, as shells expect, after closing the file */
+        ck_assert_msg(WIFSIGNALED(status) && WTERMSIG(status) == sigs[i], "status %d", status);
+        char *o = slurp(tmp_path("o.txt"));
+        ck_assert_msg(strstr(o, i == 0 ? "stopped by SIGINT" : "stopped by SIGTERM"), "%s", o);
+        long in_file = frames_in(out);
+        char want[64];
+        snprintf(want, sizeof want, "(%ld frames,", in_file);
+        ck_assert_msg(strstr(o, want), "summary \"%s\" disagrees with the file's %ld frames", o,
+                      in_file);
+        free(o);
+        ck_assert(h5dump_reads(out));
+    }
+    remove_tmp_dir();
+}
+END_TEST
 
+START_TEST(unwritable_outputs_exit_1_with_a_sentence)
+{
+    make_tmp_dir();
+    result r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--out",
+                                         "/no/such/dir/run.h5", NULL});
+    ASSERT_EXIT(r, 1);
+    ck_assert_ptr_nonnull(strstr(r.err, "No such file or directory"));
+    ck_assert_ptr_nonnull(strstr(r.err, "/no/such/dir/run.h5"));
+    ck_assert_int_eq(count_lines(r.err), 1);
+    result_free(&r);
+    r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--out", "/dev/full",
+                                  NULL});
+    ASSERT_EXIT(r, 1);
+    ck_assert_ptr_nonnull(strstr(r.err, "No space left on device"));
+    ck_assert_int_eq(count_lines(r.err), 1);
+    result_free(&r);
+    FILE *f = fopen(tmp_path("file"), "w");
+    fclose(f);
+    char png[600];
+    snprintf(png, sizeof png, "%s/file/frames", tmp_dir);
+    r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--no-out", "--png", png,
+                                  NULL});
+    ASSERT_EXIT(r, 1);
+    ck_assert_ptr_nonnull(strstr(r.err, "Not a directory"));
+    result_free(&r);
+    remove_tmp_dir();
+}
+END_TEST
 
-/* A full disk: a 4 MiB tmpfs in a private mount namespace (root only; it
+/* A full disk: a 1 MiB tmpfs in a private mount namespace (root only; it
  * vanishes with the process). The run stops with status 1 and a sentence,
  * and the file keeps the frames written before. */
+START_TEST(full_disk_exits_1_and_keeps_the_frames)
+{
+    if (unshare(CLONE_NEWNS) != 0 || mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0) {
+        fprintf(stderr, "test_tool: full-disk case skipped (needs CAP_SYS_ADMIN: %s)\n",
+                strerror(errno));
+        return;
+    }
+    make_tmp_dir();
+    char disk[600];
+    snprintf(disk, sizeof disk, "%s/disk", tmp_dir);
+    ck_assert_int_eq(mkdir(disk, 0700), 0);
+    if (mount("tmpfs", disk, "tmpfs", 0, "size=1m") != 0) {
+        fprintf(stderr, "test_tool: full-disk case skipped (cannot mount a tmpfs: %s)\n",
+                strerror(errno));
+        remove_tmp_dir();
+        return;
+    }
+    char out[700];
+    snprintf(out, sizeof out, "%s/run.h5", disk);
+    result r = run_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000", "--out", out,
+                                         "--quiet", NULL});
+    ASSERT_EXIT(r, 1);
+    ck_assert_msg(strstr(r.err, "are free on the file system") || strstr(r.err, "No space left"),
+                  "%s", r.err);
+    ck_assert_int_eq(count_lines(r.err), 1);
+    result_free(&r);
+    long frames = frames_in(out);
+    ck_assert_int_gt(frames, 0);
+    ck_assert(h5dump_reads(out));
+    r = run_tool((const char *[]){"info", out, NULL});
+    ASSERT_EXIT(r, 0);
+    result_free(&r);
+    umount(disk);
+    remove_tmp_dir();
+}
+END_TEST
 
 /* ---- progress display ------------------------------------------------------ */
 
+START_TEST(progress_is_a_bar_on_a_terminal)
+{
+    make_tmp_dir();
+    int master = posix_openpt(O_RDWR | O_NOCTTY);
+    ck_assert_int_ge(master, 0);
+    ck_assert_int_eq(grantpt(master), 0);
+    ck_assert_int_eq(unlockpt(master), 0);
+    char *slave_name = ptsname(master);
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        int s = open(slave_name, O_RDWR);
+        int o = open("/dev/null", O_WRONLY);
+        dup2(s, 2);
+        dup2(o, 1);
+        execl(tool_path(), tool_path(), "run", SMALL_SCENE, "--frames", "8", "--no-out",
+              (char *)NULL);
+        _exit(127);
+    }
+    char buf[65536];
+    size_t got = 0;
+    for (;;) {
+        ssize_t n = read(master, buf + got, sizeof buf - 1 - got);
+        if (n <= 0)
+            break;
+        got += (size_t)n;
+    }
+    buf[got] = '\0';
+    int status;
+    waitpid(pid, &status, 0);
+    close(master);
+    ck_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    ck_assert_msg(strstr(buf, "\r[") && strstr(buf, "frames/s") && strstr(buf, "ETA"), "%s", buf);
+    ck_assert_ptr_nonnull(strstr(buf, "8/8"));
+    ck_assert_ptr_nonnull(strstr(buf, "vol "));
+    remove_tmp_dir();
+}
+END_TEST
 
 /* ---- info and plugins ------------------------------------------------------- */
 
@@ -330,6 +744,20 @@ static Suite *tool_suite(void)
     tcase_add_test(tc, help_version_and_usage_errors);
     tcase_add_test(tc, every_malformed_scene_exits_2_naming_the_problem);
     tcase_add_test(tc, info_refuses_what_is_not_a_run);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("run");
+    tcase_set_timeout(tc, 120);
+    tcase_add_test(tc, run_writes_hdf5_xdmf_png_and_a_summary);
+    tcase_add_test(tc, run_file_holds_what_the_sim_held_bit_for_bit);
+    tcase_add_test(tc, writer_refuses_fields_the_sim_lacks);
+    tcase_add_test(tc, unwritable_outputs_exit_1_with_a_sentence);
+    tcase_add_test(tc, full_disk_exits_1_and_keeps_the_frames);
+    tcase_add_test(tc, progress_is_a_bar_on_a_terminal);
+    suite_add_tcase(s, tc);
+    tc = tcase_create("signals");
+    tcase_set_timeout(tc, 180);
+    tcase_add_test(tc, sigkill_mid_run_leaves_a_file_h5dump_and_info_read);
+    tcase_add_test(tc, sigint_and_sigterm_finish_the_frame_and_close_the_file);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -14,6 +14,7 @@
  *     int main(void) {
  *         ms_volume_desc vol = ms_volume_desc_default();   // a 1 m pool, SPH
  *         ms_surface_desc surf = ms_surface_desc_default(); // 256x256 waves
+ *         surf.dx = 1.0f / 256;       // the waves cover the pool's 1 m x 1 m
  *         ms_sim_desc d = ms_sim_desc_default();
  *         d.volume = &vol;            // NULL: no volume flow, no particles
  *         d.surface = &surf;          // NULL: the SPH field is the surface

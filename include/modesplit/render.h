@@ -109,7 +109,10 @@ MS_API ms_status ms_renderer_create(const ms_scene *sc, ms_renderer **out);
 MS_API void ms_renderer_destroy(ms_renderer *r);
 
 /* Draws the sim's combined field (ms_sim_height, ms_sim_field_grid of
- * MS_FIELD_COMBINED) at ms_sim_time. */
+ * MS_FIELD_COMBINED) at ms_sim_time, with the sim's floaters (the first
+ * MS_RENDER_MAX_DISCS) as leaves and the scene's boat as discs, replacing
+ * any set by ms_renderer_set_discs. MS_ERR_STATE before the sim's first
+ * step. The views it reads are the sim's: call it between steps. */
 MS_API ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim);
 /* Draws any height field: h holds g->nx * g->ny heights (m above the pool
  * floor, row-major, x fastest) at the cell centres of grid g; time (s) is

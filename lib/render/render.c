@@ -360,17 +360,6 @@ ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *
 #endif
 }
 
-ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
-{
-    ms_status st;
-    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
-        (st = ms_check_not_null(PART, "sim", sim)) != MS_OK)
-        return st;
-    return ms_fail(MS_ERR_UNSUPPORTED,
-                   "render: ms_renderer_draw needs the sim (lib/sim), which this build does "
-                   "not have yet; draw its combined field with ms_renderer_draw_field");
-}
-
 ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int n)
 {
     ms_status st;

@@ -46,12 +46,24 @@ int cmd_check(int argc, char **argv)
             ++bad;
             continue;
         }
-        char fields[64];
-        printf("%s: ok: \"%s\", %.4g s in %ld frames of %.4g s, writes %s every %d frame%s%s\n",
+        ms_sim *sim = NULL;
+        if (ms_sim_create_from_scene(sc, 0, &sim) != MS_OK) {
+            tool_error("%s: %s", argv[i], ms_last_error());
+            ms_scene_destroy(sc);
+            ++bad;
+            continue;
+        }
+        ms_stats st;
+        ms_sim_stats(sim, &st);
+        char fields[64], mem[32];
+        printf("%s: ok: \"%s\", %.4g s in %ld frames of %.4g s, writes %s every %d frame%s, "
+               "%s of state%s\n",
                argv[i], ms_scene_name(sc), ms_scene_duration(sc), frames,
                ms_scene_frame_dt(sc), field_list(ms_scene_output_fields(sc), fields, sizeof fields),
                ms_scene_output_every(sc), ms_scene_output_every(sc) == 1 ? "" : "s",
+               tool_bytes((double)st.bytes, mem, sizeof mem),
                ms_scene_has_render(sc) ? ", rendered" : "");
+        ms_sim_destroy(sim);
         ms_scene_destroy(sc);
     }
     if (n == 0) {

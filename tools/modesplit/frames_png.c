@@ -1,8 +1,9 @@
 /* `modesplit run --png DIR`: one PNG per written frame, DIR/frame_NNNNN.png
- * (NNNNN = the frame's index in the HDF5 file). There is no renderer yet,
- * so each is the shaded-relief preview of the combined height field
- * (ms_field_write_png); when lib/render lands, a scene with a `render`
- * section is drawn by it instead, here.
+ * (NNNNN = the frame's index in the HDF5 file). A scene with a `render`
+ * section is drawn by the renderer (ms_renderer_draw_field of the combined
+ * field: cubemap, Fresnel, caustics, the scene's shader); otherwise, with
+ * --preview, or in a build without OSMesa, each frame is the shaded-relief
+ * preview of the combined height field (ms_field_write_png).
  *
  * The colour range is taken from the first frame (its span, padded by
  * half of it each side, at least +-2 mm) and only ever widened, and the
@@ -66,7 +67,7 @@ static int make_dirs(const char *dir)
     return err;
 }
 
-int png_begin(tool_png *p, const char *dir)
+int png_begin(tool_png *p, const char *dir, const ms_scene *sc, int preview, int quiet)
 {
     memset(p, 0, sizeof *p);
     int err = make_dirs(dir);
@@ -75,11 +76,44 @@ int png_begin(tool_png *p, const char *dir)
         return -1;
     }
     p->dir = strdup(dir);
-    return p->dir ? 0 : -1;
+    if (!p->dir)
+        return -1;
+    if (!preview && ms_scene_has_render(sc)) {
+        ms_status st = ms_renderer_create(sc, &p->renderer);
+        if (st == MS_ERR_UNSUPPORTED) {
+            if (!quiet)
+                tool_error("note: %s; the PNG frames are shaded-relief previews",
+                           ms_last_error());
+            p->renderer = NULL;
+        } else if (st != MS_OK) {
+            tool_error("%s", ms_last_error());
+            png_end(p);
+            return -1;
+        }
+    }
+    return 0;
 }
 
-int png_frame(tool_png *p, long index, const float *h, const ms_grid *g)
+int png_frame(tool_png *p, long index, const float *h, const ms_grid *g, double t)
 {
+    size_t plen = strlen(p->dir) + 32;
+    char *ppath = malloc(plen);
+    if (!ppath)
+        return -1;
+    snprintf(ppath, plen, "%s/frame_%05ld.png", p->dir, index);
+    if (p->renderer) {
+        ms_status st = ms_renderer_draw_field(p->renderer, h, g, t);
+        if (st == MS_OK)
+            st = ms_renderer_write_png(p->renderer, ppath);
+        free(ppath);
+        if (st != MS_OK) {
+            tool_error("%s", ms_last_error());
+            return -1;
+        }
+        ++p->written;
+        return 0;
+    }
+    free(ppath);
     size_t n = (size_t)g->nx * (size_t)g->ny;
     float lo = INFINITY, hi = -INFINITY;
     for (size_t i = 0; i < n; ++i)
@@ -130,6 +164,8 @@ int png_frame(tool_png *p, long index, const float *h, const ms_grid *g)
 
 void png_end(tool_png *p)
 {
+    ms_renderer_destroy(p->renderer);
+    p->renderer = NULL;
     free(p->dir);
     p->dir = NULL;
 }

@@ -26,7 +26,10 @@ static const char usage_text[] =
     "                             written beside it\n"
     "      --no-out               write no HDF5 file\n"
     "      --png DIR              also write DIR/frame_NNNNN.png for every written frame\n"
-    "                             (DIR is created if missing)\n"
+    "                             (DIR is created if missing), drawn by the renderer\n"
+    "                             when the scene has a `render` section\n"
+    "      --preview              draw the PNG frames as shaded-relief previews of the\n"
+    "                             height field instead (fast; also without OSMesa)\n"
     "      --threads 1|2          1: sequential, 2: the two-core split\n"
     "                             (default: the scene's `threads`)\n"
     "      --quiet                no progress and no summary\n"
@@ -127,7 +130,8 @@ int tool_scene_frames(const ms_scene *sc, const char *path, double duration, lon
     double dt = ms_scene_frame_dt(sc);
     if (duration < 0)
         duration = ms_scene_duration(sc);
-    double f = dt > 0 ? ceil(duration / dt - 1e-9) : INFINITY;
+    /* frame_dt is a float: 1 s / 0.02f is 50.0000001, which is 50 frames */
+    double f = dt > 0 ? ceil(duration / dt * (1.0 - 1e-7)) : INFINITY;
     if (!(f <= 1e9)) {
         tool_error("%s: duration %g s at frame_dt %g s (as a float) is more than 1e9 frames",
                    path, duration, dt);
@@ -160,11 +164,8 @@ static int dispatch(int argc, char **argv)
                MS_FILE_FORMAT_VERSION);
         return EXIT_OK;
     }
-    if (!strcmp(cmd, "run")) { /* held back until lib/sim is on main */
-        tool_error("run: this build has no sim yet (lib/sim has not landed); info, check and "
-                   "plugins work");
-        return EXIT_USAGE;
-    }
+    if (!strcmp(cmd, "run"))
+        return cmd_run(argc - 1, argv + 1);
     if (!strcmp(cmd, "info"))
         return cmd_info(argc - 1, argv + 1);
     if (!strcmp(cmd, "check"))

@@ -68,16 +68,20 @@ void progress_end(tool_progress *p);
 /* ---- PNG frames (frames_png.c) ---- */
 typedef struct tool_png {
     char *dir;
+    ms_renderer *renderer; /* the scene's renderer, NULL: shaded-relief previews */
     float lo, hi;        /* m, the colour range, widened as frames need */
     float relief;        /* vertical exaggeration, lowered as frames need */
     int have_range;
     long written;
 } tool_png;
 
-/* Create DIR (and its parents) if missing; 0 on success, else prints. */
-int png_begin(tool_png *p, const char *dir);
-/* Write DIR/frame_NNNNN.png of a height field; 0 on success, else prints. */
-int png_frame(tool_png *p, long index, const float *h, const ms_grid *g);
+/* Create DIR (and its parents) if missing and, when the scene has a
+ * `render` section and `preview` is 0, its renderer (without OSMesa: a
+ * note, then previews). 0 on success, else prints. */
+int png_begin(tool_png *p, const char *dir, const ms_scene *sc, int preview, int quiet);
+/* Write DIR/frame_NNNNN.png of a height field at time t (s); 0 on
+ * success, else prints. */
+int png_frame(tool_png *p, long index, const float *h, const ms_grid *g, double t);
 void png_end(tool_png *p);
 
 #endif /* MS_TOOL_H */

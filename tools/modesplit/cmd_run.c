@@ -1,0 +1,299 @@
+/* modesplit run SCENE.json [options]: load the scene, build the sim, step
+ * it, write every `output.every`-th frame to HDF5 (and PNG), report
+ * progress and a summary. SIGINT/SIGTERM finish the frame in hand, close
+ * the file, and then end the program by the same signal. */
+#include <math.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "tool.h"
+
+static volatile sig_atomic_t stop_signal;
+
+static void on_stop(int sig)
+{
+    stop_signal = sig; /* SA_RESETHAND: a second one ends the program at once */
+}
+
+static void catch_stop_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_stop;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND | SA_RESTART;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+typedef struct run_opts {
+    const char *scene;
+    const char *out;     /* NULL: default name */
+    const char *png;
+    long frames;         /* -1: from the duration */
+    double duration;     /* s, < 0: the scene's */
+    int threads;         /* 0: the scene's */
+    int no_out, quiet, preview;
+} run_opts;
+
+static int parse_args(int argc, char **argv, run_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->frames = -1;
+    o->duration = -1;
+    for (int i = 1; i < argc; ++i) {
+        const char *v = NULL, *a = argv[i];
+        int bad = 0;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            tool_usage(stdout);
+            return -1;
+        } else if (tool_opt_value(argc, argv, &i, "--frames", &v, &bad)) {
+            if (bad)
+                return EXIT_USAGE;
+            if (!tool_parse_long(v, 0, 1000000000L, &o->frames)) {
+                tool_error("run: --frames %s is not a whole number in [0, 1e9]", v);
+                return EXIT_USAGE;
+            }
+        } else if (tool_opt_value(argc, argv, &i, "--duration", &v, &bad)) {
+            if (bad)
+                return EXIT_USAGE;
+            if (!tool_parse_double(v, 0, 1e9, &o->duration)) {
+                tool_error("run: --duration %s is not a number of seconds in [0, 1e9]", v);
+                return EXIT_USAGE;
+            }
+        } else if (tool_opt_value(argc, argv, &i, "--out", &v, &bad)) {
+            if (bad)
+                return EXIT_USAGE;
+            if (!*v) {
+                tool_error("run: --out needs a file name");
+                return EXIT_USAGE;
+            }
+            o->out = v;
+        } else if (tool_opt_value(argc, argv, &i, "--png", &v, &bad)) {
+            if (bad)
+                return EXIT_USAGE;
+            if (!*v) {
+                tool_error("run: --png needs a directory");
+                return EXIT_USAGE;
+            }
+            o->png = v;
+        } else if (tool_opt_value(argc, argv, &i, "--threads", &v, &bad)) {
+            long t;
+            if (bad)
+                return EXIT_USAGE;
+            if (!tool_parse_long(v, 1, 2, &t)) {
+                tool_error("run: --threads %s must be 1 (sequential) or 2 (two-core split)", v);
+                return EXIT_USAGE;
+            }
+            o->threads = (int)t;
+        } else if (!strcmp(a, "--preview")) {
+            o->preview = 1;
+        } else if (!strcmp(a, "--no-out")) {
+            o->no_out = 1;
+        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
+            o->quiet = 1;
+        } else if (a[0] == '-' && a[1]) {
+            tool_error("run: unknown option %s (see modesplit --help)", a);
+            return EXIT_USAGE;
+        } else if (o->scene) {
+            tool_error("run: one scene at a time (got %s and %s)", o->scene, a);
+            return EXIT_USAGE;
+        } else {
+            o->scene = a;
+        }
+    }
+    if (!o->scene) {
+        tool_error("run: which scene? usage: modesplit run SCENE.json [--frames N | --duration "
+                   "S] [--out RUN.h5] [--png DIR [--preview]] [--threads 1|2] [--quiet]");
+        return EXIT_USAGE;
+    }
+    if (o->frames >= 0 && o->duration >= 0) {
+        tool_error("run: give --frames or --duration, not both");
+        return EXIT_USAGE;
+    }
+    if (o->out && o->no_out) {
+        tool_error("run: give --out or --no-out, not both");
+        return EXIT_USAGE;
+    }
+    return EXIT_OK;
+}
+
+/* "dir/fig1.json" -> "fig1.h5" (in the current directory). */
+static char *default_out(const char *scene)
+{
+    const char *base = strrchr(scene, '/');
+    base = base ? base + 1 : scene;
+    size_t n = strlen(base);
+    if (n > 5 && !strcmp(base + n - 5, ".json"))
+        n -= 5;
+    if (n == 0) {
+        base = "run";
+        n = 3;
+    }
+    char *p = malloc(n + 4);
+    if (p) {
+        memcpy(p, base, n);
+        memcpy(p + n, ".h5", 4);
+    }
+    return p;
+}
+
+static void fill_stages(const ms_sim *sim, double write_s, double png_s, long frames,
+                        tool_stages *s)
+{
+    ms_stats st;
+    ms_sim_stats(sim, &st);
+    double n = frames > 0 ? (double)frames : 1.0;
+    s->volume = st.volume_ms / n;
+    s->surface = st.surface_ms / n;
+    s->extract = st.extract_ms / n;
+    s->combine = st.combine_ms / n;
+    s->write = 1e3 * write_s / n;
+    s->png = 1e3 * png_s / n;
+}
+
+int cmd_run(int argc, char **argv)
+{
+    run_opts o;
+    int rc = parse_args(argc, argv, &o);
+    if (rc < 0)
+        return EXIT_OK; /* --help */
+    if (rc != EXIT_OK)
+        return rc;
+
+    ms_scene *sc = NULL;
+    if (ms_scene_load(o.scene, &sc) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        return EXIT_USAGE;
+    }
+    float dt = ms_scene_frame_dt(sc);
+    long frames = o.frames;
+    if (frames < 0 && tool_scene_frames(sc, o.scene, o.duration, &frames) != 0) {
+        ms_scene_destroy(sc);
+        return EXIT_USAGE;
+    }
+    int every = ms_scene_output_every(sc);
+
+    ms_sim *sim = NULL;
+    if (ms_sim_create_from_scene(sc, o.threads, &sim) != MS_OK) {
+        tool_error("%s: %s", o.scene, ms_last_error());
+        ms_scene_destroy(sc);
+        return EXIT_USAGE;
+    }
+
+    char *out = NULL;
+    ms_writer *w = NULL;
+    if (!o.no_out) {
+        out = o.out ? strdup(o.out) : default_out(o.scene);
+        if (!out || ms_writer_open(out, sim, 0, &w) != MS_OK) {
+            tool_error("%s", out ? ms_last_error() : "out of memory");
+            free(out);
+            ms_sim_destroy(sim);
+            ms_scene_destroy(sc);
+            return EXIT_RUNTIME;
+        }
+    }
+    tool_png png = {0};
+    if (o.png && png_begin(&png, o.png, sc, o.preview, o.quiet) != 0) {
+        ms_writer_close(w);
+        free(out);
+        ms_sim_destroy(sim);
+        ms_scene_destroy(sc);
+        return EXIT_RUNTIME;
+    }
+    ms_grid grid;
+    ms_sim_field_grid(sim, MS_FIELD_COMBINED, &grid);
+
+    catch_stop_signals();
+    tool_progress prog;
+    progress_begin(&prog, frames, o.quiet);
+    double write_s = 0, png_s = 0;
+    long done = 0, written = 0;
+    rc = EXIT_OK;
+    while (done < frames && !stop_signal) {
+        if (ms_sim_step(sim, dt) != MS_OK) {
+            progress_end(&prog);
+            tool_error("frame %ld: %s", done, ms_last_error());
+            rc = EXIT_RUNTIME;
+            break;
+        }
+        ++done;
+        /* The sim publishes a frame one step behind (its first step
+         * publishes the start): write published frames 0, every, 2 every... */
+        if ((done - 1) % every == 0) {
+            double t0 = tool_now();
+            if (w && ms_writer_frame(w, sim) != MS_OK) {
+                progress_end(&prog);
+                tool_error("%s", ms_last_error());
+                rc = EXIT_RUNTIME;
+                break;
+            }
+            double t1 = tool_now();
+            if (o.png) {
+                int nx, ny;
+                const float *h = ms_sim_height(sim, &nx, &ny);
+                if (png_frame(&png, written, h, &grid, ms_sim_time(sim)) != 0) {
+                    progress_end(&prog);
+                    rc = EXIT_RUNTIME;
+                    break;
+                }
+            }
+            write_s += t1 - t0;
+            png_s += tool_now() - t1;
+            ++written;
+        }
+        tool_stages st;
+        fill_stages(sim, write_s, png_s, done, &st);
+        progress_update(&prog, done, &st);
+    }
+    progress_end(&prog);
+    double wall = tool_now() - prog.start;
+
+    long in_file = w ? ms_writer_frames(w) : 0;
+    char *xmf = w ? strdup(ms_writer_xdmf_path(w)) : NULL;
+    if (w && ms_writer_close(w) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        rc = EXIT_RUNTIME;
+    }
+    if (!o.quiet) {
+        tool_stages st;
+        fill_stages(sim, write_s, png_s, done, &st);
+        printf("modesplit: %s: %ld of %ld frames (%.4g s simulated) in %.3g s, %.1f frames/s%s\n",
+               ms_scene_name(sc), done, frames, ms_sim_time(sim), wall,
+               wall > 0 ? (double)done / wall : 0.0,
+               stop_signal ? (stop_signal == SIGINT ? ", stopped by SIGINT"
+                                                    : ", stopped by SIGTERM")
+                           : "");
+        printf("  per frame: volume %.3g ms, surface %.3g ms, extract %.3g ms, combine %.3g ms",
+               st.volume, st.surface, st.extract, st.combine);
+        if (out)
+            printf(", write %.3g ms", st.write);
+        if (o.png)
+            printf(", png %.3g ms", st.png);
+        printf("\n");
+        if (out) {
+            struct stat sb;
+            char buf[32];
+            printf("  wrote %s (%ld frames, %s) and %s\n", out, in_file,
+                   stat(out, &sb) == 0 ? tool_bytes((double)sb.st_size, buf, sizeof buf) : "?",
+                   xmf ? xmf : "");
+        }
+        if (o.png)
+            printf("  wrote %ld PNG frames to %s\n", png.written, o.png);
+        fflush(stdout);
+    }
+    free(xmf);
+    free(out);
+    png_end(&png);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    if (stop_signal) {
+        /* end as the signal would have, so the shell sees it */
+        signal((int)stop_signal, SIG_DFL);
+        raise((int)stop_signal);
+    }
+    return rc;
+}
