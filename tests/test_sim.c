@@ -362,6 +362,61 @@ START_TEST(fields_lag_one_frame)
 }
 END_TEST
 
+/* The extraction split over the two threads (phase A on the volume
+ * thread, phase B on the surface thread, volume/extract.h) gives the bytes
+ * of ms_volume_extract_height on the same volume state, and one cell
+ * alone (what the pointer's drag reads) is that cell of the field. A
+ * dam break with the pointer dragging through it, smoothing passes that
+ * vary and end in a fraction (eq. 18). */
+START_TEST(split_extraction_is_the_volumes_bytes)
+{
+    ms_scene *sc = scene(
+        "{" POOL_DOMAIN ", \"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0],"
+        " \"max\": [0.2, 0.4, 0.2]}], \"field\": [16, 16], \"smooth_steps\": 3,"
+        " \"smooth_energy\": 0.5}, " POOL_SURFACE ","
+        " \"effects\": {\"drag\": {\"path\": {\"points\": [[0.05, 0.2], [0.35, 0.2]],"
+        " \"speed\": 0.5}, \"radius\": 0.1, \"strength\": 10}}}");
+    ms_sim *sim = sim_of(sc, 2), *plain = sim_of(sc, 1);
+    ms_volume *v = ms_sim_volume(sim);
+    const int nx = 16, ny = 16, nf = nx * ny;
+    float ref[2][16 * 16];
+    int fractions = 0, smoothed = 0;
+    for (int n = 1; n <= 30; ++n) {
+        steps(sim, 1, 1.0f / 60);
+        steps(plain, 1, 1.0f / 60);
+        int fx, fy;
+        const float *h = ms_sim_volume_height(sim, &fx, &fy);
+        ck_assert(fx == nx && fy == ny);
+        /* frame n - 1 is published: the field of the state after step n - 1 */
+        if (n >= 2)
+            ck_assert_msg(memcmp(h, ref[(n - 1) % 2], sizeof ref[0]) == 0,
+                          "frame %d differs from ms_volume_extract_height", n - 1);
+        /* extracting between steps does not disturb the run */
+        ck_assert(memcmp(h, ms_sim_volume_height(plain, NULL, NULL), sizeof ref[0]) == 0);
+        /* the volume is at t_n: the reference of frame n */
+        ck_assert_int_eq(ms_volume_extract_height(v, nx, ny, ref[n % 2]), MS_OK);
+        const ms_extract_snap *s = &sim->snap[n % 2];
+        double steps18 = fmax(0.0, 3 * (1.0 - s->e / 0.5));
+        smoothed += steps18 > 0;
+        fractions += steps18 != floor(steps18);
+        if (n % 5 == 0)
+            for (int c = 0; c < nf; ++c) {
+                float one = -1;
+                ck_assert_int_eq(ms_extract_cell(s, &sim->work_v, nx, ny, c % nx, c / nx, &one),
+                                 MS_OK);
+                ck_assert_msg(memcmp(&one, &ref[n % 2][c], sizeof one) == 0,
+                              "frame %d cell %d: alone %.9g, in the field %.9g", n, c,
+                              (double)one, (double)ref[n % 2][c]);
+            }
+    }
+    ck_assert_msg(smoothed >= 10 && fractions >= 10, "smoothed %d, fractional %d frames",
+                  smoothed, fractions);
+    ms_sim_destroy(sim);
+    ms_sim_destroy(plain);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 /* ---- coupling (3.5) -------------------------------------------------------- */
 
 static double wave_sum(const ms_sim *sim, double *maxabs)
@@ -795,6 +850,7 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, combined_is_upsampled_volume_plus_waves);
     tcase_add_test(tc, waves_are_averaged_per_sph_cell);
     tcase_add_test(tc, fields_lag_one_frame);
+    tcase_add_test(tc, split_extraction_is_the_volumes_bytes);
     tcase_add_test(tc, volume_makes_waves_without_adding_water);
     tcase_add_test(tc, two_way_coupling_stays_bounded);
     tcase_add_test(tc, dragging_moves_the_water);

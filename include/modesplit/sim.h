@@ -87,7 +87,10 @@ MS_API const ms_scene *ms_sim_scene(const ms_sim *sim); /* NULL when made from a
  * stage ran (with threads = 2 the volume and surface stages overlap, so
  * they may add up to more than total_ms, the wall time of ms_sim_step).
  *   volume_ms   interaction, surface->volume coupling and SPH (volume thread)
- *   extract_ms  height-field extraction (eqs. 16-18) and the particle copy
+ *   extract_ms  height-field extraction (eqs. 16-18) and the particle copy:
+ *               the surface particles on the volume thread, the columns
+ *               and the smoothing on the surface thread (the flow of the
+ *               floaters too)
  *   surface_ms  scripted effects, volume->surface coupling, wave steps
  *   combine_ms  up-sampling and sum (eq. 20), floaters
  * volume_steps / surface_steps are the SPH / leapfrog sub-steps taken;

@@ -347,6 +347,7 @@ void ms_sim_destroy(ms_sim *sim)
     ms_surface_destroy(sim->surface);
     for (int k = 0; k < 2; ++k) {
         ms_free(sim->hfield[k]);
+        ms_extract_snap_free(&sim->snap[k]);
         ms_free(sim->flow[k]);
         ms_free(sim->wave_snap[k]);
         for (int a = 0; a < 3; ++a) {
@@ -358,6 +359,8 @@ void ms_sim_destroy(ms_sim *sim)
     ms_free(sim->wave_colmap);
     ms_free(sim->wave_rowsum);
     ms_free(sim->flow_count);
+    ms_extract_work_free(&sim->work_v);
+    ms_extract_work_free(&sim->work_s);
     ms_free(sim->hprev);
     ms_free(sim->dh);
     ms_free(sim->u_prev);

@@ -12,21 +12,29 @@
  * tasks that share no mutable data:
  *   V (volume thread):  interaction at t_{n-1} (drag, moved container and
  *                       obstacles, surface->volume coupling with the wave
- *                       field W_{n-2}), SPH from t_{n-1} to t_n, extraction
- *                       of the height field H_n (eqs. 16-18), a copy of the
- *                       particles and, with floaters, the surface flow.
- *   S (surface thread): frame m = n-1: scripted effects at t_{m-1}, the
- *                       waves excited by the SPH field's rate
+ *                       field W_{n-2}), SPH from t_{n-1} to t_n, phase A
+ *                       of the extraction at t_n (the surface particles
+ *                       marked over the neighbour lists and copied into a
+ *                       snapshot, volume/extract.h) and a copy of the
+ *                       particles.
+ *   S (surface thread): frame m = n-1: phase B of the extraction, the
+ *                       height field H_m from V's snapshot of t_m (column
+ *                       search and smoothing, eqs. 16-18) and, with
+ *                       floaters, the surface flow; scripted effects at
+ *                       t_{m-1}, the waves excited by the SPH field's rate
  *                       (H_m - H_{m-1}) / dt (3.5), N_time wave steps from
  *                       t_{m-1} to t_m, the combined field up(H_m) + W_m,
  *                       floaters.
- * V writes slot n % 2 of the hand-over buffers and S reads slot (n-1) % 2
- * (what V wrote in the previous call); the same for the wave field copy
- * handed from S to V. With threads = 1 the two tasks run one after the
- * other, with threads = 2 at the same time: same inputs, same operations,
- * same bytes. The extraction runs on the volume thread because
- * ms_volume_extract_height reads the volume handle, which the volume thread
- * is stepping (DESIGN 2 draws it there too).
+ * V writes slot n % 2 of the hand-over buffers (snapshot, particles) and
+ * S reads slot (n-1) % 2 (what V wrote in the previous call) and writes
+ * H_{n-1} into hfield[(n-1) % 2]; the same for the wave field copy handed
+ * from S to V. The pointer's drag in V needs the height H_{n-1} at one
+ * cell while S is computing that field: V computes that cell alone from
+ * the same snapshot (ms_extract_cell, the same bits). With threads = 1 the
+ * two tasks run one after the other, with threads = 2 at the same time:
+ * same inputs, same operations, same bytes. Only phase A touches the
+ * volume handle, which the volume thread is stepping (Fig. 8 puts the
+ * extraction on the surface core).
  */
 #ifndef MS_SIM_INTERNAL_H
 #define MS_SIM_INTERNAL_H
@@ -37,6 +45,7 @@
 #include "modesplit/shape.h"
 #include "modesplit/sim.h"
 #include "scene/scene_internal.h"
+#include "volume/extract.h"
 
 #define MS_SIM_MAX_DRAGS 8
 #define MS_SIM_ERR_LEN 1024
@@ -63,7 +72,9 @@ typedef struct ms_sim_task {
     ms_sim *sim;
     ms_status status;
     char err[MS_SIM_ERR_LEN];
-    double ms_a, ms_b; /* V: step, extract; S: waves, combine */
+    double ms_a, ms_b; /* V: step, extract (phase A, particle copy); S: waves, combine */
+    double ms_x;       /* S: extract (phase B, surface flow) */
+    int alone;         /* S runs while V does not: it may use the volume's threads */
 } ms_sim_task;
 
 struct ms_sim {
@@ -89,9 +100,11 @@ struct ms_sim {
     float gain_sv, gain_vs; /* surface<-volume, volume<-surface */
 
     /* hand-over buffers (slot = call % 2, see above) */
-    float *hfield[2];        /* fnx * fny: H from V */
+    ms_extract_snap snap[2]; /* phase A of the extraction, from V */
+    ms_extract_work work_v, work_s; /* phase B's scratch of V (drag) and S */
+    float *hfield[2];        /* fnx * fny: H, phase B in S */
     float *flow[2];          /* 2 * fnx * fny: surface flow (vx, vy) from V, floaters only */
-    float *flow_count;       /* fnx * fny: V's scratch for the flow */
+    float *flow_count;       /* fnx * fny: S's scratch for the flow */
     float *ppos[2][3], *pvel[2][3]; /* particle copies, SoA */
     int pcount[2], pcap[2];
     float *paos;             /* 6 * paos_cap scratch for ms_volume_get_particles */
@@ -170,6 +183,10 @@ int ms_sim_motion_active(const ms_scene_motion *p, double t);
 void ms_sim_volume_task(void *task);
 void ms_sim_surface_task(void *task);
 ms_status ms_sim_volume_grab(ms_sim *sim, int slot);
+/* Phase A of the extraction into snap[slot] and the particle copy (V). */
+ms_status ms_sim_volume_snap(ms_sim *sim, int slot);
+/* Phase B into hfield[slot] and the surface flow of slot (S). */
+ms_status ms_sim_volume_field(ms_sim *sim, int slot, int alone);
 
 /* The wave field averaged over each SPH cell (fnx * fny), for the volume. */
 void ms_sim_average_waves(ms_sim *sim, const float *wave, float *out);

@@ -8,20 +8,17 @@
 #include "modesplit/volume.h"
 #include "sim/sim_internal.h"
 
-/* Before the first frame: the SPH field and particles of the start (t_0),
- * which the surface task of the first call shows. Done lazily so that an
- * engine can fill the volume between ms_sim_create and the first step. */
+/* Before the first frame: the extraction snapshot and particles of the
+ * start (t_0), which the surface task of the first call turns into the
+ * field it shows. Done lazily so that an engine can fill the volume
+ * between ms_sim_create and the first step. */
 static ms_status prime(ms_sim *sim)
 {
     if (sim->volume) {
         double c0 = ms_now();
-        ms_status st = ms_volume_extract_height(sim->volume, sim->fnx, sim->fny, sim->hfield[0]);
-        if (st == MS_OK)
-            st = ms_sim_volume_grab(sim, 0);
+        ms_status st = ms_sim_volume_snap(sim, 0);
         if (st != MS_OK)
             return st;
-        if (sim->hprev)
-            memcpy(sim->hprev, sim->hfield[0], (size_t)sim->fnx * sim->fny * sizeof(float));
         sim->stats.extract_ms += (ms_now() - c0) * 1e3;
     }
     sim->primed = 1;
@@ -72,8 +69,10 @@ static void run_tasks(ms_sim *sim, ms_sim_task *v, ms_sim_task *s)
     } else {
         if (v)
             ms_sim_volume_task(v);
-        if (s)
+        if (s) {
+            s->alone = 1; /* the volume's workers are idle */
             ms_sim_surface_task(s);
+        }
     }
 }
 
@@ -96,7 +95,7 @@ ms_status ms_sim_step(ms_sim *sim, float frame_dt)
         return st;
     sim->dt_cur = frame_dt;
     ms_sim_task vt = {.sim = sim, .status = MS_OK}, stt = {.sim = sim, .status = MS_OK};
-    int need_s = sim->surface || sim->nfloaters;
+    int need_s = sim->volume || sim->surface || sim->nfloaters;
     run_tasks(sim, sim->volume ? &vt : NULL, need_s ? &stt : NULL);
     sim->ndrags = 0; /* an engine's drags last one frame */
 
@@ -108,7 +107,7 @@ ms_status ms_sim_step(ms_sim *sim, float frame_dt)
         return ms_fail(bad->status, "%s", bad->err);
     }
     sim->stats.volume_ms += vt.ms_a;
-    sim->stats.extract_ms += vt.ms_b;
+    sim->stats.extract_ms += vt.ms_b + stt.ms_x;
     sim->stats.surface_ms += stt.ms_a;
     sim->stats.combine_ms += stt.ms_b;
     sim->calls = n;

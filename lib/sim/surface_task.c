@@ -1,6 +1,8 @@
-/* The surface thread's task (Fig. 8, core 2) for frame m = n - 1: the
- * scripted effects, the coupling from the volume (3.5), N_time wave steps
- * (eq. 19), the up-sampled SPH field plus the waves (eq. 20), floaters. */
+/* The surface thread's task (Fig. 8, core 2) for frame m = n - 1: the SPH
+ * height field from the volume thread's snapshot (phase B of eqs. 16-18),
+ * the scripted effects, the coupling from the volume (3.5), N_time wave
+ * steps (eq. 19), the up-sampled SPH field plus the waves (eq. 20),
+ * floaters. */
 #include <stdio.h>
 #include <string.h>
 
@@ -145,19 +147,25 @@ void ms_sim_surface_task(void *arg)
     long n = sim->calls + 1, m = n - 1;
     int slot = (int)(m % 2);
     const float *h = sim->volume ? sim->hfield[slot] : NULL; /* H_m */
+    double cx = ms_now();
+    ms_status st = sim->volume ? ms_sim_volume_field(sim, slot, task->alone) : MS_OK;
     double c0 = ms_now();
-    ms_status st = MS_OK;
+    task->ms_x = sim->volume ? (c0 - cx) * 1e3 : 0.0;
     if (!sim->surface) {
         /* a volume-only sim: the SPH field is the surface; only floaters */
-        if (m >= 1)
-            ms_sim_floaters_step(sim, sim->flow[slot], NULL, sim->dt_prev);
-        ms_sim_floaters_height(sim);
+        if (st == MS_OK && sim->nfloaters) {
+            if (m >= 1)
+                ms_sim_floaters_step(sim, sim->flow[slot], NULL, sim->dt_prev);
+            ms_sim_floaters_height(sim);
+        }
         task->ms_a = 0;
         task->ms_b = (ms_now() - c0) * 1e3;
-        task->status = MS_OK;
+        task->status = st;
+        if (st != MS_OK)
+            snprintf(task->err, sizeof task->err, "%s", ms_last_error());
         return;
     }
-    if (m >= 1) {
+    if (st == MS_OK && m >= 1) {
         double t1 = sim->t_fields + sim->dt_prev; /* t_m */
         float dt = sim->dt_prev;
         int n_time = sim->n_time_last;

@@ -141,7 +141,10 @@ void ms_sim_stats(const ms_sim *sim, ms_stats *out)
         out->volume_steps = vi.substeps;
         out->volume_bytes += vi.bytes;
         for (int k = 0; k < 2; ++k)
-            out->volume_bytes += (size_t)sim->pcap[k] * 6 * sizeof(float);
+            out->volume_bytes += (size_t)sim->pcap[k] * 6 * sizeof(float) +
+                                 ms_extract_snap_bytes(&sim->snap[k]);
+        out->volume_bytes +=
+            ms_extract_work_bytes(&sim->work_v) + ms_extract_work_bytes(&sim->work_s);
         out->volume_bytes += (size_t)sim->paos_cap * 6 * sizeof(float);
     }
     if (sim->surface) {

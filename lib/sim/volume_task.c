@@ -1,7 +1,9 @@
 /* The volume thread's task (Fig. 8, core 1): interaction, the coupling
- * from the surface (3.5), the SPH step (eqs. 9-15), the height field
- * (eqs. 16-18) and the copies the surface thread and the public views read
- * in the next call. */
+ * from the surface (3.5), the SPH step (eqs. 9-15), phase A of the height
+ * field (eqs. 16-18: the surface particles, volume/extract.h) and the
+ * copies the surface thread and the public views read in the next call;
+ * phase B (the columns) and the surface flow, which the surface thread
+ * runs. */
 #include <stdio.h>
 #include <string.h>
 
@@ -44,28 +46,32 @@ int ms_sim_motion_active(const ms_scene_motion *p, double t)
     return (t - p->start) * p->speed < len;
 }
 
-/* Height (m above domain_min z) of the field h at world (x, y), nearest cell. */
-static float field_at(const ms_sim *sim, const float *h, float x, float y)
+/* Height (m above domain_min z) at world (x, y), nearest cell, of the
+ * field of snapshot s: that cell alone, the same bits as the whole field
+ * the surface thread is computing from s meanwhile. */
+static ms_status field_at(ms_sim *sim, const ms_extract_snap *s, float x, float y, float *h)
 {
     float fx = (x - sim->domain_min[0]) / (sim->domain_max[0] - sim->domain_min[0]) * sim->fnx;
     float fy = (y - sim->domain_min[1]) / (sim->domain_max[1] - sim->domain_min[1]) * sim->fny;
     int i = (int)MS_CLAMP(fx, 0.0f, (float)(sim->fnx - 1));
     int j = (int)MS_CLAMP(fy, 0.0f, (float)(sim->fny - 1));
-    return h[(size_t)j * sim->fnx + i];
+    return ms_extract_cell(s, &sim->work_v, sim->fnx, sim->fny, i, j, h);
 }
 
-static ms_status apply_drag(ms_sim *sim, const float *h, const float pos[2], const float vel[2],
-                            float radius, float depth, float strength)
+static ms_status apply_drag(ms_sim *sim, const ms_extract_snap *s, const float pos[2],
+                            const float vel[2], float radius, float depth, float strength)
 {
-    float surf = sim->domain_min[2] + field_at(sim, h, pos[0], pos[1]);
+    float h;
+    ms_status st = field_at(sim, s, pos[0], pos[1], &h);
+    if (st != MS_OK)
+        return st;
+    float surf = sim->domain_min[2] + h;
     float centre[3] = {pos[0], pos[1], MS_MAX(surf - depth, sim->domain_min[2])};
     float v[3] = {vel[0], vel[1], 0};
     return ms_volume_drag(sim->volume, centre, radius, v, strength);
 }
 
-/* Copy the particles (stable order) into slot `slot`, structure of arrays;
- * with floaters, the mean horizontal velocity of the particles within two
- * spacings of the surface, per field cell. */
+/* Copy the particles (stable order) into slot `slot`, structure of arrays. */
 ms_status ms_sim_volume_grab(ms_sim *sim, int slot)
 {
     int n = ms_volume_count(sim->volume);
@@ -107,7 +113,26 @@ ms_status ms_sim_volume_grab(ms_sim *sim, int slot)
             vx[i] = vel[3 * i + a];
         }
     }
-    if (sim->flow[slot]) {
+    return MS_OK;
+}
+
+ms_status ms_sim_volume_snap(ms_sim *sim, int slot)
+{
+    ms_status st = ms_volume_extract_snap(sim->volume, &sim->snap[slot]);
+    return st == MS_OK ? ms_sim_volume_grab(sim, slot) : st;
+}
+
+/* Phase B of the extraction from snap[slot] into hfield[slot]; with
+ * floaters, the mean horizontal velocity of the particles of slot within
+ * two spacings of that surface, per field cell. With `alone` the volume
+ * thread is idle and lends its workers (any split: the same bytes). */
+ms_status ms_sim_volume_field(ms_sim *sim, int slot, int alone)
+{
+    ms_vpool *pool = alone ? ms_volume_extract_pool(sim->volume) : NULL;
+    ms_status st = ms_extract_field(&sim->snap[slot], &sim->work_s, pool, sim->fnx, sim->fny,
+                                    sim->hfield[slot]);
+    int n = sim->pcount[slot];
+    if (st == MS_OK && sim->flow[slot] && n > 0) {
         /* surface flow for the floaters: the mean horizontal velocity of
          * the particles within two spacings of the surface, per field cell
          * (sums in the stable particle order: deterministic) */
@@ -137,7 +162,7 @@ ms_status ms_sim_volume_grab(ms_sim *sim, int slot)
                 flow[2 * c + 1] /= cnt[c];
             }
     }
-    return MS_OK;
+    return st;
 }
 
 void ms_sim_volume_task(void *arg)
@@ -163,12 +188,12 @@ void ms_sim_volume_task(void *arg)
     if (st == MS_OK && sc && sc->has_drag && ms_sim_motion_active(&sc->drag_path, t0)) {
         float pos[2], vel[2];
         ms_scene_motion_eval(&sc->drag_path, t0, pos, vel);
-        st = apply_drag(sim, sim->hfield[prev], pos, vel, sc->drag_radius, sc->drag_depth,
+        st = apply_drag(sim, &sim->snap[prev], pos, vel, sc->drag_radius, sc->drag_depth,
                         sc->drag_strength);
     }
     for (int i = 0; st == MS_OK && i < sim->ndrags; ++i) {
         const ms_sim_drag_req *r = &sim->drags[i];
-        st = apply_drag(sim, sim->hfield[prev], r->pos, r->vel, r->radius, r->depth, r->strength);
+        st = apply_drag(sim, &sim->snap[prev], r->pos, r->vel, r->radius, r->depth, r->strength);
     }
     /* 3.5: particles near the surface follow high waves (W_{n-2} averaged
      * over each SPH cell, handed over by the surface thread in the previous
@@ -180,9 +205,7 @@ void ms_sim_volume_task(void *arg)
         st = ms_volume_step(sim->volume, sim->dt_cur);
     double c1 = ms_now();
     if (st == MS_OK)
-        st = ms_volume_extract_height(sim->volume, sim->fnx, sim->fny, sim->hfield[slot]);
-    if (st == MS_OK)
-        st = ms_sim_volume_grab(sim, slot);
+        st = ms_sim_volume_snap(sim, slot);
     double c2 = ms_now();
     task->ms_a = (c1 - c0) * 1e3;
     task->ms_b = (c2 - c1) * 1e3;

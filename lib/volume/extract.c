@@ -29,11 +29,18 @@
  * binomial filter over the cells that hold liquid (dry cells stay 0 and
  * do not pull the shore down); passes update the field in place row by
  * row from a padded copy, so each reads the previous pass only.
+ *
+ * Two phases (extract.h): A marks the particles over the neighbour lists
+ * and snapshots what the columns need; B, a pure function of the snapshot,
+ * bins, searches the columns and smooths, on any thread (lib/sim runs it
+ * on the surface thread, Fig. 8).
  */
+#include <assert.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "volume/extract.h"
 #include "volume/volume_impl.h"
 
 /* Column phi of a still lattice at half a spacing above the top layer. */
@@ -118,36 +125,37 @@ static float phi_at(const float *restrict zc, const float *restrict a, int m, fl
 }
 
 typedef struct column_ctx {
-    const ms_volume *v;
-    int nx, ny;
+    const ms_extract_snap *s;
+    int nx, ny;     /* the field */
+    int i0, j0, rw; /* the rectangle of columns worked on: origin and width */
     float dxe, dye;
     const int *cstart;
     const float *bx, *by, *bz;
     float *cand;
     size_t cand_stride;
-    float *raw;
+    float *raw; /* rw x rh, the rectangle's columns */
 } column_ctx;
 
-/* Columns [b, e) (index j*nx + i): gather the spheres (and their images in
+/* Columns [b, e) of the rectangle (index (j - j0) * rw + i - i0): gather the spheres (and their images in
  * the nearer side walls) within R horizontally, walk down from the top in
  * steps of half a spacing until phi reaches T, and close in on the
  * crossing by regula falsi to 1/256 of a spacing. */
 static void columns_part(void *ctxp, int part, int b, int e)
 {
     const column_ctx *cc = ctxp;
-    const ms_volume *v = cc->v;
+    const ms_extract_snap *s = cc->s;
     const int nx = cc->nx, ny = cc->ny;
-    const float *lo = v->desc.domain_min, *hi = v->desc.domain_max;
+    const float *lo = s->lo, *hi = s->hi;
     const float dxe = cc->dxe, dye = cc->dye;
-    const float R = v->K.h, R2 = R * R, inv_r2 = 1.0f / R2;
+    const float R = s->R, R2 = R * R, inv_r2 = 1.0f / R2;
     const int rx = (int)ceilf(R / dxe), ry = (int)ceilf(R / dye);
-    const float T = v->iso_level, dz = 0.5f * v->desc.spacing;
+    const float T = s->iso, dz = 0.5f * s->spacing;
     const float ztop = hi[2] - lo[2];
     const int *cstart = cc->cstart;
     const float *bx = cc->bx, *by = cc->by, *bz = cc->bz;
     float *cz = cc->cand + (size_t)part * cc->cand_stride, *ca = cz + cc->cand_stride / 2;
     for (int col = b; col < e; ++col) {
-        const int i = col % nx, j = col / nx;
+        const int i = cc->i0 + col % cc->rw, j = cc->j0 + col / cc->rw;
         const float px = lo[0] + ((float)i + 0.5f) * dxe, py = lo[1] + ((float)j + 0.5f) * dye;
         const float wx = px - lo[0] <= hi[0] - px ? lo[0] : hi[0];
         const float wy = py - lo[1] <= hi[1] - py ? lo[1] : hi[1];
@@ -207,7 +215,7 @@ static void columns_part(void *ctxp, int part, int b, int e)
             zc = cz[k] > zc ? cz[k] : zc;
             zlow = cz[k] - R < zlow ? cz[k] - R : zlow;
         }
-        zmax = zmax < zc + v->desc.spacing ? zmax : zc + v->desc.spacing;
+        zmax = zmax < zc + s->spacing ? zmax : zc + s->spacing;
         float height = 0.0f;
         for (int pad = mc; pad % MS_VOLUME_LANES; ++pad) { /* weight-0 lanes */
             cz[pad] = 0.0f;
@@ -281,7 +289,7 @@ static void columns_part(void *ctxp, int part, int b, int e)
             }
             if (found) {
                 /* regula falsi (Illinois) to 1/256 of a spacing */
-                const float tol = v->desc.spacing / 256.0f;
+                const float tol = s->spacing / 256.0f;
                 int side = 0;
                 for (int it = 0; it < 12 && za - zb > tol; ++it) {
                     float zm = fb != fa ? zb + (za - zb) * fb / (fb - fa) : 0.5f * (za + zb);
@@ -309,16 +317,20 @@ static void columns_part(void *ctxp, int part, int b, int e)
     }
 }
 
-ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
+/* Phase A (extract.h): mark, then copy the marked particles (internal
+ * order of the volume, which the binning keeps) and the constants. */
+ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
 {
-    if (!v || !out)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: extract_height needs a volume and out");
-    if (nx < 1 || ny < 1 || nx > 4096 || ny > 4096)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "volume: extract_height grid %d x %d is outside 1 .. 4096 per side", nx,
-                       ny);
-    const size_t cells = (size_t)nx * ny;
-    memset(out, 0, cells * sizeof *out);
+    s->empty = v->n == 0;
+    s->m = 0;
+    s->e = 0.0;
+    s->iso = v->iso_level;
+    s->R = v->K.h;
+    s->spacing = v->desc.spacing;
+    memcpy(s->lo, v->desc.domain_min, sizeof s->lo);
+    memcpy(s->hi, v->desc.domain_max, sizeof s->hi);
+    s->smooth_steps = v->desc.smooth_steps;
+    s->smooth_energy = v->desc.smooth_energy;
     if (v->n == 0)
         return MS_OK;
     if (!v->counts_valid) {
@@ -329,41 +341,117 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
     }
     mark_ctx mc = {.v = v};
     ms_vpool_run(v->pool, mark_part, &mc, v->n);
-
-    const float *lo = v->desc.domain_min, *hi = v->desc.domain_max;
-    const float dxe = (hi[0] - lo[0]) / (float)nx, dye = (hi[1] - lo[1]) / (float)ny;
-
-    /* bin the marked particles by column (counting sort, stable) */
     int m = 0;
     for (int i = 0; i < v->n; ++i)
         m += v->mark[i] != 0;
-    ms_status st = scratch((void **)&v->ex_start, &v->ex_start_cap, cells + 1, sizeof(int));
-    if (st == MS_OK)
-        st = scratch((void **)&v->ex_list, &v->ex_list_cap, (size_t)m + cells + 1, sizeof(int));
-    /* ex_buf: 3m binned positions, 3 fields, and for each thread 2 x 4m
-     * candidates (a particle and its images) */
-    const int parts = ms_vpool_threads(v->pool);
-    const size_t cand_stride = 8 * ((size_t)m + MS_VOLUME_LANES);
-    const size_t padded = (size_t)(nx + 2) * (ny + 2);
-    if (st == MS_OK)
-        st = scratch((void **)&v->ex_buf, &v->ex_cap,
-                     3 * (size_t)m + 2 * cells + padded + (size_t)parts * cand_stride,
-                     sizeof(float));
-    if (st != MS_OK)
-        return st;
-    int *cstart = v->ex_start, *ckey = v->ex_list, *cfill = v->ex_list + m;
-    float *bx = v->ex_buf, *by = bx + m, *bz = by + m;
-    float *raw = bz + m, *tmp = raw + cells, *blend = tmp + padded;
-    float *cand = blend + cells;
-    memset(cfill, 0, cells * sizeof *cfill);
+    if (m > s->cap) {
+        int cap = m + m / 8 + 64;
+        float *q = ms_alloc_array((size_t)cap * 3, sizeof(float));
+        if (!q)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for height extraction");
+        ms_free(s->x);
+        s->x = q;
+        s->y = q + cap;
+        s->z = q + 2 * (size_t)cap;
+        s->cap = cap;
+    }
+    float *restrict x = s->x, *restrict y = s->y, *restrict z = s->z;
     for (int i = 0, k = 0; i < v->n; ++i) {
         if (!v->mark[i])
             continue;
-        int ix = (int)fminf(fmaxf((v->x[i] - lo[0]) / dxe, 0.0f), (float)(nx - 1));
-        int iy = (int)fminf(fmaxf((v->y[i] - lo[1]) / dye, 0.0f), (float)(ny - 1));
+        x[k] = v->x[i];
+        y[k] = v->y[i];
+        z[k] = v->z[i];
+        k++;
+    }
+    s->m = m;
+    s->e = ms_volume_kinetic_energy(v) / ((double)v->mass * v->n); /* eq. 18, J/kg */
+    return MS_OK;
+}
+
+ms_vpool *ms_volume_extract_pool(ms_volume *v)
+{
+    return v->pool;
+}
+
+void ms_extract_snap_free(ms_extract_snap *s)
+{
+    ms_free(s->x);
+    memset(s, 0, sizeof *s);
+}
+
+void ms_extract_work_free(ms_extract_work *w)
+{
+    ms_free(w->start);
+    ms_free(w->list);
+    ms_free(w->buf);
+    ms_free(w->cell);
+    memset(w, 0, sizeof *w);
+}
+
+size_t ms_extract_snap_bytes(const ms_extract_snap *s)
+{
+    return (size_t)s->cap * 3 * sizeof(float);
+}
+
+size_t ms_extract_work_bytes(const ms_extract_work *w)
+{
+    return (w->start_cap + w->list_cap) * sizeof(int) + (w->buf_cap + w->cell_cap) * sizeof(float);
+}
+
+/* Eq. 18: the smoothing passes from E_kin / total mass, the last one
+ * weighted by frac. */
+static int smooth_passes(const ms_extract_snap *s, int *full, float *frac)
+{
+    double ramp = 1.0 - s->e / s->smooth_energy;
+    double steps = ramp > 0.0 ? s->smooth_steps * ramp : 0.0;
+    *full = (int)floor(steps);
+    *frac = (float)(steps - *full);
+    return *full + (*frac > 0.0f);
+}
+
+/* Phase B on the rectangle [i0, i0 + rw) x [j0, j0 + rh) of the nx x ny
+ * field, into out (rw x rh). The columns are the field's; the smoothing
+ * sees dry cells beyond the rectangle, so a cell's value is the field's
+ * when the rectangle holds every cell within the passes of it (or the
+ * field ends there): the 3 x 3 filter reaches one cell further per pass. */
+static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool,
+                              int nx, int ny, int i0, int j0, int rw, int rh, float *out)
+{
+    const size_t rcells = (size_t)rw * rh;
+    memset(out, 0, rcells * sizeof *out);
+    if (s->empty)
+        return MS_OK;
+    const size_t cells = (size_t)nx * ny;
+    const int m = s->m;
+    const float *lo = s->lo, *hi = s->hi;
+    const float dxe = (hi[0] - lo[0]) / (float)nx, dye = (hi[1] - lo[1]) / (float)ny;
+
+    /* bin the marked particles by column (counting sort, stable) */
+    ms_status st = scratch((void **)&w->start, &w->start_cap, cells + 1, sizeof(int));
+    if (st == MS_OK)
+        st = scratch((void **)&w->list, &w->list_cap, (size_t)m + cells + 1, sizeof(int));
+    /* buf: 3m binned positions, 3 fields, and for each thread 2 x 4m
+     * candidates (a particle and its images) */
+    const int parts = ms_vpool_threads(pool);
+    const size_t cand_stride = 8 * ((size_t)m + MS_VOLUME_LANES);
+    const size_t padded = (size_t)(rw + 2) * (rh + 2);
+    if (st == MS_OK)
+        st = scratch((void **)&w->buf, &w->buf_cap,
+                     3 * (size_t)m + 2 * rcells + padded + (size_t)parts * cand_stride,
+                     sizeof(float));
+    if (st != MS_OK)
+        return st;
+    int *cstart = w->start, *ckey = w->list, *cfill = w->list + m;
+    float *bx = w->buf, *by = bx + m, *bz = by + m;
+    float *raw = bz + m, *tmp = raw + rcells, *blend = tmp + padded;
+    float *cand = blend + rcells;
+    memset(cfill, 0, cells * sizeof *cfill);
+    for (int k = 0; k < m; ++k) {
+        int ix = (int)fminf(fmaxf((s->x[k] - lo[0]) / dxe, 0.0f), (float)(nx - 1));
+        int iy = (int)fminf(fmaxf((s->y[k] - lo[1]) / dye, 0.0f), (float)(ny - 1));
         ckey[k] = iy * nx + ix;
         cfill[ckey[k]]++;
-        k++;
     }
     int sum = 0;
     for (size_t c = 0; c < cells; ++c) {
@@ -372,57 +460,52 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
         cfill[c] = cstart[c];
     }
     cstart[cells] = sum;
-    for (int i = 0, k = 0; i < v->n; ++i) {
-        if (!v->mark[i])
-            continue;
-        int d = cfill[ckey[k++]]++;
-        bx[d] = v->x[i];
-        by[d] = v->y[i];
-        bz[d] = v->z[i];
+    for (int k = 0; k < m; ++k) {
+        int d = cfill[ckey[k]]++;
+        bx[d] = s->x[k];
+        by[d] = s->y[k];
+        bz[d] = s->z[k];
     }
 
     /* the topmost crossing of phi = T in every column, columns split among
      * the threads (each column on its own: the same bytes for any split) */
-    column_ctx cc = {.v = v, .nx = nx, .ny = ny, .dxe = dxe, .dye = dye, .cstart = cstart,
-                     .bx = bx, .by = by, .bz = bz, .cand = cand, .cand_stride = cand_stride,
-                     .raw = raw};
-    ms_vpool_run(v->pool, columns_part, &cc, (int)cells);
+    column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
+                     .dye = dye, .cstart = cstart, .bx = bx, .by = by, .bz = bz, .cand = cand,
+                     .cand_stride = cand_stride, .raw = raw};
+    ms_vpool_run(pool, columns_part, &cc, (int)rcells);
 
     /* eq. 18: the number of smoothing passes from E_kin / total mass */
-    double e = ms_volume_kinetic_energy(v) / ((double)v->mass * v->n);
-    double ramp = 1.0 - e / v->desc.smooth_energy;
-    double steps = ramp > 0.0 ? v->desc.smooth_steps * ramp : 0.0;
-    int full = (int)floor(steps);
-    float frac = (float)(steps - full);
+    int full;
+    float frac;
+    const int passes = smooth_passes(s, &full, &frac);
     /* One pass: the 3 x 3 binomial weights over the wet cells, as sums over
      * a zero-padded copy (dry cells hold 0) times the inverse of the wet
      * weight around each cell, computed once. */
-    const int px = nx + 2;
-    float *pad = tmp, *inv_w = blend; /* (nx+2)(ny+2) and nx*ny floats */
-    memcpy(out, raw, cells * sizeof *out);
-    const int passes = full + (frac > 0.0f);
+    const int px = rw + 2;
+    float *pad = tmp, *inv_w = blend; /* (rw+2)(rh+2) and rw*rh floats */
+    memcpy(out, raw, rcells * sizeof *out);
     if (passes > 0) {
-        memset(pad, 0, (size_t)px * (ny + 2) * sizeof *pad);
-        for (int j = 0; j < ny; ++j)
-            for (int i = 0; i < nx; ++i) {
-                float w = 0.0f;
+        memset(pad, 0, (size_t)px * (rh + 2) * sizeof *pad);
+        for (int j = 0; j < rh; ++j)
+            for (int i = 0; i < rw; ++i) {
+                float wt = 0.0f;
                 for (int dj = -1; dj <= 1; ++dj)
                     for (int di = -1; di <= 1; ++di) {
                         int ii = i + di, jj = j + dj;
-                        if (ii >= 0 && ii < nx && jj >= 0 && jj < ny && raw[jj * nx + ii] > 0.0f)
-                            w += (float)((2 - abs(di)) * (2 - abs(dj)));
+                        if (ii >= 0 && ii < rw && jj >= 0 && jj < rh && raw[jj * rw + ii] > 0.0f)
+                            wt += (float)((2 - abs(di)) * (2 - abs(dj)));
                     }
-                inv_w[j * nx + i] = w > 0.0f ? 1.0f / w : 0.0f;
+                inv_w[j * rw + i] = wt > 0.0f ? 1.0f / wt : 0.0f;
             }
     }
     for (int pass = 0; pass < passes; ++pass) {
-        for (int j = 0; j < ny; ++j)
-            memcpy(pad + (size_t)(j + 1) * px + 1, out + (size_t)j * nx, (size_t)nx * sizeof *out);
+        for (int j = 0; j < rh; ++j)
+            memcpy(pad + (size_t)(j + 1) * px + 1, out + (size_t)j * rw, (size_t)rw * sizeof *out);
         const float f = pass < full ? 1.0f : frac; /* the last may be a fraction */
-        for (int j = 0; j < ny; ++j) {
+        for (int j = 0; j < rh; ++j) {
             const float *r0 = pad + (size_t)j * px, *r1 = r0 + px, *r2 = r1 + px;
-            for (int i = 0; i < nx; ++i) {
-                const size_t c = (size_t)j * nx + i;
+            for (int i = 0; i < rw; ++i) {
+                const size_t c = (size_t)j * rw + i;
                 if (raw[c] <= 0.0f)
                     continue;
                 float acc = (r0[i] + 2.0f * r0[i + 1] + r0[i + 2]) +
@@ -434,4 +517,69 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
         }
     }
     return MS_OK;
+}
+
+static ms_status check_grid(int nx, int ny)
+{
+    if (nx < 1 || ny < 1 || nx > 4096 || ny > 4096)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: extract_height grid %d x %d is outside 1 .. 4096 per side", nx,
+                       ny);
+    return MS_OK;
+}
+
+ms_status ms_extract_field(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool, int nx,
+                           int ny, float *out)
+{
+    ms_status st = check_grid(nx, ny);
+    return st == MS_OK ? extract_rect(s, w, pool, nx, ny, 0, 0, nx, ny, out) : st;
+}
+
+ms_status ms_extract_cell(const ms_extract_snap *s, ms_extract_work *w, int nx, int ny, int i,
+                          int j, float *out)
+{
+    ms_status st = check_grid(nx, ny);
+    if (st != MS_OK)
+        return st;
+    assert(i >= 0 && i < nx && j >= 0 && j < ny);
+    int full;
+    float frac;
+    const int r = s->empty ? 0 : smooth_passes(s, &full, &frac);
+    const int i0 = MS_MAX(i - r, 0), i1 = MS_MIN(i + r, nx - 1);
+    const int j0 = MS_MAX(j - r, 0), j1 = MS_MIN(j + r, ny - 1);
+    const int rw = i1 - i0 + 1, rh = j1 - j0 + 1;
+    st = scratch((void **)&w->cell, &w->cell_cap, (size_t)rw * rh, sizeof(float));
+    if (st == MS_OK)
+        st = extract_rect(s, w, NULL, nx, ny, i0, j0, rw, rh, w->cell);
+    if (st == MS_OK)
+        *out = w->cell[(size_t)(j - j0) * rw + (i - i0)];
+    return st;
+}
+
+ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
+{
+    if (!v || !out)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: extract_height needs a volume and out");
+    ms_status st = check_grid(nx, ny);
+    if (st != MS_OK)
+        return st;
+    ms_extract_snap s = {0};
+    /* the volume's scratch serves as phase B's */
+    ms_extract_work w = {.start = v->ex_start, .list = v->ex_list, .buf = v->ex_buf,
+                         .start_cap = v->ex_start_cap, .list_cap = v->ex_list_cap,
+                         .buf_cap = v->ex_cap};
+    st = ms_volume_extract_snap(v, &s);
+    if (st == MS_OK)
+        st = ms_extract_field(&s, &w, v->pool, nx, ny, out);
+    else
+        memset(out, 0, (size_t)nx * ny * sizeof *out);
+    v->ex_start = w.start;
+    v->ex_list = w.list;
+    v->ex_buf = w.buf;
+    v->ex_start_cap = w.start_cap;
+    v->ex_list_cap = w.list_cap;
+    v->ex_cap = w.buf_cap;
+    assert(!w.cell);
+    ms_extract_snap_free(&s);
+    return st;
 }

@@ -1,0 +1,61 @@
+/* The free-surface extraction (extract.c, eqs. 16-18) in two phases, for
+ * the two-core pipeline of lib/sim (paper Fig. 8). Internal, not MS_API.
+ *
+ * Phase A (ms_volume_extract_snap) needs the volume's neighbour lists and
+ * runs where the volume is stepped: it marks the surface particles and
+ * their neighbours and copies what the columns need into a snapshot (the
+ * marked particles' positions in the stable particle order, E_kin / mass
+ * for eq. 18 and the constants). Phase B (ms_extract_field) is a pure
+ * function of the snapshot and its own scratch and may run on any thread:
+ * the column search (eqs. 16, 17) and the eq. 18 smoothing.
+ * ms_volume_extract_height is A then B; any split gives the same bytes.
+ */
+#ifndef MS_VOLUME_EXTRACT_H
+#define MS_VOLUME_EXTRACT_H
+
+#include <stddef.h>
+
+#include "modesplit/volume.h"
+
+typedef struct ms_vpool ms_vpool;
+
+typedef struct ms_extract_snap {
+    int empty;           /* the volume held no particle: the field is 0 */
+    int m, cap;          /* marked particles, capacity of x, y, z */
+    float *x, *y, *z;    /* m, the marked particles (stable order of the volume) */
+    double e;            /* J/kg, E_kin / total mass (eq. 18) */
+    float iso;           /* T, the iso-level of phi (eq. 16) */
+    float R;             /* m, iso-radius = h */
+    float spacing;       /* m */
+    float lo[3], hi[3];  /* m, the domain */
+    int smooth_steps;    /* eq. 18 */
+    float smooth_energy; /* J/kg, eq. 18 */
+} ms_extract_snap;
+
+/* Phase B's scratch (one per thread that runs it). */
+typedef struct ms_extract_work {
+    int *start, *list;
+    size_t start_cap, list_cap;
+    float *buf, *cell; /* cell: ms_extract_cell's rectangle */
+    size_t buf_cap, cell_cap;
+} ms_extract_work;
+
+/* Phase A: the snapshot of v at its current positions (rebuilds the
+ * neighbour counts if the positions moved since the last density pass). */
+ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s);
+/* Phase B: the nx x ny height field of s into out (m above lo[2]); the
+ * columns are split over pool's threads (NULL: the calling thread). */
+ms_status ms_extract_field(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool, int nx,
+                           int ny, float *out);
+/* Cell (i, j) of that field alone, bit for bit the same value: only the
+ * columns within the smoothing passes of it. */
+ms_status ms_extract_cell(const ms_extract_snap *s, ms_extract_work *w, int nx, int ny, int i,
+                          int j, float *out);
+/* The volume's worker threads, for phase B while the volume rests. */
+ms_vpool *ms_volume_extract_pool(ms_volume *v);
+void ms_extract_snap_free(ms_extract_snap *s);
+void ms_extract_work_free(ms_extract_work *w);
+size_t ms_extract_snap_bytes(const ms_extract_snap *s);
+size_t ms_extract_work_bytes(const ms_extract_work *w);
+
+#endif /* MS_VOLUME_EXTRACT_H */
