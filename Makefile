@@ -104,6 +104,10 @@ else
 Q := @
 endif
 
+# A compile that fails or is killed half-way leaves no truncated object
+# that the next make would take as up to date.
+.DELETE_ON_ERROR:
+
 .PHONY: all lib plugins tools tests check check-headers check-exports check-readme demo bench \
         install uninstall clean deps
 .DEFAULT_GOAL := all

@@ -108,6 +108,7 @@ static ms_writer_layout test_layout(unsigned fields)
     l.scene_name = "test scene";
     l.frame_dt = 0.02;
     l.output_every = 2;
+    l.deflate = 1;
     return l;
 }
 
@@ -268,6 +269,38 @@ START_TEST(round_trip_is_bit_for_bit_on_a_non_square_grid)
     check_frames(r, &l, 12);
     ms_reader_close(r);
     ck_assert(h5dump_reads(tmp_path("run.h5")));
+    remove_tmp_dir();
+}
+END_TEST
+
+/* output.deflate: level 0 stores the fields as they are (stored bytes =
+ * raw bytes, no filters), level 9 compresses; both read back bit for bit. */
+START_TEST(deflate_levels_round_trip_and_level_0_stores_raw)
+{
+    make_tmp_dir();
+    static const int levels[] = {0, 9};
+    for (int k = 0; k < 2; ++k) {
+        ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+        l.deflate = levels[k];
+        ms_writer *w;
+        ck_assert_msg(ms_writer_open_layout(tmp_path("d.h5"), &l, &w) == MS_OK, "%s",
+                      ms_last_error());
+        write_frames(w, &l, 0, 4);
+        ck_assert_int_eq(ms_writer_close(w), MS_OK);
+        ms_reader *r;
+        ck_assert_int_eq(ms_reader_open(tmp_path("d.h5"), &r), MS_OK);
+        for (int s = 0; s < MS_IO_NFIELDS; ++s) {
+            uint64_t stored = 0, raw = 0;
+            ck_assert_int_eq(ms_reader_field_bytes(r, 1u << s, &stored, &raw), MS_OK);
+            if (levels[k] == 0)
+                ck_assert_uint_eq(stored, raw);
+        }
+        check_frames(r, &l, 4);
+        ms_reader_close(r);
+        ck_assert(h5dump_reads(tmp_path("d.h5")));
+        remove(tmp_path("d.h5"));
+        remove(tmp_path("d.xmf"));
+    }
     remove_tmp_dir();
 }
 END_TEST
@@ -690,6 +723,13 @@ START_TEST(writer_refuses_bad_layouts_and_frames)
     l = test_layout(MS_FIELD_COMBINED);
     l.output_every = 0;
     MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "output_every");
+    l = test_layout(MS_FIELD_COMBINED);
+    l.deflate = 10;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "deflate level 10");
+    l.deflate = -1;
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "0 .. 9");
+    l = test_layout(MS_FIELD_COMBINED);
+    l.output_every = 0;
     MS_ASSERT_REFUSED(ms_writer_open_layout("", &l, &w), MS_ERR_INVALID_ARGUMENT, "empty");
     MS_ASSERT_REFUSED(ms_writer_open_layout(NULL, &l, &w), MS_ERR_INVALID_ARGUMENT, "path");
 
@@ -966,6 +1006,7 @@ static Suite *io_suite(void)
     TCase *tc = tcase_create("file");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, round_trip_is_bit_for_bit_on_a_non_square_grid);
+    tcase_add_test(tc, deflate_levels_round_trip_and_level_0_stores_raw);
     tcase_add_test(tc, only_the_fields_asked_for_are_written);
     tcase_add_test(tc, a_scene_text_over_64_kib_round_trips);
     tcase_add_test(tc, xdmf_lists_every_frame_with_z_y_x_axis_order);

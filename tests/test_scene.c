@@ -297,6 +297,10 @@ START_TEST(output_section_sets_fields_and_every)
     ck_assert_uint_eq(ms_scene_output_fields(sc),
                       MS_FIELD_COMBINED | MS_FIELD_SURFACE | MS_FIELD_VOLUME | MS_FIELD_PARTICLES);
     ck_assert_int_eq(ms_scene_output_every(sc), 3);
+    ck_assert_int_eq(ms_scene_output_deflate(sc), 1); /* the default */
+    ms_scene_destroy(sc);
+    sc = parse_ok("{\"surface\": {}, \"output\": {\"deflate\": 0}}");
+    ck_assert_int_eq(ms_scene_output_deflate(sc), 0);
     ms_scene_destroy(sc);
 }
 END_TEST

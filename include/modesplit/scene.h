@@ -23,6 +23,7 @@ MS_API double ms_scene_duration(const ms_scene *sc);    /* s */
 MS_API float ms_scene_frame_dt(const ms_scene *sc);     /* s */
 MS_API unsigned ms_scene_output_fields(const ms_scene *sc); /* MS_FIELD_* bits asked for */
 MS_API int ms_scene_output_every(const ms_scene *sc);   /* write every n-th frame, >= 1 */
+MS_API int ms_scene_output_deflate(const ms_scene *sc); /* 0..9, 0 = no compression */
 MS_API int ms_scene_has_render(const ms_scene *sc);     /* a `render` section exists */
 
 #ifdef __cplusplus

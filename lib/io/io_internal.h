@@ -39,6 +39,8 @@ typedef struct ms_writer_layout {
     const char *scene_name;       /* may be NULL */
     double frame_dt;              /* s, of the simulation */
     int output_every;             /* frames of the sim per written frame, >= 1 */
+    int deflate;                  /* height fields: deflate level 1..9 after shuffle;
+                                     0 = stored without filters (fastest, largest) */
 } ms_writer_layout;
 
 typedef struct ms_writer_data {

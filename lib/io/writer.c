@@ -33,9 +33,6 @@
 
 #include "io/io_internal.h"
 
-/* deflate level: 1 is fast and already takes most of what shuffle leaves
- * (see README, HDF5 layout). */
-#define DEFLATE_LEVEL 1
 #define TIME_CHUNK 256
 /* Half the fan-out of the chunk-index B-tree nodes (HDF5's default is 32):
  * a node splits every CHUNK_BTREE_K frames, and a split is the one change
@@ -151,10 +148,25 @@ static ms_status check_layout(const ms_writer_layout *l)
     if (l->output_every < 1)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: output_every %d must be >= 1",
                        l->output_every);
+    if (l->deflate < 0 || l->deflate > 9)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: deflate level %d is outside 0 .. 9 (0 = no compression)",
+                       l->deflate);
     return MS_OK;
 }
 
-static hid_t create_field(hid_t group, const char *name, const ms_grid *g)
+/* Height fields: shuffle + deflate at the scene's level (output.deflate,
+ * default 1: fast, and it already takes most of what shuffle leaves), or
+ * no filters at 0, where compression would cost more time than the
+ * simulation (README, HDF5 layout). */
+static int set_filters(hid_t dcpl, int deflate)
+{
+    if (deflate == 0)
+        return 0;
+    return H5Pset_shuffle(dcpl) >= 0 && H5Pset_deflate(dcpl, (unsigned)deflate) >= 0 ? 0 : -1;
+}
+
+static hid_t create_field(hid_t group, const char *name, const ms_grid *g, int deflate)
 {
     hsize_t dims[3] = {0, (hsize_t)g->ny, (hsize_t)g->nx};
     hsize_t maxdims[3] = {H5S_UNLIMITED, (hsize_t)g->ny, (hsize_t)g->nx};
@@ -165,7 +177,7 @@ static hid_t create_field(hid_t group, const char *name, const ms_grid *g)
     hid_t d = -1;
     float fill = NAN; /* a frame without data reads as NaN, never as a flat 0 */
     if (space >= 0 && dcpl >= 0 && dapl >= 0 && H5Pset_chunk(dcpl, 3, chunk) >= 0 &&
-        H5Pset_shuffle(dcpl) >= 0 && H5Pset_deflate(dcpl, DEFLATE_LEVEL) >= 0 &&
+        set_filters(dcpl, deflate) >= 0 &&
         H5Pset_fill_value(dcpl, H5T_NATIVE_FLOAT, &fill) >= 0 &&
         H5Pset_chunk_cache(dapl, 0, 0, 1.0) >= 0) {
         d = H5Dcreate2(group, name, H5T_IEEE_F32LE, space, H5P_DEFAULT, dcpl, dapl);
@@ -232,7 +244,7 @@ static int write_layout(ms_writer *w, const ms_writer_layout *l)
         for (int i = 0; i < MS_IO_NFIELDS; ++i) {
             if (!(l->fields & (1u << i)))
                 continue;
-            w->dset[i] = create_field(g, ms_io_field_names[i], &l->grid[i]);
+            w->dset[i] = create_field(g, ms_io_field_names[i], &l->grid[i], l->deflate);
             if (w->dset[i] < 0) {
                 H5Gclose(g);
                 return -1;

@@ -49,6 +49,7 @@ ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields, m
     l.scene_name = sc ? ms_scene_name(sc) : NULL;
     l.frame_dt = sc ? ms_scene_frame_dt(sc) : 0.0;
     l.output_every = sc ? ms_scene_output_every(sc) : 1;
+    l.deflate = sc ? ms_scene_output_deflate(sc) : 1;
     return ms_writer_open_layout(path, &l, out);
 }
 

@@ -205,6 +205,11 @@ int ms_scene_output_every(const ms_scene *sc)
     return sc ? sc->output_every : 1;
 }
 
+int ms_scene_output_deflate(const ms_scene *sc)
+{
+    return sc ? sc->output_deflate : 1;
+}
+
 int ms_scene_has_render(const ms_scene *sc)
 {
     return sc ? sc->has_render : 0;

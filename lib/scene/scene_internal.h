@@ -145,6 +145,7 @@ struct ms_scene {
 
     unsigned output_fields; /* MS_FIELD_* */
     int output_every;
+    int output_deflate; /* 0..9 */
 };
 
 #endif /* MS_SCENE_INTERNAL_H */

@@ -734,12 +734,13 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
 
 static ms_status read_output(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
-    static const char *const keys[] = {"fields", "every", NULL};
+    static const char *const keys[] = {"fields", "every", "deflate", NULL};
     static const char *const names[] = {"combined", "surface", "volume", "particles", NULL};
     json_t *o, *fields;
-    long every;
+    long every, deflate;
     sc->output_fields = MS_FIELD_COMBINED;
     sc->output_every = 1;
+    sc->output_deflate = 1;
     TRY(ms_scene_get_object(c, root, "output", &o));
     if (!o)
         return MS_OK;
@@ -747,6 +748,8 @@ static ms_status read_output(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     TRY(ms_scene_check_keys(c, o, keys));
     TRY(ms_scene_get_int(c, o, "every", 1, 1, 1000000, &every));
     sc->output_every = (int)every;
+    TRY(ms_scene_get_int(c, o, "deflate", 1, 0, 9, &deflate));
+    sc->output_deflate = (int)deflate;
     TRY(ms_scene_get_array(c, o, "fields", 0, 16, &fields));
     if (fields) {
         sc->output_fields = 0;

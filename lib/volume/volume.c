@@ -114,6 +114,8 @@ static void free_particles(ms_volume *v)
     ms_free(v->gl_count);
     ms_free(v->cell);
     ms_free(v->mark);
+    ms_free(v->pk);
+    v->pk = NULL;
     v->id = v->id2 = v->nbr = v->cell = NULL;
     v->nl_begin = v->nl_count = v->gl_begin = v->gl_count = NULL;
     v->mark = NULL;
@@ -136,6 +138,8 @@ void ms_volume_destroy(ms_volume *v)
         ms_free(v->lists[p].r2);
         ms_free(v->ghosts[p].idx);
         ms_free(v->ghosts[p].r2);
+        ms_free(v->cand[p]);
+        ms_free(v->cand_idx[p]);
     }
     ms_free(v);
 }
@@ -183,8 +187,9 @@ ms_status ms_volume_reserve(ms_volume *v, int n)
     t.gl_count = ms_alloc_array(alloc, sizeof(int));
     t.cell = ms_alloc_array(alloc, sizeof(int));
     t.mark = ms_alloc_array(alloc, 1);
+    t.pk = ms_alloc_array(8 * alloc, sizeof(float));
     ok &= t.id && t.id2 && t.nbr && t.nl_begin && t.nl_count && t.gl_begin && t.gl_count &&
-          t.cell && t.mark;
+          t.cell && t.mark && t.pk;
     if (!ok) {
         free_particles(&t);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for %zu particles", cap);
@@ -370,7 +375,7 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *out)
     out->count = v->n;
     out->surface_count = v->surface_count;
     out->pairs = v->pairs;
-    size_t per = 30 * sizeof(float) + 8 * sizeof(int) + 1;
+    size_t per = 38 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
     out->bytes = sizeof *v + (size_t)v->cap * per +
                  ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
                  v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int);

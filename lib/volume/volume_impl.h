@@ -191,6 +191,16 @@ struct ms_volume {
     int surface_count;
     double pairs;
     int coincident;      /* pairs closer than eps in the last density pass */
+
+    /* per particle, 8 floats packed for the 64-bit gathers of the
+     * AVX-512 force pass (forces.c): x, y, z, prs, vx, vy, vz, inv_rho of
+     * the last density pass */
+    float *pk;
+    /* density.c, per thread: the candidates (x, y, z; index) of the 27
+     * cells around the cell in hand, copied into one run */
+    float *cand[MS_VOLUME_MAX_THREADS];
+    int *cand_idx[MS_VOLUME_MAX_THREADS];
+    size_t cand_cap[MS_VOLUME_MAX_THREADS];
 };
 
 /* A surface particle: fewer neighbours (self and wall images included)

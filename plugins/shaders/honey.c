@@ -11,21 +11,9 @@
  *   density    1/m: how quickly light is absorbed (transmission color^(density len));
  *   shininess  Blinn-Phong exponent of the highlight.
  */
-#include <stdlib.h>
-
 #include "../common/params.h"
+#include "../common/shader.h"
 #include "modesplit/plugin.h"
-
-static const char vertex_source[] =
-    "#version 120\n"
-    "varying vec3 v_pos;\n"
-    "varying vec3 v_normal;\n"
-    "void main()\n"
-    "{\n"
-    "    v_pos = gl_Vertex.xyz;\n"
-    "    v_normal = gl_Normal;\n"
-    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
-    "}\n";
 
 static const char fragment_source[] =
     "#version 120\n"
@@ -82,19 +70,7 @@ static int honey_create(const char *json, void **out, char *err, size_t err_size
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
         return rc;
-    honey *p = malloc(sizeof *p);
-    if (!p) {
-        snprintf(err, err_size, "out of memory");
-        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
-    }
-    *p = o;
-    *out = p;
-    return MS_PLUGIN_OK;
-}
-
-static void honey_destroy(void *self)
-{
-    free(self);
+    return shader_keep(&o, sizeof o, out, err, err_size);
 }
 
 static void honey_set_uniforms(const void *self, const ms_shader_uniforms *u)
@@ -109,10 +85,10 @@ static void honey_set_uniforms(const void *self, const ms_shader_uniforms *u)
 static const ms_shader_vtable honey_vtable = {
     .size = sizeof(ms_shader_vtable),
     .passes = MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION,
-    .vertex_source = vertex_source,
+    .vertex_source = SHADER_VERTEX_SOURCE,
     .fragment_source = fragment_source,
     .create = honey_create,
-    .destroy = honey_destroy,
+    .destroy = shader_free,
     .set_uniforms = honey_set_uniforms,
 };
 

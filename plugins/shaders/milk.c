@@ -8,21 +8,9 @@
  *   softness  how far light wraps past the terminator, 0 (hard) .. 1;
  *   sheen     strength of the environment's reflection at grazing angles.
  */
-#include <stdlib.h>
-
 #include "../common/params.h"
+#include "../common/shader.h"
 #include "modesplit/plugin.h"
-
-static const char vertex_source[] =
-    "#version 120\n"
-    "varying vec3 v_pos;\n"
-    "varying vec3 v_normal;\n"
-    "void main()\n"
-    "{\n"
-    "    v_pos = gl_Vertex.xyz;\n"
-    "    v_normal = gl_Normal;\n"
-    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
-    "}\n";
 
 static const char fragment_source[] =
     "#version 120\n"
@@ -71,19 +59,7 @@ static int milk_create(const char *json, void **out, char *err, size_t err_size)
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
         return rc;
-    milk *p = malloc(sizeof *p);
-    if (!p) {
-        snprintf(err, err_size, "out of memory");
-        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
-    }
-    *p = m;
-    *out = p;
-    return MS_PLUGIN_OK;
-}
-
-static void milk_destroy(void *self)
-{
-    free(self);
+    return shader_keep(&m, sizeof m, out, err, err_size);
 }
 
 static void milk_set_uniforms(const void *self, const ms_shader_uniforms *u)
@@ -97,10 +73,10 @@ static void milk_set_uniforms(const void *self, const ms_shader_uniforms *u)
 static const ms_shader_vtable milk_vtable = {
     .size = sizeof(ms_shader_vtable),
     .passes = MS_SHADER_NEEDS_REFLECTION,
-    .vertex_source = vertex_source,
+    .vertex_source = SHADER_VERTEX_SOURCE,
     .fragment_source = fragment_source,
     .create = milk_create,
-    .destroy = milk_destroy,
+    .destroy = shader_free,
     .set_uniforms = milk_set_uniforms,
 };
 

@@ -8,21 +8,9 @@
  *   ior        refractive index (sets the Fresnel reflectance);
  *   shininess  Blinn-Phong exponent of the highlight (higher = sharper).
  */
-#include <stdlib.h>
-
 #include "../common/params.h"
+#include "../common/shader.h"
 #include "modesplit/plugin.h"
-
-static const char vertex_source[] =
-    "#version 120\n"
-    "varying vec3 v_pos;\n"
-    "varying vec3 v_normal;\n"
-    "void main()\n"
-    "{\n"
-    "    v_pos = gl_Vertex.xyz;\n"
-    "    v_normal = gl_Normal;\n"
-    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
-    "}\n";
 
 static const char fragment_source[] =
     "#version 120\n"
@@ -72,19 +60,7 @@ static int oil_create(const char *json, void **out, char *err, size_t err_size)
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
         return rc;
-    oil *p = malloc(sizeof *p);
-    if (!p) {
-        snprintf(err, err_size, "out of memory");
-        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
-    }
-    *p = o;
-    *out = p;
-    return MS_PLUGIN_OK;
-}
-
-static void oil_destroy(void *self)
-{
-    free(self);
+    return shader_keep(&o, sizeof o, out, err, err_size);
 }
 
 static void oil_set_uniforms(const void *self, const ms_shader_uniforms *u)
@@ -98,10 +74,10 @@ static void oil_set_uniforms(const void *self, const ms_shader_uniforms *u)
 static const ms_shader_vtable oil_vtable = {
     .size = sizeof(ms_shader_vtable),
     .passes = MS_SHADER_NEEDS_REFLECTION,
-    .vertex_source = vertex_source,
+    .vertex_source = SHADER_VERTEX_SOURCE,
     .fragment_source = fragment_source,
     .create = oil_create,
-    .destroy = oil_destroy,
+    .destroy = shader_free,
     .set_uniforms = oil_set_uniforms,
 };
 

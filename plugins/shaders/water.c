@@ -11,21 +11,9 @@
  *   caustics  strength of the caustics light map (0 = none);
  *   clarity   path length (m) over which light under water falls to 1/e.
  */
-#include <stdlib.h>
-
 #include "../common/params.h"
+#include "../common/shader.h"
 #include "modesplit/plugin.h"
-
-static const char vertex_source[] =
-    "#version 120\n"
-    "varying vec3 v_pos;\n"
-    "varying vec3 v_normal;\n"
-    "void main()\n"
-    "{\n"
-    "    v_pos = gl_Vertex.xyz;\n"
-    "    v_normal = gl_Normal;\n"
-    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
-    "}\n";
 
 static const char fragment_source[] =
     "#version 120\n"
@@ -84,19 +72,7 @@ static int water_create(const char *json, void **out, char *err, size_t err_size
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
         return rc;
-    water *p = malloc(sizeof *p);
-    if (!p) {
-        snprintf(err, err_size, "out of memory");
-        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
-    }
-    *p = w;
-    *out = p;
-    return MS_PLUGIN_OK;
-}
-
-static void water_destroy(void *self)
-{
-    free(self);
+    return shader_keep(&w, sizeof w, out, err, err_size);
 }
 
 static void water_set_uniforms(const void *self, const ms_shader_uniforms *u)
@@ -111,10 +87,10 @@ static void water_set_uniforms(const void *self, const ms_shader_uniforms *u)
 static const ms_shader_vtable water_vtable = {
     .size = sizeof(ms_shader_vtable),
     .passes = MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION | MS_SHADER_NEEDS_CAUSTICS,
-    .vertex_source = vertex_source,
+    .vertex_source = SHADER_VERTEX_SOURCE,
     .fragment_source = fragment_source,
     .create = water_create,
-    .destroy = water_destroy,
+    .destroy = shader_free,
     .set_uniforms = water_set_uniforms,
 };
 

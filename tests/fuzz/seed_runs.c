@@ -24,6 +24,7 @@ int main(int argc, char **argv)
         l.scene_name = "seed";
         l.frame_dt = 0.02;
         l.output_every = 1 + s;
+        l.deflate = s % 2; /* both with and without filters */
         char path[512];
         snprintf(path, sizeof path, "%s/seed%d.h5", argv[1], s);
         ms_writer *w;
