@@ -247,46 +247,27 @@ int ms_volume_pick_isa(void)
 #endif
 }
 
-/* The nine row ranges (x-1 .. x+1) of the 27 cells around cell c, how
- * many candidates they hold, and per axis k the bounds (m) of the cells
- * beside c: below[k] the top of cell c - 1, above[k] the bottom of cell
- * c + 1, each moved by tol away from c. A position cell_of puts in c is
- * at least max(q - below, 0) from any particle of the cells c - 1 and at
- * least max(above - q, 0) from those of c + 1 (the edge cells, which
- * also hold what lies beyond the domain, reach away from c, never
- * towards it; the padding cells are empty). */
+/* The nine row ranges (x-1 .. x+1) of the 27 cells around cell c, and
+ * how many candidates they hold. */
 typedef struct rows {
     long cell;
-    /* per row: [lo, hi) the three cells, [m0, m1) the centre one; 16
-     * entries for the vector trim */
-    int lo[16], hi[16], m0[16], m1[16];
+    int lo[9], hi[9];
     size_t cand;
-    float below[3], above[3];
 } rows;
 
-static const signed char row_oz[9] = {-1, -1, -1, 0, 0, 0, 1, 1, 1};
-static const signed char row_oy[9] = {-1, 0, 1, -1, 0, 1, -1, 0, 1};
-
-static void rows_of(const ms_volume *v, long c, float tol, rows *r)
+static void rows_of(const ms_volume *v, long c, rows *r)
 {
     const int *restrict start = v->cell_start;
     const long sx = v->gx, sxy = (long)v->gx * v->gy;
-    const int ci[3] = {(int)(c % sx), (int)(c / sx % v->gy), (int)(c / sxy)};
+    static const signed char oz[9] = {-1, -1, -1, 0, 0, 0, 1, 1, 1};
+    static const signed char oy[9] = {-1, 0, 1, -1, 0, 1, -1, 0, 1};
     r->cell = c;
     r->cand = 0;
     for (int k = 0; k < 9; ++k) {
-        const long row = c + row_oz[k] * sxy + row_oy[k] * sx;
+        const long row = c + oz[k] * sxy + oy[k] * sx;
         r->lo[k] = start[row - 1];
-        r->m0[k] = start[row];
-        r->m1[k] = start[row + 1];
         r->hi[k] = start[row + 2];
         r->cand += (size_t)(r->hi[k] - r->lo[k]);
-    }
-    for (int k = 9; k < 16; ++k)
-        r->lo[k] = r->hi[k] = r->m0[k] = r->m1[k] = 0;
-    for (int k = 0; k < 3; ++k) { /* cell ci covers [lo + (ci - 1) h, lo + ci h) */
-        r->below[k] = v->desc.domain_min[k] + (float)(ci[k] - 1) * v->K.h + tol;
-        r->above[k] = v->desc.domain_min[k] + (float)ci[k] * v->K.h - tol;
     }
 }
 
@@ -334,65 +315,43 @@ __attribute__((target("avx512f,bmi,bmi2"))) static long cand_of(ms_volume *v, in
 }
 #endif
 
-#if MS_VOLUME_HAVE_AVX512
-/* The row ranges of r cut to the cells a sphere of radius h around q can
- * reach: a row whose cells all lie h or farther from q is left out, and
- * so are its end cells (x - 1, x + 1) when they do. Only candidates that
- * are certainly at r >= h go (tol covers the rounding of the cell bounds
- * and of cell_of), the rest keep their order: the same neighbour list as
- * the whole rows give, from about a third fewer candidate blocks. The
- * nine rows in one vector; the other filters take the whole rows. */
-__attribute__((target("avx512f"))) static void trim_rows_avx512(const ms_volume *v,
-                                                                const rows *r, const float q[3],
-                                                                int lo[16], int hi[16])
-{
-    const __m512 zero = _mm512_setzero_ps(), h2 = _mm512_set1_ps(v->K.h2);
-    float g[3][2]; /* squared distance to the slab below / above, per axis */
-    for (int k = 0; k < 3; ++k) {
-        float b = q[k] - r->below[k], a = r->above[k] - q[k];
-        b = b > 0.0f ? b : 0.0f;
-        a = a > 0.0f ? a : 0.0f;
-        g[k][0] = b * b;
-        g[k][1] = a * a;
-    }
-    /* rows k = 3 (oz + 1) + (oy + 1): oy = -1 in lanes 0, 3, 6, +1 in 2, 5,
-     * 8; oz = -1 in lanes 0..2, +1 in 6..8 */
-    __m512 gy = _mm512_mask_mov_ps(_mm512_maskz_mov_ps(0x049, _mm512_set1_ps(g[1][0])), 0x124,
-                                   _mm512_set1_ps(g[1][1]));
-    __m512 gz = _mm512_mask_mov_ps(_mm512_maskz_mov_ps(0x007, _mm512_set1_ps(g[2][0])), 0x1c0,
-                                   _mm512_set1_ps(g[2][1]));
-    __m512 dyz2 = _mm512_add_ps(_mm512_add_ps(gy, gz), zero);
-    __mmask16 keep = _mm512_cmp_ps_mask(dyz2, h2, _CMP_LT_OQ) & 0x1ff;
-    __mmask16 left =
-        _mm512_mask_cmp_ps_mask(keep, _mm512_add_ps(dyz2, _mm512_set1_ps(g[0][0])), h2, _CMP_LT_OQ);
-    __mmask16 right =
-        _mm512_mask_cmp_ps_mask(keep, _mm512_add_ps(dyz2, _mm512_set1_ps(g[0][1])), h2, _CMP_LT_OQ);
-    __m512i m0 = _mm512_loadu_si512((const void *)r->m0);
-    __m512i m1 = _mm512_mask_mov_epi32(m0, keep, _mm512_loadu_si512((const void *)r->m1));
-    _mm512_storeu_si512((void *)lo,
-                        _mm512_mask_mov_epi32(m0, left, _mm512_loadu_si512((const void *)r->lo)));
-    _mm512_storeu_si512((void *)hi,
-                        _mm512_mask_mov_epi32(m1, right, _mm512_loadu_si512((const void *)r->hi)));
-}
-#endif
-
 /* Append to L every particle within h of q from the rows r. Returns the
  * neighbours appended, -1 if the list could not grow. */
 static int gather(const ms_volume *v, ms_nlist *L, const float q[3], const rows *r, int tag)
 {
     if (!reserve(L, r->cand + 2 * LANES))
         return -1;
-    size_t n;
-#if MS_VOLUME_HAVE_AVX512
-    if (v->isa == MS_VOLUME_ISA_AVX512) {
-        int lo[16], hi[16];
-        trim_rows_avx512(v, r, q, lo, hi);
-        n = filter_rows_avx512(v, lo, hi, q, tag, L->idx + L->len, L->r2 + L->len);
-    } else
-#endif
-        n = filter_of(v->isa)(v, r->lo, r->hi, q, tag, L->idx + L->len, L->r2 + L->len);
+    size_t n = filter_of(v->isa)(v, r->lo, r->hi, q, tag, L->idx + L->len, L->r2 + L->len);
     L->len += n;
     return (int)n;
+}
+
+/* The wall image q of particle p (p reflected across the domain walls of
+ * the image bits in tag) has as neighbours a subset of p's: for j inside
+ * the domain, |q - x_j|^2 = |p - x_j|^2 + 4 sum_k d_k e_k (d_k, e_k the
+ * distances of p and x_j from wall k, both >= 0). So the image list is
+ * p's real list (n entries from idx) filtered again at q, in its order:
+ * no search of the cells around q. Plain C, the same on every ISA. */
+static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
+                        const int *restrict idx, int n)
+{
+    if (!reserve(L, (size_t)n + 2 * LANES))
+        return -1;
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const float h2 = v->K.h2;
+    int *restrict out = L->idx + L->len;
+    float *restrict out2 = L->r2 + L->len;
+    size_t m = 0;
+    for (int k = 0; k < n; ++k) {
+        const int j = idx[k];
+        float dx = q[0] - x[j], dy = q[1] - y[j], dz = q[2] - z[j];
+        float r2 = dx * dx + dy * dy + dz * dz;
+        out[m] = j | tag;
+        out2[m] = r2;
+        m += r2 < h2;
+    }
+    L->len += m;
+    return (int)m;
 }
 
 /* The images of particle i's neighbours across the tangent plane of its
@@ -446,10 +405,19 @@ static void pad(ms_nlist *L, size_t begin, int index, float h2)
     size_t end = begin + (L->len - begin + LANES - 1) / LANES * LANES;
     int *restrict idx = L->idx + L->len;
     float *restrict r2 = L->r2 + L->len;
+#if defined(__SSE2__)
+    const __m128i vi = _mm_set1_epi32(index);
+    const __m128 vr = _mm_set1_ps(h2);
+    for (int l = 0; l < LANES; l += 4) { /* the compiler keeps this scalar */
+        _mm_storeu_si128((__m128i *)(void *)(idx + l), vi);
+        _mm_storeu_ps(r2 + l, vr);
+    }
+#else
     for (int l = 0; l < LANES; ++l) {
         idx[l] = index;
         r2[l] = h2;
     }
+#endif
     L->len = end;
 }
 
@@ -504,20 +472,14 @@ static void density_part(void *ctxp, int part, int b, int e)
     L->len = 0;
     G->len = 0;
     v->list_failed[part] = 0;
-    rows own = {.cell = -1}, img;
-    /* rounding of the cell bounds and of cell_of: relative to the
-     * coordinates' magnitude */
-    float ext = 0.0f;
-    for (int k = 0; k < 3; ++k)
-        ext = fmaxf(ext, fmaxf(fabsf(v->desc.domain_min[k]), fabsf(v->desc.domain_max[k])));
-    const float tol = 1e-3f * v->K.h + 1e-5f * ext;
+    rows own = {.cell = -1};
     const int run = MS_VOLUME_HAVE_AVX512 && v->isa == MS_VOLUME_ISA_AVX512;
     long ncand = 0;
     for (int i = b; i < e; ++i) {
         const float p[3] = {v->x[i], v->y[i], v->z[i]};
         const size_t begin = L->len, gbegin = G->len;
         if (v->cell[i] != own.cell) { /* the particles of a cell share their rows */
-            rows_of(v, v->cell[i], tol, &own);
+            rows_of(v, v->cell[i], &own);
 #if MS_VOLUME_HAVE_AVX512
             if (run)
                 ncand = cand_of(v, part, &own);
@@ -556,8 +518,8 @@ static void density_part(void *ctxp, int part, int b, int e)
             for (int k = 0; k < 3; ++k)
                 if (f & (1u << k))
                     q[k] = 2.0f * wall[k] - q[k];
-            rows_of(v, ms_volume_cell_of(v, q[0], q[1], q[2]), tol, &img);
-            int got = gather(v, G, q, &img, (int)(f << MS_VOLUME_IMAGE_SHIFT));
+            int got = gather_image(v, G, q, (int)(f << MS_VOLUME_IMAGE_SHIFT), L->idx + begin,
+                                   nreal);
             if (got < 0) {
                 v->list_failed[part] = 1;
                 return;

@@ -135,6 +135,65 @@ real_sums_avx512(const ms_volume *v, const int *restrict idx, const float *restr
 }
 #endif
 
+#if MS_VOLUME_HAVE_AVX512
+/* The wall-image terms of sums_of (no shape images) for entries
+ * [k, k + 16) of the image list, in AVX-512: per entry the same
+ * operations as the C loop (reflection as 2 wall - x and a sign flip,
+ * IEEE sqrt and division, no fused multiply-adds), so the same seven
+ * terms, bit for bit; t[q][l] is term q of entry k + l. The caller adds
+ * them in entry order, as the C loop does. */
+__attribute__((target("avx512f,avx512dq"))) static void
+image_terms_avx512(const ms_volume *v, const int *restrict gidx, const float *restrict gr2, int i,
+                   const float wall[3], float t[7][16])
+{
+    const double *pk = (const double *)(const void *)v->pk;
+    const float *pi8 = v->pk + 8 * (size_t)i;
+    const __m512 zero = _mm512_setzero_ps(), h = _mm512_set1_ps(v->K.h);
+    const __m512 eps = _mm512_set1_ps(sqrtf(v->eps2)), pi = _mm512_set1_ps(pi8[3]);
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+    const __m512i sign = _mm512_set1_epi32((int)0x80000000u);
+    const __m512i g = _mm512_loadu_si512((const void *)gidx);
+    const __m512i f = _mm512_srli_epi32(g, MS_VOLUME_IMAGE_SHIFT);
+    const __m512i j4 =
+        _mm512_slli_epi32(_mm512_and_si512(g, _mm512_set1_epi32((1 << MS_VOLUME_IMAGE_SHIFT) - 1)), 2);
+    const __m256i jl = _mm512_castsi512_si256(j4), jh = _mm512_extracti64x4_epi64(j4, 1);
+    __m512 p[3], u[3], pj, irj;
+#define GATHER2(q, a, b)                                                                  \
+    do {                                                                                  \
+        __m512 lo_ = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk + (q), 8));             \
+        __m512 hi_ = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk + (q), 8));             \
+        (a) = _mm512_permutex2var_ps(lo_, even, hi_);                                     \
+        (b) = _mm512_permutex2var_ps(lo_, odd, hi_);                                      \
+    } while (0)
+    GATHER2(0, p[0], p[1]);
+    GATHER2(1, p[2], pj);
+    GATHER2(2, u[0], u[1]);
+    GATHER2(3, u[2], irj);
+#undef GATHER2
+    const float own[3] = {pi8[0], pi8[1], pi8[2]}, ownu[3] = {pi8[4], pi8[5], pi8[6]};
+    __m512 d[3], du[3];
+    for (int a = 0; a < 3; ++a) {
+        __mmask16 m = _mm512_test_epi32_mask(f, _mm512_set1_epi32(1 << a));
+        p[a] = _mm512_mask_sub_ps(p[a], m, _mm512_set1_ps(2.0f * wall[a]), p[a]);
+        u[a] = _mm512_castsi512_ps(
+            _mm512_mask_xor_epi32(_mm512_castps_si512(u[a]), m, _mm512_castps_si512(u[a]), sign));
+        d[a] = _mm512_sub_ps(_mm512_set1_ps(own[a]), p[a]);
+        du[a] = _mm512_sub_ps(u[a], _mm512_set1_ps(ownu[a]));
+    }
+    __m512 r = _mm512_sqrt_ps(_mm512_loadu_ps(gr2));
+    __m512 hr = _mm512_max_ps(_mm512_sub_ps(h, r), zero);
+    __m512 fv = _mm512_mul_ps(irj, hr);
+    __m512 fp = _mm512_div_ps(_mm512_mul_ps(_mm512_mul_ps(_mm512_add_ps(pi, pj), fv), hr),
+                              _mm512_max_ps(r, eps));
+    for (int a = 0; a < 3; ++a) {
+        _mm512_storeu_ps(t[a], _mm512_mul_ps(fp, d[a]));
+        _mm512_storeu_ps(t[3 + a], _mm512_mul_ps(fv, du[a]));
+    }
+    _mm512_storeu_ps(t[6], fv);
+}
+#endif
+
 /* The real-neighbour sums in plain C lanes (vectorised by the compiler). */
 static pair_sums real_sums_c(const ms_volume *v, const int *restrict idx,
                              const float *restrict r2s, int n, int i)
@@ -197,6 +256,25 @@ static pair_sums sums_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist
     const int gn = v->gl_count[i];
     float wall[3];
     ms_volume_walls_near(v, xi, yi, zi, wall);
+#if MS_VOLUME_HAVE_AVX512
+    if (v->isa == MS_VOLUME_ISA_AVX512 && !(v->c_d[i] < v->K.h)) { /* wall images only */
+        float t[7][16];
+        for (int k = 0; k < gn; k += 16) { /* the list is padded to 16 */
+            image_terms_avx512(v, gidx + k, gr2 + k, i, wall, t);
+            const int m = gn - k < 16 ? gn - k : 16;
+            for (int l = 0; l < m; ++l) {
+                s.px += t[0][l];
+                s.py += t[1][l];
+                s.pz += t[2][l];
+                s.vx += t[3][l];
+                s.vy += t[4][l];
+                s.vz += t[5][l];
+                s.d += t[6][l];
+            }
+        }
+        return s;
+    }
+#endif
     for (int k = 0; k < gn; ++k) {
         const unsigned f = (unsigned)gidx[k] >> MS_VOLUME_IMAGE_SHIFT;
         const int j = gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
