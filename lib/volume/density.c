@@ -354,6 +354,52 @@ static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int t
     return (int)m;
 }
 
+#if MS_VOLUME_HAVE_AVX512
+/* gather_image in AVX-512: positions by 64-bit gathers from the packed
+ * copy (pack_part wrote them for this pass), the same r^2 and the same
+ * order (compress keeps it), so the same list. */
+__attribute__((target("avx512f,avx512dq,bmi,bmi2,popcnt"))) static int
+gather_image_avx512(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
+                    const int *restrict idx, int n)
+{
+    if (!reserve(L, (size_t)n + 2 * LANES))
+        return -1;
+    const double *pk = (const double *)(const void *)v->pk;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(v->K.h2);
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+    const __m512i vtag = _mm512_set1_epi32(tag);
+    int *restrict out = L->idx + L->len;
+    float *restrict out2 = L->r2 + L->len;
+    size_t m = 0;
+    for (int k = 0; k < n; k += 16) {
+        unsigned rem = (unsigned)(n - k);
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+        /* idx is padded (with the particle itself): a whole block is valid memory */
+        __m512i j = _mm512_loadu_si512((const void *)(idx + k));
+        __m512i j4 = _mm512_slli_epi32(j, 2);
+        __m256i jl = _mm512_castsi512_si256(j4), jh = _mm512_extracti64x4_epi64(j4, 1);
+        __m512 a0 = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk, 8));
+        __m512 a1 = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk, 8));
+        __m512 b0 = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk + 1, 8));
+        __m512 b1 = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk + 1, 8));
+        __m512 dx = _mm512_sub_ps(qx, _mm512_permutex2var_ps(a0, even, a1));
+        __m512 dy = _mm512_sub_ps(qy, _mm512_permutex2var_ps(a0, odd, a1));
+        __m512 dz = _mm512_sub_ps(qz, _mm512_permutex2var_ps(b0, even, b1));
+        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                  _mm512_mul_ps(dz, dz));
+        __mmask16 hit = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(out + m),
+                            _mm512_maskz_compress_epi32(hit, _mm512_or_si512(j, vtag)));
+        _mm512_storeu_ps(out2 + m, _mm512_maskz_compress_ps(hit, r2));
+        m += (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
+    }
+    L->len += m;
+    return (int)m;
+}
+#endif
+
 /* The images of particle i's neighbours across the tangent plane of its
  * nearest shape collider (point c = p - d n, normal n): the particles j on
  * the liquid side of the plane within h of p's mirror image q = p - 2 d n.
@@ -518,8 +564,14 @@ static void density_part(void *ctxp, int part, int b, int e)
             for (int k = 0; k < 3; ++k)
                 if (f & (1u << k))
                     q[k] = 2.0f * wall[k] - q[k];
-            int got = gather_image(v, G, q, (int)(f << MS_VOLUME_IMAGE_SHIFT), L->idx + begin,
-                                   nreal);
+            const int tag = (int)(f << MS_VOLUME_IMAGE_SHIFT);
+            int got;
+#if MS_VOLUME_HAVE_AVX512
+            if (run)
+                got = gather_image_avx512(v, G, q, tag, L->idx + begin, nreal);
+            else
+#endif
+                got = gather_image(v, G, q, tag, L->idx + begin, nreal);
             if (got < 0) {
                 v->list_failed[part] = 1;
                 return;
@@ -552,14 +604,8 @@ static void density_part(void *ctxp, int part, int b, int e)
         v->rho[i] = rho;
         v->inv_rho[i] = 1.0f / rho;
         v->prs[i] = ms_volume_pressure(v, rho);
-        float *restrict pk = v->pk + 8 * (size_t)i; /* forces.c's 64-bit gathers */
-        pk[0] = p[0];
-        pk[1] = p[1];
-        pk[2] = p[2];
+        float *restrict pk = v->pk + 8 * (size_t)i; /* pack_part wrote the rest */
         pk[3] = v->prs[i];
-        pk[4] = v->vx[i];
-        pk[5] = v->vy[i];
-        pk[6] = v->vz[i];
         pk[7] = v->inv_rho[i];
         float err = rho / rho0 - 1.0f; /* compression */
         max_err = err > max_err ? err : max_err;
@@ -570,9 +616,28 @@ static void density_part(void *ctxp, int part, int b, int e)
     ctx->pairs[part] = pairs;
 }
 
+/* The packed copy's positions and velocities (v->pk: x, y, z, -, vx, vy,
+ * vz, -), for the 64-bit gathers of the image search and the force pass;
+ * density_part adds p and 1/rho. */
+static void pack_part(void *ctxp, int part, int b, int e)
+{
+    (void)part;
+    const ms_volume *v = ((density_ctx *)ctxp)->v;
+    float *restrict pk = v->pk;
+    for (int i = b; i < e; ++i) {
+        pk[8 * (size_t)i] = v->x[i];
+        pk[8 * (size_t)i + 1] = v->y[i];
+        pk[8 * (size_t)i + 2] = v->z[i];
+        pk[8 * (size_t)i + 4] = v->vx[i];
+        pk[8 * (size_t)i + 5] = v->vy[i];
+        pk[8 * (size_t)i + 6] = v->vz[i];
+    }
+}
+
 ms_status ms_volume_density(ms_volume *v)
 {
     density_ctx ctx = {.v = v};
+    ms_vpool_run(v->pool, pack_part, &ctx, v->n);
     ms_vpool_run(v->pool, density_part, &ctx, v->n);
     int coincident = 0, surface = 0;
     float max_err = 0.0f;
