@@ -295,6 +295,107 @@ START_TEST(pose_translates_and_moves)
 }
 END_TEST
 
+/* A turned shape: its distance at p is the unturned one at R^T (p - pos),
+ * its normal is R times the unturned one, its material moves at
+ * v + omega x (p - pos), its bounds hold every point inside it, the depth
+ * over it is marched in the world's frame, and a zero or NaN quaternion or
+ * a huge omega is refused, changing nothing. */
+START_TEST(orientation_turns_distance_normal_velocity_and_bounds)
+{
+    ms_shape *s = make("box", "{\"size\": [0.4, 0.2, 0.1], \"radius\": 0.02}");
+    ms_shape *ref = make("box", "{\"size\": [0.4, 0.2, 0.1], \"radius\": 0.02}");
+    const float pos[3] = {0.5f, -0.3f, 0.2f}, vel[3] = {0.1f, 0, 0};
+    ck_assert_int_eq(ms_shape_set_pose(s, pos, vel), MS_OK);
+    /* 60 degrees about the axis (1, 2, 2)/3, given unnormalised (x 2) */
+    const double half = PI / 6, ax[3] = {1.0 / 3, 2.0 / 3, 2.0 / 3};
+    const float q[4] = {(float)(2 * cos(half)), (float)(2 * sin(half) * ax[0]),
+                        (float)(2 * sin(half) * ax[1]), (float)(2 * sin(half) * ax[2])};
+    const float omega[3] = {0, 0, 3};
+    ck_assert_int_eq(ms_shape_set_orientation(s, q, omega), MS_OK);
+    float gq[4], gw[3];
+    ms_shape_get_orientation(s, gq, gw);
+    ck_assert_float_eq_tol(gq[0], (float)cos(half), 1e-6f);
+    ck_assert_float_eq(gw[2], 3.0f);
+    /* R from Rodrigues in double, to compare with */
+    double R[9], c = cos(2 * half), sn = sin(2 * half);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            double cross = 0;
+            if (i != j) {
+                int k = 3 - i - j;
+                double sign = ((i == 0 && j == 1) || (i == 1 && j == 2) || (i == 2 && j == 0)) ? -1 : 1;
+                cross = sign * ax[k];
+            }
+            R[3 * i + j] = (i == j ? c : 0) + (1 - c) * ax[i] * ax[j] + sn * cross;
+        }
+    ms_rng r;
+    ms_rng_seed(&r, 7);
+    float lo[3], hi[3];
+    ms_shape_bounds(s, lo, hi);
+    int inside = 0;
+    for (int t = 0; t < 2000; ++t) {
+        float p[3], n[3], nr[3], l[3];
+        for (int k = 0; k < 3; ++k)
+            p[k] = pos[k] + urand(&r, -0.3f, 0.3f);
+        for (int k = 0; k < 3; ++k) /* l = R^T (p - pos) */
+            l[k] = (float)(R[k] * (p[0] - pos[0]) + R[3 + k] * (p[1] - pos[1]) +
+                           R[6 + k] * (p[2] - pos[2]));
+        float d = ms_shape_distance(s, p, n), dr = ms_shape_distance(ref, l, nr);
+        ck_assert_msg(fabsf(d - dr) < 2e-6f, "point %d: %g != %g", t, d, dr);
+        for (int k = 0; k < 3; ++k)
+            ck_assert_float_eq_tol(n[k], R[3 * k] * nr[0] + R[3 * k + 1] * nr[1] + R[3 * k + 2] * nr[2],
+                                   2e-5f);
+        float u[3];
+        ms_shape_velocity(s, p, u);
+        ck_assert_float_eq_tol(u[0], 0.1f - 3 * (p[1] - pos[1]), 1e-6f);
+        ck_assert_float_eq_tol(u[1], 3 * (p[0] - pos[0]), 1e-6f);
+        ck_assert_float_eq_tol(u[2], 0.0f, 1e-6f);
+        if (d < 0) {
+            ++inside;
+            for (int k = 0; k < 3; ++k)
+                ck_assert(p[k] >= lo[k] && p[k] <= hi[k]);
+        }
+    }
+    ck_assert_int_gt(inside, 20);
+    /* the depth over a turned box is marched down the world's z: a box
+     * turned 90 degrees about x stands 0.2 m tall (its y extent) */
+    ms_shape *tall = make("box", "{\"size\": [0.4, 0.2, 0.1]}");
+    ck_assert_int_eq(ms_shape_set_pose(tall, (float[3]){0.5f, 0.5f, -0.3f}, NULL), MS_OK);
+    const float q90[4] = {(float)cos(PI / 4), (float)sin(PI / 4), 0, 0};
+    ck_assert_int_eq(ms_shape_set_orientation(tall, q90, NULL), MS_OK);
+    const ms_grid g = {.nx = 10, .ny = 10, .dx = 0.1f, .dy = 0.1f, .origin = {0, 0}};
+    float depth[100];
+    for (int i = 0; i < 100; ++i)
+        depth[i] = 1.0f;
+    ck_assert_int_eq(ms_shape_depth(tall, &g, 0.0f, depth), MS_OK);
+    ck_assert_float_eq_tol(depth[5 * 10 + 5], 0.2f, 1e-4f); /* top at -0.3 + 0.1 */
+    ck_assert_float_eq(depth[0], 1.0f);                    /* beside it */
+    unsigned char mask[100] = {0};
+    ck_assert_int_eq(ms_shape_footprint(tall, &g, -0.25f, mask), MS_OK);
+    int cells = 0; /* 0.4 x 0.1 m at the level: 4 x 1 cells of 0.1 m */
+    for (int i = 0; i < 100; ++i)
+        cells += mask[i];
+    ck_assert_int_eq(cells, 4);
+    /* refusals change nothing */
+    MS_ASSERT_REFUSED(ms_shape_set_orientation(s, (float[4]){0, 0, 0, 0}, NULL),
+                      MS_ERR_INVALID_ARGUMENT, "length 0");
+    MS_ASSERT_REFUSED(ms_shape_set_orientation(s, (float[4]){1, NAN, 0, 0}, NULL),
+                      MS_ERR_INVALID_ARGUMENT, "orientation[1]");
+    MS_ASSERT_REFUSED(ms_shape_set_orientation(s, NULL, (float[3]){0, 2e3f, 0}),
+                      MS_ERR_INVALID_ARGUMENT, "omega[1]");
+    MS_ASSERT_REFUSED(ms_shape_set_orientation(NULL, q, NULL), MS_ERR_INVALID_ARGUMENT, "shape");
+    ms_shape_get_orientation(s, gq, gw);
+    ck_assert_float_eq_tol(gq[0], (float)cos(half), 1e-6f);
+    ck_assert_float_eq(gw[2], 3.0f);
+    /* back to (1, 0, 0, 0) at rest: the plain translated shape again */
+    ck_assert_int_eq(ms_shape_set_orientation(s, (float[4]){1, 0, 0, 0}, NULL), MS_OK);
+    ck_assert_float_eq(ms_shape_distance(s, pos, NULL), ms_shape_distance(ref, (float[3]){0, 0, 0}, NULL));
+    ms_shape_destroy(tall);
+    ms_shape_destroy(ref);
+    ms_shape_destroy(s);
+}
+END_TEST
+
 START_TEST(bad_parameters_name_the_key)
 {
     ms_shape *s = (ms_shape *)&s;
@@ -861,6 +962,7 @@ static Suite *shapes_suite(void)
     tcase_add_test(more, terrain_from_heights_matches_a_plane);
     tcase_add_test(more, terrain_from_png);
     tcase_add_test(more, every_shape_has_working_defaults);
+    tcase_add_test(more, orientation_turns_distance_normal_velocity_and_bounds);
     suite_add_tcase(s, more);
     return s;
 }

@@ -1,7 +1,8 @@
 /* ms_shape: a collision object (plane, box, sphere, capsule, glass, terrain,
  * ...) provided by a shape plugin (see plugin.h). It gives the signed
  * distance and the smoothed normal used by the collider force field of the
- * paper's eq. 15, a pose and a velocity (moving obstacles).
+ * paper's eq. 15, a pose (position and orientation) and a velocity and
+ * angular velocity (moving and turning obstacles).
  */
 #ifndef MODESPLIT_SHAPE_H
 #define MODESPLIT_SHAPE_H
@@ -27,6 +28,15 @@ MS_API float ms_shape_distance(const ms_shape *s, const float p[3], float normal
 MS_API void ms_shape_velocity(const ms_shape *s, const float p[3], float vel[3]);
 /* Current position (m) and velocity (m/s) of the shape's origin. */
 MS_API void ms_shape_get_pose(const ms_shape *s, float pos[3], float vel[3]);
+/* Orientation of the shape about its origin: a rotation quaternion
+ * (w, x, y, z) from its own frame to the world's (normalised here; NULL
+ * keeps the current one; the default is (1, 0, 0, 0)), and the angular
+ * velocity omega (rad/s, world axes, |omega_k| <= 1000; NULL = 0) at which
+ * it turns, so that its material moves at vel + omega x (p - pos) (a glass
+ * tilted to pour, a paddle). Refused: a zero or non-finite quaternion. */
+MS_API ms_status ms_shape_set_orientation(ms_shape *s, const float orientation[4],
+                                          const float omega[3]);
+MS_API void ms_shape_get_orientation(const ms_shape *s, float orientation[4], float omega[3]);
 /* World-space bounding box (m). */
 MS_API void ms_shape_bounds(const ms_shape *s, float lo[3], float hi[3]);
 /* Rasterise the shape's footprint at water level z (m) onto grid g: mask

@@ -142,6 +142,16 @@ MS_API ms_status ms_sim_drag(ms_sim *sim, const float pos[2], const float vel[2]
  * replacing its scripted path. MS_ERR_STATE without one. */
 MS_API ms_status ms_sim_move_container(ms_sim *sim, const float pos[3], const float vel[3]);
 MS_API ms_status ms_sim_move_obstacle(ms_sim *sim, int i, const float pos[3], const float vel[3]);
+/* Turn the container (tilt the glass to pour) or obstacle i about its
+ * origin: orientation as a quaternion (w, x, y, z) from the shape's frame
+ * to the world's (normalised; a zero or non-finite one is refused), omega
+ * its angular velocity (rad/s, world axes, NULL = 0), from the next frame
+ * on (ms_shape_set_orientation). Its path or ms_sim_move_* still sets
+ * where it is. */
+MS_API ms_status ms_sim_turn_container(ms_sim *sim, const float orientation[4],
+                                       const float omega[3]);
+MS_API ms_status ms_sim_turn_obstacle(ms_sim *sim, int i, const float orientation[4],
+                                      const float omega[3]);
 
 #ifdef __cplusplus
 }

@@ -59,12 +59,18 @@ ms_status ms_shape_footprint(const ms_shape *s, const ms_grid *g, float z, unsig
  * (a step of d never crosses the surface; steps are at least tol, so a
  * feature thinner than tol may be missed), then bisection between the last
  * point outside and the first inside. Returns 0 when the column is empty
- * below z (down to zmin). */
-static int march_down(const ms_shape *s, float x, float y, float z, float zmin, float tol,
-                      float *top)
+ * below z (down to zmin). world: the column and heights are in the world's
+ * frame (a turned shape, whose own z is not up). */
+static float dist(const ms_shape *s, int world, const float p[3])
+{
+    return world ? ms_shape_distance(s, p, NULL) : s->vt->distance(s->self, p, NULL);
+}
+
+static int march_down(const ms_shape *s, int world, float x, float y, float z, float zmin,
+                      float tol, float *top)
 {
     float p[3] = {x, y, z};
-    float d = s->vt->distance(s->self, p, NULL);
+    float d = dist(s, world, p);
     if (d <= 0.0f) {
         *top = z;
         return 1;
@@ -73,14 +79,14 @@ static int march_down(const ms_shape *s, float x, float y, float z, float zmin, 
         float step = MS_MAX(d, tol);
         float z_prev = p[2];
         p[2] -= step;
-        d = s->vt->distance(s->self, p, NULL);
+        d = dist(s, world, p);
         if (d <= 0.0f) {
             /* the surface lies in [p[2], z_prev]: bisect */
             float a = p[2], b = z_prev;
             for (int k = 0; k < 40 && b - a > 1e-6f * (1.0f + fabsf(b)); ++k) {
                 float m = 0.5f * (a + b);
                 p[2] = m;
-                if (s->vt->distance(s->self, p, NULL) <= 0.0f)
+                if (dist(s, world, p) <= 0.0f)
                     a = m;
                 else
                     b = m;
@@ -99,9 +105,16 @@ ms_status ms_shape_depth(const ms_shape *s, const ms_grid *g, float z, float *de
         return st;
     float lo[3], hi[3];
     s->vt->bounds(s->self, lo, hi); /* local */
-    const float zl = z - s->pos[2]; /* water level, local */
     float wlo[3], whi[3];
     ms_shape_bounds(s, wlo, whi);
+    /* a turned shape is marched in the world's frame (its height_at is
+     * along its own z) */
+    const int world = s->turned;
+    if (world) {
+        lo[2] = wlo[2];
+        hi[2] = whi[2];
+    }
+    const float zl = world ? z : z - s->pos[2]; /* water level, in the marching frame */
     int x0, x1, y0, y1;
     cell_range(wlo[0], whi[0], g->origin[0], g->dx, g->nx, &x0, &x1);
     cell_range(wlo[1], whi[1], g->origin[1], g->dy, g->ny, &y0, &y1);
@@ -109,11 +122,11 @@ ms_status ms_shape_depth(const ms_shape *s, const ms_grid *g, float z, float *de
     const float zmin = lo[2] > -1e29f ? lo[2] - tol : zl - 1e4f;
     for (int j = y0; j < y1; ++j)
         for (int i = x0; i < x1; ++i) {
-            const float x = g->origin[0] + ((float)i + 0.5f) * g->dx - s->pos[0];
-            const float y = g->origin[1] + ((float)j + 0.5f) * g->dy - s->pos[1];
+            const float x = g->origin[0] + ((float)i + 0.5f) * g->dx - (world ? 0.0f : s->pos[0]);
+            const float y = g->origin[1] + ((float)j + 0.5f) * g->dy - (world ? 0.0f : s->pos[1]);
             float top;
-            int hit = s->vt->height_at ? s->vt->height_at(s->self, x, y, &top)
-                                       : march_down(s, x, y, zl, zmin, tol, &top);
+            int hit = s->vt->height_at && !world ? s->vt->height_at(s->self, x, y, &top)
+                                                 : march_down(s, world, x, y, zl, zmin, tol, &top);
             if (!hit)
                 continue;
             float dep = MS_MAX(zl - top, 0.0f); /* m */

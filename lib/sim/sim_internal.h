@@ -59,6 +59,8 @@ typedef struct ms_sim_shape {
     int moving;             /* has a path, a velocity or was moved by the API */
     int api_set;            /* pose given by ms_sim_move_* (overrides the path) */
     float api_pos[3], api_vel[3];
+    int api_turn;           /* orientation given by ms_sim_turn_* */
+    float api_quat[4], api_omega[3];
 } ms_sim_shape;
 
 typedef struct ms_sim_drag_req {

@@ -18,11 +18,13 @@ static ms_status update_mask(ms_sim *sim, double t)
     memcpy(sim->mask, sim->mask_static, ns);
     for (int i = 0; i < sim->nshapes; ++i) {
         ms_sim_shape *sh = &sim->shapes[i];
-        if (!sh->surf || !(sh->moving || sh->api_set))
+        if (!sh->surf || !(sh->moving || sh->api_set || sh->api_turn))
             continue;
         float pos[3], vel[3];
         ms_sim_shape_pose(sh, t, pos, vel);
         ms_status st = ms_shape_set_pose(sh->surf, pos, vel);
+        if (st == MS_OK && sh->api_turn)
+            st = ms_shape_set_orientation(sh->surf, sh->api_quat, sh->api_omega);
         if (st == MS_OK)
             st = ms_shape_footprint(sh->surf, &g, z, sim->mask);
         if (st != MS_OK)

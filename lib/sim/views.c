@@ -227,6 +227,24 @@ ms_status ms_sim_drag(ms_sim *sim, const float pos[2], const float vel[2], float
     return MS_OK;
 }
 
+/* A shape the engine moves or turns becomes a moving footprint: take it out
+ * of the static mask. */
+static ms_status unfreeze_mask(ms_sim *sim)
+{
+    ms_status st = MS_OK;
+    size_t ns = (size_t)sim->snx * sim->sny;
+    memset(sim->mask_static, 0, ns);
+    float z = sim->domain_min[2] + sim->level;
+    for (int j = 0; j < sim->nshapes; ++j) {
+        ms_sim_shape *o = &sim->shapes[j];
+        if (o->surf && !o->moving && !o->api_set && !o->api_turn &&
+            (st = ms_shape_footprint(o->surf, &sim->wave_grid, z, sim->mask_static)) != MS_OK)
+            return st;
+    }
+    sim->have_moving_mask = 1;
+    return MS_OK;
+}
+
 static ms_status move_shape(ms_sim *sim, int i, const char *what, const float pos[3],
                             const float vel[3])
 {
@@ -246,20 +264,62 @@ static ms_status move_shape(ms_sim *sim, int i, const char *what, const float po
     memcpy(sh->api_pos, pos, sizeof sh->api_pos);
     for (int k = 0; k < 3; ++k)
         sh->api_vel[k] = vel ? vel[k] : 0.0f;
-    if (sh->surf && !sim->have_moving_mask) {
-        /* it becomes a moving footprint: take it out of the static mask */
-        size_t ns = (size_t)sim->snx * sim->sny;
-        memset(sim->mask_static, 0, ns);
-        float z = sim->domain_min[2] + sim->level;
-        for (int j = 0; j < sim->nshapes; ++j) {
-            ms_sim_shape *o = &sim->shapes[j];
-            if (o->surf && !o->moving && !o->api_set &&
-                (st = ms_shape_footprint(o->surf, &sim->wave_grid, z, sim->mask_static)) != MS_OK)
-                return st;
-        }
-        sim->have_moving_mask = 1;
-    }
+    if (sh->surf && !sim->have_moving_mask)
+        return unfreeze_mask(sim);
     return MS_OK;
+}
+
+static ms_status turn_shape(ms_sim *sim, int i, const float quat[4], const float omega[3])
+{
+    ms_status st = ms_check_not_null("sim", "orientation", quat);
+    static const char *const qkey[4] = {"orientation[0]", "orientation[1]", "orientation[2]",
+                                        "orientation[3]"};
+    static const char *const wkey[3] = {"omega[0]", "omega[1]", "omega[2]"};
+    double n2 = 0.0;
+    for (int k = 0; k < 4 && st == MS_OK; ++k) {
+        st = ms_check_finite("sim", qkey[k], quat[k]);
+        n2 += (double)quat[k] * quat[k];
+    }
+    for (int k = 0; omega && k < 3 && st == MS_OK; ++k)
+        st = ms_check_range("sim", wkey[k], omega[k], -1e3, 1e3, "rad/s");
+    if (st != MS_OK)
+        return st;
+    if (!(n2 > 1e-12))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: orientation quaternion has length %g; it must be a rotation "
+                       "(w, x, y, z) of length 1 (it is normalised), not 0",
+                       sqrt(n2));
+    ms_sim_shape *sh = &sim->shapes[i];
+    sh->api_turn = 1;
+    memcpy(sh->api_quat, quat, sizeof sh->api_quat);
+    for (int k = 0; k < 3; ++k)
+        sh->api_omega[k] = omega ? omega[k] : 0.0f;
+    if (sh->surf && !sim->have_moving_mask)
+        return unfreeze_mask(sim);
+    return MS_OK;
+}
+
+ms_status ms_sim_turn_container(ms_sim *sim, const float orientation[4], const float omega[3])
+{
+    ms_status st = ms_check_not_null("sim", "sim", sim);
+    if (st != MS_OK)
+        return st;
+    if (sim->container < 0)
+        return ms_fail(MS_ERR_STATE, "sim: the scene has no container (effects.container)");
+    return turn_shape(sim, sim->container, orientation, omega);
+}
+
+ms_status ms_sim_turn_obstacle(ms_sim *sim, int i, const float orientation[4], const float omega[3])
+{
+    ms_status st = ms_check_not_null("sim", "sim", sim);
+    if (st != MS_OK)
+        return st;
+    int nobs = sim->container >= 0 ? sim->nshapes - 1 : sim->nshapes;
+    if (nobs == 0)
+        return ms_fail(MS_ERR_STATE, "sim: the scene has no obstacles");
+    if (i < 0 || i >= nobs)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: obstacle %d is outside [0, %d)", i, nobs);
+    return turn_shape(sim, i, orientation, omega);
 }
 
 ms_status ms_sim_move_container(ms_sim *sim, const float pos[3], const float vel[3])

@@ -178,11 +178,13 @@ void ms_sim_volume_task(void *arg)
     /* interaction at t0: moved shapes, the pointer, the engine's drags */
     for (int i = 0; st == MS_OK && i < sim->nshapes; ++i) {
         ms_sim_shape *sh = &sim->shapes[i];
-        if (!sh->vol || !(sh->moving || sh->api_set))
+        if (!sh->vol || !(sh->moving || sh->api_set || sh->api_turn))
             continue;
         float pos[3], vel[3];
         ms_sim_shape_pose(sh, t0, pos, vel);
         st = ms_shape_set_pose(sh->vol, pos, vel);
+        if (st == MS_OK && sh->api_turn)
+            st = ms_shape_set_orientation(sh->vol, sh->api_quat, sh->api_omega);
     }
     const ms_scene *sc = sim->scene;
     if (st == MS_OK && sc && sc->has_drag && ms_sim_motion_active(&sc->drag_path, t0)) {

@@ -34,6 +34,7 @@
  */
 #include <math.h>
 
+#include "shape/shape.h"
 #include "volume/volume_impl.h"
 
 /* eq. 15 field strength in units of A; q = d / r_c */
@@ -44,13 +45,47 @@ static inline float field(float q)
 
 /* A shape collider as seen during one pass: at time tau into the step it
  * has moved by shift = vel tau from its pose, so a world point x is at
- * x - shift in the shape's own frame. */
+ * x - shift in the shape's own frame. A turned shape (an orientation or an
+ * angular velocity, ms_shape_set_orientation) is also rotated: x is at
+ * q = R^T (x - o) in the plugin's frame, with the origin o and rotation R
+ * at the pass's time (o0, R0) and at the end of the sub-step (o1, R1);
+ * its material moves at vel + omega x (x - o). */
 typedef struct collider_view {
     const ms_shape *s;
     float vel[3];        /* m/s */
     float shift[3];      /* m */
     float lo[3], hi[3];  /* m, world bounds at tau, widened by the pass's reach */
+    int turned;
+    float omega[3];      /* rad/s */
+    float o0[3], o1[3];  /* m */
+    float R0[9], R1[9];
 } collider_view;
+
+/* x (world) into the plugin's frame of a turned view: R^T (x - o). */
+static inline void to_local(const float R[9], const float o[3], const float x[3], float q[3])
+{
+    const float r[3] = {x[0] - o[0], x[1] - o[1], x[2] - o[2]};
+    for (int k = 0; k < 3; ++k)
+        q[k] = R[k] * r[0] + R[3 + k] * r[1] + R[6 + k] * r[2];
+}
+
+/* A direction of the plugin's frame into the world: R n. */
+static inline void to_world_dir(const float R[9], const float n[3], float w[3])
+{
+    for (int k = 0; k < 3; ++k)
+        w[k] = R[3 * k] * n[0] + R[3 * k + 1] * n[1] + R[3 * k + 2] * n[2];
+}
+
+/* Velocity (m/s) of a turned view's material at world x, about origin o. */
+static inline void turned_velocity(const collider_view *cv, const float o[3], const float x[3],
+                                   float u[3])
+{
+    const float r[3] = {x[0] - o[0], x[1] - o[1], x[2] - o[2]};
+    const float *w = cv->omega;
+    u[0] = cv->vel[0] + w[1] * r[2] - w[2] * r[1];
+    u[1] = cv->vel[1] + w[2] * r[0] - w[0] * r[2];
+    u[2] = cv->vel[2] + w[0] * r[1] - w[1] * r[0];
+}
 
 typedef struct collide_ctx {
     ms_volume *v;
@@ -70,8 +105,12 @@ static void view_colliders(collide_ctx *ctx, double t, float reach, float ahead)
         collider_view *cv = &ctx->col[c];
         float pos[3], jump[3] = {0.0f, 0.0f, 0.0f};
         cv->s = v->colliders[c];
+        cv->turned = cv->s->turned;
         ms_shape_get_pose(cv->s, pos, cv->vel);
-        ms_shape_bounds(cv->s, cv->lo, cv->hi);
+        if (cv->turned) /* bounds that hold it however it turns */
+            ms_shape_bounds_any_turn(cv->s, cv->lo, cv->hi);
+        else
+            ms_shape_bounds(cv->s, cv->lo, cv->hi);
         if (v->in_step)
             for (int k = 0; k < 3; ++k) {
                 cv->vel[k] = v->col_vel[c][k];
@@ -83,6 +122,15 @@ static void view_colliders(collide_ctx *ctx, double t, float reach, float ahead)
             float grow = reach + fabsf(cv->vel[k]) * ahead;
             cv->lo[k] += cv->shift[k] - grow;
             cv->hi[k] += cv->shift[k] + grow;
+        }
+        if (cv->turned) {
+            ms_shape_get_orientation(cv->s, NULL, cv->omega);
+            ms_shape_rotation_at(cv->s, (float)t, cv->R0);
+            ms_shape_rotation_at(cv->s, (float)t + ahead, cv->R1);
+            for (int k = 0; k < 3; ++k) {
+                cv->o0[k] = pos[k] + cv->shift[k];
+                cv->o1[k] = pos[k] + cv->shift[k] + cv->vel[k] * ahead;
+            }
         }
     }
 }
@@ -128,7 +176,16 @@ static void boundary_part(void *ctxp, int part, int b, int e)
                 continue;
             float q[3] = {v->x[i] - cv->shift[0], v->y[i] - cv->shift[1], v->z[i] - cv->shift[2]};
             float n[3];
-            float d = ms_shape_distance(cv->s, q, n);
+            float d;
+            if (cv->turned) {
+                const float x[3] = {v->x[i], v->y[i], v->z[i]};
+                float ql[3], nl[3];
+                to_local(cv->R0, cv->o0, x, ql);
+                d = ms_shape_distance_local(cv->s, ql, nl);
+                to_world_dir(cv->R0, nl, n);
+            } else {
+                d = ms_shape_distance(cv->s, q, n);
+            }
             if (!(d < h))
                 continue;
             float f = field(d * inv_rc); /* eq. 15 */
@@ -136,7 +193,12 @@ static void boundary_part(void *ctxp, int part, int b, int e)
                 ba[k][i] += A * f * n[k];
             if (d < v->c_d[i]) { /* the nearest collider */
                 float u[3];
-                shape_velocity(cv, q, u);
+                if (cv->turned) {
+                    const float x[3] = {v->x[i], v->y[i], v->z[i]};
+                    turned_velocity(cv, cv->o0, x, u);
+                } else {
+                    shape_velocity(cv, q, u);
+                }
                 v->c_d[i] = d > 0.0f ? d : 0.0f; /* inside: the plane through it */
                 v->c_w[i] = f;
                 v->c_nx[i] = n[0];
@@ -205,25 +267,41 @@ void ms_volume_collider_damp(ms_volume *v, double tau, float dt)
  * shape's frame at the end of the sub-step) inside or across the shape
  * back on its surface, and take away its velocity into the shape relative
  * to the shape. */
+/* Distance in the view's frame: q = x - shift (ms_shape_distance applies
+ * the pose), or for a turned view the plugin's own frame. */
+static inline float view_distance(const collider_view *cv, const float q[3], float n[3])
+{
+    return cv->turned ? ms_shape_distance_local(cv->s, q, n) : ms_shape_distance(cv->s, q, n);
+}
+
 static void push_out(const collider_view *cv, const float end_shift[3], float q[3], float skin,
                      float x[3], float u[3])
 {
     float n[3] = {0.0f, 0.0f, 1.0f};
     for (int it = 0; it < 4; ++it) { /* the normal is smoothed: a few steps */
-        float d = ms_shape_distance(cv->s, q, n);
+        float d = view_distance(cv, q, n);
         if (d >= skin)
             break;
         for (int k = 0; k < 3; ++k)
             q[k] += (skin - d) * n[k];
     }
     float w[3];
-    shape_velocity(cv, q, w);
+    if (cv->turned) { /* back to the world at the end of the sub-step */
+        float nl[3] = {n[0], n[1], n[2]};
+        to_world_dir(cv->R1, q, x);
+        for (int k = 0; k < 3; ++k)
+            x[k] += cv->o1[k];
+        to_world_dir(cv->R1, nl, n);
+        turned_velocity(cv, cv->o1, x, w);
+    } else {
+        shape_velocity(cv, q, w);
+        for (int k = 0; k < 3; ++k)
+            x[k] = q[k] + end_shift[k];
+    }
     float un = (u[0] - w[0]) * n[0] + (u[1] - w[1]) * n[1] + (u[2] - w[2]) * n[2];
-    for (int k = 0; k < 3; ++k) {
-        x[k] = q[k] + end_shift[k];
+    for (int k = 0; k < 3; ++k)
         if (un < 0.0f)
             u[k] -= un * n[k];
-    }
 }
 
 static void resolve_part(void *ctxp, int part, int b, int e)
@@ -246,11 +324,17 @@ static void resolve_part(void *ctxp, int part, int b, int e)
             for (int k = 0; k < 3; ++k) {
                 q0[k] = x0[k] - cv->shift[k];
                 q1[k] = x1[k] - end_shift[k];
+            }
+            if (cv->turned) { /* the path relative to the turning shape */
+                to_local(cv->R0, cv->o0, x0, q0);
+                to_local(cv->R1, cv->o1, x1, q1);
+            }
+            for (int k = 0; k < 3; ++k) {
                 dq[k] = q1[k] - q0[k];
                 len2 += dq[k] * dq[k];
             }
             const float len = sqrtf(len2);
-            float d0 = ms_shape_distance(cv->s, q0, NULL);
+            float d0 = view_distance(cv, q0, NULL);
             if (d0 > len + skin)
                 continue; /* a distance bound: the path cannot reach the shape */
             float u[3] = {v->vx[i], v->vy[i], v->vz[i]}, x[3];
@@ -268,14 +352,14 @@ static void resolve_part(void *ctxp, int part, int b, int e)
                     if (t >= 1.0f)
                         break;
                     float p[3] = {q0[0] + t * dq[0], q0[1] + t * dq[1], q0[2] + t * dq[2]};
-                    d = ms_shape_distance(cv->s, p, NULL);
+                    d = view_distance(cv, p, NULL);
                 }
                 if (hit) /* stop where the path met the surface */
                     for (int k = 0; k < 3; ++k)
                         q[k] = q0[k] + t * dq[k];
-                else if (ms_shape_distance(cv->s, q1, NULL) >= skin)
+                else if (view_distance(cv, q1, NULL) >= skin)
                     continue;
-            } else if (ms_shape_distance(cv->s, q1, NULL) >= skin) {
+            } else if (view_distance(cv, q1, NULL) >= skin) {
                 continue; /* started inside (pushed out by the field), ends outside */
             }
             push_out(cv, end_shift, q, skin, x, u);
@@ -334,7 +418,17 @@ float ms_volume_collider_speed(const ms_volume *v)
     float vmax = 0.0f;
     for (int c = 0; c < v->ncolliders; ++c) {
         const float *u = v->col_vel[c];
-        vmax = fmaxf(vmax, sqrtf(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]));
+        float speed = sqrtf(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        const ms_shape *s = v->colliders[c];
+        if (s->turned) { /* its farthest point turns at |omega| r */
+            float lo[3], hi[3], w[3];
+            ms_shape_bounds_any_turn(s, lo, hi);
+            ms_shape_get_orientation(s, NULL, w);
+            float r = 0.5f * (hi[0] - lo[0]);
+            if (r < 1e29f)
+                speed += sqrtf(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]) * r;
+        }
+        vmax = fmaxf(vmax, speed);
     }
     return vmax;
 }
