@@ -239,6 +239,14 @@ START_TEST(shapes_are_checked_by_their_plugins)
     ck_assert_str_eq(sc->obstacles[0].kind, "sphere");
     ck_assert_ptr_nonnull(strstr(sc->obstacles[0].params_json, "\"radius\":0.1"));
     ck_assert_int_eq(sc->obstacles[0].surface_mask, 1);
+    ck_assert_float_eq(sc->obstacles[0].orientation[0], 1.0f); /* unturned */
+    ck_assert_float_eq(sc->obstacles[0].orientation[3], 0.0f);
+    ck_assert_float_eq(sc->obstacles[0].spin[2], 0.0f);
+    ms_scene_destroy(sc);
+    sc = parse_ok("{\"surface\": {}, \"obstacles\": [{\"shape\": \"box\", "
+                  "\"orientation\": [0, 0, 0, 2], \"spin\": [0, -1.5, 0]}]}");
+    ck_assert_float_eq(sc->obstacles[0].orientation[3], 2.0f); /* normalised by the shape */
+    ck_assert_float_eq(sc->obstacles[0].spin[1], -1.5f);
     ms_scene_destroy(sc);
 }
 END_TEST

@@ -704,6 +704,49 @@ START_TEST(turned_glass_pours_its_water)
 }
 END_TEST
 
+/* A scene's paddle with a spin (4 rad/s about z, turned 90 degrees about z
+ * at the start): the collider's orientation follows exp(spin t) q0, its
+ * twin on the wave grid turns too, and it stirs the water its way. */
+START_TEST(a_spinning_scene_paddle_turns_and_stirs)
+{
+    ms_scene *sc = scene("{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.2, 0.2, 0.1]},"
+                         " \"volume\": {\"spacing\": 0.01, \"fill\":"
+                         " [{\"min\": [0, 0, 0], \"max\": [0.2, 0.2, 0.05]}], \"field\": [20, 20]},"
+                         " \"surface\": {\"cells\": [40, 40], \"level\": 0.05},"
+                         " \"obstacles\": [{\"shape\": \"box\", \"params\": {\"size\": [0.12, 0.02, 0.2]},"
+                         " \"position\": [0.1, 0.1, 0.05], \"orientation\": [0.70710678, 0, 0, 0.70710678],"
+                         " \"spin\": [0, 0, 4]}]}");
+    if (!colliders_supported()) {
+        ms_scene_destroy(sc);
+        return;
+    }
+    ms_sim *sim = sim_of(sc, 1);
+    const int frames = 48; /* 0.4 s at 1/120 */
+    steps(sim, frames, 1.0f / 120);
+    /* the volume's collider was last set at the start of the last step */
+    float q[4], w[3];
+    ms_shape_get_orientation(sim->shapes[0].vol, q, w);
+    const double t = (frames - 1) / 120.0, half = 0.5 * (1.5707963267948966 + 4.0 * t);
+    ck_assert_float_eq_tol(q[0], (float)cos(half), 1e-5f);
+    ck_assert_float_eq_tol(q[3], (float)sin(half), 1e-5f);
+    ck_assert_float_eq(w[2], 4.0f);
+    /* the wave grid's twin turns too (one frame behind) */
+    ms_shape_get_orientation(sim->shapes[0].surf, q, w);
+    ck_assert_float_eq(w[2], 4.0f);
+    ck_assert_float_eq(q[1], 0.0f);
+    ck_assert(q[0] < 0.6f); /* turned on from 45 degrees (w = 0.707) */
+    int n;
+    const float *pos[3], *vel[3];
+    ck_assert_int_eq(ms_sim_particles(sim, &n, pos, vel), MS_OK);
+    double L = 0.0;
+    for (int i = 0; i < n; ++i)
+        L += (pos[0][i] - 0.1) * vel[1][i] - (pos[1][i] - 0.1) * vel[0][i];
+    ck_assert_msg(L / n > 2e-3, "angular momentum %g m^2/s per kg", L / n);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 /* Floaters take the surface flow's velocity and slide down wave slopes. */
 START_TEST(floaters_follow_flow_and_slopes)
 {
@@ -922,6 +965,7 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, moving_obstacle_stirs_water_and_blocks_waves);
     tcase_add_test(tc, moved_glass_carries_its_water);
     tcase_add_test(tc, turned_glass_pours_its_water);
+    tcase_add_test(tc, a_spinning_scene_paddle_turns_and_stirs);
     tcase_add_test(tc, floaters_follow_flow_and_slopes);
     tcase_add_test(tc, scripted_drops_land_on_time);
     tcase_add_test(tc, effects_land_at_world_coordinates);

@@ -42,6 +42,8 @@ typedef struct ms_scene_shape {
     char *params_json; /* its parameters as JSON object text ("{}" if none) */
     float position[3]; /* m */
     float velocity[3]; /* m/s, used when there is no path */
+    float orientation[4]; /* quaternion (w, x, y, z) at t = 0, not normalised */
+    float spin[3];        /* rad/s, world axes: it turns at this rate */
     ms_scene_motion path;
     int surface_mask;  /* 1: its footprint at the water level blocks waves */
 } ms_scene_shape;

@@ -117,8 +117,8 @@ ms_status ms_scene_check_shader(ms_scene_ctx *c, const char *name)
 static ms_status read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
 {
     static const char *const keys[] = {"shape", "params", "position", "velocity",
-                                       "path", "surface_mask", NULL};
-    static const float zero[3] = {0, 0, 0};
+                                       "orientation", "spin", "path", "surface_mask", NULL};
+    static const float zero[3] = {0, 0, 0}, unturned[4] = {1, 0, 0, 0};
     const char *kind;
     json_t *params;
     TRY(ms_scene_check_keys(c, o, keys));
@@ -135,6 +135,19 @@ static ms_status read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
     TRY(ms_scene_get_object(c, o, "params", &params));
     TRY(ms_scene_get_vec(c, o, "position", 3, zero, -BIG, BIG, "m", s->position));
     TRY(ms_scene_get_vec(c, o, "velocity", 3, zero, -MAX_SPEED, MAX_SPEED, "m/s", s->velocity));
+    TRY(ms_scene_get_vec(c, o, "orientation", 4, unturned, -1e3, 1e3, "", s->orientation));
+    double q2 = 0.0;
+    for (int k = 0; k < 4; ++k)
+        q2 += (double)s->orientation[k] * s->orientation[k];
+    if (!(q2 > 1e-12)) {
+        ms_scene_push_key(c, "orientation");
+        ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                                     "[0, 0, 0, 0] is no rotation; allowed: a quaternion "
+                                     "[w, x, y, z] of any length but 0 (it is normalised)");
+        ms_scene_pop(c);
+        return st;
+    }
+    TRY(ms_scene_get_vec(c, o, "spin", 3, zero, -1e3, 1e3, "rad/s", s->spin));
     TRY(read_path(c, o, "path", 3, &s->path));
     TRY(ms_scene_get_bool(c, o, "surface_mask", 1, &s->surface_mask));
     s->kind = dup_string(kind);

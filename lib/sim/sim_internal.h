@@ -181,6 +181,10 @@ void ms_sim_upsample_add(const ms_sim *sim, const float *field, const float *wav
 
 /* volume_task.c / surface_task.c */
 void ms_sim_shape_pose(const ms_sim_shape *sh, double t, float pos[3], float vel[3]);
+/* Orientation (quaternion) and angular velocity (rad/s) of a scene shape
+ * at time t (s): the engine's (ms_sim_turn_*), else the scene's turned by
+ * its spin since t = 0. 0 if it is neither turned nor turning. */
+int ms_sim_shape_turn(const ms_sim_shape *sh, double t, float quat[4], float omega[3]);
 int ms_sim_motion_active(const ms_scene_motion *p, double t);
 void ms_sim_volume_task(void *task);
 void ms_sim_surface_task(void *task);

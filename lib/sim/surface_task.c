@@ -23,8 +23,9 @@ static ms_status update_mask(ms_sim *sim, double t)
         float pos[3], vel[3];
         ms_sim_shape_pose(sh, t, pos, vel);
         ms_status st = ms_shape_set_pose(sh->surf, pos, vel);
-        if (st == MS_OK && sh->api_turn)
-            st = ms_shape_set_orientation(sh->surf, sh->api_quat, sh->api_omega);
+        float quat[4], omega[3];
+        if (st == MS_OK && ms_sim_shape_turn(sh, t, quat, omega))
+            st = ms_shape_set_orientation(sh->surf, quat, omega);
         if (st == MS_OK)
             st = ms_shape_footprint(sh->surf, &g, z, sim->mask);
         if (st != MS_OK)

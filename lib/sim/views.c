@@ -299,48 +299,52 @@ static ms_status turn_shape(ms_sim *sim, int i, const float quat[4], const float
     return MS_OK;
 }
 
-ms_status ms_sim_turn_container(ms_sim *sim, const float orientation[4], const float omega[3])
+/* The index in sim->shapes of the container or of obstacle i, or the
+ * refusal. */
+static ms_status shape_index(ms_sim *sim, int container, int i, int *at)
 {
     ms_status st = ms_check_not_null("sim", "sim", sim);
     if (st != MS_OK)
         return st;
-    if (sim->container < 0)
-        return ms_fail(MS_ERR_STATE, "sim: the scene has no container (effects.container)");
-    return turn_shape(sim, sim->container, orientation, omega);
+    if (container) {
+        if (sim->container < 0)
+            return ms_fail(MS_ERR_STATE, "sim: the scene has no container (effects.container)");
+        *at = sim->container;
+        return MS_OK;
+    }
+    int nobs = sim->container >= 0 ? sim->nshapes - 1 : sim->nshapes;
+    if (nobs == 0)
+        return ms_fail(MS_ERR_STATE, "sim: the scene has no obstacles");
+    if (i < 0 || i >= nobs)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: obstacle %d is outside [0, %d)", i, nobs);
+    *at = i;
+    return MS_OK;
+}
+
+ms_status ms_sim_turn_container(ms_sim *sim, const float orientation[4], const float omega[3])
+{
+    int at = -1;
+    ms_status st = shape_index(sim, 1, 0, &at);
+    return st != MS_OK ? st : turn_shape(sim, at, orientation, omega);
 }
 
 ms_status ms_sim_turn_obstacle(ms_sim *sim, int i, const float orientation[4], const float omega[3])
 {
-    ms_status st = ms_check_not_null("sim", "sim", sim);
-    if (st != MS_OK)
-        return st;
-    int nobs = sim->container >= 0 ? sim->nshapes - 1 : sim->nshapes;
-    if (nobs == 0)
-        return ms_fail(MS_ERR_STATE, "sim: the scene has no obstacles");
-    if (i < 0 || i >= nobs)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: obstacle %d is outside [0, %d)", i, nobs);
-    return turn_shape(sim, i, orientation, omega);
+    int at = -1;
+    ms_status st = shape_index(sim, 0, i, &at);
+    return st != MS_OK ? st : turn_shape(sim, at, orientation, omega);
 }
 
 ms_status ms_sim_move_container(ms_sim *sim, const float pos[3], const float vel[3])
 {
-    ms_status st = ms_check_not_null("sim", "sim", sim);
-    if (st != MS_OK)
-        return st;
-    if (sim->container < 0)
-        return ms_fail(MS_ERR_STATE, "sim: the scene has no container (effects.container)");
-    return move_shape(sim, sim->container, "container", pos, vel);
+    int at = -1;
+    ms_status st = shape_index(sim, 1, 0, &at);
+    return st != MS_OK ? st : move_shape(sim, at, "container", pos, vel);
 }
 
 ms_status ms_sim_move_obstacle(ms_sim *sim, int i, const float pos[3], const float vel[3])
 {
-    ms_status st = ms_check_not_null("sim", "sim", sim);
-    if (st != MS_OK)
-        return st;
-    int nobs = sim->container >= 0 ? sim->nshapes - 1 : sim->nshapes;
-    if (nobs == 0)
-        return ms_fail(MS_ERR_STATE, "sim: the scene has no obstacles");
-    if (i < 0 || i >= nobs)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: obstacle %d is outside [0, %d)", i, nobs);
-    return move_shape(sim, i, "obstacle", pos, vel);
+    int at = -1;
+    ms_status st = shape_index(sim, 0, i, &at);
+    return st != MS_OK ? st : move_shape(sim, at, "obstacle", pos, vel);
 }

@@ -26,6 +26,34 @@ void ms_sim_shape_pose(const ms_sim_shape *sh, double t, float pos[3], float vel
     }
 }
 
+int ms_sim_shape_turn(const ms_sim_shape *sh, double t, float quat[4], float omega[3])
+{
+    if (sh->api_turn) {
+        memcpy(quat, sh->api_quat, 4 * sizeof *quat);
+        memcpy(omega, sh->api_omega, 3 * sizeof *omega);
+        return 1;
+    }
+    const float *q0 = sh->spec->orientation, *w = sh->spec->spin;
+    const double w2 = (double)w[0] * w[0] + (double)w[1] * w[1] + (double)w[2] * w[2];
+    if (w2 == 0.0 && q0[1] == 0.0f && q0[2] == 0.0f && q0[3] == 0.0f)
+        return 0;
+    /* q(t) = dq q0, dq = (cos(a/2), sin(a/2) w/|w|), a = |w| t */
+    double dq[4] = {1.0, 0.0, 0.0, 0.0};
+    if (w2 > 0.0) {
+        const double len = sqrt(w2), half = 0.5 * len * t, s = sin(half) / len;
+        dq[0] = cos(half);
+        dq[1] = s * w[0];
+        dq[2] = s * w[1];
+        dq[3] = s * w[2];
+    }
+    quat[0] = (float)(dq[0] * q0[0] - dq[1] * q0[1] - dq[2] * q0[2] - dq[3] * q0[3]);
+    quat[1] = (float)(dq[0] * q0[1] + dq[1] * q0[0] + dq[2] * q0[3] - dq[3] * q0[2]);
+    quat[2] = (float)(dq[0] * q0[2] - dq[1] * q0[3] + dq[2] * q0[0] + dq[3] * q0[1]);
+    quat[3] = (float)(dq[0] * q0[3] + dq[1] * q0[2] - dq[2] * q0[1] + dq[3] * q0[0]);
+    memcpy(omega, w, 3 * sizeof *omega);
+    return 1;
+}
+
 /* Is a scripted pointer pressed at time t: after its start, and while it
  * moves (a path that does not loop lets go at its end). */
 int ms_sim_motion_active(const ms_scene_motion *p, double t)
@@ -183,8 +211,9 @@ void ms_sim_volume_task(void *arg)
         float pos[3], vel[3];
         ms_sim_shape_pose(sh, t0, pos, vel);
         st = ms_shape_set_pose(sh->vol, pos, vel);
-        if (st == MS_OK && sh->api_turn)
-            st = ms_shape_set_orientation(sh->vol, sh->api_quat, sh->api_omega);
+        float quat[4], omega[3];
+        if (st == MS_OK && ms_sim_shape_turn(sh, t0, quat, omega))
+            st = ms_shape_set_orientation(sh->vol, quat, omega);
     }
     const ms_scene *sc = sim->scene;
     if (st == MS_OK && sc && sc->has_drag && ms_sim_motion_active(&sc->drag_path, t0)) {

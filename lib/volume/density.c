@@ -519,7 +519,9 @@ static void density_part(void *ctxp, int part, int b, int e)
     G->len = 0;
     v->list_failed[part] = 0;
     rows own = {.cell = -1};
-    const int run = MS_VOLUME_HAVE_AVX512 && v->isa == MS_VOLUME_ISA_AVX512;
+#if MS_VOLUME_HAVE_AVX512
+    const int run = v->isa == MS_VOLUME_ISA_AVX512;
+#endif
     long ncand = 0;
     for (int i = b; i < e; ++i) {
         const float p[3] = {v->x[i], v->y[i], v->z[i]};

@@ -124,6 +124,18 @@ static inline const char *bench_csv_dir(int argc, char **argv)
     return "bench";
 }
 
+/* --help or -h: prints the usage and what the program measures, and says
+ * so (the caller exits 0 without measuring anything). */
+static inline int bench_help(int argc, char **argv, const char *usage)
+{
+    for (int i = 1; i < argc; ++i)
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            fputs(usage, stdout);
+            return 1;
+        }
+    return 0;
+}
+
 static inline int bench_quick(int argc, char **argv)
 {
     for (int i = 1; i < argc; ++i)

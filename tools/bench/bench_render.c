@@ -38,6 +38,12 @@ static double loadavg(void)
 
 int main(int argc, char **argv)
 {
+    if (bench_help(argc, argv,
+                   "usage: bench_render [--csv-dir DIR] [--quick]\n"
+        "ms per frame of ms_renderer_draw_field (OSMesa) for 256^2, 512^2 and 950^2\n"
+        "images of 200^2 and 400^2 fields, water shader with caustics (median,\n"
+        "10th-90th percentile, stages); writes DIR/render.csv (default DIR: bench).\n"))
+        return 0;
     const int quick = bench_quick(argc, argv);
     const int reps = quick ? 3 : 8, warm = 2;
     char machine[320], commit[64];

@@ -118,6 +118,13 @@ static int run(const ms_scene *sc, int threads, int frames_hint, int repeats, do
 
 int main(int argc, char **argv)
 {
+    if (bench_help(argc, argv,
+                   "usage: bench_scenes [--csv-dir DIR] [--quick] [--scenes fig1,fig1_x10] [--data DIR]\n"
+        "                    [--frames N] [--repeats R]\n"
+        "Each scene of the paper's Table 1 and its _x10 variant, headless, with 1 and 2\n"
+        "threads: frames/s (median, 10th-90th percentile), ms per frame per stage, the\n"
+        "paper's figure; writes DIR/scenes.csv (default DIR: bench).\n"))
+        return 0;
     const int quick = bench_quick(argc, argv);
     const char *dir = arg_value(argc, argv, "--data", "data/scenes");
     const char *only = arg_value(argc, argv, "--scenes", NULL);

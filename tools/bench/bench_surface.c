@@ -44,6 +44,12 @@ static ms_surface *make_pool(int n)
 
 int main(int argc, char **argv)
 {
+    if (bench_help(argc, argv,
+                   "usage: bench_surface [--csv-dir DIR] [--quick]\n"
+        "ns per cell-update of the wave equation with speed and damping maps on grids\n"
+        "256^2 to 2048^2, one core (median, 10th-90th percentile), beside the memory\n"
+        "bandwidth; writes DIR/surface.csv (default DIR: bench).\n"))
+        return 0;
     const int quick = bench_quick(argc, argv);
     char machine[320], commit[64];
     bench_machine(machine, sizeof machine);
