@@ -64,6 +64,17 @@ static inline int padded(int n)
 }
 
 #if MS_VOLUME_HAVE_AVX512
+/* Two neighbour fields of 16 particles at once: lanes of 64-bit gathers
+ * from the packed copy (pk, 8 floats a particle; q picks the pair), then
+ * split into the even and odd floats. Uses jl/jh (the 16 indices times 4,
+ * low and high halves), pk, even and odd of the caller. */
+#define GATHER2(q, a, b)                                                                  \
+    do {                                                                                  \
+        __m512 lo_ = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk + (q), 8));             \
+        __m512 hi_ = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk + (q), 8));             \
+        (a) = _mm512_permutex2var_ps(lo_, even, hi_);                                     \
+        (b) = _mm512_permutex2var_ps(lo_, odd, hi_);                                      \
+    } while (0)
 /* ms_lanes_sum in registers: the same tree order. */
 __attribute__((target("avx512f,avx512dq"))) static inline float hsum_avx512(__m512 v)
 {
@@ -100,19 +111,11 @@ real_sums_avx512(const ms_volume *v, const int *restrict idx, const float *restr
         /* 4 doubles per particle */
         __m512i j4 = _mm512_slli_epi32(_mm512_loadu_si512((const void *)(idx + k)), 2);
         __m256i jl = _mm512_castsi512_si256(j4), jh = _mm512_extracti64x4_epi64(j4, 1);
-#define GATHER2(q, a, b)                                                                  \
-    do {                                                                                  \
-        __m512 lo_ = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk + (q), 8));             \
-        __m512 hi_ = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk + (q), 8));             \
-        (a) = _mm512_permutex2var_ps(lo_, even, hi_);                                     \
-        (b) = _mm512_permutex2var_ps(lo_, odd, hi_);                                      \
-    } while (0)
         __m512 xj, yj, zj, pj, uxj, uyj, uzj, irj;
         GATHER2(0, xj, yj);
         GATHER2(1, zj, pj);
         GATHER2(2, uxj, uyj);
         GATHER2(3, uzj, irj);
-#undef GATHER2
         __m512 dx = _mm512_sub_ps(xi, xj);
         __m512 dy = _mm512_sub_ps(yi, yj);
         __m512 dz = _mm512_sub_ps(zi, zj);
@@ -159,13 +162,6 @@ image_terms_avx512(const ms_volume *v, const int *restrict gidx, const float *re
         _mm512_slli_epi32(_mm512_and_si512(g, _mm512_set1_epi32((1 << MS_VOLUME_IMAGE_SHIFT) - 1)), 2);
     const __m256i jl = _mm512_castsi512_si256(j4), jh = _mm512_extracti64x4_epi64(j4, 1);
     __m512 p[3], u[3], pj, irj;
-#define GATHER2(q, a, b)                                                                  \
-    do {                                                                                  \
-        __m512 lo_ = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk + (q), 8));             \
-        __m512 hi_ = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk + (q), 8));             \
-        (a) = _mm512_permutex2var_ps(lo_, even, hi_);                                     \
-        (b) = _mm512_permutex2var_ps(lo_, odd, hi_);                                      \
-    } while (0)
     GATHER2(0, p[0], p[1]);
     GATHER2(1, p[2], pj);
     GATHER2(2, u[0], u[1]);
