@@ -85,29 +85,40 @@ static void quat_matrix(const float q[4], float R[9])
     R[8] = 1 - 2 * (x * x + y * y);
 }
 
-ms_status ms_shape_set_orientation(ms_shape *s, const float quat[4], const float omega[3])
+ms_status ms_shape_check_orientation(const char *part, const float quat[4], const float omega[3])
 {
-    ms_status st = ms_check_not_null("shape", "shape", s);
-    if (st != MS_OK)
-        return st;
     static const char *const qkey[4] = {"orientation[0]", "orientation[1]", "orientation[2]",
                                         "orientation[3]"};
     static const char *const wkey[3] = {"omega[0]", "omega[1]", "omega[2]"};
+    ms_status st;
     double n2 = 0.0;
     for (int k = 0; quat && k < 4; ++k) {
-        if ((st = ms_check_finite("shape", qkey[k], quat[k])) != MS_OK)
+        if ((st = ms_check_finite(part, qkey[k], quat[k])) != MS_OK)
             return st;
         n2 += (double)quat[k] * quat[k];
     }
     if (quat && !(n2 > 1e-12))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "shape: orientation quaternion has length %g; it must be a rotation "
+                       "%s: orientation quaternion has length %g; it must be a rotation "
                        "(w, x, y, z) of length 1 (it is normalised), not 0",
-                       sqrt(n2));
+                       part, sqrt(n2));
     for (int k = 0; omega && k < 3; ++k)
-        if ((st = ms_check_range("shape", wkey[k], omega[k], -1e3, 1e3, "rad/s")) != MS_OK)
+        if ((st = ms_check_range(part, wkey[k], omega[k], -1e3, 1e3, "rad/s")) != MS_OK)
             return st;
+    return MS_OK;
+}
+
+ms_status ms_shape_set_orientation(ms_shape *s, const float quat[4], const float omega[3])
+{
+    ms_status st = ms_check_not_null("shape", "shape", s);
+    if (st == MS_OK)
+        st = ms_shape_check_orientation("shape", quat, omega);
+    if (st != MS_OK)
+        return st;
     if (quat) {
+        double n2 = 0.0;
+        for (int k = 0; k < 4; ++k)
+            n2 += (double)quat[k] * quat[k];
         const double inv = 1.0 / sqrt(n2);
         for (int k = 0; k < 4; ++k)
             s->quat[k] = (float)(quat[k] * inv);
@@ -172,29 +183,21 @@ void ms_shape_get_pose(const ms_shape *s, float pos[3], float vel[3])
 
 float ms_shape_distance(const ms_shape *s, const float p[3], float normal[3])
 {
-    const float r[3] = {p[0] - s->pos[0], p[1] - s->pos[1], p[2] - s->pos[2]};
-    if (!s->turned)
+    if (!s->turned) {
+        const float r[3] = {p[0] - s->pos[0], p[1] - s->pos[1], p[2] - s->pos[2]};
         return s->vt->distance(s->self, r, normal);
-    const float *R = s->rot;
-    const float q[3] = {R[0] * r[0] + R[3] * r[1] + R[6] * r[2],
-                        R[1] * r[0] + R[4] * r[1] + R[7] * r[2],
-                        R[2] * r[0] + R[5] * r[1] + R[8] * r[2]}; /* R^T r */
-    float n[3] = {0.0f, 0.0f, 1.0f};
+    }
+    float q[3], n[3] = {0.0f, 0.0f, 1.0f};
+    ms_rigid_to_local(s->rot, s->pos, p, q);
     float d = s->vt->distance(s->self, q, normal ? n : NULL);
     if (normal)
-        for (int k = 0; k < 3; ++k)
-            normal[k] = R[3 * k] * n[0] + R[3 * k + 1] * n[1] + R[3 * k + 2] * n[2];
+        ms_rigid_to_world(s->rot, n, normal);
     return d;
 }
 
 void ms_shape_velocity(const ms_shape *s, const float p[3], float vel[3])
 {
-    /* a rigid body: v + omega x (p - pos) */
-    const float r[3] = {p[0] - s->pos[0], p[1] - s->pos[1], p[2] - s->pos[2]};
-    const float *w = s->omega;
-    vel[0] = s->vel[0] + w[1] * r[2] - w[2] * r[1];
-    vel[1] = s->vel[1] + w[2] * r[0] - w[0] * r[2];
-    vel[2] = s->vel[2] + w[0] * r[1] - w[1] * r[0];
+    ms_rigid_velocity(s->vel, s->omega, s->pos, p, vel);
 }
 
 void ms_shape_bounds(const ms_shape *s, float lo[3], float hi[3])

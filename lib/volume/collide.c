@@ -61,32 +61,6 @@ typedef struct collider_view {
     float R0[9], R1[9];
 } collider_view;
 
-/* x (world) into the plugin's frame of a turned view: R^T (x - o). */
-static inline void to_local(const float R[9], const float o[3], const float x[3], float q[3])
-{
-    const float r[3] = {x[0] - o[0], x[1] - o[1], x[2] - o[2]};
-    for (int k = 0; k < 3; ++k)
-        q[k] = R[k] * r[0] + R[3 + k] * r[1] + R[6 + k] * r[2];
-}
-
-/* A direction of the plugin's frame into the world: R n. */
-static inline void to_world_dir(const float R[9], const float n[3], float w[3])
-{
-    for (int k = 0; k < 3; ++k)
-        w[k] = R[3 * k] * n[0] + R[3 * k + 1] * n[1] + R[3 * k + 2] * n[2];
-}
-
-/* Velocity (m/s) of a turned view's material at world x, about origin o. */
-static inline void turned_velocity(const collider_view *cv, const float o[3], const float x[3],
-                                   float u[3])
-{
-    const float r[3] = {x[0] - o[0], x[1] - o[1], x[2] - o[2]};
-    const float *w = cv->omega;
-    u[0] = cv->vel[0] + w[1] * r[2] - w[2] * r[1];
-    u[1] = cv->vel[1] + w[2] * r[0] - w[0] * r[2];
-    u[2] = cv->vel[2] + w[0] * r[1] - w[1] * r[0];
-}
-
 typedef struct collide_ctx {
     ms_volume *v;
     double tau;
@@ -180,9 +154,9 @@ static void boundary_part(void *ctxp, int part, int b, int e)
             if (cv->turned) {
                 const float x[3] = {v->x[i], v->y[i], v->z[i]};
                 float ql[3], nl[3];
-                to_local(cv->R0, cv->o0, x, ql);
+                ms_rigid_to_local(cv->R0, cv->o0, x, ql);
                 d = ms_shape_distance_local(cv->s, ql, nl);
-                to_world_dir(cv->R0, nl, n);
+                ms_rigid_to_world(cv->R0, nl, n);
             } else {
                 d = ms_shape_distance(cv->s, q, n);
             }
@@ -195,7 +169,7 @@ static void boundary_part(void *ctxp, int part, int b, int e)
                 float u[3];
                 if (cv->turned) {
                     const float x[3] = {v->x[i], v->y[i], v->z[i]};
-                    turned_velocity(cv, cv->o0, x, u);
+                    ms_rigid_velocity(cv->vel, cv->omega, cv->o0, x, u);
                 } else {
                     shape_velocity(cv, q, u);
                 }
@@ -288,11 +262,11 @@ static void push_out(const collider_view *cv, const float end_shift[3], float q[
     float w[3];
     if (cv->turned) { /* back to the world at the end of the sub-step */
         float nl[3] = {n[0], n[1], n[2]};
-        to_world_dir(cv->R1, q, x);
+        ms_rigid_to_world(cv->R1, q, x);
         for (int k = 0; k < 3; ++k)
             x[k] += cv->o1[k];
-        to_world_dir(cv->R1, nl, n);
-        turned_velocity(cv, cv->o1, x, w);
+        ms_rigid_to_world(cv->R1, nl, n);
+        ms_rigid_velocity(cv->vel, cv->omega, cv->o1, x, w);
     } else {
         shape_velocity(cv, q, w);
         for (int k = 0; k < 3; ++k)
@@ -326,8 +300,8 @@ static void resolve_part(void *ctxp, int part, int b, int e)
                 q1[k] = x1[k] - end_shift[k];
             }
             if (cv->turned) { /* the path relative to the turning shape */
-                to_local(cv->R0, cv->o0, x0, q0);
-                to_local(cv->R1, cv->o1, x1, q1);
+                ms_rigid_to_local(cv->R0, cv->o0, x0, q0);
+                ms_rigid_to_local(cv->R1, cv->o1, x1, q1);
             }
             for (int k = 0; k < 3; ++k) {
                 dq[k] = q1[k] - q0[k];
