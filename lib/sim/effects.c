@@ -15,15 +15,10 @@ static ms_status add_shape(ms_sim *sim, const ms_scene_shape *spec, ms_sim_shape
     sh->moving = spec->path.npoints > 1 || spec->velocity[0] != 0 || spec->velocity[1] != 0 ||
                  spec->velocity[2] != 0 || spec->spin[0] != 0 || spec->spin[1] != 0 ||
                  spec->spin[2] != 0;
-    float pos[3], vel[3], quat[4], omega[3];
-    ms_sim_shape_pose(sh, 0.0, pos, vel);
-    const int turned = ms_sim_shape_turn(sh, 0.0, quat, omega);
     if (sim->volume) {
         st = ms_shape_create(spec->kind, spec->params_json, &sh->vol);
         if (st == MS_OK)
-            st = ms_shape_set_pose(sh->vol, pos, vel);
-        if (st == MS_OK && turned)
-            st = ms_shape_set_orientation(sh->vol, quat, omega);
+            st = ms_sim_shape_place(sh, sh->vol, 0.0);
         if (st == MS_OK)
             st = ms_volume_add_collider(sim->volume, sh->vol);
         if (st != MS_OK) {
@@ -35,9 +30,7 @@ static ms_status add_shape(ms_sim *sim, const ms_scene_shape *spec, ms_sim_shape
     if (sim->surface && spec->surface_mask) {
         st = ms_shape_create(spec->kind, spec->params_json, &sh->surf);
         if (st == MS_OK)
-            st = ms_shape_set_pose(sh->surf, pos, vel);
-        if (st == MS_OK && turned)
-            st = ms_shape_set_orientation(sh->surf, quat, omega);
+            st = ms_sim_shape_place(sh, sh->surf, 0.0);
     }
     return st;
 }

@@ -180,11 +180,15 @@ void ms_sim_upsample_add(const ms_sim *sim, const float *field, const float *wav
                          float *rowtmp, float *out);
 
 /* volume_task.c / surface_task.c */
-void ms_sim_shape_pose(const ms_sim_shape *sh, double t, float pos[3], float vel[3]);
-/* Orientation (quaternion) and angular velocity (rad/s) of a scene shape
- * at time t (s): the engine's (ms_sim_turn_*), else the scene's turned by
- * its spin since t = 0. 0 if it is neither turned nor turning. */
-int ms_sim_shape_turn(const ms_sim_shape *sh, double t, float quat[4], float omega[3]);
+/* Place s (the volume's or the surface's twin of sh) where sh is at time
+ * t (s): its pose (the engine's, its path, or position + velocity t) and,
+ * when turned or turning, its orientation. */
+ms_status ms_sim_shape_place(const ms_sim_shape *sh, ms_shape *s, double t);
+/* Moves or turns during the run (its footprint is redrawn each frame). */
+static inline int ms_sim_shape_dynamic(const ms_sim_shape *sh)
+{
+    return sh->moving || sh->api_set || sh->api_turn;
+}
 int ms_sim_motion_active(const ms_scene_motion *p, double t);
 void ms_sim_volume_task(void *task);
 void ms_sim_surface_task(void *task);

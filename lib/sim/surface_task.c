@@ -18,14 +18,9 @@ static ms_status update_mask(ms_sim *sim, double t)
     memcpy(sim->mask, sim->mask_static, ns);
     for (int i = 0; i < sim->nshapes; ++i) {
         ms_sim_shape *sh = &sim->shapes[i];
-        if (!sh->surf || !(sh->moving || sh->api_set || sh->api_turn))
+        if (!sh->surf || !ms_sim_shape_dynamic(sh))
             continue;
-        float pos[3], vel[3];
-        ms_sim_shape_pose(sh, t, pos, vel);
-        ms_status st = ms_shape_set_pose(sh->surf, pos, vel);
-        float quat[4], omega[3];
-        if (st == MS_OK && ms_sim_shape_turn(sh, t, quat, omega))
-            st = ms_shape_set_orientation(sh->surf, quat, omega);
+        ms_status st = ms_sim_shape_place(sh, sh->surf, t);
         if (st == MS_OK)
             st = ms_shape_footprint(sh->surf, &g, z, sim->mask);
         if (st != MS_OK)

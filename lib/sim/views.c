@@ -5,6 +5,7 @@
 
 #include "modesplit/surface.h"
 #include "modesplit/volume.h"
+#include "shape/shape.h"
 #include "sim/sim_internal.h"
 
 /* The slot of the published frame's volume data. */
@@ -237,7 +238,7 @@ static ms_status unfreeze_mask(ms_sim *sim)
     float z = sim->domain_min[2] + sim->level;
     for (int j = 0; j < sim->nshapes; ++j) {
         ms_sim_shape *o = &sim->shapes[j];
-        if (o->surf && !o->moving && !o->api_set && !o->api_turn &&
+        if (o->surf && !ms_sim_shape_dynamic(o) &&
             (st = ms_shape_footprint(o->surf, &sim->wave_grid, z, sim->mask_static)) != MS_OK)
             return st;
     }
@@ -272,23 +273,10 @@ static ms_status move_shape(ms_sim *sim, int i, const char *what, const float po
 static ms_status turn_shape(ms_sim *sim, int i, const float quat[4], const float omega[3])
 {
     ms_status st = ms_check_not_null("sim", "orientation", quat);
-    static const char *const qkey[4] = {"orientation[0]", "orientation[1]", "orientation[2]",
-                                        "orientation[3]"};
-    static const char *const wkey[3] = {"omega[0]", "omega[1]", "omega[2]"};
-    double n2 = 0.0;
-    for (int k = 0; k < 4 && st == MS_OK; ++k) {
-        st = ms_check_finite("sim", qkey[k], quat[k]);
-        n2 += (double)quat[k] * quat[k];
-    }
-    for (int k = 0; omega && k < 3 && st == MS_OK; ++k)
-        st = ms_check_range("sim", wkey[k], omega[k], -1e3, 1e3, "rad/s");
+    if (st == MS_OK)
+        st = ms_shape_check_orientation("sim", quat, omega);
     if (st != MS_OK)
         return st;
-    if (!(n2 > 1e-12))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "sim: orientation quaternion has length %g; it must be a rotation "
-                       "(w, x, y, z) of length 1 (it is normalised), not 0",
-                       sqrt(n2));
     ms_sim_shape *sh = &sim->shapes[i];
     sh->api_turn = 1;
     memcpy(sh->api_quat, quat, sizeof sh->api_quat);

@@ -11,7 +11,7 @@
 #include "sim/sim_internal.h"
 
 /* Pose of a scene shape at time t (s). */
-void ms_sim_shape_pose(const ms_sim_shape *sh, double t, float pos[3], float vel[3])
+static void shape_pose(const ms_sim_shape *sh, double t, float pos[3], float vel[3])
 {
     if (sh->api_set) {
         memcpy(pos, sh->api_pos, 3 * sizeof *pos);
@@ -26,7 +26,10 @@ void ms_sim_shape_pose(const ms_sim_shape *sh, double t, float pos[3], float vel
     }
 }
 
-int ms_sim_shape_turn(const ms_sim_shape *sh, double t, float quat[4], float omega[3])
+/* Orientation (quaternion) and angular velocity (rad/s) of a scene shape
+ * at time t (s): the engine's (ms_sim_turn_*), else the scene's turned by
+ * its spin since t = 0. 0 if it is neither turned nor turning. */
+static int shape_turn(const ms_sim_shape *sh, double t, float quat[4], float omega[3])
 {
     if (sh->api_turn) {
         memcpy(quat, sh->api_quat, 4 * sizeof *quat);
@@ -52,6 +55,16 @@ int ms_sim_shape_turn(const ms_sim_shape *sh, double t, float quat[4], float ome
     quat[3] = (float)(dq[0] * q0[3] + dq[1] * q0[2] - dq[2] * q0[1] + dq[3] * q0[0]);
     memcpy(omega, w, 3 * sizeof *omega);
     return 1;
+}
+
+ms_status ms_sim_shape_place(const ms_sim_shape *sh, ms_shape *s, double t)
+{
+    float pos[3], vel[3], quat[4], omega[3];
+    shape_pose(sh, t, pos, vel);
+    ms_status st = ms_shape_set_pose(s, pos, vel);
+    if (st == MS_OK && shape_turn(sh, t, quat, omega))
+        st = ms_shape_set_orientation(s, quat, omega);
+    return st;
 }
 
 /* Is a scripted pointer pressed at time t: after its start, and while it
@@ -206,14 +219,8 @@ void ms_sim_volume_task(void *arg)
     /* interaction at t0: moved shapes, the pointer, the engine's drags */
     for (int i = 0; st == MS_OK && i < sim->nshapes; ++i) {
         ms_sim_shape *sh = &sim->shapes[i];
-        if (!sh->vol || !(sh->moving || sh->api_set || sh->api_turn))
-            continue;
-        float pos[3], vel[3];
-        ms_sim_shape_pose(sh, t0, pos, vel);
-        st = ms_shape_set_pose(sh->vol, pos, vel);
-        float quat[4], omega[3];
-        if (st == MS_OK && ms_sim_shape_turn(sh, t0, quat, omega))
-            st = ms_shape_set_orientation(sh->vol, quat, omega);
+        if (sh->vol && ms_sim_shape_dynamic(sh))
+            st = ms_sim_shape_place(sh, sh->vol, t0);
     }
     const ms_scene *sc = sim->scene;
     if (st == MS_OK && sc && sc->has_drag && ms_sim_motion_active(&sc->drag_path, t0)) {
