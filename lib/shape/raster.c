@@ -110,10 +110,8 @@ ms_status ms_shape_depth(const ms_shape *s, const ms_grid *g, float z, float *de
     /* a turned shape is marched in the world's frame (its height_at is
      * along its own z) */
     const int world = s->turned;
-    if (world) {
+    if (world)
         lo[2] = wlo[2];
-        hi[2] = whi[2];
-    }
     const float zl = world ? z : z - s->pos[2]; /* water level, in the marching frame */
     int x0, x1, y0, y1;
     cell_range(wlo[0], whi[0], g->origin[0], g->dx, g->nx, &x0, &x1);
