@@ -156,6 +156,25 @@ static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi,
 #endif
 
 #if MS_VOLUME_HAVE_AVX512
+/* One block of up to 16 candidates (lanes outside valid are ignored): the
+ * ids of those within h of q, and their r^2, stored as whole compressed
+ * blocks (the lists have slack: a compress to memory is microcoded and
+ * slow). Returns how many were within h. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t
+filter_block(__m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y,
+             const float *z, __mmask16 valid, __m512i id, int *out, float *out2)
+{
+    __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, x));
+    __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, y));
+    __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, z));
+    __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                              _mm512_mul_ps(dz, dz));
+    __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+    _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(m, id));
+    _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(m, r2));
+    return (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+}
+
 __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
 filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float q[3], int tag,
                    int *restrict out, float *restrict out2)
@@ -171,17 +190,7 @@ filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float
         for (int j = lo[r]; j < hi[r]; j += 16) {
             unsigned rem = (unsigned)(hi[r] - j);
             __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
-            __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, x + j));
-            __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, y + j));
-            __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, z + j));
-            __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
-                                      _mm512_mul_ps(dz, dz));
-            __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
-            /* compress in registers and store whole blocks (the list has
-             * slack): a compress to memory is microcoded and slow */
-            _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
-            _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
-            n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+            n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n);
             id = _mm512_add_epi32(id, sixteen);
         }
     }
@@ -201,16 +210,8 @@ filter_run_avx512(const float *restrict cx, const int *restrict cidx, size_t nc,
     for (size_t j = 0; j < nc; j += 16) {
         size_t rem = nc - j;
         __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
-        __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, cx + j));
-        __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, cy + j));
-        __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, cz + j));
-        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
-                                  _mm512_mul_ps(dz, dz));
-        __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
-        _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
-        _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
-        n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n);
     }
     return n;
 }
