@@ -2,7 +2,10 @@
 # Installs the Debian packages libmodesplit needs when they are missing.
 # As root it runs apt-get; otherwise it prints the one command to run.
 #   tools/deps.sh          check, install what is missing (root)
-#   tools/deps.sh --list   print the package list
+#   tools/deps.sh --ci     the same, plus the real clients the CI-only
+#                          tests drive (ParaView's pvpython, Xvfb + xdotool,
+#                          gnuplot, SDL2, ffmpeg, h5py, ImageMagick)
+#   tools/deps.sh --list   print the package list (with --ci: both lists)
 set -eu
 
 # build: compiler, make, pkg-config; libraries: JSON (jansson), HDF5, PNG,
@@ -10,6 +13,16 @@ set -eu
 # clang for the libFuzzer harnesses.
 PACKAGES="build-essential pkg-config libjansson-dev libhdf5-dev hdf5-tools libpng-dev \
 libosmesa6-dev check libsubunit-dev valgrind clang"
+# the clients users run against the library's output, and what the viewer
+# and the study need: installed by `tools/deps.sh --ci` (.ci/run), left to
+# the user otherwise (the tests that need them report themselves skipped).
+CI_PACKAGES="gnuplot-nox libsdl2-dev xvfb xauth xdotool x11-apps imagemagick ffmpeg \
+paraview python3-paraview python3-h5py python3-venv"
+
+if [ "${1:-}" = "--ci" ]; then
+    PACKAGES="$PACKAGES $CI_PACKAGES"
+    shift
+fi
 
 if [ "${1:-}" = "--list" ]; then
     echo $PACKAGES
@@ -30,9 +43,11 @@ fi
 if [ "$(id -u)" -eq 0 ]; then
     echo "deps: installing$missing"
     export DEBIAN_FRONTEND=noninteractive
-    apt-get update -qq
+    # wait for another apt (a second session, unattended upgrades) instead
+    # of failing on its lock
+    apt-get -o DPkg::Lock::Timeout=600 update -qq
     # shellcheck disable=SC2086
-    apt-get install -y -qq --no-install-recommends $missing
+    apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends $missing
 else
     echo "deps: missing Debian packages:$missing" >&2
     echo "deps: run:  sudo apt-get install -y$missing" >&2
