@@ -183,7 +183,7 @@ START_TEST(one_and_two_threads_give_the_same_bytes)
     }
     ck_assert_int_eq(engine_calls, DET_FRAMES);
     /* and the run did something: particles moved, waves, floaters */
-    ms_stats s;
+    ms_stats s = ms_stats_init();
     ms_sim_stats(two, &s);
     ck_assert_int_gt(s.volume_steps, DET_FRAMES);
     ck_assert_int_gt(s.drops, 2);

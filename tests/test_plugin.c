@@ -236,7 +236,7 @@ START_TEST(lists_the_shipped_plugins)
     const char *prev_name = "";
     int prev_rank = 0;
     for (int i = 0; i < n; ++i) {
-        ms_plugin_description d;
+        ms_plugin_description d = ms_plugin_description_init();
         ck_assert_int_eq(ms_plugin_describe(i, &d), MS_OK);
         ck_assert(strcmp(d.kind, "shape") == 0 || strcmp(d.kind, "shader") == 0);
         ck_assert_int_gt(strlen(d.description), 5);
@@ -252,7 +252,7 @@ START_TEST(lists_the_shipped_plugins)
             found += strcmp(d.name, want[k]) == 0;
     }
     ck_assert_int_eq(found, 3);
-    ms_plugin_description d;
+    ms_plugin_description d = ms_plugin_description_init();
     MS_ASSERT_REFUSED(ms_plugin_describe(n, &d), MS_ERR_INVALID_ARGUMENT, "index");
     MS_ASSERT_REFUSED(ms_plugin_describe(-1, &d), MS_ERR_INVALID_ARGUMENT, "index");
     ck_assert_int_eq(ms_plugin_problem_count(), 0);
@@ -278,7 +278,7 @@ START_TEST(search_path_scan_skips_bad_files_and_earlier_names_win)
         ck_assert_ptr_nonnull(strstr(ms_plugin_problem(i), tmp));
     int testball = 0, sphere_from_tmp = 0, sphere_from_build = 0;
     for (int i = 0; i < ms_plugin_count(); ++i) {
-        ms_plugin_description d;
+        ms_plugin_description d = ms_plugin_description_init();
         ck_assert_int_eq(ms_plugin_describe(i, &d), MS_OK);
         testball += strcmp(d.name, "testball") == 0;
         if (strcmp(d.name, "sphere") == 0) {
@@ -349,7 +349,7 @@ START_TEST(first_use_from_many_threads_scans_once)
     }
     int boxes = 0;
     for (int i = 0; i < ms_plugin_count(); ++i) {
-        ms_plugin_description d;
+        ms_plugin_description d = ms_plugin_description_init();
         ms_plugin_describe(i, &d);
         boxes += strcmp(d.name, "box") == 0;
     }

@@ -342,7 +342,7 @@ START_TEST(a_scene_gives_the_desc_of_its_render_section)
                        "                \"fov\": 50}}}";
     ms_scene *sc = NULL;
     ck_assert_int_eq(ms_scene_parse(text, strlen(text), &sc), MS_OK);
-    ms_renderer_desc d;
+    ms_renderer_desc d = ms_renderer_desc_default();
     ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
     ck_assert_int_eq(d.width, 64);
     ck_assert_int_eq(d.height, 48);
@@ -555,7 +555,7 @@ START_TEST(milk_hides_the_floor_that_water_shows)
     ms_renderer_desc d = top_down("milk");
     ms_renderer *r = create_ok(&d);
     draw_ok(r, h, N);
-    ms_render_stats st;
+    ms_render_stats st = ms_render_stats_init();
     ms_renderer_stats(r, &st);
     ck_assert_uint_eq(st.passes, MS_SHADER_NEEDS_REFLECTION);
     ck_assert_double_eq(st.caustics_ms, 0);
@@ -889,7 +889,7 @@ START_TEST(a_coarser_mesh_averages_the_field)
     d.mesh_step = 2;
     ms_renderer *r = create_ok(&d);
     draw_ok(r, h, N);
-    ms_render_stats st;
+    ms_render_stats st = ms_render_stats_init();
     ms_renderer_stats(r, &st);
     ck_assert_int_eq(st.mesh_nx, N / 2);
     ck_assert_int_eq(st.mesh_ny, N / 2);
@@ -970,7 +970,7 @@ START_TEST(the_shipped_scenes_render)
         ms_status st = ms_scene_load(path, &sc);
         ck_assert_msg(st == MS_OK, "%s: %s", path, ms_last_error());
         ck_assert(ms_scene_has_render(sc));
-        ms_renderer_desc d;
+        ms_renderer_desc d = ms_renderer_desc_default();
         ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
         d.width = d.height = 48;
         d.caustics_resolution = 32;

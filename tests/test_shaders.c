@@ -92,7 +92,7 @@ START_TEST(each_shader_loads_and_describes_itself)
 {
     int found = 0;
     for (int i = 0; i < ms_plugin_count(); ++i) {
-        ms_plugin_description d;
+        ms_plugin_description d = ms_plugin_description_init();
         ck_assert_int_eq(ms_plugin_describe(i, &d), MS_OK);
         for (int k = 0; k < N_SHADERS; ++k)
             if (strcmp(d.name, shaders[k]) == 0) {

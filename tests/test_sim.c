@@ -70,7 +70,7 @@ START_TEST(surface_only_scene_holds_no_particles_and_runs_no_sph)
                          ", \"effects\": {\"drops\": [{\"at\": [0.2, 0.2]}]}}");
     ms_sim *sim = sim_of(sc, 2);
     steps(sim, 10, 1.0f / 60);
-    ms_stats s;
+    ms_stats s = ms_stats_init();
     ms_sim_stats(sim, &s);
     ck_assert_int_eq(s.volume_steps, 0);
     ck_assert_uint_eq(s.volume_bytes, 0);
@@ -105,7 +105,7 @@ START_TEST(volume_only_scene_is_the_sph_field_alone)
     ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME "}");
     ms_sim *sim = sim_of(sc, 2);
     steps(sim, 5, 1.0f / 60);
-    ms_stats s;
+    ms_stats s = ms_stats_init();
     ms_sim_stats(sim, &s);
     ck_assert_int_eq(s.surface_steps, 0);
     ck_assert_uint_eq(s.surface_bytes, 0);
@@ -141,14 +141,14 @@ START_TEST(threads_is_the_whole_budget)
     ms_scene *sc = scene("{" POOL_DOMAIN ", \"volume\": {\"spacing\": 0.04, \"threads\": 4}}");
     ms_scene *both = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
     ms_sim *one = sim_of(sc, 1), *two = sim_of(sc, 2), *split = sim_of(both, 2);
-    ms_volume_info vi;
+    ms_volume_info vi = ms_volume_info_init();
     ms_volume_get_info(ms_sim_volume(one), &vi);
     ck_assert_int_eq(vi.threads, 1);
     ms_volume_get_info(ms_sim_volume(two), &vi);
     ck_assert_int_eq(vi.threads, 4);
     ms_volume_get_info(ms_sim_volume(split), &vi);
     ck_assert_int_eq(vi.threads, 1); /* the surface thread has the second core */
-    ms_sim_info info;
+    ms_sim_info info = ms_sim_info_init();
     ms_sim_get_info(split, &info);
     ck_assert_int_eq(info.threads, 2);
     ck_assert_int_eq(info.has_volume + info.has_surface, 2);
@@ -172,7 +172,7 @@ START_TEST(absent_effects_cost_nothing)
     ms_sim *a = sim_of(plain, 1), *b = sim_of(fx, 1);
     steps(a, 6, 1.0f / 60);
     steps(b, 6, 1.0f / 60);
-    ms_stats sa, sb;
+    ms_stats sa = ms_stats_init(), sb = ms_stats_init();
     ms_sim_stats(a, &sa);
     ms_sim_stats(b, &sb);
     ck_assert_int_eq(sa.drops, 0); /* no rain: no drops, no random numbers drawn */
@@ -205,13 +205,13 @@ START_TEST(n_time_is_the_fewest_stable_wave_steps)
 {
     ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_SURFACE "}");
     ms_sim *sim = sim_of(sc, 1);
-    ms_surface_info info;
+    ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(ms_sim_surface(sim), &info);
     const float dt = 1.0f / 30;
     int expect = (int)ceil(dt / info.max_dt);
     ck_assert_int_ge(expect, 2);
     steps(sim, 3, dt); /* the first frame shows the start: two wave intervals */
-    ms_stats s;
+    ms_stats s = ms_stats_init();
     ms_sim_stats(sim, &s);
     ck_assert_int_eq(s.n_time, expect);
     ck_assert_int_eq(s.surface_steps, 2 * expect); /* one leapfrog step each */
@@ -225,7 +225,7 @@ START_TEST(a_given_n_time_must_keep_within_the_cfl_bound)
     ms_scene *ok = scene("{" POOL_DOMAIN ", " POOL_SURFACE ", \"coupling\": {\"n_time\": 9}}");
     ms_sim *sim = sim_of(ok, 1);
     steps(sim, 3, 1.0f / 60);
-    ms_stats s;
+    ms_stats s = ms_stats_init();
     ms_sim_stats(sim, &s);
     ck_assert_int_eq(s.n_time, 9);
     ck_assert_int_eq(s.surface_steps, 18);
@@ -331,7 +331,7 @@ START_TEST(combined_is_upsampled_volume_plus_waves)
     ck_assert_int_eq(ms_sim_field_grid(sim, MS_FIELD_COMBINED, &g), MS_OK);
     ck_assert_int_eq(g.nx, 64);
     ck_assert_float_eq_tol(g.dx, 0.4f / 64, 1e-8f);
-    ms_sim_info info;
+    ms_sim_info info = ms_sim_info_init();
     ms_sim_get_info(sim, &info);
     ck_assert_float_eq(info.n_surf_x, 4.0f); /* eq. 20: 64 / 16 */
     free(up);
@@ -799,7 +799,7 @@ START_TEST(scripted_drops_land_on_time)
     steps(sim, 2, 0.02f);
     wave_sum(sim, &m);
     ck_assert(m > 1e-3);
-    ms_stats s;
+    ms_stats s = ms_stats_init();
     ms_sim_stats(sim, &s);
     ck_assert_int_eq(s.drops, 1);
     ms_sim_destroy(sim);

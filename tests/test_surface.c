@@ -143,12 +143,13 @@ START_TEST(inputs_are_refused_with_the_value)
                       "damping map[5]");
     f[5] = 1.01f;
     MS_ASSERT_REFUSED(ms_surface_set_damping_map(s, f), MS_ERR_INVALID_ARGUMENT, "(0, 1]");
-    ms_rain rain = {.rate = -1, .radius = 0.1f, .amplitude = 0.01f};
+    ms_rain rain = {.size = sizeof(ms_rain), .rate = -1, .radius = 0.1f, .amplitude = 0.01f};
     MS_ASSERT_REFUSED(ms_surface_set_rain(s, &rain), MS_ERR_INVALID_ARGUMENT, "rain rate -1");
     rain.rate = 10;
     rain.radius = 0;
     MS_ASSERT_REFUSED(ms_surface_set_rain(s, &rain), MS_ERR_INVALID_ARGUMENT, "rain radius");
-    ms_disturber_desc b = {.x = 0.5f, .y = 0.5f, .radius = 0.01f, .depth = 0.01f};
+    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
+                           .x = 0.5f, .y = 0.5f, .radius = 0.01f, .depth = 0.01f};
     int id;
     MS_ASSERT_REFUSED(ms_surface_add_disturber(s, &b, &id), MS_ERR_INVALID_ARGUMENT,
                       "disturber radius 0.01");
@@ -220,7 +221,7 @@ static double measured_omega(double lx, double ly, int m, int n, int N, double c
         prev = a;
     }
     ck_assert_int_ge(crossings, 8);
-    ms_surface_info info;
+    ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(s, &info);
     ck_assert_int_eq(info.substeps, steps);
     free(f);
@@ -334,7 +335,7 @@ START_TEST(white_noise_at_the_cfl_limit_conserves_energy)
      * is about; 20 000 steps at the largest stable step, undamped */
     ms_surface *s = make(64, 48, 0.01f, 1.0f, 1.0f, MS_BOUNDARY_REFLECT);
     random_field(s, 3, 0.01f);
-    ms_surface_info info;
+    ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(s, &info);
     const float dt = info.max_dt;
     ck_assert_float_eq_tol(dt, 0.7f * 0.01f / 1.0f, 1e-9f);
@@ -372,7 +373,8 @@ START_TEST(mean_height_is_conserved_with_drops_and_disturbers)
     ck_assert_int_eq(ms_surface_add_drop(s, 0.3f, 0.3f, 0.05f, 0.01f), MS_OK);
     ck_assert_int_eq(ms_surface_add_drop(s, 0.7f, 0.2f, 0.04f, -0.01f), MS_OK);
     const double m0 = mean_height(s);
-    ms_disturber_desc b = {.x = 0.2f, .y = 0.3f, .vx = 0.3f, .vy = 0, .radius = 0.04f,
+    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
+                           .x = 0.2f, .y = 0.3f, .vx = 0.3f, .vy = 0, .radius = 0.04f,
                            .depth = 0.005f};
     int id;
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, &id), MS_OK);
@@ -392,14 +394,15 @@ START_TEST(long_run_with_rain_and_disturber_stays_bounded)
     /* 20 000 steps at the largest stable step, rain and a boat going round:
      * damping makes the energy settle; it must not grow */
     ms_surface *s = make(128, 128, 0.01f, 0.5f, 0.9f, MS_BOUNDARY_REFLECT);
-    ms_rain rain = {.rate = 20, .radius = 0.03f, .amplitude = -0.004f};
+    ms_rain rain = {.size = sizeof(ms_rain), .rate = 20, .radius = 0.03f, .amplitude = -0.004f};
     ck_assert_int_eq(ms_surface_set_rain(s, &rain), MS_OK);
-    ms_disturber_desc b = {.x = 0.3f, .y = 0.3f, .radius = 0.05f, .depth = 0.004f};
+    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
+                           .x = 0.3f, .y = 0.3f, .radius = 0.05f, .depth = 0.004f};
     int id;
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, &id), MS_OK);
     float path[8] = {0.3f, 0.3f, 1.0f, 0.3f, 1.0f, 1.0f, 0.3f, 1.0f};
     ck_assert_int_eq(ms_surface_set_disturber_path(s, id, 4, path, 0.6f, 1), MS_OK);
-    ms_surface_info info;
+    ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(s, &info);
     const float dt = info.max_dt;
     double quarter_max[4] = {0};
@@ -627,7 +630,7 @@ static void run_rain(uint64_t seed, float *out, ms_surface_info *info)
     d.seed = seed;
     ms_surface *s;
     ck_assert_int_eq(ms_surface_create(&d, &s), MS_OK);
-    ms_rain rain = {.rate = 50, .radius = 0.03f, .amplitude = -0.002f};
+    ms_rain rain = {.size = sizeof(ms_rain), .rate = 50, .radius = 0.03f, .amplitude = -0.002f};
     ck_assert_int_eq(ms_surface_set_rain(s, &rain), MS_OK);
     for (int k = 0; k < 240; ++k)
         ck_assert_int_eq(ms_surface_step(s, 1.0f / 60), MS_OK);
@@ -639,7 +642,7 @@ static void run_rain(uint64_t seed, float *out, ms_surface_info *info)
 START_TEST(rain_is_seeded_and_falls_at_its_rate)
 {
     float a[64 * 64], b[64 * 64], c[64 * 64];
-    ms_surface_info ia, ib, ic;
+    ms_surface_info ia = ms_surface_info_init(), ib = ia, ic = ia;
     run_rain(5, a, &ia);
     run_rain(5, b, &ib);
     run_rain(6, c, &ic);
@@ -656,13 +659,13 @@ START_TEST(no_rain_draws_no_random_numbers)
 {
     ms_surface *s = make(32, 32, 0.01f, 0.5f, 0.9f, MS_BOUNDARY_REFLECT);
     ms_rng before = s->rng;
-    ms_rain rain = {.rate = 10, .radius = 0.02f, .amplitude = 0.001f};
+    ms_rain rain = {.size = sizeof(ms_rain), .rate = 10, .radius = 0.02f, .amplitude = 0.001f};
     ck_assert_int_eq(ms_surface_set_rain(s, &rain), MS_OK);
     ck_assert_int_eq(ms_surface_set_rain(s, NULL), MS_OK); /* off again */
     for (int k = 0; k < 60; ++k)
         ck_assert_int_eq(ms_surface_step(s, 1.0f / 60), MS_OK);
     ck_assert_int_eq(memcmp(&before, &s->rng, sizeof before), 0);
-    ms_surface_info info;
+    ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(s, &info);
     ck_assert_int_eq(info.drops, 0);
     ms_surface_destroy(s);
@@ -672,7 +675,8 @@ END_TEST
 START_TEST(still_disturber_settles_into_its_dent)
 {
     ms_surface *s = make(96, 96, 0.01f, 0.5f, 0.2f, MS_BOUNDARY_REFLECT);
-    ms_disturber_desc b = {.x = 0.48f, .y = 0.48f, .radius = 0.1f, .depth = 0.01f};
+    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
+                           .x = 0.48f, .y = 0.48f, .radius = 0.1f, .depth = 0.01f};
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, NULL), MS_OK);
     ck_assert_int_eq(ms_surface_step(s, 8.0f), MS_OK);
     const float *h = ms_surface_height(s, NULL, NULL);
@@ -689,7 +693,8 @@ END_TEST
 START_TEST(moving_disturber_follows_its_path_and_leaves_a_wake)
 {
     ms_surface *s = make(200, 100, 0.01f, 0.5f, 0.95f, MS_BOUNDARY_ABSORB);
-    ms_disturber_desc b = {.x = 0.2f, .y = 0.5f, .radius = 0.04f, .depth = 0.005f};
+    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
+                           .x = 0.2f, .y = 0.5f, .radius = 0.04f, .depth = 0.005f};
     int id;
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, &id), MS_OK);
     float path[4] = {0.2f, 0.5f, 1.8f, 0.5f};
@@ -738,7 +743,7 @@ END_TEST
 START_TEST(info_reports_memory_and_time)
 {
     ms_surface *s = make(100, 50, 0.01f, 0.5f, 1.0f, MS_BOUNDARY_REFLECT);
-    ms_surface_info info;
+    ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(s, &info);
     ck_assert_uint_ge(info.bytes, 6 * 100 * 50 * sizeof(float));
     ck_assert_uint_lt(info.bytes, 8 * 112 * 52 * sizeof(float));
@@ -760,9 +765,10 @@ static void run_fused(ms_boundary b, int fused, float *out)
 {
     ms_surface *s = make(40, 24, 0.01f, 0.5f, 0.8f, b);
     ck_assert_int_eq(ms_surface_add_drop(s, 0.1f, 0.1f, 0.04f, 0.01f), MS_OK);
-    ms_disturber_desc d = {.x = 0.2f, .y = 0.12f, .vx = 0.3f, .radius = 0.03f, .depth = 0.003f};
+    ms_disturber_desc d = {.size = sizeof(ms_disturber_desc),
+                           .x = 0.2f, .y = 0.12f, .vx = 0.3f, .radius = 0.03f, .depth = 0.003f};
     ck_assert_int_eq(ms_surface_add_disturber(s, &d, NULL), MS_OK);
-    ms_surface_info info;
+    ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(s, &info);
     const float total = 19.5f * info.max_dt, sub = total / 20.0f;
     if (fused) {

@@ -293,7 +293,7 @@ static int have_shader_plugins(void)
 {
     int n = ms_plugin_count();
     for (int i = 0; i < n; ++i) {
-        ms_plugin_description d;
+        ms_plugin_description d = ms_plugin_description_init();
         if (ms_plugin_describe(i, &d) == MS_OK && !strcmp(d.kind, "shader"))
             return 1;
     }

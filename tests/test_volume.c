@@ -86,7 +86,7 @@ static double mechanical_energy(const ms_volume *v, const ms_volume_desc *d)
     int n = ms_volume_count(v);
     float *p = malloc(sizeof(float) * 3 * (size_t)(n + 1));
     ms_volume_get_particles(v, p, NULL);
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     double pot = 0.0;
     for (int i = 0; i < n; ++i)
@@ -103,7 +103,7 @@ START_TEST(default_desc_is_valid)
     ms_volume_desc d = ms_volume_desc_default();
     ms_volume *v = make(&d);
     ck_assert_int_eq(ms_volume_count(v), 0);
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     ck_assert_float_eq_tol(in.sound_speed, 20.0f, 1e-4f);
     ck_assert(in.particle_mass > 0.0f);
@@ -264,7 +264,7 @@ START_TEST(a_step_needing_too_many_substeps_is_unstable_and_leaves_a_valid_state
     ck_assert_int_eq(ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.2f, 0.2f, 0.2f}),
                      MS_OK);
     MS_ASSERT_REFUSED(ms_volume_step(v, 1.0f), MS_ERR_UNSTABLE, "max_substeps");
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     ck_assert_int_eq(in.substeps, 3);
     ck_assert(in.time > 0.0 && in.time < 1.0);
@@ -345,7 +345,7 @@ static void hydrostatic(ms_pressure law)
         step(v, 1.0f / 60);
         if (f < 60)
             continue;
-        ms_volume_info in;
+        ms_volume_info in = ms_volume_info_init();
         ms_volume_get_info(v, &in);
         max_err = fmaxf(max_err, in.max_density_error);
         ms_volume_grid_build(v);
@@ -425,7 +425,7 @@ static double dam_break_rms(float a, float s, int *count)
         double xf = 0.0;
         for (int i = 0; i < *count; ++i)
             xf = fmax(xf, p[3 * i]);
-        ms_volume_info in;
+        ms_volume_info in = ms_volume_info_init();
         ms_volume_get_info(v, &in);
         double t = in.time * tscale, zf = (xf + 0.5 * s) / a;
         while (k < 15 && t >= mm[k][0]) {
@@ -673,7 +673,7 @@ START_TEST(all_particles_at_one_point_spread_and_stay_bounded)
     ms_volume_boundary(v, 0.0);
     ck_assert_int_eq(ms_volume_density(v), MS_OK);
     ck_assert_int_gt(v->coincident, 0);
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     const double mass = (double)in.particle_mass * N;
     const double bound = mass * (d.gas_constant * log(v->rho[0] / d.rest_density) + 9.81 * 0.6);
@@ -718,7 +718,7 @@ START_TEST(a_hundredfold_viscosity_jump_stays_stable)
         prev = e;
         assert_sane(v, &d);
     }
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     ck_assert_str_eq(in.dt_limit, "viscous");
     ck_assert(prev < e0);
@@ -741,7 +741,7 @@ START_TEST(ten_thousand_steps_at_the_largest_step_stay_bounded)
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.12f, d.domain_max[1], 0.15f});
     const int n = ms_volume_count(v);
     const double e0 = mechanical_energy(v, &d);
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     long frames = 0;
     do {
         step(v, 0.05f);
@@ -769,7 +769,7 @@ START_TEST(a_one_second_frame_hitch_is_substepped)
     ms_volume *v = make(&d);
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.06f, 0.04f, 0.1f});
     step(v, 1.0f);
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     ck_assert_float_eq_tol(in.time, 1.0, 1e-6);
     ck_assert(in.substeps > 100);
@@ -832,7 +832,7 @@ START_TEST(an_obstacle_at_20_m_s_pushes_the_liquid_and_none_tunnels)
         ms_shape_set_pose(ball, (float[3]){x, 0.03f, 0.04f}, (float[3]){u, 0, 0});
         ck_assert_msg(inside_count(v, ball, 1e-4f) == 0, "frame %d: particles inside the ball", f);
         assert_sane(v, &d);
-        ms_volume_info in;
+        ms_volume_info in = ms_volume_info_init();
         ms_volume_get_info(v, &in);
         vmax = fmaxf(vmax, in.max_speed);
     }
@@ -1083,7 +1083,7 @@ START_TEST(a_teleported_collider_is_swept_not_crushed)
     step(v, 1.0f / 60);
     ck_assert_int_eq(inside_count(v, box, 1e-4f), 0);
     assert_sane(v, &d);
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     ck_assert(in.max_speed < 20.0f);
     ms_volume_destroy(v);
@@ -1111,7 +1111,7 @@ START_TEST(drag_pulls_towards_its_velocity_and_never_past_it)
     for (int i = 0; i < n; ++i)
         mx += u[3 * i];
     ck_assert_msg(mx / n > 0.01, "mean vx %g after dragging at 0.5 m/s", mx / n);
-    ms_volume_info in;
+    ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     ck_assert(in.max_speed < 0.6f);
     free(u);

@@ -67,13 +67,37 @@ enum {
     MS_FIELD_PARTICLES = 1u << 3  /* SPH particle positions and velocities */
 };
 
-/* A regular grid placed in the world: cell (i, j) spans
+/* A regular grid placed in the world (a fixed value type: it never grows
+ * and has no size field): cell (i, j) spans
  * [origin + (i, j) * (dx, dy), origin + (i+1, j+1) * (dx, dy)]. */
 typedef struct ms_grid {
     int nx, ny;
     float dx, dy;      /* m */
     float origin[2];   /* m, corner of cell (0, 0) */
 } ms_grid;
+
+/* Struct sizes (ABI). Every public desc and every struct the library fills
+ * starts with `uint32_t size`, the sizeof the caller was compiled with (as
+ * Win32's cbSize): that is how the library tells an older caller's smaller
+ * struct from the current one, so structs can grow at the end.
+ *   - descs (ms_surface_desc, ...): start from ms_X_desc_default(), which
+ *     sets size, then set the fields you need. Create refuses size 0 ("start
+ *     from ms_X_desc_default()") and a size the library does not know (a
+ *     caller built against a newer header, or garbage) with
+ *     MS_ERR_INVALID_ARGUMENT; a smaller known size (an older caller) is
+ *     accepted: the fields it lacks keep their defaults.
+ *   - structs the library fills (ms_stats, ms_surface_info, ...): the
+ *     caller sets size, e.g. `ms_stats st = ms_stats_init();`; the library
+ *     writes only size bytes. A getter that returns void and meets size 0 or
+ *     an unknown size writes nothing (and ms_last_error() says why); one
+ *     that returns ms_status refuses it with MS_ERR_INVALID_ARGUMENT.
+ * FFI callers set size to the struct's sizeof from the ABI listing.
+ * Small value types that never grow (ms_grid, ms_render_disc) carry no size. */
+#ifdef __cplusplus
+#define MS_ZERO_INIT {}
+#else
+#define MS_ZERO_INIT {0}
+#endif
 
 /* "0.1.0" */
 MS_API const char *ms_version(void);

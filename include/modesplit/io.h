@@ -123,6 +123,7 @@ MS_API ms_status ms_reader_read_particles(const ms_reader *r, long frame, int ca
 /* ---- shaded-relief preview (PNG) ---------------------------------------- */
 
 typedef struct ms_preview_desc {
+    uint32_t size; /* sizeof, set by ms_preview_desc_default() (core.h: struct sizes) */
     float dx, dy;                 /* m, cell size: sets the slopes of the shading; > 0 */
     float height_min, height_max; /* m, the colour ramp's range; equal: the field's own */
     float relief;                 /* vertical exaggeration of the shading; 0 .. 1e6 */

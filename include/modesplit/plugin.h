@@ -213,6 +213,7 @@ typedef struct ms_shader_vtable {
 /* One registered plugin, as listed by `modesplit plugins`. The strings
  * stay valid until the process ends. */
 typedef struct ms_plugin_description {
+    uint32_t size; /* sizeof, set by ms_plugin_description_init() (core.h: struct sizes) */
     const char *name;        /* "sphere" */
     const char *kind;        /* "shape" or "shader" */
     const char *version;     /* the plugin's version */
@@ -220,6 +221,12 @@ typedef struct ms_plugin_description {
     const char *path;        /* the file it was loaded from */
     uint32_t abi;            /* the ABI it was built with */
 } ms_plugin_description;
+static inline ms_plugin_description ms_plugin_description_init(void)
+{
+    ms_plugin_description x = MS_ZERO_INIT;
+    x.size = (uint32_t)sizeof x;
+    return x;
+}
 
 /* Number of registered plugins (scans the search path on first use). */
 MS_API int ms_plugin_count(void);

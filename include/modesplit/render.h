@@ -59,6 +59,7 @@ extern "C" {
 #define MS_RENDER_MAX_CAUSTICS 4096
 
 typedef struct ms_renderer_desc {
+    uint32_t size; /* sizeof, set by ms_renderer_desc_default() (core.h: struct sizes) */
     int width, height;           /* pixels, [16, MS_RENDER_MAX_SIDE]; default 950 x 950 */
     const char *shader;          /* shader plugin name; default "water" */
     const char *shader_params;   /* its parameters as a JSON object text; NULL = defaults */
@@ -96,7 +97,8 @@ MS_API ms_renderer_desc ms_renderer_desc_default(void);
 /* The desc of a scene: its `render` section (defaults where it has none)
  * and its pool: domain.min / domain.max x-y, the floor at domain.min z, the
  * still water at surface.level, the rim a little above. The strings point
- * into the scene: valid while it lives. */
+ * into the scene: valid while it lives. out is filled up to its .size
+ * (core.h: struct sizes): start from ms_renderer_desc_default(). */
 MS_API ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out);
 /* Validates every field (MS_ERR_INVALID_ARGUMENT naming it), loads the
  * shader plugin (MS_ERR_PLUGIN; a GLSL compile or link error carries the
@@ -145,6 +147,7 @@ MS_API ms_status ms_renderer_write_png(const ms_renderer *r, const char *path);
 
 /* What the last draw cost and did. */
 typedef struct ms_render_stats {
+    uint32_t size; /* sizeof, set by ms_render_stats_init() (core.h: struct sizes) */
     unsigned passes;      /* MS_SHADER_NEEDS_* bits of the passes that run (plugin.h) */
     long frames;          /* draws finished */
     double mesh_ms;       /* normals and vertex upload, last draw */
@@ -154,6 +157,12 @@ typedef struct ms_render_stats {
     double total_ms;      /* the whole last draw */
     int mesh_nx, mesh_ny; /* vertices of the last draw's mesh (mesh_step) */
 } ms_render_stats;
+static inline ms_render_stats ms_render_stats_init(void)
+{
+    ms_render_stats x = MS_ZERO_INIT;
+    x.size = (uint32_t)sizeof x;
+    return x;
+}
 MS_API void ms_renderer_stats(const ms_renderer *r, ms_render_stats *out);
 
 /* The caustics light map of the last draw (texels over the pool, row-major

@@ -36,6 +36,7 @@ typedef void ms_finish_task_fn(void *user_task, void *user_context);
  * the start. ms_sim_volume / ms_sim_surface may be used between steps
  * (to add particles, drops, ...), never during one. */
 typedef struct ms_sim_desc {
+    uint32_t size; /* sizeof, set by ms_sim_desc_default() (core.h: struct sizes) */
     const ms_volume_desc *volume;    /* NULL: no volume flow */
     const ms_surface_desc *surface;  /* NULL: no surface waves */
     int field_nx, field_ny;          /* X_SPH x Y_SPH; N_surf = surface nx / field_nx (eq. 20) */
@@ -97,6 +98,7 @@ MS_API const ms_scene *ms_sim_scene(const ms_sim *sim); /* NULL when made from a
  * bytes is all memory held, split below. An effect the scene does not name
  * adds nothing to any of them. */
 typedef struct ms_stats {
+    uint32_t size; /* sizeof, set by ms_stats_init() (core.h: struct sizes) */
     double volume_ms, surface_ms, extract_ms, combine_ms, render_ms, total_ms;
     long volume_steps, surface_steps, frames;
     size_t bytes;
@@ -107,10 +109,17 @@ typedef struct ms_stats {
     long drops;           /* drops added to the waves (scripted and rain) */
     int n_time;           /* wave steps in the last frame (eq. 19) */
 } ms_stats;
+static inline ms_stats ms_stats_init(void)
+{
+    ms_stats x = MS_ZERO_INIT;
+    x.size = (uint32_t)sizeof x;
+    return x;
+}
 MS_API void ms_sim_stats(const ms_sim *sim, ms_stats *out);
 
 /* What the sim runs (for listings such as `modesplit info`). */
 typedef struct ms_sim_info {
+    uint32_t size; /* sizeof, set by ms_sim_info_init() (core.h: struct sizes) */
     int has_volume, has_surface;
     int threads;             /* 1 or 2 as created */
     int field_nx, field_ny;  /* X_SPH x Y_SPH (0 without a volume) */
@@ -121,6 +130,12 @@ typedef struct ms_sim_info {
     int floaters;            /* floating objects */
     int obstacles;           /* obstacles + container */
 } ms_sim_info;
+static inline ms_sim_info ms_sim_info_init(void)
+{
+    ms_sim_info x = MS_ZERO_INIT;
+    x.size = (uint32_t)sizeof x;
+    return x;
+}
 MS_API void ms_sim_get_info(const ms_sim *sim, ms_sim_info *out);
 
 /* Objects carried by the flow (scene effects.floaters, the paper's

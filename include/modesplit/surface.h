@@ -40,6 +40,7 @@ typedef enum ms_boundary {
 } ms_boundary;
 
 typedef struct ms_surface_desc {
+    uint32_t size; /* sizeof, set by ms_surface_desc_default() (core.h: struct sizes) */
     int nx, ny;          /* cells; 2 .. 16384 each                         */
     float dx;            /* m, cell size; > 0                              */
     float wave_speed;    /* m/s, c of eq. 2 where no speed map is set; > 0 */
@@ -105,10 +106,13 @@ MS_API ms_status ms_surface_speed_from_depth(const float *depth, size_t n, float
  * seed, same steps -> same bytes). NULL or rate 0 turns rain off (then no
  * random numbers are drawn). */
 typedef struct ms_rain {
+    uint32_t size; /* sizeof, set by ms_rain_default() (core.h: struct sizes) */
     float rate;      /* drops per m^2 per s, >= 0 */
     float radius;    /* m, > 0 */
     float amplitude; /* m, finite (negative = dents, as real drops make) */
 } ms_rain;
+/* rate 0 (off), radius 0.01 m, amplitude -0.002 m. */
+MS_API ms_rain ms_rain_default(void);
 MS_API ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *rain);
 
 /* A moving disturber: the paper's swimming object or boat (Fig. 3c, 10b).
@@ -117,11 +121,14 @@ MS_API ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *rain);
  * without adding any: a still disturber settles into a dent, a moving one
  * leaves bow waves and a wake. */
 typedef struct ms_disturber_desc {
+    uint32_t size; /* sizeof, set by ms_disturber_desc_default() (core.h: struct sizes) */
     float x, y;      /* m, start position */
     float vx, vy;    /* m/s, velocity (used when no path is set) */
     float radius;    /* m, > 0 */
     float depth;     /* m, finite: how deep it presses */
 } ms_disturber_desc;
+/* At (0, 0), still, radius 0.05 m, depth 0.01 m. */
+MS_API ms_disturber_desc ms_disturber_desc_default(void);
 MS_API ms_status ms_surface_add_disturber(ms_surface *s, const ms_disturber_desc *d, int *id);
 /* Place it and give it a velocity (m, m/s); cancels a path. */
 MS_API ms_status ms_surface_move_disturber(ms_surface *s, int id, float x, float y, float vx,
@@ -146,6 +153,7 @@ MS_API const float *ms_surface_height(const ms_surface *s, int *nx, int *ny);
 MS_API double ms_surface_energy(const ms_surface *s);
 
 typedef struct ms_surface_info {
+    uint32_t size; /* sizeof, set by ms_surface_info_init() (core.h: struct sizes) */
     double time;        /* s simulated                                  */
     long substeps;      /* leapfrog steps taken                         */
     float max_dt;       /* s, largest stable sub-step for the current maps */
@@ -153,6 +161,12 @@ typedef struct ms_surface_info {
     size_t bytes;       /* memory held                                  */
     long drops;         /* drops added (by hand and by rain)            */
 } ms_surface_info;
+static inline ms_surface_info ms_surface_info_init(void)
+{
+    ms_surface_info x = MS_ZERO_INIT;
+    x.size = (uint32_t)sizeof x;
+    return x;
+}
 MS_API void ms_surface_get_info(const ms_surface *s, ms_surface_info *out);
 /* The desc the handle was created from. */
 MS_API ms_surface_desc ms_surface_get_desc(const ms_surface *s);

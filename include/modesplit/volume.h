@@ -54,6 +54,7 @@ typedef enum ms_density_kernel {
 } ms_density_kernel;
 
 typedef struct ms_volume_desc {
+    uint32_t size; /* sizeof, set by ms_volume_desc_default() (core.h: struct sizes) */
     float domain_min[3], domain_max[3]; /* m, the box the liquid lives in (a collider) */
     float spacing;                      /* m, particle spacing of fill_box */
     float smoothing_length;             /* m, h of eqs. 11-14; >= spacing */
@@ -194,6 +195,7 @@ MS_API ms_status ms_volume_adapt_to_waves(ms_volume *v, const float *wave_height
 /* --- what a coupler needs --- */
 
 typedef struct ms_volume_info {
+    uint32_t size; /* sizeof, set by ms_volume_info_init() (core.h: struct sizes) */
     double time;          /* s simulated                                       */
     long steps;           /* ms_volume_step calls that advanced time           */
     long substeps;        /* SPH sub-steps taken                               */
@@ -210,6 +212,12 @@ typedef struct ms_volume_info {
     size_t bytes;         /* memory held                                       */
     int threads;          /* threads used inside a step                        */
 } ms_volume_info;
+static inline ms_volume_info ms_volume_info_init(void)
+{
+    ms_volume_info x = MS_ZERO_INIT;
+    x.size = (uint32_t)sizeof x;
+    return x;
+}
 MS_API void ms_volume_get_info(const ms_volume *v, ms_volume_info *out);
 /* The desc the handle was created from (viscosity as last set). */
 MS_API ms_volume_desc ms_volume_get_desc(const ms_volume *v);

@@ -49,6 +49,31 @@ float ms_rng_uniform(ms_rng *r);
 /* Poisson-distributed count with the given mean (>= 0). */
 long ms_rng_poisson(ms_rng *r, double mean);
 
+/* The leading `size` of the public structs (lib/core/struct_size.c).
+ * MS_STRUCT_SIZES(ms_surface_desc, max_substeps, "ms_surface_desc_default()")
+ * names the struct, the last field of its version 0.1 layout, and how a
+ * caller gets a valid size. When a struct grows in a release, the sizes of
+ * the older layouts stay known (add a v2_end then). */
+typedef struct ms_struct_sizes {
+    const char *name;  /* "ms_surface_desc" */
+    const char *init;  /* "ms_surface_desc_default()" */
+    size_t current;    /* sizeof today */
+    size_t v1_end;     /* end of the last field of the 0.1 layout */
+} ms_struct_sizes;
+#define MS_STRUCT_SIZES(type, last_v1_field, init)                                     \
+    ((ms_struct_sizes){#type, init, sizeof(type),                                     \
+                       offsetof(type, last_v1_field) + sizeof(((type *)0)->last_v1_field)})
+/* A desc the caller passes in: refuses a NULL pointer, size 0 and a size
+ * the library does not know (MS_ERR_INVALID_ARGUMENT naming the struct);
+ * otherwise copies the caller's .size bytes over *local (which holds the
+ * defaults) and sets local's size to the current sizeof. */
+ms_status ms_struct_in(const void *user, void *local, ms_struct_sizes k, const char *part);
+/* A struct the library fills: the caller's .size if known, else 0 (nothing
+ * may be written; ms_last_error says why; a NULL pointer gives 0 silently). */
+size_t ms_struct_out(const void *user, ms_struct_sizes k, const char *part);
+/* Copy the first `size` bytes of full into user, keeping user's .size. */
+void ms_struct_write(void *user, const void *full, size_t size);
+
 /* Monotonic clock in seconds, for statistics only (never for results). */
 double ms_now(void);
 

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "io/io_internal.h"
+#include "core/struct_sizes.h"
 
 #define DEG_TO_RAD 0.017453292519943295
 #define AMBIENT 0.35f /* share of the light that does not depend on the slope */
@@ -30,6 +31,7 @@
 ms_preview_desc ms_preview_desc_default(void)
 {
     ms_preview_desc d = {
+        .size = (uint32_t)sizeof(ms_preview_desc),
         .dx = 0.01f,
         .dy = 0.01f,
         .height_min = 0.0f,
@@ -42,11 +44,15 @@ ms_preview_desc ms_preview_desc_default(void)
     return d;
 }
 
-static ms_status check_desc(const float *h, int nx, int ny, const ms_preview_desc *d)
+/* The caller's desc read at its size (core.h: struct sizes) into *d, then
+ * checked. */
+static ms_status check_desc(const float *h, int nx, int ny, const ms_preview_desc *user,
+                            ms_preview_desc *d)
 {
     ms_status st;
+    *d = ms_preview_desc_default();
     if ((st = ms_check_not_null("preview", "height field", h)) != MS_OK ||
-        (st = ms_check_not_null("preview", "desc", d)) != MS_OK ||
+        (st = ms_struct_in(user, d, MS_SIZES_PREVIEW_DESC, "preview")) != MS_OK ||
         (st = ms_check_int_range("preview", "nx", nx, 1, MS_IO_MAX_SIDE)) != MS_OK ||
         (st = ms_check_int_range("preview", "ny", ny, 1, MS_IO_MAX_SIDE)) != MS_OK ||
         (st = ms_check_positive("preview", "dx", d->dx, "m")) != MS_OK ||
@@ -108,10 +114,11 @@ static float slope(const float *h, int nx, int ny, int x, int y, int ax, float s
     return isfinite(g) ? g : 0.0f;
 }
 
-ms_status ms_field_shade(const float *h, int nx, int ny, const ms_preview_desc *d,
+ms_status ms_field_shade(const float *h, int nx, int ny, const ms_preview_desc *user,
                          unsigned char *rgb, size_t rgb_bytes)
 {
-    ms_status st = check_desc(h, nx, ny, d);
+    ms_preview_desc desc, *d = &desc;
+    ms_status st = check_desc(h, nx, ny, user, &desc);
     if (st != MS_OK || (st = ms_check_not_null("preview", "rgb", rgb)) != MS_OK)
         return st;
     size_t w = (size_t)nx * (size_t)d->scale;
@@ -242,9 +249,10 @@ static ms_status write_rgb_png(FILE *fp, const unsigned char *rgb, size_t w, siz
 }
 
 ms_status ms_field_write_png(const float *h, int nx, int ny, const char *path,
-                             const ms_preview_desc *d)
+                             const ms_preview_desc *user)
 {
-    ms_status st = check_desc(h, nx, ny, d);
+    ms_preview_desc desc, *d = &desc;
+    ms_status st = check_desc(h, nx, ny, user, &desc);
     if (st != MS_OK || (st = ms_check_not_null("preview", "path", path)) != MS_OK)
         return st;
     size_t w = (size_t)nx * (size_t)d->scale, hgt = (size_t)ny * (size_t)d->scale;

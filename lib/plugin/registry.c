@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "core/internal.h"
+#include "core/struct_sizes.h"
 #include "plugin/registry.h"
 
 static pthread_once_t scan_once = PTHREAD_ONCE_INIT;
@@ -221,10 +222,14 @@ int ms_plugin_count(void)
     return n;
 }
 
-ms_status ms_plugin_describe(int i, ms_plugin_description *out)
+ms_status ms_plugin_describe(int i, ms_plugin_description *user)
 {
-    if (!out)
+    if (!user)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "plugin: describe: out is NULL");
+    size_t size = ms_struct_out(user, MS_SIZES_PLUGIN_DESCRIPTION, "plugin");
+    if (!size)
+        return MS_ERR_INVALID_ARGUMENT; /* the sentence is set */
+    ms_plugin_description full = ms_plugin_description_init(), *out = &full;
     ensure_scanned();
     pthread_mutex_lock(&lock);
     if (i < 0 || i >= n_plugins) {
@@ -240,6 +245,7 @@ ms_status ms_plugin_describe(int i, ms_plugin_description *out)
     out->description = r->info.description;
     out->path = r->path;
     out->abi = r->info.abi;
+    ms_struct_write(user, &full, size);
     return MS_OK;
 }
 

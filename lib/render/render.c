@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "core/internal.h"
+#include "core/struct_sizes.h"
 #include "render/render_internal.h"
 #include "scene/scene_internal.h"
 
@@ -17,6 +18,7 @@
 ms_renderer_desc ms_renderer_desc_default(void)
 {
     ms_renderer_desc d = {
+        .size = (uint32_t)sizeof(ms_renderer_desc),
         .width = 950,
         .height = 950,
         .shader = "water",
@@ -48,6 +50,9 @@ ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out)
     if ((st = ms_check_not_null(PART, "scene", sc)) != MS_OK ||
         (st = ms_check_not_null(PART, "out", out)) != MS_OK)
         return st;
+    size_t size = ms_struct_out(out, MS_SIZES_RENDERER_DESC, PART);
+    if (!size)
+        return MS_ERR_INVALID_ARGUMENT; /* the sentence is set */
     ms_renderer_desc d = ms_renderer_desc_default();
     const float *lo = sc->domain_min, *hi = sc->domain_max;
     float ext_xy = MS_MIN(hi[0] - lo[0], hi[1] - lo[1]);
@@ -88,7 +93,7 @@ ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out)
         d.eye[2] = d.target[2] + 1.0f * ext;
         d.caustics = 0;
     }
-    *out = d;
+    ms_struct_write(out, &d, size);
     return MS_OK;
 }
 
@@ -224,8 +229,11 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
     if ((st = ms_check_not_null(PART, "out", out)) != MS_OK)
         return st;
     *out = NULL;
-    if ((st = ms_check_not_null(PART, "desc", d)) != MS_OK || (st = check_desc(d)) != MS_OK)
+    ms_renderer_desc desc = ms_renderer_desc_default();
+    if ((st = ms_struct_in(d, &desc, MS_SIZES_RENDERER_DESC, PART)) != MS_OK ||
+        (st = check_desc(&desc)) != MS_OK)
         return st;
+    d = &desc;
 #if !MS_HAVE_OSMESA
     return ms_fail(MS_ERR_UNSUPPORTED,
                    "render: this build of libmodesplit has no OSMesa (off-screen OpenGL); "
@@ -299,7 +307,7 @@ ms_status ms_renderer_create(const ms_scene *sc, ms_renderer **out)
                        "render: scene \"%s\" has no \"render\" section, so it asks for no "
                        "image; add one or use ms_renderer_create_desc",
                        sc->name ? sc->name : "");
-    ms_renderer_desc d;
+    ms_renderer_desc d = ms_renderer_desc_default();
     if ((st = ms_renderer_desc_from_scene(sc, &d)) != MS_OK)
         return st;
     return ms_renderer_create_desc(&d, out);
@@ -447,13 +455,13 @@ ms_status ms_renderer_write_png(const ms_renderer *r, const char *path)
 
 void ms_renderer_stats(const ms_renderer *r, ms_render_stats *out)
 {
-    if (!out)
+    size_t size = ms_struct_out(out, MS_SIZES_RENDER_STATS, PART);
+    if (!size)
         return;
-    if (!r) {
-        memset(out, 0, sizeof *out);
-        return;
-    }
-    *out = r->stats;
+    ms_render_stats full = ms_render_stats_init();
+    if (r)
+        full = r->stats;
+    ms_struct_write(out, &full, size);
 }
 
 const float *ms_renderer_caustics(const ms_renderer *r, int *n)

@@ -87,7 +87,7 @@ static int have_plugins_of_kind(const char *kind)
 {
     int n = ms_plugin_count();
     for (int i = 0; i < n; ++i) {
-        ms_plugin_description d;
+        ms_plugin_description d = ms_plugin_description_init();
         if (ms_plugin_describe(i, &d) == MS_OK && strcmp(d.kind, kind) == 0)
             return 1;
     }
@@ -450,6 +450,7 @@ static ms_status read_rain(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
     sc->has_rain = 1;
     ms_scene_push_key(c, "rain");
     TRY(ms_scene_check_keys(c, o, keys));
+    sc->rain = ms_rain_default();
     TRY(ms_scene_get_float(c, o, "rate", 20, 0, 1e6, 0, "drops/(m^2 s)", &sc->rain.rate));
     TRY(ms_scene_get_float(c, o, "radius", 0.01, 0, 100, 1, "m", &sc->rain.radius));
     TRY(ms_scene_get_float(c, o, "amplitude", -0.002, -10, 10, 0, "m", &sc->rain.amplitude));

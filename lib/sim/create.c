@@ -5,6 +5,7 @@
 
 #include "modesplit/volume.h"
 #include "sim/sim_internal.h"
+#include "core/struct_sizes.h"
 
 #define TRY(call)                   \
     do {                            \
@@ -17,6 +18,7 @@ ms_sim_desc ms_sim_desc_default(void)
 {
     ms_sim_desc d;
     memset(&d, 0, sizeof d);
+    d.size = (uint32_t)sizeof d;
     d.volume = NULL;
     d.surface = NULL;
     d.field_nx = d.field_ny = 0;   /* derived */
@@ -42,7 +44,6 @@ static ms_status oom(const char *what)
 
 static ms_status check_desc(const ms_sim_desc *d)
 {
-    TRY(ms_check_not_null("sim", "desc", d));
     if (!d->volume && !d->surface)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "sim: desc has neither a volume nor a surface; give at least one");
@@ -155,11 +156,43 @@ static int derive_field(float extent, float spacing, int wave_n)
     return (int)n;
 }
 
-static ms_status create_common(const ms_sim_desc *d, const float *origin, float level,
+/* The caller's descs (sim, volume, surface) read at the sizes they were
+ * built with (core.h: struct sizes) into the sim's own copies. */
+typedef struct descs {
+    ms_sim_desc sim;
+    ms_volume_desc volume;
+    ms_surface_desc surface;
+} descs;
+
+static ms_status read_descs(const ms_sim_desc *user, descs *out)
+{
+    out->sim = ms_sim_desc_default();
+    TRY(ms_struct_in(user, &out->sim,
+                     MS_SIZES_SIM_DESC,
+                     "sim"));
+    if (out->sim.volume) {
+        out->volume = ms_volume_desc_default();
+        TRY(ms_struct_in(out->sim.volume, &out->volume,
+                         MS_SIZES_VOLUME_DESC, "volume"));
+        out->sim.volume = &out->volume;
+    }
+    if (out->sim.surface) {
+        out->surface = ms_surface_desc_default();
+        TRY(ms_struct_in(out->sim.surface, &out->surface,
+                         MS_SIZES_SURFACE_DESC, "surface"));
+        out->sim.surface = &out->surface;
+    }
+    return MS_OK;
+}
+
+static ms_status create_common(const ms_sim_desc *user, const float *origin, float level,
                                const ms_scene *sc, ms_sim **out)
 {
     TRY(ms_check_not_null("sim", "out", out));
     *out = NULL;
+    descs ds;
+    TRY(read_descs(user, &ds));
+    const ms_sim_desc *d = &ds.sim;
     TRY(check_desc(d));
     ms_sim *sim = ms_alloc(sizeof *sim);
     if (!sim)

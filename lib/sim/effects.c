@@ -99,8 +99,11 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
             sim->boat_xy[2 * i] = sc->boat_path.points[2 * i] - sim->domain_min[0];
             sim->boat_xy[2 * i + 1] = sc->boat_path.points[2 * i + 1] - sim->domain_min[1];
         }
-        ms_disturber_desc d = {sim->boat_xy[0], sim->boat_xy[1], 0, 0, sc->boat_radius,
-                               sc->boat_depth};
+        ms_disturber_desc d = ms_disturber_desc_default();
+        d.x = sim->boat_xy[0];
+        d.y = sim->boat_xy[1];
+        d.radius = sc->boat_radius;
+        d.depth = sc->boat_depth;
         st = ms_surface_add_disturber(sim->surface, &d, &sim->boat_id);
     }
     if (st == MS_OK && sim->surface && sc->ndrops > 0) {

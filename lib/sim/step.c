@@ -30,7 +30,7 @@ static ms_status prime(ms_sim *sim)
  * which must keep within it. */
 static ms_status wave_steps(ms_sim *sim, float dt, int *n_time)
 {
-    ms_surface_info info;
+    ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(sim->surface, &info);
     double max_dt = info.max_dt; /* s */
     if (sim->n_time_fixed > 0) {

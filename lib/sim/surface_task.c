@@ -58,8 +58,13 @@ static ms_status scripted_effects(ms_sim *sim, double t0, double t1)
         pos[0] -= sim->domain_min[0];
         pos[1] -= sim->domain_min[1];
         if (active && !sim->drag_id) {
-            ms_disturber_desc dd = {pos[0], pos[1], vel[0], vel[1], sc->drag_radius,
-                                    sc->drag_depth};
+            ms_disturber_desc dd = ms_disturber_desc_default();
+            dd.x = pos[0];
+            dd.y = pos[1];
+            dd.vx = vel[0];
+            dd.vy = vel[1];
+            dd.radius = sc->drag_radius;
+            dd.depth = sc->drag_depth;
             st = ms_surface_add_disturber(sim->surface, &dd, &sim->drag_id);
         } else if (active) {
             st = ms_surface_move_disturber(sim->surface, sim->drag_id, pos[0], pos[1], vel[0],

@@ -7,6 +7,7 @@
 #include "modesplit/volume.h"
 #include "shape/shape.h"
 #include "sim/sim_internal.h"
+#include "core/struct_sizes.h"
 
 /* The slot of the published frame's volume data. */
 static int pub_slot(const ms_sim *sim)
@@ -125,19 +126,22 @@ ms_surface *ms_sim_surface(ms_sim *sim)
     return sim ? sim->surface : NULL;
 }
 
-void ms_sim_stats(const ms_sim *sim, ms_stats *out)
+void ms_sim_stats(const ms_sim *sim, ms_stats *user)
 {
-    if (!out)
+    size_t size = ms_struct_out(user, MS_SIZES_STATS, "sim");
+    if (!size)
         return;
-    memset(out, 0, sizeof *out);
-    if (!sim)
+    ms_stats full = ms_stats_init(), *out = &full;
+    if (!sim) {
+        ms_struct_write(user, &full, size);
         return;
+    }
     *out = sim->stats;
     out->volume_bytes = sim->own_volume_bytes;
     out->surface_bytes = sim->own_surface_bytes;
     out->effects_bytes = sim->own_effects_bytes;
     if (sim->volume) {
-        ms_volume_info vi;
+        ms_volume_info vi = ms_volume_info_init();
         ms_volume_get_info(sim->volume, &vi);
         out->volume_steps = vi.substeps;
         out->volume_bytes += vi.bytes;
@@ -149,7 +153,7 @@ void ms_sim_stats(const ms_sim *sim, ms_stats *out)
         out->volume_bytes += (size_t)sim->paos_cap * 6 * sizeof(float);
     }
     if (sim->surface) {
-        ms_surface_info si;
+        ms_surface_info si = ms_surface_info_init();
         ms_surface_get_info(sim->surface, &si);
         out->surface_steps = si.substeps;
         out->surface_bytes += si.bytes;
@@ -157,15 +161,19 @@ void ms_sim_stats(const ms_sim *sim, ms_stats *out)
         out->n_time = sim->n_time_last;
     }
     out->bytes = sizeof *sim + out->volume_bytes + out->surface_bytes + out->effects_bytes;
+    ms_struct_write(user, &full, size);
 }
 
-void ms_sim_get_info(const ms_sim *sim, ms_sim_info *out)
+void ms_sim_get_info(const ms_sim *sim, ms_sim_info *user)
 {
-    if (!out)
+    size_t size = ms_struct_out(user, MS_SIZES_SIM_INFO, "sim");
+    if (!size)
         return;
-    memset(out, 0, sizeof *out);
-    if (!sim)
+    ms_sim_info full = ms_sim_info_init(), *out = &full;
+    if (!sim) {
+        ms_struct_write(user, &full, size);
         return;
+    }
     out->has_volume = sim->volume != NULL;
     out->has_surface = sim->surface != NULL;
     out->threads = sim->threads;
@@ -185,6 +193,7 @@ void ms_sim_get_info(const ms_sim *sim, ms_sim_info *out)
     out->n_time = sim->n_time_fixed;
     out->floaters = sim->nfloaters;
     out->obstacles = sim->nshapes;
+    ms_struct_write(user, &full, size);
 }
 
 ms_status ms_sim_drag(ms_sim *sim, const float pos[2], const float vel[2], float radius,

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "surface/surface_impl.h"
+#include "core/struct_sizes.h"
 
 #define PART "surface"
 
@@ -22,11 +23,20 @@ static disturber *find(const ms_surface *s, int id)
     return NULL;
 }
 
+ms_disturber_desc ms_disturber_desc_default(void)
+{
+    ms_disturber_desc d;
+    memset(&d, 0, sizeof d);
+    d.size = (uint32_t)sizeof d;
+    d.radius = 0.05f; /* m */
+    d.depth = 0.01f;  /* m */
+    return d;
+}
+
 static ms_status check_desc(const ms_surface *s, const ms_disturber_desc *d)
 {
     ms_status st;
-    if ((st = ms_check_not_null(PART, "disturber desc", d)) ||
-        (st = ms_check_finite(PART, "disturber x", d->x)) ||
+    if ((st = ms_check_finite(PART, "disturber x", d->x)) ||
         (st = ms_check_finite(PART, "disturber y", d->y)) ||
         (st = ms_check_finite(PART, "disturber vx", d->vx)) ||
         (st = ms_check_finite(PART, "disturber vy", d->vy)) ||
@@ -41,10 +51,14 @@ static ms_status check_desc(const ms_surface *s, const ms_disturber_desc *d)
     return MS_OK;
 }
 
-ms_status ms_surface_add_disturber(ms_surface *s, const ms_disturber_desc *d, int *id)
+ms_status ms_surface_add_disturber(ms_surface *s, const ms_disturber_desc *user, int *id)
 {
     ms_status st;
-    if ((st = ms_check_not_null(PART, "surface", s)) || (st = check_desc(s, d)))
+    ms_disturber_desc desc = ms_disturber_desc_default(), *d = &desc;
+    if ((st = ms_check_not_null(PART, "surface", s)) ||
+        (st = ms_struct_in(user, &desc,
+                           MS_SIZES_DISTURBER_DESC, PART)) ||
+        (st = check_desc(s, d)))
         return st;
     if (s->ndist == s->cap_dist) {
         int cap = s->cap_dist ? 2 * s->cap_dist : 4;

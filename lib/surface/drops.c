@@ -4,6 +4,7 @@
  * one-cell spike (which would excite the grid's shortest, most dispersive
  * waves and show as noise); rain draws drops from the handle's seeded RNG. */
 #include "surface/surface_impl.h"
+#include "core/struct_sizes.h"
 
 #define PART "surface"
 #define MIN_RADIUS_CELLS 2.0f
@@ -67,11 +68,24 @@ ms_status ms_surface_add_drop(ms_surface *s, float x, float y, float radius, flo
     return MS_OK;
 }
 
-ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *rain)
+ms_rain ms_rain_default(void)
+{
+    ms_rain r = {(uint32_t)sizeof r, 0.0f, 0.01f, -0.002f};
+    return r;
+}
+
+ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *user)
 {
     ms_status st;
     if ((st = ms_check_not_null(PART, "surface", s)))
         return st;
+    ms_rain r = ms_rain_default(), *rain = NULL;
+    if (user) {
+        if ((st = ms_struct_in(user, &r, MS_SIZES_RAIN,
+                               PART)))
+            return st;
+        rain = &r;
+    }
     if (!rain || rain->rate == 0) {
         s->rain.rate = 0;
         return MS_OK;

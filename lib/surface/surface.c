@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "surface/surface_impl.h"
+#include "core/struct_sizes.h"
 
 #define PART "surface"
 #define MAX_CELLS_PER_SIDE 16384
@@ -12,6 +13,7 @@ ms_surface_desc ms_surface_desc_default(void)
 {
     ms_surface_desc d;
     memset(&d, 0, sizeof d);
+    d.size = (uint32_t)sizeof d;
     d.nx = 256;
     d.ny = 256;
     d.dx = 0.01f;         /* m */
@@ -26,8 +28,6 @@ ms_surface_desc ms_surface_desc_default(void)
 static ms_status validate(const ms_surface_desc *d)
 {
     ms_status st;
-    if ((st = ms_check_not_null(PART, "desc", d)))
-        return st;
     if ((st = ms_check_int_range(PART, "nx", d->nx, 2, MAX_CELLS_PER_SIDE)) ||
         (st = ms_check_int_range(PART, "ny", d->ny, 2, MAX_CELLS_PER_SIDE)))
         return st;
@@ -60,8 +60,12 @@ ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out)
     if ((st = ms_check_not_null(PART, "out", out)))
         return st;
     *out = NULL;
-    if ((st = validate(d)))
+    ms_surface_desc desc = ms_surface_desc_default();
+    if ((st = ms_struct_in(d, &desc,
+                           MS_SIZES_SURFACE_DESC, PART)) ||
+        (st = validate(&desc)))
         return st;
+    d = &desc;
 
     ms_surface *s = calloc(1, sizeof *s);
     if (!s)
@@ -187,13 +191,16 @@ const float *ms_surface_height(const ms_surface *s, int *nx, int *ny)
     return s->view;
 }
 
-void ms_surface_get_info(const ms_surface *s, ms_surface_info *out)
+void ms_surface_get_info(const ms_surface *s, ms_surface_info *user)
 {
-    if (!out)
+    size_t size = ms_struct_out(user, MS_SIZES_SURFACE_INFO, PART);
+    if (!size)
         return;
-    memset(out, 0, sizeof *out);
-    if (!s)
+    ms_surface_info info = ms_surface_info_init(), *out = &info;
+    if (!s) {
+        ms_struct_write(user, &info, size);
         return;
+    }
     out->time = s->time;
     out->substeps = s->substeps;
     out->max_dt = ms_surface_stable_dt(s);
@@ -205,6 +212,7 @@ void ms_surface_get_info(const ms_surface *s, ms_surface_info *out)
                  (size_t)s->cap_dist * sizeof(disturber);
     for (int i = 0; i < s->ndist; ++i)
         out->bytes += (size_t)s->dist[i].npath * 2 * sizeof(float);
+    ms_struct_write(user, &info, size);
 }
 
 ms_surface_desc ms_surface_get_desc(const ms_surface *s)

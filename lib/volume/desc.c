@@ -7,6 +7,7 @@
 ms_volume_desc ms_volume_desc_default(void)
 {
     ms_volume_desc d = {
+        .size = (uint32_t)sizeof(ms_volume_desc),
         .domain_min = {0.0f, 0.0f, 0.0f},
         .domain_max = {1.0f, 1.0f, 1.0f},
         .spacing = 0.04f,

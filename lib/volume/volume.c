@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "volume/volume_impl.h"
+#include "core/struct_sizes.h"
 
 /* Mass per particle such that a cubic lattice of the desc's spacing has
  * exactly the rest density under eq. 9: m = rho0 / sum W. */
@@ -45,11 +46,12 @@ ms_status ms_volume_create(const ms_volume_desc *d, ms_volume **out)
     if (!out)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: out is NULL");
     *out = NULL;
-    if (!d)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: desc is NULL");
-    ms_status st = ms_volume_desc_check(d);
-    if (st != MS_OK)
+    ms_volume_desc desc = ms_volume_desc_default();
+    ms_status st = ms_struct_in(d, &desc,
+                                MS_SIZES_VOLUME_DESC, "volume");
+    if (st != MS_OK || (st = ms_volume_desc_check(&desc)) != MS_OK)
         return st;
+    d = &desc;
     ms_volume *v = ms_alloc(sizeof *v);
     if (!v)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for the handle");
@@ -355,13 +357,16 @@ ms_status ms_volume_particle_views(const ms_volume *v, int *n, const float *pos[
     return MS_OK;
 }
 
-void ms_volume_get_info(const ms_volume *v, ms_volume_info *out)
+void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
 {
-    if (!out)
+    size_t size = ms_struct_out(user, MS_SIZES_VOLUME_INFO, "volume");
+    if (!size)
         return;
-    memset(out, 0, sizeof *out);
-    if (!v)
+    ms_volume_info info = ms_volume_info_init(), *out = &info;
+    if (!v) {
+        ms_struct_write(user, &info, size);
         return;
+    }
     out->time = v->time;
     out->steps = v->steps;
     out->substeps = v->substeps;
@@ -382,6 +387,7 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *out)
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p)
         out->bytes += (v->lists[p].cap + v->ghosts[p].cap) * (sizeof(int) + sizeof(float));
     out->threads = ms_vpool_threads(v->pool);
+    ms_struct_write(user, &info, size);
 }
 
 ms_volume_desc ms_volume_get_desc(const ms_volume *v)

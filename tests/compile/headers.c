@@ -11,5 +11,7 @@ int ms_headers_compile_probe(void)
     ms_sim_desc d = ms_sim_desc_default();
     d.surface = &s;
     d.volume = &v;
-    return (int)MS_OK + (int)sizeof d + (int)MS_PLUGIN_ABI;
+    ms_stats st = ms_stats_init(); /* the struct-size initialisers compile in both */
+    ms_surface_info si = ms_surface_info_init();
+    return (int)MS_OK + (int)sizeof d + (int)MS_PLUGIN_ABI + (int)st.size + (int)si.size;
 }

@@ -11,7 +11,7 @@ int main(void)
 {
     printf("path %s\n", ms_plugin_search_path());
     for (int i = 0; i < ms_plugin_count(); ++i) {
-        ms_plugin_description d;
+        ms_plugin_description d = ms_plugin_description_init();
         if (ms_plugin_describe(i, &d) == MS_OK)
             printf("plugin %s %s\n", d.name, d.path);
     }

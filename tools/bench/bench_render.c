@@ -89,7 +89,7 @@ int main(int argc, char **argv)
                     return 1;
                 }
                 double t[64], mesh[64], caus[64], draw[64], rb[64];
-                ms_render_stats st = {0};
+                ms_render_stats st = ms_render_stats_init();
                 for (int f = 0; f < warm + reps; ++f) {
                     waves(h, n, f / 30.0);
                     double t0 = bench_now();

@@ -91,7 +91,7 @@ static int run(const ms_scene *sc, int threads, int frames_hint, int repeats, do
     out->frames = frames;
     out->repeats = repeats;
     for (int r = 0; r < repeats; ++r) {
-        ms_stats a, b;
+        ms_stats a = ms_stats_init(), b = ms_stats_init();
         ms_sim_stats(sim, &a);
         double s0 = bench_now();
         for (int f = 0; f < frames; ++f)
@@ -110,6 +110,7 @@ static int run(const ms_scene *sc, int threads, int frames_hint, int repeats, do
         out->ms[4][r] = (b.combine_ms - a.combine_ms) / frames;
         out->n_time = b.n_time;
     }
+    out->info = ms_sim_info_init();
     ms_sim_get_info(sim, &out->info);
     out->particles = out->info.particles;
     ms_sim_destroy(sim);

@@ -74,7 +74,7 @@ int main(int argc, char **argv)
         const int n = sizes[k];
         const double cells = (double)n * n;
         ms_surface *s = make_pool(n);
-        ms_surface_info info;
+        ms_surface_info info = ms_surface_info_init();
         ms_surface_get_info(s, &info);
         /* about 2e7 cell-updates a repeat: long enough to time well */
         const int sub = (int)fmax(1.0, round(2e7 / cells));

@@ -42,7 +42,7 @@ static ms_volume *dam_break(int target, int threads)
 /* One sub-step; returns its wall time in s (0 if it took more than one). */
 static double one_substep(ms_volume *v)
 {
-    ms_volume_info a, b;
+    ms_volume_info a = ms_volume_info_init(), b = ms_volume_info_init();
     ms_volume_get_info(v, &a);
     double t0 = bench_now();
     if (ms_volume_step(v, 0.5f * a.max_dt) != MS_OK) {
@@ -91,7 +91,7 @@ int main(int argc, char **argv)
                 if (dt > 0.0)
                     t[got++] = dt * 1e3;
             }
-            ms_volume_info in;
+            ms_volume_info in = ms_volume_info_init();
             ms_volume_get_info(v, &in);
             bench_stats st = bench_summarise(t, got);
             double mpairs = in.pairs / (st.median * 1e-3) * 1e-6;

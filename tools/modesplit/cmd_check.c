@@ -53,7 +53,7 @@ int cmd_check(int argc, char **argv)
             ++bad;
             continue;
         }
-        ms_stats st;
+        ms_stats st = ms_stats_init();
         ms_sim_stats(sim, &st);
         char fields[64], mem[32];
         printf("%s: ok: \"%s\", %.4g s in %ld frames of %.4g s, writes %s every %d frame%s, "

@@ -20,7 +20,7 @@ int cmd_plugins(int argc, char **argv)
     if (n == 0)
         printf("no plugins found\n");
     for (int i = 0; i < n; ++i) {
-        ms_plugin_description d;
+        ms_plugin_description d = ms_plugin_description_init();
         if (ms_plugin_describe(i, &d) != MS_OK)
             continue;
         printf("%-6s %-10s %-8s %s\n       from %s (ABI %u.%u)\n", d.kind, d.name,

@@ -144,7 +144,7 @@ static char *default_out(const char *scene)
 static void fill_stages(const ms_sim *sim, double write_s, double png_s, long frames,
                         tool_stages *s)
 {
-    ms_stats st;
+    ms_stats st = ms_stats_init();
     ms_sim_stats(sim, &st);
     double n = frames > 0 ? (double)frames : 1.0;
     s->volume = st.volume_ms / n;
