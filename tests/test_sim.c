@@ -862,6 +862,13 @@ START_TEST(bad_descs_are_refused)
     d.volume = &v;
     d.surface = &s;
     MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "same x-y extent");
+    /* each part's own checks come before the cross-part extent check */
+    s.dx = -1;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "surface: dx -1");
+    s.dx = 0.01f;
+    v.spacing = 0;
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "volume: spacing 0");
+    v = ms_volume_desc_default();
     s.nx = s.ny = 100; /* 1 m, as the default volume */
     d.field_nx = 1;
     d.field_ny = 1;

@@ -69,14 +69,14 @@ START_TEST(create_refuses_bad_descs)
     MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_INVALID_ARGUMENT, "16384");
     d = ms_surface_desc_default();
     d.dx = 0;
-    MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_UNSTABLE, "dx 0");
+    MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_INVALID_ARGUMENT, "dx 0");
     d.dx = NAN;
-    MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_UNSTABLE, "dx nan");
+    MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_INVALID_ARGUMENT, "dx nan");
     d = ms_surface_desc_default();
     d.wave_speed = -1;
-    MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_UNSTABLE, "wave_speed -1");
+    MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_INVALID_ARGUMENT, "wave_speed -1");
     d.wave_speed = INFINITY;
-    MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_UNSTABLE, "wave_speed inf");
+    MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_INVALID_ARGUMENT, "wave_speed inf");
     d = ms_surface_desc_default();
     d.damping = 0;
     MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_INVALID_ARGUMENT, "(0, 1]");

@@ -8,6 +8,13 @@
  * The sentence is thread-local: it belongs to the thread that made the call
  * and stays until that thread's next failing call.
  *
+ * Which code: a value outside its domain (a negative dx, a NaN, an unknown
+ * enum, a size the library does not know) is MS_ERR_INVALID_ARGUMENT;
+ * MS_ERR_UNSTABLE is only for valid values that no sub-stepping can keep
+ * stable (a step needing more than max_substeps sub-steps, a fixed n_time
+ * below the CFL bound). Each part checks its own desc before the checks
+ * across parts, so the sentence names the value that is wrong.
+ *
  * The library never prints, exits or aborts on bad input.
  */
 #ifndef MODESPLIT_CORE_H

@@ -65,6 +65,14 @@ static ms_status check_desc(const ms_sim_desc *d)
     if ((d->enqueue_task == NULL) != (d->finish_task == NULL))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "sim: enqueue_task and finish_task must both be set or both be NULL");
+    return MS_OK;
+}
+
+/* The one check across the parts, made after each part has checked its
+ * own desc (in its create), so that a bad value is named by its part
+ * ("surface: dx -1 m ...") rather than through the extent it spoils. */
+static ms_status check_extent(const ms_sim_desc *d)
+{
     if (d->volume && d->surface) {
         /* one x-y extent for both fields */
         const ms_volume_desc *v = d->volume;
@@ -251,6 +259,8 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
             }
         }
     }
+    if (st == MS_OK)
+        st = check_extent(d);
     if (st == MS_OK && sim->volume) {
         sim->fnx = d->field_nx ? d->field_nx
                                : derive_field(sim->domain_max[0] - sim->domain_min[0],

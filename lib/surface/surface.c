@@ -32,13 +32,12 @@ static ms_status validate(const ms_surface_desc *d)
         (st = ms_check_int_range(PART, "ny", d->ny, 2, MAX_CELLS_PER_SIDE)))
         return st;
     if (!isfinite(d->dx) || !(d->dx > 0))
-        return ms_fail(MS_ERR_UNSTABLE,
-                       "surface: dx %g m must be finite and > 0; no time step is stable "
-                       "on such a grid", d->dx);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "surface: dx %g m must be finite and > 0 (the cell size)", d->dx);
     if (!isfinite(d->wave_speed) || !(d->wave_speed > 0))
-        return ms_fail(MS_ERR_UNSTABLE,
-                       "surface: wave_speed %g m/s must be finite and > 0; no sub-step "
-                       "makes it stable", d->wave_speed);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "surface: wave_speed %g m/s must be finite and > 0 (c of eq. 2)",
+                       d->wave_speed);
     if (!isfinite(d->damping) || !(d->damping > 0) || d->damping > 1)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "surface: damping %g is outside (0, 1] (fraction of the wave "
