@@ -15,7 +15,8 @@
 # tools/modesplit/*.c the tool, tools/bench/<name>.c one benchmark program
 # each, tests/test_<part>.c one Check suite each.
 
-VERSION   := 0.1.0
+# The version has one source, include/modesplit/core.h (MS_VERSION_STRING).
+VERSION   := $(shell sed -n 's/^\#define MS_VERSION_STRING "\(.*\)"/\1/p' include/modesplit/core.h)
 SOVERSION := 0
 PREFIX    ?= /usr/local
 DESTDIR   ?=
@@ -207,6 +208,13 @@ check-exports: $(SHARED)
 # The README's C example compiles and runs.
 check-readme: $(STATIC)
 	@CC="$(CC) $(LDSAN)" tests/check_readme.sh $(BUILD)
+
+# i15: the golden hash of tests/test_determinism.c, refreshed on purpose
+# when a change is meant to change results (commit the file with it).
+.PHONY: golden
+golden:
+	@$(MAKE) --no-print-directory $(BUILD)/tests/test_determinism
+	@CK_RUN_CASE=golden MS_GOLDEN_WRITE=1 MS_TEST_BUILD=$(BUILD) $(BUILD)/tests/test_determinism
 
 demo: deps
 	@$(MAKE) --no-print-directory all

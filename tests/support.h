@@ -22,6 +22,19 @@ void ms_test_skip(const char *file, int line, const char *why);
         return;                                                                        \
     } while (0)
 
+/* h5dump (HDF5's own reader, independent of ours) reads the whole file:
+ * 1 yes, 0 no, -1 when h5dump is not installed. MS_ASSERT_H5DUMP_READS
+ * skips the case (MS_SKIP) rather than pass it when h5dump is absent. */
+int ms_test_h5dump(const char *path);
+#define MS_ASSERT_H5DUMP_READS(path)                                                   \
+    do {                                                                               \
+        const char *p_ = (path);                                                       \
+        int r_ = ms_test_h5dump(p_);                                                   \
+        if (r_ < 0)                                                                    \
+            MS_SKIP("h5dump is not installed (apt-get install hdf5-tools)");           \
+        ck_assert_msg(r_ == 1, "h5dump fails on %s", p_);                              \
+    } while (0)
+
 /* Assert a call failed with `status` and that ms_last_error() contains
  * `word`: every refusal is tested like a feature. */
 #define MS_ASSERT_REFUSED(call, status, word)                                          \

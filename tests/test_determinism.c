@@ -5,6 +5,7 @@
 #include <check.h>
 #include <math.h>
 #include <pthread.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -43,29 +44,6 @@
     "                   \"path\": {\"points\": [[0.05, 0.35, 0.15], [0.35, 0.35, 0.15]], \"speed\": 0.1}}"
 
 static const char *const every_effect = EE_HEAD EE_OBSTACLES EE_EFFECTS EE_CONTAINER " }}";
-/* The same without shapes, for a volume solver that has no shape colliders
- * yet (it refuses them with MS_ERR_UNSUPPORTED). */
-static const char *const every_effect_but_shapes = EE_HEAD EE_EFFECTS " }}";
-
-/* Does this build's volume solver take shape colliders? */
-static int colliders_supported(void)
-{
-    ms_volume *v;
-    ms_shape *sh;
-    ms_volume_desc d = ms_volume_desc_default();
-    ck_assert_int_eq(ms_volume_create(&d, &v), MS_OK);
-    ck_assert_int_eq(ms_shape_create("sphere", NULL, &sh), MS_OK);
-    ms_status st = ms_volume_add_collider(v, sh);
-    ck_assert_msg(st == MS_OK || st == MS_ERR_UNSUPPORTED, "%s", ms_last_error());
-    ms_volume_destroy(v);
-    ms_shape_destroy(sh);
-    return st == MS_OK;
-}
-
-static const char *every_effect_scene(void)
-{
-    return colliders_supported() ? every_effect : every_effect_but_shapes;
-}
 
 static ms_scene *scene(const char *text)
 {
@@ -167,7 +145,7 @@ static void engine_finish(void *task, void *user)
  * with every effect on. */
 START_TEST(one_and_two_threads_give_the_same_bytes)
 {
-    ms_scene *sc = scene(every_effect_scene());
+    ms_scene *sc = scene(every_effect);
     ms_sim *one = sim_of(sc, 1), *two = sim_of(sc, 2);
     ms_sim *eng = sim_of(sc, 2);
     ck_assert_int_eq(ms_sim_set_tasks(eng, engine_enqueue, engine_finish, &engine_calls), MS_OK);
@@ -199,7 +177,7 @@ END_TEST
  * the RNG is seeded from the scene). */
 START_TEST(the_same_scene_runs_to_the_same_bytes)
 {
-    ms_scene *sc = scene(every_effect_scene());
+    ms_scene *sc = scene(every_effect);
     ms_sim *a = sim_of(sc, 2);
     for (int f = 0; f < 40; ++f)
         step(a, 1.0f / 60);
@@ -232,6 +210,47 @@ START_TEST(volume_only_on_two_threads_gives_the_same_bytes)
 }
 END_TEST
 
+/* Determinism across commits (as Box2D pins a state hash): the hash of
+ * every field, particle and floater of the every-effect scene after
+ * GOLDEN_FRAMES frames is the one in GOLDEN_FILE. A change that changes
+ * results fails here and shows as a diff of that file: if it is meant,
+ * `make golden` writes the new hash (commit it with the change, saying why
+ * the results moved). Builds with other floating-point code (NATIVE=1,
+ * another compiler) may differ in the last bits. */
+#define GOLDEN_FILE "tests/data/golden_hash.txt"
+#define GOLDEN_FRAMES 60
+
+START_TEST(results_match_the_golden_hash)
+{
+    ms_scene *sc = scene(every_effect);
+    ms_sim *sim = sim_of(sc, 1);
+    for (int f = 0; f < GOLDEN_FRAMES; ++f)
+        step(sim, 1.0f / 60);
+    unsigned long long h = (unsigned long long)frame_hash(sim);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    const char *write = getenv("MS_GOLDEN_WRITE");
+    if (write && write[0] == '1') {
+        FILE *f = fopen(GOLDEN_FILE, "w");
+        ck_assert_msg(f != NULL, "cannot write %s (run from the source root)", GOLDEN_FILE);
+        fprintf(f, "%016llx\n", h);
+        fclose(f);
+        fprintf(stderr, "golden: wrote %016llx to %s\n", h, GOLDEN_FILE);
+        return;
+    }
+    FILE *f = fopen(GOLDEN_FILE, "r");
+    ck_assert_msg(f != NULL, "%s is missing: run `make golden`", GOLDEN_FILE);
+    unsigned long long want = 0;
+    int got = fscanf(f, "%llx", &want);
+    fclose(f);
+    ck_assert_int_eq(got, 1);
+    ck_assert_msg(h == want,
+                  "the every-effect scene after %d frames hashes to %016llx, %s says %016llx: "
+                  "the results changed; if that is meant, run `make golden` and commit it",
+                  GOLDEN_FRAMES, h, GOLDEN_FILE, want);
+}
+END_TEST
+
 static Suite *determinism_suite(void)
 {
     Suite *s = suite_create("determinism");
@@ -241,6 +260,10 @@ static Suite *determinism_suite(void)
     tcase_add_test(tc, the_same_scene_runs_to_the_same_bytes);
     tcase_add_test(tc, volume_only_on_two_threads_gives_the_same_bytes);
     suite_add_tcase(s, tc);
+    TCase *golden = tcase_create("golden");
+    tcase_set_timeout(golden, 600);
+    tcase_add_test(golden, results_match_the_golden_hash);
+    suite_add_tcase(s, golden);
     return s;
 }
 

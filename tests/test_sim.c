@@ -47,21 +47,6 @@ static void steps(ms_sim *sim, int n, float dt)
     "0.12]}], \"field\": [16, 16]}"
 #define POOL_SURFACE "\"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.9}"
 
-/* Does this build's volume solver take shape colliders? */
-static int colliders_supported(void)
-{
-    ms_volume *v;
-    ms_shape *sh;
-    ms_volume_desc d = ms_volume_desc_default();
-    ck_assert_int_eq(ms_volume_create(&d, &v), MS_OK);
-    ck_assert_int_eq(ms_shape_create("sphere", NULL, &sh), MS_OK);
-    ms_status st = ms_volume_add_collider(v, sh);
-    ck_assert_msg(st == MS_OK || st == MS_ERR_UNSUPPORTED, "%s", ms_last_error());
-    ms_volume_destroy(v);
-    ms_shape_destroy(sh);
-    return st == MS_OK;
-}
-
 /* ---- only what the scene calls for --------------------------------------- */
 
 START_TEST(surface_only_scene_holds_no_particles_and_runs_no_sph)
@@ -118,12 +103,14 @@ START_TEST(volume_only_scene_is_the_sph_field_alone)
     ck_assert_ptr_eq(c, h);
     ck_assert_int_eq(nx, 16);
     ck_assert_int_eq(vny, 16);
-    /* 0.12 m of water: the extracted surface is near it */
+    /* 0.12 m of water: the extraction's iso-level puts a still, flat
+     * liquid's surface at the fill height (volume.h); measured 0.11976 m,
+     * the 0.2 % the liquid compresses under gravity. 1 mm is 4x that. */
     double mean = 0;
     for (int i = 0; i < nx * ny; ++i)
         mean += h[i];
     mean /= nx * ny;
-    ck_assert_msg(mean > 0.08 && mean < 0.2, "mean height %g m", mean);
+    ck_assert_msg(fabs(mean - 0.12) < 1e-3, "mean height %g m", mean);
     ms_grid g;
     ck_assert_int_eq(ms_sim_field_grid(sim, MS_FIELD_COMBINED, &g), MS_OK);
     ck_assert_int_eq(g.nx, 16);
@@ -481,16 +468,18 @@ START_TEST(two_way_coupling_stays_bounded)
         steps(sim, 1, 1.0f / 60);
         double m;
         wave_sum(sim, &m);
-        /* finite and below the domain's height */
-        ck_assert_msg(isfinite(m) && m < 0.3, "frame %d: max |wave| %g m", f, m);
+        /* finite and low: measured at most 0.061 m (frame 0-99) from a
+         * 0.2 m dam; 0.1 m is half the dam's water column */
+        ck_assert_msg(isfinite(m) && m < 0.1, "frame %d: max |wave| %g m", f, m);
         peak[f / 100] = fmax(peak[f / 100], m);
         const float *h = ms_sim_volume_height(sim, NULL, NULL);
         for (int i = 0; i < 16 * 16; ++i)
             ck_assert(isfinite(h[i]) && h[i] >= 0 && h[i] <= 0.3f + 1e-6f);
     }
     /* no feedback loop between the two couplings: a loop would grow
-     * geometrically; the damped, driven waves stay at their level */
-    ck_assert_msg(peak[0] > 1e-4 && peak[2] < 2 * peak[1] && peak[1] < 2 * peak[0],
+     * geometrically; the damped waves decay once the dam has broken
+     * (measured peaks 0.061, 0.039, 0.033 m: each 100 frames lower) */
+    ck_assert_msg(peak[0] > 1e-2 && peak[2] < peak[1] && peak[1] < peak[0],
                   "max |wave| %g m, %g m, %g m", peak[0], peak[1], peak[2]);
     ms_sim_destroy(sim);
     ms_scene_destroy(sc);
@@ -528,8 +517,10 @@ START_TEST(dragging_moves_the_water)
     }
     double va = mean_vx(a), vb = mean_vx(b), vc = mean_vx(c);
     /* the pointer moves along +x at 0.5 m/s: the water follows it, the
-     * still pool does not move */
-    ck_assert_msg(va > 1e-3 && vc > 1e-3 && fabs(vb) < 0.1 * fmin(va, vc),
+     * still pool does not move. Measured mean vx 9.0e-3 (scene) and 6.9e-3
+     * m/s (API; its point is 5 cm deep), 3.6e-6 m/s still: the bounds are
+     * within 3x of the dragged ones and 5x of the still one. */
+    ck_assert_msg(va > 3e-3 && va < 3e-2 && vc > 2.3e-3 && vc < 2e-2 && fabs(vb) < 2e-5,
                   "mean vx: dragged %g, by API %g, still %g m/s", va, vc, vb);
     ms_sim_destroy(a);
     ms_sim_destroy(b);
@@ -548,17 +539,6 @@ START_TEST(moving_obstacle_stirs_water_and_blocks_waves)
                          "  \"path\": {\"points\": [[0.08, 0.2, 0.1], [0.32, 0.2, 0.1]], \"speed\": 0.4}}],"
                          " \"effects\": {\"rain\": {\"rate\": 400, \"amplitude\": 0.003}}}");
     ms_scene *still = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
-    if (!colliders_supported()) {
-        /* a volume solver without shape colliders refuses the scene, with
-         * its reason, rather than run it without them */
-        ms_sim *none = NULL;
-        MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 2, &none), MS_ERR_UNSUPPORTED,
-                          "shape colliders");
-        ck_assert_ptr_null(none);
-        ms_scene_destroy(still);
-        ms_scene_destroy(sc);
-        return;
-    }
     ms_sim *sim = sim_of(sc, 2), *ref = sim_of(still, 2);
     steps(sim, 20, 1.0f / 60);
     steps(ref, 20, 1.0f / 60);
@@ -614,13 +594,6 @@ START_TEST(moved_glass_carries_its_water)
                          " \"effects\": {\"container\": {\"shape\": \"glass\", \"params\":"
                          " {\"radius\": 0.06, \"height\": 0.15, \"wall\": 0.01, \"floor\": 0.01},"
                          " \"position\": [0.12, 0.15, 0]}}}");
-    if (!colliders_supported()) {
-        ms_sim *none = NULL;
-        MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 1, &none), MS_ERR_UNSUPPORTED,
-                          "shape colliders");
-        ms_scene_destroy(sc);
-        return;
-    }
     ms_sim *sim = sim_of(sc, 2);
     steps(sim, 20, 1.0f / 60); /* settle */
     const float v[3] = {0.1f, 0, 0};
@@ -661,10 +634,6 @@ START_TEST(turned_glass_pours_its_water)
                          " \"effects\": {\"container\": {\"shape\": \"glass\", \"params\":"
                          " {\"radius\": 0.06, \"height\": 0.15, \"wall\": 0.01, \"floor\": 0.01},"
                          " \"position\": [0.12, 0.15, 0.05]}}}");
-    if (!colliders_supported()) {
-        ms_scene_destroy(sc);
-        return;
-    }
     ms_sim *sim = sim_of(sc, 2);
     steps(sim, 20, 1.0f / 60); /* settle */
     ms_shape *probe; /* a twin of the glass, to test where particles are */
@@ -716,10 +685,6 @@ START_TEST(a_spinning_scene_paddle_turns_and_stirs)
                          " \"obstacles\": [{\"shape\": \"box\", \"params\": {\"size\": [0.12, 0.02, 0.2]},"
                          " \"position\": [0.1, 0.1, 0.05], \"orientation\": [0.70710678, 0, 0, 0.70710678],"
                          " \"spin\": [0, 0, 4]}]}");
-    if (!colliders_supported()) {
-        ms_scene_destroy(sc);
-        return;
-    }
     ms_sim *sim = sim_of(sc, 1);
     const int frames = 48; /* 0.4 s at 1/120 */
     steps(sim, frames, 1.0f / 120);
