@@ -90,7 +90,7 @@ TESTS     := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 # ThreadSanitizer runs the suites of the code that starts or shares threads
 # (the rest is single-threaded and only gets 10-40x slower under TSan);
 # `make check SAN=tsan` names them when it starts.
-TSAN_SUITES ?= core plugin sim determinism
+TSAN_SUITES ?= core plugin sim determinism api
 ifeq ($(SAN),tsan)
 TESTS     := $(filter $(TSAN_SUITES:%=$(BUILD)/tests/test_%),$(TESTS))
 endif

@@ -33,6 +33,7 @@ START_TEST(status_names_cover_every_code)
     ck_assert_str_eq(ms_status_name(MS_ERR_PLUGIN), "MS_ERR_PLUGIN");
     ck_assert_str_eq(ms_status_name(MS_ERR_UNSUPPORTED), "MS_ERR_UNSUPPORTED");
     ck_assert_str_eq(ms_status_name(MS_ERR_STATE), "MS_ERR_STATE");
+    ck_assert_str_eq(ms_status_name(MS_ERR_CANCELED), "MS_ERR_CANCELED");
     ck_assert_str_eq(ms_status_name((ms_status)-99), "MS_UNKNOWN_STATUS");
     ck_assert_str_eq(ms_status_text(MS_ERR_OUT_OF_MEMORY), "out of memory");
     ck_assert_int_eq(sizeof(ms_status), 4);

@@ -162,7 +162,7 @@ START_TEST(one_and_two_threads_give_the_same_bytes)
     ck_assert_int_eq(engine_calls, DET_FRAMES);
     /* and the run did something: particles moved, waves, floaters */
     ms_stats s = ms_stats_init();
-    ms_sim_stats(two, &s);
+    ms_sim_get_stats(two, &s);
     ck_assert_int_gt(s.volume_steps, DET_FRAMES);
     ck_assert_int_gt(s.drops, 2);
     ck_assert(max_wave(two) > 1e-4);
@@ -207,6 +207,60 @@ START_TEST(volume_only_on_two_threads_gives_the_same_bytes)
     ms_sim_destroy(one);
     ms_sim_destroy(two);
     ms_scene_destroy(sc);
+}
+END_TEST
+
+/* The volume's parallel loops on an engine's tasks (ms_volume_set_tasks,
+ * handed on by the sim): its own worker threads are stopped, the chunks
+ * run as the engine's tasks, and the bytes are those of one thread. */
+START_TEST(volume_loops_on_engine_tasks_give_the_same_bytes)
+{
+    ms_scene *sc = scene("{" POOL_DOMAIN ", \"volume\": {\"spacing\": 0.04, \"threads\": 2, "
+                         "\"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.12]}], "
+                         "\"field\": [16, 16]}}");
+    ms_sim *one = sim_of(sc, 1), *eng = sim_of(sc, 2);
+    ck_assert_int_eq(ms_sim_set_tasks(eng, engine_enqueue, engine_finish, &engine_calls), MS_OK);
+    engine_calls = 0;
+    for (int f = 0; f < 40; ++f) {
+        step(one, 1.0f / 60);
+        step(eng, 1.0f / 60);
+        ck_assert_msg(frame_hash(one) == frame_hash(eng), "frame %d differs", f);
+    }
+    /* every parallel loop of every sub-step went through the engine */
+    ms_stats st = ms_stats_init();
+    ms_sim_get_stats(eng, &st);
+    ck_assert_int_gt(engine_calls, st.volume_steps);
+    ms_sim_destroy(one);
+    ms_sim_destroy(eng);
+    ms_scene_destroy(sc);
+
+    /* the same on a bare volume, and back to its own threads */
+    ms_volume_desc d = ms_volume_desc_default();
+    ms_volume *a = NULL, *b = NULL;
+    ck_assert_int_eq(ms_volume_create(&d, &a), MS_OK);
+    d.threads = 3;
+    ck_assert_int_eq(ms_volume_create(&d, &b), MS_OK);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.3f, 1, 0.5f};
+    ck_assert_int_eq(ms_volume_fill_box(a, lo, hi), MS_OK);
+    ck_assert_int_eq(ms_volume_fill_box(b, lo, hi), MS_OK);
+    ck_assert_int_eq(ms_volume_set_tasks(b, engine_enqueue, engine_finish, &engine_calls), MS_OK);
+    for (int f = 0; f < 10; ++f) {
+        if (f == 5)
+            ck_assert_int_eq(ms_volume_set_tasks(b, NULL, NULL, NULL), MS_OK);
+        ck_assert_int_eq(ms_volume_step(a, 1.0f / 60), MS_OK);
+        ck_assert_int_eq(ms_volume_step(b, 1.0f / 60), MS_OK);
+    }
+    int n = ms_volume_count(a);
+    float *pa = malloc(sizeof(float) * 3 * n), *pb = malloc(sizeof(float) * 3 * n);
+    ck_assert_int_eq(ms_volume_get_particles(a, pa, NULL), MS_OK);
+    ck_assert_int_eq(ms_volume_get_particles(b, pb, NULL), MS_OK);
+    ck_assert(memcmp(pa, pb, sizeof(float) * 3 * n) == 0);
+    free(pa);
+    free(pb);
+    MS_ASSERT_REFUSED(ms_volume_set_tasks(b, engine_enqueue, NULL, NULL), MS_ERR_INVALID_ARGUMENT,
+                      "both");
+    ms_volume_destroy(a);
+    ms_volume_destroy(b);
 }
 END_TEST
 
@@ -259,6 +313,7 @@ static Suite *determinism_suite(void)
     tcase_add_test(tc, one_and_two_threads_give_the_same_bytes);
     tcase_add_test(tc, the_same_scene_runs_to_the_same_bytes);
     tcase_add_test(tc, volume_only_on_two_threads_gives_the_same_bytes);
+    tcase_add_test(tc, volume_loops_on_engine_tasks_give_the_same_bytes);
     suite_add_tcase(s, tc);
     TCase *golden = tcase_create("golden");
     tcase_set_timeout(golden, 600);

@@ -419,13 +419,13 @@ START_TEST(xdmf_path_replaces_h5_or_appends)
 {
     char *p = ms_xdmf_path_for("dir/run.h5");
     ck_assert_str_eq(p, "dir/run.xmf");
-    free(p);
+    ms_free(p);
     p = ms_xdmf_path_for("run.hdf5");
     ck_assert_str_eq(p, "run.xmf");
-    free(p);
+    ms_free(p);
     p = ms_xdmf_path_for("out.dat");
     ck_assert_str_eq(p, "out.dat.xmf");
-    free(p);
+    ms_free(p);
 }
 END_TEST
 

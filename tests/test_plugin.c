@@ -311,21 +311,21 @@ START_TEST(search_path_order)
     char *p = ms_plugin_compose_search_path("/a:/b::/c", "/usr/lib/libmodesplit.so.0",
                                             "/src/build/plugins");
     ck_assert_str_eq(p, "/a:/b:/c:/usr/lib/modesplit/plugins:/src/build/plugins");
-    free(p);
+    ms_free(p);
     p = ms_plugin_compose_search_path(NULL, "/opt/ms/bin/modesplit", NULL);
     ck_assert_str_eq(p, "/opt/ms/bin/../lib/modesplit/plugins");
-    free(p);
+    ms_free(p);
     p = ms_plugin_compose_search_path("", "/libmodesplit.so", "/b");
     ck_assert_str_eq(p, "/modesplit/plugins:/b");
-    free(p);
+    ms_free(p);
     p = ms_plugin_compose_search_path(NULL, NULL, NULL);
     ck_assert_str_eq(p, "");
-    free(p);
+    ms_free(p);
     /* this test is linked statically: the executable's ../lib */
     char *d = ms_plugin_default_search_path();
     ck_assert_ptr_nonnull(strstr(d, "/../lib/modesplit/plugins"));
     ck_assert_ptr_nonnull(strstr(d, MS_BUILD_PLUGIN_DIR));
-    free(d);
+    ms_free(d);
 }
 END_TEST
 

@@ -370,7 +370,7 @@ START_TEST(a_scene_gives_the_desc_of_its_render_section)
     ck_assert_int_eq(d.caustics, 0);
     ck_assert_float_eq_tol(d.water_level, 0.25f, 1e-6f);
     ms_renderer *r = (ms_renderer *)sc; /* must be set to NULL */
-    MS_ASSERT_REFUSED(ms_renderer_create(sc, &r), MS_ERR_INVALID_ARGUMENT,
+    MS_ASSERT_REFUSED(ms_renderer_create_from_scene(sc, &r), MS_ERR_INVALID_ARGUMENT,
                       "no \"render\" section");
     ck_assert_ptr_null(r);
     ms_scene_destroy(sc);
@@ -556,7 +556,7 @@ START_TEST(milk_hides_the_floor_that_water_shows)
     ms_renderer *r = create_ok(&d);
     draw_ok(r, h, N);
     ms_render_stats st = ms_render_stats_init();
-    ms_renderer_stats(r, &st);
+    ms_renderer_get_stats(r, &st);
     ck_assert_uint_eq(st.passes, MS_SHADER_NEEDS_REFLECTION);
     ck_assert_double_eq(st.caustics_ms, 0);
     ck_assert_int_eq(st.frames, 1);
@@ -567,7 +567,7 @@ START_TEST(milk_hides_the_floor_that_water_shows)
     d = top_down("water");
     r = create_ok(&d);
     draw_ok(r, h, N);
-    ms_renderer_stats(r, &st);
+    ms_renderer_get_stats(r, &st);
     ck_assert_uint_eq(st.passes, MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION |
                                      MS_SHADER_NEEDS_CAUSTICS);
     ck_assert_ptr_nonnull(ms_renderer_caustics(r, &n));
@@ -576,7 +576,7 @@ START_TEST(milk_hides_the_floor_that_water_shows)
     d.caustics = 0; /* the scene asks for none: not traced */
     r = create_ok(&d);
     draw_ok(r, h, N);
-    ms_renderer_stats(r, &st);
+    ms_renderer_get_stats(r, &st);
     ck_assert_uint_eq(st.passes, MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION);
     ck_assert_ptr_null(ms_renderer_caustics(r, &n));
     ms_renderer_destroy(r);
@@ -890,7 +890,7 @@ START_TEST(a_coarser_mesh_averages_the_field)
     ms_renderer *r = create_ok(&d);
     draw_ok(r, h, N);
     ms_render_stats st = ms_render_stats_init();
-    ms_renderer_stats(r, &st);
+    ms_renderer_get_stats(r, &st);
     ck_assert_int_eq(st.mesh_nx, N / 2);
     ck_assert_int_eq(st.mesh_ny, N / 2);
     unsigned char *a = malloc((size_t)W * W * 4);
@@ -907,7 +907,7 @@ START_TEST(a_coarser_mesh_averages_the_field)
     r = create_ok(&d);
     float *fine = field(256, 0.25f);
     draw_ok(r, fine, 256);
-    ms_renderer_stats(r, &st);
+    ms_renderer_get_stats(r, &st);
     /* 0.94 m of water across 32 pixels: 2 pixels = 5.9 cm, 15 cells */
     ck_assert_int_eq(st.mesh_nx, 256 / 15);
     ms_renderer_destroy(r);
@@ -1086,7 +1086,7 @@ START_TEST(draw_renders_the_sims_field_with_its_floaters_and_boat)
     ms_status st = ms_sim_create_from_scene(sc, 1, &sim);
     ck_assert_msg(st == MS_OK, "%s", ms_last_error());
     ms_renderer *r = NULL;
-    st = ms_renderer_create(sc, &r);
+    st = ms_renderer_create_from_scene(sc, &r);
     ck_assert_msg(st == MS_OK, "%s", ms_last_error());
     MS_ASSERT_REFUSED(ms_renderer_draw(r, sim), MS_ERR_STATE, "step it first");
     MS_ASSERT_REFUSED(ms_renderer_draw(r, NULL), MS_ERR_INVALID_ARGUMENT, "sim is NULL");
@@ -1112,7 +1112,7 @@ START_TEST(draw_renders_the_sims_field_with_its_floaters_and_boat)
     ms_render_disc discs[4];
     memcpy(discs, r->discs, sizeof discs);
     ms_renderer_destroy(r);
-    ck_assert_int_eq(ms_renderer_create(sc, &r), MS_OK);
+    ck_assert_int_eq(ms_renderer_create_from_scene(sc, &r), MS_OK);
     ck_assert_int_eq(ms_renderer_set_discs(r, discs, 4), MS_OK);
     int nx, ny;
     const float *h = ms_sim_height(sim, &nx, &ny);
@@ -1140,7 +1140,7 @@ START_TEST(a_scene_renders_and_every_shader_draws)
     ms_scene *sc = NULL;
     ck_assert_int_eq(ms_scene_parse(text, strlen(text), &sc), MS_OK);
     ms_renderer *r = NULL;
-    ck_assert_int_eq(ms_renderer_create(sc, &r), MS_OK);
+    ck_assert_int_eq(ms_renderer_create_from_scene(sc, &r), MS_OK);
     float *h = field(N, 0.25f);
     add_bump(h, N, 0.5f, 0.5f, 0.01f, 0.05f);
     draw_ok(r, h, N);

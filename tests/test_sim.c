@@ -56,7 +56,7 @@ START_TEST(surface_only_scene_holds_no_particles_and_runs_no_sph)
     ms_sim *sim = sim_of(sc, 2);
     steps(sim, 10, 1.0f / 60);
     ms_stats s = ms_stats_init();
-    ms_sim_stats(sim, &s);
+    ms_sim_get_stats(sim, &s);
     ck_assert_int_eq(s.volume_steps, 0);
     ck_assert_uint_eq(s.volume_bytes, 0);
     ck_assert(s.volume_ms == 0 && s.extract_ms == 0);
@@ -91,7 +91,7 @@ START_TEST(volume_only_scene_is_the_sph_field_alone)
     ms_sim *sim = sim_of(sc, 2);
     steps(sim, 5, 1.0f / 60);
     ms_stats s = ms_stats_init();
-    ms_sim_stats(sim, &s);
+    ms_sim_get_stats(sim, &s);
     ck_assert_int_eq(s.surface_steps, 0);
     ck_assert_uint_eq(s.surface_bytes, 0);
     ck_assert_uint_eq(s.effects_bytes, 0);
@@ -160,8 +160,8 @@ START_TEST(absent_effects_cost_nothing)
     steps(a, 6, 1.0f / 60);
     steps(b, 6, 1.0f / 60);
     ms_stats sa = ms_stats_init(), sb = ms_stats_init();
-    ms_sim_stats(a, &sa);
-    ms_sim_stats(b, &sb);
+    ms_sim_get_stats(a, &sa);
+    ms_sim_get_stats(b, &sb);
     ck_assert_int_eq(sa.drops, 0); /* no rain: no drops, no random numbers drawn */
     ck_assert_int_gt(sb.drops, 0);
     ck_assert_uint_eq(sa.effects_bytes, 0);
@@ -199,7 +199,7 @@ START_TEST(n_time_is_the_fewest_stable_wave_steps)
     ck_assert_int_ge(expect, 2);
     steps(sim, 3, dt); /* the first frame shows the start: two wave intervals */
     ms_stats s = ms_stats_init();
-    ms_sim_stats(sim, &s);
+    ms_sim_get_stats(sim, &s);
     ck_assert_int_eq(s.n_time, expect);
     ck_assert_int_eq(s.surface_steps, 2 * expect); /* one leapfrog step each */
     ms_sim_destroy(sim);
@@ -213,7 +213,7 @@ START_TEST(a_given_n_time_must_keep_within_the_cfl_bound)
     ms_sim *sim = sim_of(ok, 1);
     steps(sim, 3, 1.0f / 60);
     ms_stats s = ms_stats_init();
-    ms_sim_stats(sim, &s);
+    ms_sim_get_stats(sim, &s);
     ck_assert_int_eq(s.n_time, 9);
     ck_assert_int_eq(s.surface_steps, 18);
     ms_sim_destroy(sim);
@@ -765,7 +765,7 @@ START_TEST(scripted_drops_land_on_time)
     wave_sum(sim, &m);
     ck_assert(m > 1e-3);
     ms_stats s = ms_stats_init();
-    ms_sim_stats(sim, &s);
+    ms_sim_get_stats(sim, &s);
     ck_assert_int_eq(s.drops, 1);
     ms_sim_destroy(sim);
     ms_scene_destroy(sc);
@@ -847,6 +847,8 @@ START_TEST(bad_descs_are_refused)
     d.threads = 2;
     d.couple_surface_from_volume = NAN;
     MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "couple_surface_from_volume");
+    d.couple_surface_from_volume = 2; /* above 1 it outgrows the SPH surface (i15) */
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "[0, 1]");
     d.couple_surface_from_volume = 0;
     d.couple_volume_from_surface = 2;
     MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "couple_volume_from_surface 2");

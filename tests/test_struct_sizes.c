@@ -217,16 +217,16 @@ START_TEST(getters_write_nothing_for_size_zero_or_unknown)
     ms_stats st;
     memset(&st, 0xab, sizeof st);
     st.size = 0;
-    ms_sim_stats(sim, &st);
+    ms_sim_get_stats(sim, &st);
     ck_assert_uint_eq(st.size, 0);
     ck_assert_uint_eq(((unsigned char *)&st)[sizeof st - 1], 0xab);
     ck_assert_ptr_nonnull(strstr(ms_last_error(), "ms_stats.size is 0"));
     st.size = 6;
-    ms_sim_stats(sim, &st);
+    ms_sim_get_stats(sim, &st);
     ck_assert_uint_eq(((unsigned char *)&st)[offsetof(ms_stats, frames)], 0xab);
     ck_assert_ptr_nonnull(strstr(ms_last_error(), "not a size"));
     st = ms_stats_init();
-    ms_sim_stats(sim, &st);
+    ms_sim_get_stats(sim, &st);
     ck_assert_int_eq(st.frames, 1);
 
     ms_sim_info info;
@@ -264,11 +264,11 @@ START_TEST(getters_write_nothing_for_size_zero_or_unknown)
     ms_render_stats rs;
     memset(&rs, 0xab, sizeof rs);
     rs.size = 0;
-    ms_renderer_stats(NULL, &rs);
+    ms_renderer_get_stats(NULL, &rs);
     ck_assert_uint_eq(((unsigned char *)&rs)[offsetof(ms_render_stats, frames)], 0xab);
     rs = ms_render_stats_init();
     rs.frames = 5;
-    ms_renderer_stats(NULL, &rs); /* no renderer: zeros */
+    ms_renderer_get_stats(NULL, &rs); /* no renderer: zeros */
     ck_assert_int_eq(rs.frames, 0);
 }
 END_TEST

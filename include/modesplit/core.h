@@ -33,6 +33,18 @@ extern "C" {
 #define MS_API
 #endif
 
+/* Old names kept for one release: the compiler says what replaces them.
+ * Define MS_NO_DEPRECATION_WARNINGS to silence it while porting. */
+#if defined(MS_NO_DEPRECATION_WARNINGS)
+#define MS_DEPRECATED(msg)
+#elif defined(__GNUC__) || defined(__clang__)
+#define MS_DEPRECATED(msg) __attribute__((deprecated(msg)))
+#elif defined(_MSC_VER)
+#define MS_DEPRECATED(msg) __declspec(deprecated(msg))
+#else
+#define MS_DEPRECATED(msg)
+#endif
+
 #define MS_VERSION_MAJOR 0
 #define MS_VERSION_MINOR 1
 #define MS_VERSION_PATCH 0
@@ -57,7 +69,8 @@ typedef struct ms_writer ms_writer;     /* HDF5 output */
     X(ERR_PARSE, -5, "parse error")                                           \
     X(ERR_PLUGIN, -6, "plugin error")                                         \
     X(ERR_UNSUPPORTED, -7, "not supported by this build")                     \
-    X(ERR_STATE, -8, "call not allowed in the current state")
+    X(ERR_STATE, -8, "call not allowed in the current state")                 \
+    X(ERR_CANCELED, -9, "stopped by a cancel request")
 
 typedef enum ms_status {
 #define MS_STATUS_ENUM_(name, value, text) MS_##name = value,
@@ -105,6 +118,33 @@ typedef struct ms_grid {
 #else
 #define MS_ZERO_INIT {0}
 #endif
+
+/* Threads. A game engine that owns its threads can run the library's
+ * parallel work itself (as Box2D v3's enqueueTask/finishTask): enqueue
+ * starts task(task_context) and returns a handle (NULL = it ran the task
+ * inline already); finish waits for that handle. Used by ms_sim (its
+ * two-core split and its volume's loops) and ms_volume_set_tasks. */
+typedef void ms_task_fn(void *task_context);
+typedef void *ms_enqueue_task_fn(ms_task_fn *task, void *task_context, void *user_context);
+typedef void ms_finish_task_fn(void *user_task, void *user_context);
+
+/* Memory. Every allocation the library makes (its handles, fields,
+ * particles, the host side of plugins) goes through alloc_fn / free_fn
+ * when given, as Box2D's b2SetAllocator: alloc_fn(size, alignment, user)
+ * returns size bytes aligned to `alignment` (a power of two, 64) or NULL;
+ * free_fn(p, user) frees what alloc_fn returned. Both NULL restores the
+ * default (aligned_alloc/free). Set it before creating anything: while the
+ * library holds memory from the allocator in use, a change is refused
+ * with MS_ERR_STATE. Process-wide, not thread-safe against other calls.
+ * The libraries libmodesplit uses (HDF5, jansson, libpng, OSMesa) allocate
+ * through their own allocators. ms_surface_step allocates nothing after
+ * the first step; ms_sim_step makes the buffers sized on first use in its
+ * first two frames and after that only grows a buffer (geometrically) when
+ * the liquid reaches a new high-water mark, nothing once it has settled
+ * (tests/test_alloc.c). */
+typedef void *ms_alloc_fn(size_t size, size_t alignment, void *user);
+typedef void ms_free_fn(void *p, void *user);
+MS_API ms_status ms_set_allocator(ms_alloc_fn *alloc_fn, ms_free_fn *free_fn, void *user);
 
 /* "0.1.0" */
 MS_API const char *ms_version(void);

@@ -4,7 +4,7 @@
  * Every call returns MS_ERR_UNSUPPORTED in a build without OSMesa.
  *
  *     ms_renderer *r;
- *     if (ms_renderer_create(scene, &r) != MS_OK)       // the scene's `render`
+ *     if (ms_renderer_create_from_scene(scene, &r) != MS_OK) // its `render`
  *         fprintf(stderr, "%s\n", ms_last_error());
  *     for (...) {
  *         ms_sim_step(sim, dt);
@@ -107,6 +107,13 @@ MS_API ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_des
 MS_API ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out);
 /* ms_renderer_desc_from_scene + ms_renderer_create_desc; a scene without a
  * `render` section is refused (it asks for no image). */
+MS_API ms_status ms_renderer_create_from_scene(const ms_scene *sc, ms_renderer **out);
+/* Names (one pattern for every handle: ms_X_create(desc) and
+ * ms_X_create_from_scene(scene), ms_X_get_info for what it is and
+ * ms_X_get_stats for what it did): ms_renderer_create(scene) is the old
+ * name of ms_renderer_create_from_scene, kept for this release; in the
+ * next, ms_renderer_create takes the desc (today ms_renderer_create_desc). */
+MS_DEPRECATED("use ms_renderer_create_from_scene")
 MS_API ms_status ms_renderer_create(const ms_scene *sc, ms_renderer **out);
 MS_API void ms_renderer_destroy(ms_renderer *r);
 
@@ -163,6 +170,8 @@ static inline ms_render_stats ms_render_stats_init(void)
     x.size = (uint32_t)sizeof x;
     return x;
 }
+MS_API void ms_renderer_get_stats(const ms_renderer *r, ms_render_stats *out);
+MS_DEPRECATED("use ms_renderer_get_stats")
 MS_API void ms_renderer_stats(const ms_renderer *r, ms_render_stats *out);
 
 /* The caustics light map of the last draw (texels over the pool, row-major

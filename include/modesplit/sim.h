@@ -5,6 +5,12 @@
  * two-way coupling, and the two-core split: the volume thread runs frame n
  * while the surface thread finishes frame n-1. threads = 1 runs the same
  * one-frame pipeline in order, so 1 and 2 threads give the same bytes.
+ *
+ * Not thread-safe: one handle, one thread at a time (its own worker thread,
+ * or the engine's tasks, are internal); only ms_sim_cancel may be called
+ * from another thread. A second thread caught in ms_sim_step while the
+ * first is still in it gets MS_ERR_STATE (a cheap check, not a lock: it
+ * cannot catch every misuse, such as ms_sim_destroy during a step).
  */
 #ifndef MODESPLIT_SIM_H
 #define MODESPLIT_SIM_H
@@ -19,12 +25,9 @@ extern "C" {
 #endif
 
 /* A game engine that owns its threads can run the sim's parallel work
- * itself (as Box2D v3's enqueueTask/finishTask): enqueue starts task(ctx)
- * and returns a handle (NULL = it ran the task inline already); finish
- * waits for that handle. When both are NULL the sim uses its own pthread. */
-typedef void ms_task_fn(void *task_context);
-typedef void *ms_enqueue_task_fn(ms_task_fn *task, void *task_context, void *user_context);
-typedef void ms_finish_task_fn(void *user_task, void *user_context);
+ * itself (ms_task_fn and friends, core.h): the two-core split and the
+ * volume's parallel loops. When both are NULL the sim uses its own
+ * pthreads. */
 
 /* threads = 2 runs the volume and the surface tasks at the same time (a
  * volume-only sim instead gives the volume solver two threads; otherwise
@@ -41,7 +44,7 @@ typedef struct ms_sim_desc {
     const ms_surface_desc *surface;  /* NULL: no surface waves */
     int field_nx, field_ny;          /* X_SPH x Y_SPH; N_surf = surface nx / field_nx (eq. 20) */
     int surface_substeps;            /* N_time (eq. 19); 0 = derived from the CFL bound */
-    float couple_surface_from_volume, couple_volume_from_surface;
+    float couple_surface_from_volume, couple_volume_from_surface; /* each in [0, 1] */
     int threads;                     /* 1 = sequential, 2 = two-core split */
     /* --- grown at the end (ABI: descs only grow) --- */
     ms_enqueue_task_fn *enqueue_task;
@@ -66,6 +69,12 @@ MS_API ms_status ms_sim_set_tasks(ms_sim *sim, ms_enqueue_task_fn *enqueue_task,
  * too small for the CFL bound; after a failed step every further step
  * returns MS_ERR_STATE. */
 MS_API ms_status ms_sim_step(ms_sim *sim, float frame_dt);
+/* Ask a step in progress to stop (any thread, e.g. an engine's watchdog or
+ * a signal handler's flag): the volume and the surface stop at their next
+ * sub-step and ms_sim_step returns MS_ERR_CANCELED; the sim is then failed
+ * (further steps return MS_ERR_STATE) but its views, stats and a writer's
+ * frames stay valid. */
+MS_API void ms_sim_cancel(ms_sim *sim);
 MS_API const float *ms_sim_height(const ms_sim *sim, int *nx, int *ny); /* combined field */
 MS_API ms_volume *ms_sim_volume(ms_sim *sim);   /* NULL when the scene has no volume */
 MS_API ms_surface *ms_sim_surface(ms_sim *sim); /* NULL when the scene has no surface */
@@ -115,6 +124,9 @@ static inline ms_stats ms_stats_init(void)
     x.size = (uint32_t)sizeof x;
     return x;
 }
+MS_API void ms_sim_get_stats(const ms_sim *sim, ms_stats *out);
+/* The old name of ms_sim_get_stats (one pattern: *_get_info, *_get_stats). */
+MS_DEPRECATED("use ms_sim_get_stats")
 MS_API void ms_sim_stats(const ms_sim *sim, ms_stats *out);
 
 /* What the sim runs (for listings such as `modesplit info`). */

@@ -170,6 +170,11 @@ static inline ms_surface_info ms_surface_info_init(void)
 MS_API void ms_surface_get_info(const ms_surface *s, ms_surface_info *out);
 /* The desc the handle was created from. */
 MS_API ms_surface_desc ms_surface_get_desc(const ms_surface *s);
+/* Ask a step in progress (on another thread) to stop: it returns
+ * MS_ERR_CANCELED before its next block of sub-steps, the field valid at
+ * the time reached. Safe from any thread; a request made between steps
+ * stops the next step at once. */
+MS_API void ms_surface_cancel(ms_surface *s);
 
 #ifdef __cplusplus
 }

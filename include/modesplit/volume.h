@@ -221,6 +221,18 @@ static inline ms_volume_info ms_volume_info_init(void)
 MS_API void ms_volume_get_info(const ms_volume *v, ms_volume_info *out);
 /* The desc the handle was created from (viscosity as last set). */
 MS_API ms_volume_desc ms_volume_get_desc(const ms_volume *v);
+/* Run the step's parallel loops (desc.threads chunks) as an engine's tasks
+ * (core.h) instead of the volume's own worker threads, which are stopped;
+ * both NULL starts them again. The same split, so the same bytes. Between
+ * steps only; nothing to do with threads = 1. ms_sim hands its own task
+ * interface on to its volume. */
+/* Ask a step in progress (on another thread) to stop: it returns
+ * MS_ERR_CANCELED at its next sub-step, the state valid at the time
+ * reached. Safe from any thread; a request made between steps stops the
+ * next step at once. */
+MS_API void ms_volume_cancel(ms_volume *v);
+MS_API ms_status ms_volume_set_tasks(ms_volume *v, ms_enqueue_task_fn *enqueue_task,
+                                     ms_finish_task_fn *finish_task, void *user_task_context);
 /* Zero-copy views of the internal arrays (structure of arrays: pos[0..2] =
  * x, y, z, vel[0..2] = vx, vy, vz; *n particles each), in the internal
  * (cell-sorted) order, which changes at every step. Valid until the next

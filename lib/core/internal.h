@@ -31,11 +31,24 @@ ms_status ms_check_positive(const char *part, const char *key, double v, const c
 ms_status ms_check_int_range(const char *part, const char *key, long v, long lo, long hi);
 ms_status ms_check_not_null(const char *part, const char *key, const void *p);
 
-/* Zeroed, 64-byte aligned memory (cache line, AVX-512 vector); n in bytes.
- * ms_alloc_array checks count*size for overflow. NULL when out of memory. */
+/* Every allocation of the library goes through these (lib/core/alloc.c),
+ * and so through the engine's allocator when ms_set_allocator gave one;
+ * never call malloc/free directly in lib/ (memory from a dependency, such
+ * as jansson's json_dumps or realpath, is freed with free()).
+ * ms_alloc: zeroed, 64-byte aligned memory (cache line, AVX-512 vector); n
+ * in bytes. ms_alloc_array checks count*size for overflow. ms_malloc is
+ * not zeroed; ms_realloc keeps p valid when it fails. NULL when out of
+ * memory. ms_free(NULL) does nothing. */
 void *ms_alloc(size_t n);
 void *ms_alloc_array(size_t count, size_t size);
+void *ms_malloc(size_t n);
+void *ms_realloc(void *p, size_t n);
+char *ms_strdup(const char *s);
 void ms_free(void *p);
+/* Blocks allocated since the process started, and blocks live now (for
+ * the tests that prove a step allocates nothing). */
+long ms_alloc_count(void);
+long ms_alloc_live(void);
 
 /* xoshiro128** seeded by splitmix64: small, fast, and the same sequence on
  * every platform, carried in the handle that uses it (no global state). */

@@ -214,7 +214,7 @@ herr_t ms_h5_read_string(hid_t obj, const char *name, size_t max_len, char **out
         char *p = NULL;
         if (mt >= 0 && H5Tset_size(mt, H5T_VARIABLE) >= 0 && H5Aread(a, mt, &p) >= 0 && p) {
             size_t len = strnlen(p, max_len);
-            *out = malloc(len + 1);
+            *out = ms_malloc(len + 1);
             if (*out) {
                 memcpy(*out, p, len);
                 (*out)[len] = '\0';
@@ -227,12 +227,12 @@ herr_t ms_h5_read_string(hid_t obj, const char *name, size_t max_len, char **out
         size_t size = H5Tget_size(t);
         if (size > 0 && size <= max_len && mt >= 0 && H5Tset_size(mt, size) >= 0 &&
             H5Tset_strpad(mt, H5T_STR_NULLPAD) >= 0) {
-            char *buf = calloc(size + 1, 1);
+            char *buf = ms_alloc_array(size + 1, 1);
             if (buf && H5Aread(a, mt, buf) >= 0) {
                 *out = buf;
                 st = 0;
             } else {
-                free(buf);
+                ms_free(buf);
             }
         }
     }

@@ -67,7 +67,7 @@ ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_write
 /* Append frame `frame` (time t, `particles` particles in /Step#frame). */
 ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles);
 ms_status ms_xdmf_close(ms_xdmf *x);
-/* "run.xmf" for "run.h5", "out.dat.xmf" for "out.dat"; malloc'ed. */
+/* "run.xmf" for "run.h5", "out.dat.xmf" for "out.dat"; ms_malloc'ed (ms_free it). */
 char *ms_xdmf_path_for(const char *h5_path);
 
 /* ---- H5Part particles (h5part.c) ---- */
@@ -110,7 +110,7 @@ herr_t ms_h5_attr_double(hid_t obj, const char *name, const double *v, int n);
 herr_t ms_h5_attr_int64(hid_t obj, const char *name, int64_t v);
 /* Readers of the same, defensive about what the file holds: the attribute
  * must exist with the right class and element count, or they return < 0.
- * ms_h5_read_string mallocs *out (NUL-terminated, at most max_len bytes). */
+ * ms_h5_read_string ms_mallocs *out (ms_free it) (NUL-terminated, at most max_len bytes). */
 herr_t ms_h5_read_string(hid_t obj, const char *name, size_t max_len, char **out);
 herr_t ms_h5_read_doubles(hid_t obj, const char *name, double *v, int n);
 herr_t ms_h5_read_int64(hid_t obj, const char *name, int64_t *v);

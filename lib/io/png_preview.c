@@ -142,7 +142,7 @@ ms_status ms_field_shade(const float *h, int nx, int ny, const ms_preview_desc *
     float lx = (float)(sin(az) * cos(el)), ly = (float)(cos(az) * cos(el));
     float lz = (float)sin(el);
     /* Cell colours first (NaN red marks a non-finite height)... */
-    float *cell = malloc((size_t)nx * (size_t)ny * 3 * sizeof *cell);
+    float *cell = ms_malloc((size_t)nx * (size_t)ny * 3 * sizeof *cell);
     if (!cell)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "preview: out of memory for %d x %d cells", nx, ny);
     for (int y = 0; y < ny; ++y) {
@@ -198,7 +198,7 @@ ms_status ms_field_shade(const float *h, int nx, int ny, const ms_preview_desc *
             }
         }
     }
-    free(cell);
+    ms_free(cell);
     return MS_OK;
 }
 
@@ -256,19 +256,19 @@ ms_status ms_field_write_png(const float *h, int nx, int ny, const char *path,
     if (st != MS_OK || (st = ms_check_not_null("preview", "path", path)) != MS_OK)
         return st;
     size_t w = (size_t)nx * (size_t)d->scale, hgt = (size_t)ny * (size_t)d->scale;
-    unsigned char *rgb = malloc(w * hgt * 3);
+    unsigned char *rgb = ms_malloc(w * hgt * 3);
     if (!rgb)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "preview: out of memory for %zu x %zu pixels", w,
                        hgt);
     st = ms_field_shade(h, nx, ny, d, rgb, w * hgt * 3);
     if (st != MS_OK) {
-        free(rgb);
+        ms_free(rgb);
         return st;
     }
     size_t n = strlen(path);
-    char *tmp = malloc(n + 5);
+    char *tmp = ms_malloc(n + 5);
     if (!tmp) {
-        free(rgb);
+        ms_free(rgb);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "preview: out of memory");
     }
     memcpy(tmp, path, n);
@@ -295,7 +295,7 @@ ms_status ms_field_write_png(const float *h, int nx, int ny, const char *path,
         if (st != MS_OK)
             remove(tmp);
     }
-    free(tmp);
-    free(rgb);
+    ms_free(tmp);
+    ms_free(rgb);
     return st;
 }

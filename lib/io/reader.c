@@ -8,6 +8,7 @@
  * frames. HDF5's own printing is silenced; its errors become sentences.
  */
 #include <errno.h>
+#include <float.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,11 +45,11 @@ static void reader_free(ms_reader *r)
     if (r->file >= 0)
         H5Fclose(r->file);
     H5Eclear2(H5E_DEFAULT);
-    free(r->library_version);
-    free(r->scene);
-    free(r->scene_name);
-    free(r->path);
-    free(r);
+    ms_free(r->library_version);
+    ms_free(r->scene);
+    ms_free(r->scene_name);
+    ms_free(r->path);
+    ms_free(r);
 }
 
 /* Link `name` exists below `loc` (each part of the path checked). */
@@ -115,10 +116,11 @@ static ms_status open_field(ms_reader *r, int slot, hid_t fields)
                        "side or over %ld cells", r->path, name, (unsigned long long)dims[2],
                        (unsigned long long)dims[1], MS_IO_MAX_SIDE, MS_IO_MAX_CELLS);
     double dx[2], origin[2];
-    if (ms_h5_read_doubles(d, "dx", dx, 2) < 0 || !(dx[0] > 0) || !(dx[1] > 0) ||
+    /* a normal float both ways: a denormal dx would become a 0 mm grid */
+    if (ms_h5_read_doubles(d, "dx", dx, 2) < 0 || !(dx[0] >= FLT_MIN) || !(dx[1] >= FLT_MIN) ||
         !isfinite(dx[0]) || !isfinite(dx[1]) || dx[0] > 3e38 || dx[1] > 3e38)
         return ms_fail(MS_ERR_PARSE,
-                       "io: %s: /fields/%s lacks the attribute dx = [dx, dy] (finite, > 0 m)",
+                       "io: %s: /fields/%s lacks the attribute dx = [dx, dy] (finite, at least 1.2e-38 m: a normal float)",
                        r->path, name);
     if (ms_h5_read_doubles(d, "origin", origin, 2) < 0 || !isfinite(origin[0]) ||
         !isfinite(origin[1]) || fabs(origin[0]) > 3e38 || fabs(origin[1]) > 3e38)
@@ -143,12 +145,12 @@ static ms_status read_layout(ms_reader *r)
     hid_t f = r->file;
     char *format = NULL;
     if (ms_h5_read_string(f, "format", 64, &format) < 0 || strcmp(format, MS_FILE_FORMAT) != 0) {
-        free(format);
+        ms_free(format);
         return ms_fail(MS_ERR_PARSE,
                        "io: %s is an HDF5 file but not a modesplit run (no root attribute "
                        "format = \"%s\")", r->path, MS_FILE_FORMAT);
     }
-    free(format);
+    ms_free(format);
     int64_t v;
     if (ms_h5_read_int64(f, "format_version", &v) < 0 || v < 1)
         return ms_fail(MS_ERR_PARSE, "io: %s lacks a format_version >= 1", r->path);
@@ -218,9 +220,9 @@ ms_status ms_reader_open(const char *path, ms_reader **out)
         return ms_fail(MS_ERR_IO, "io: cannot open %s: %s", path, strerror(errno));
     if (!S_ISREG(sb.st_mode))
         return ms_fail(MS_ERR_IO, "io: cannot open %s: not a regular file", path);
-    ms_reader *r = calloc(1, sizeof *r);
-    if (!r || !(r->path = strdup(path))) {
-        free(r);
+    ms_reader *r = ms_alloc_array(1, sizeof *r);
+    if (!r || !(r->path = ms_strdup(path))) {
+        ms_free(r);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the reader");
     }
     r->file = r->time_dset = -1;

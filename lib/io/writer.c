@@ -79,9 +79,9 @@ static void free_writer(ms_writer *w)
 {
     if (!w)
         return;
-    free(w->path);
-    free(w->xmf_path);
-    free(w);
+    ms_free(w->path);
+    ms_free(w->xmf_path);
+    ms_free(w);
 }
 
 /* Close a file that met a write error without writing to it again.
@@ -315,7 +315,7 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
     if ((st = check_layout(l)) != MS_OK)
         return st;
 
-    ms_writer *w = calloc(1, sizeof *w);
+    ms_writer *w = ms_alloc_array(1, sizeof *w);
     if (!w)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
     w->file = w->time_dset = w->frames_attr = -1;
@@ -323,7 +323,7 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
         w->dset[i] = -1;
     w->layout = *l;
     w->layout.scene_text = w->layout.scene_name = NULL;
-    w->path = strdup(path);
+    w->path = ms_strdup(path);
     w->xmf_path = ms_xdmf_path_for(path);
     if (!w->path || !w->xmf_path) {
         free_writer(w);

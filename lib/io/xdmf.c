@@ -65,7 +65,7 @@ static void sb_printf(sbuf *b, const char *fmt, ...)
         size_t cap = b->cap ? b->cap : 4096;
         while (cap - b->len <= (size_t)n)
             cap *= 2;
-        char *q = realloc(b->p, cap);
+        char *q = ms_realloc(b->p, cap);
         if (!q) {
             b->oom = 1;
             return;
@@ -91,7 +91,7 @@ static char *xml_escape(const char *s)
     if (!b.p && !b.oom)
         sb_printf(&b, "%s", "");
     if (b.oom) {
-        free(b.p);
+        ms_free(b.p);
         return NULL;
     }
     return b.p;
@@ -100,7 +100,7 @@ static char *xml_escape(const char *s)
 char *ms_xdmf_path_for(const char *h5_path)
 {
     size_t n = strlen(h5_path);
-    char *p = malloc(n + 5);
+    char *p = ms_malloc(n + 5);
     if (!p)
         return NULL;
     memcpy(p, h5_path, n + 1);
@@ -137,12 +137,12 @@ ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_write
                        ms_xdmf **out)
 {
     *out = NULL;
-    ms_xdmf *x = calloc(1, sizeof *x);
+    ms_xdmf *x = ms_alloc_array(1, sizeof *x);
     if (!x)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the XDMF sidecar");
     x->fd = -1;
     x->layout = *l;
-    x->path = strdup(xmf_path);
+    x->path = ms_strdup(xmf_path);
     x->h5 = xml_escape(h5_name);
     if (!x->path || !x->h5) {
         ms_xdmf_close(x);
@@ -180,7 +180,7 @@ ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_write
     sb_printf(&b, "%s", TAIL);
     int bad = b.oom || write_all_at(x->fd, b.p, b.len, 0) < 0;
     int e = errno;
-    free(b.p);
+    ms_free(b.p);
     if (bad) {
         ms_xdmf_close(x);
         return ms_fail(MS_ERR_IO, "io: cannot write the XDMF sidecar %s: %s", xmf_path,
@@ -270,12 +270,12 @@ ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles)
     size_t body = b.len;
     sb_printf(&b, "%s", TAIL);
     if (b.oom) {
-        free(b.p);
+        ms_free(b.p);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the XDMF sidecar");
     }
     int bad = write_all_at(x->fd, b.p, b.len, x->tail_at) < 0;
     int e = errno;
-    free(b.p);
+    ms_free(b.p);
     if (bad)
         return ms_fail(MS_ERR_IO, "io: writing frame %ld to the XDMF sidecar %s failed: %s",
                        frame, x->path, strerror(e));
@@ -291,8 +291,8 @@ ms_status ms_xdmf_close(ms_xdmf *x)
     if (x->fd >= 0 && close(x->fd) != 0)
         st = ms_fail(MS_ERR_IO, "io: closing the XDMF sidecar %s failed: %s", x->path,
                      strerror(errno));
-    free(x->path);
-    free(x->h5);
-    free(x);
+    ms_free(x->path);
+    ms_free(x->h5);
+    ms_free(x);
     return st;
 }

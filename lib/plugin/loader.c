@@ -4,9 +4,12 @@
  * and names the file and the symbol (SQLite's load_extension habit). */
 #include <dlfcn.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "core/internal.h"
 #include "plugin/registry.h"
@@ -49,14 +52,24 @@ const char *ms_plugin_kind_name(uint32_t kind)
 
 /* A shared object is an ELF file of type ET_DYN; anything else is refused
  * before dlopen sees it (so a text file gets a clear sentence). */
+/* Only a regular file is read, opened without blocking: a FIFO, device or
+ * socket named *.so in a plugin folder would otherwise block every scan
+ * (which holds the registry's lock) until someone writes to it. */
 static ms_status check_elf(const char *path)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f)
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
         return ms_fail(MS_ERR_IO, "plugin: cannot open %s: %s", path, strerror(errno));
+    struct stat sb;
+    if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        close(fd);
+        return ms_fail(MS_ERR_PLUGIN, "plugin: %s is not a regular file (a FIFO, device or "
+                                      "socket is never loaded)", path);
+    }
     unsigned char h[18];
-    size_t n = fread(h, 1, sizeof h, f);
-    fclose(f);
+    ssize_t got = read(fd, h, sizeof h);
+    close(fd);
+    size_t n = got > 0 ? (size_t)got : 0;
     if (n < sizeof h || memcmp(h, "\177ELF", 4) != 0)
         return ms_fail(MS_ERR_PLUGIN, "plugin: %s is not a shared object (no ELF header)", path);
     unsigned type = h[5] == 2 ? (unsigned)h[16] << 8 | h[17] : (unsigned)h[17] << 8 | h[16];
@@ -181,29 +194,29 @@ ms_status ms_plugin_open(const char *path, ms_plugin_rec **out)
     if (st != MS_OK)
         return st;
     /* dlopen searches the library path for a name without a slash */
-    char *full = malloc(strlen(path) + 3);
+    char *full = ms_malloc(strlen(path) + 3);
     if (!full)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "plugin: out of memory loading %s", path);
     sprintf(full, "%s%s", strchr(path, '/') ? "" : "./", path);
     void *handle = dlopen(full, RTLD_NOW | RTLD_LOCAL);
-    free(full);
+    ms_free(full);
     if (!handle) {
         const char *why = dlerror();
         return ms_fail(MS_ERR_PLUGIN, "plugin: %s could not be loaded: %s", path,
                        why ? why : "unknown dlopen error");
     }
-    ms_plugin_rec *rec = calloc(1, sizeof *rec);
-    char *copy = rec ? malloc(strlen(path) + 1) : NULL;
+    ms_plugin_rec *rec = ms_alloc_array(1, sizeof *rec);
+    char *copy = rec ? ms_malloc(strlen(path) + 1) : NULL;
     if (!copy) {
-        free(rec);
+        ms_free(rec);
         dlclose(handle);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "plugin: out of memory loading %s", path);
     }
     strcpy(copy, path);
     st = check_loaded(path, handle, rec);
     if (st != MS_OK) {
-        free(copy);
-        free(rec);
+        ms_free(copy);
+        ms_free(rec);
         dlclose(handle);
         return st;
     }

@@ -26,7 +26,7 @@ static char *search_path;
 
 static char *dup_str(const char *s)
 {
-    char *d = malloc(strlen(s) + 1);
+    char *d = ms_malloc(strlen(s) + 1);
     if (d)
         strcpy(d, s);
     return d;
@@ -36,7 +36,7 @@ static void add_problem(const char *sentence)
 {
     if (n_problems == cap_problems) {
         int cap = cap_problems ? 2 * cap_problems : 8;
-        char **t = realloc(problems, (size_t)cap * sizeof *t);
+        char **t = ms_realloc(problems, (size_t)cap * sizeof *t);
         if (!t)
             return;
         problems = t;
@@ -74,7 +74,7 @@ static ms_status add_plugin(ms_plugin_rec *rec)
                      rec->path, MS_PLUGIN_ENTRY_SYMBOL, rec->info.name, old->path);
     else if (n_plugins == cap_plugins) {
         int cap = cap_plugins ? 2 * cap_plugins : 16;
-        ms_plugin_rec **t = realloc(plugins, (size_t)cap * sizeof *t);
+        ms_plugin_rec **t = ms_realloc(plugins, (size_t)cap * sizeof *t);
         if (!t)
             st = ms_fail(MS_ERR_OUT_OF_MEMORY, "plugin: out of memory registering %s",
                          rec->path);
@@ -85,8 +85,8 @@ static ms_status add_plugin(ms_plugin_rec *rec)
     }
     if (st != MS_OK) {
         dlclose(rec->handle);
-        free(rec->path);
-        free(rec);
+        ms_free(rec->path);
+        ms_free(rec);
         return st;
     }
     int at = n_plugins;
@@ -123,7 +123,7 @@ static void scan_dir(const char *dir)
             continue;
         if (n == cap) {
             cap = cap ? 2 * cap : 16;
-            char **t = realloc(names, (size_t)cap * sizeof *t);
+            char **t = ms_realloc(names, (size_t)cap * sizeof *t);
             if (!t)
                 break;
             names = t;
@@ -136,7 +136,7 @@ static void scan_dir(const char *dir)
     if (n > 1)
         qsort(names, (size_t)n, sizeof *names, by_name);
     for (int i = 0; i < n; ++i) {
-        char *path = malloc(strlen(dir) + strlen(names[i]) + 2);
+        char *path = ms_malloc(strlen(dir) + strlen(names[i]) + 2);
         if (path) {
             strcpy(path, dir);
             strcat(path, "/");
@@ -147,11 +147,11 @@ static void scan_dir(const char *dir)
                 st = add_plugin(rec);
             if (st != MS_OK)
                 add_problem(ms_last_error());
-            free(path);
+            ms_free(path);
         }
-        free(names[i]);
+        ms_free(names[i]);
     }
-    free(names);
+    ms_free(names);
 }
 
 static void scan(void)
@@ -173,7 +173,7 @@ static void scan(void)
     for (const char *p = search_path; p && *p; --n_env) {
         const char *colon = strchr(p, ':');
         size_t n = colon ? (size_t)(colon - p) : strlen(p);
-        char *dir = malloc(n + 1);
+        char *dir = ms_malloc(n + 1);
         if (dir) {
             memcpy(dir, p, n);
             dir[n] = '\0';
@@ -188,7 +188,7 @@ static void scan(void)
             for (int i = 0; canon && i < n_seen; ++i)
                 dup |= strcmp(seen[i], canon) == 0;
             if (canon && !dup) {
-                char **t = realloc(seen, (size_t)(n_seen + 1) * sizeof *t);
+                char **t = ms_realloc(seen, (size_t)(n_seen + 1) * sizeof *t);
                 if (t) {
                     seen = t;
                     seen[n_seen++] = canon;
@@ -197,13 +197,13 @@ static void scan(void)
                 }
             }
             free(canon);
-            free(dir);
+            ms_free(dir);
         }
         p += n + (colon != NULL);
     }
     for (int i = 0; i < n_seen; ++i)
-        free(seen[i]);
-    free(seen);
+        free(seen[i]); /* realpath's, from malloc */
+    ms_free(seen);
     pthread_mutex_unlock(&lock);
     ms_fail(MS_OK, "%s", saved);
 }

@@ -28,7 +28,7 @@ typedef struct ms_plugin_rec {
     } vt;
 } ms_plugin_rec;
 
-/* Open and check one file. On success *out is a new record (malloc'd);
+/* Open and check one file. On success *out is a new record (ms_malloc'd: ms_free it);
  * on failure the library is dlclose()d and the error sentence names the
  * file (and the symbol) and what is wrong. */
 ms_status ms_plugin_open(const char *path, ms_plugin_rec **out);
@@ -46,7 +46,7 @@ const char *ms_plugin_kind_name(uint32_t kind);
 ms_status ms_plugin_find(const char *part, const char *name, uint32_t kind,
                          const ms_plugin_rec **out);
 
-/* The search path as a colon-separated list (malloc'd; NULL when out of
+/* The search path as a colon-separated list (ms_malloc'd, ms_free it; NULL when out of
  * memory): the directories of `env` (MODESPLIT_PLUGIN_PATH, may be NULL),
  * then the install's plugin directory derived from `object_path` (the file
  * holding libmodesplit's code: <dir>/modesplit/plugins for a shared

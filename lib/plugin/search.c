@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "core/internal.h"
 #include "plugin/registry.h"
 
 typedef struct buf {
@@ -21,7 +22,7 @@ static void put(buf *b, const char *s, size_t n)
         return;
     if (b->len + n + 1 > b->cap) {
         size_t cap = (b->len + n + 1) * 2;
-        char *t = realloc(b->s, cap);
+        char *t = ms_realloc(b->s, cap);
         if (!t) {
             b->oom = 1;
             return;
@@ -71,7 +72,7 @@ char *ms_plugin_compose_search_path(const char *env, const char *object_path,
     if (build_dir)
         put_dir(&b, build_dir, strlen(build_dir));
     if (b.oom) {
-        free(b.s);
+        ms_free(b.s);
         return NULL;
     }
     return b.s;

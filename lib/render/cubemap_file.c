@@ -16,8 +16,11 @@
 static const char *const short_names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
 static const char *const long_names[6] = {"posx", "negx", "posy", "negy", "posz", "negz"};
 
-/* Reads a PNG as RGBA8; *w, *h its size. */
-static ms_status read_png(const char *path, unsigned char **out, int *w, int *h)
+/* Reads a PNG as RGBA8; *w, *h its size. The size in the header is
+ * checked against max_w x max_h before anything is decoded (a small PNG
+ * can declare faces of gigabytes). */
+static ms_status read_png(const char *path, int max_w, int max_h, unsigned char **out, int *w,
+                          int *h)
 {
     png_image img;
     memset(&img, 0, sizeof img);
@@ -34,13 +37,13 @@ static ms_status read_png(const char *path, unsigned char **out, int *w, int *h)
         png_image_free(&img);
         return st;
     }
-    if (img.width < 1 || img.height < 1 || img.width > 6 * MAX_FACE ||
-        img.height > 6 * MAX_FACE) {
+    if (img.width < 1 || img.height < 1 || img.width > (unsigned)max_w ||
+        img.height > (unsigned)max_h) {
         png_image_free(&img);
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: cubemap \"%s\" is %u x %u pixels; faces may be at most %d "
-                       "texels a side",
-                       path, (unsigned)img.width, (unsigned)img.height, MAX_FACE);
+                       "render: cubemap \"%s\" is %u x %u pixels (at most %d x %d here); faces "
+                       "may be at most %d texels a side",
+                       path, (unsigned)img.width, (unsigned)img.height, max_w, max_h, MAX_FACE);
     }
     img.format = PNG_FORMAT_RGBA;
     unsigned char *px = ms_alloc(PNG_IMAGE_SIZE(img));
@@ -80,7 +83,7 @@ static ms_status load_dir(const char *dir, ms_cubemap *out)
                            "needs six faces px nx py ny pz nz",
                            dir, short_names[f], long_names[f]);
         int w, h;
-        ms_status st = read_png(path, &out->face[f], &w, &h);
+        ms_status st = read_png(path, MAX_FACE, MAX_FACE, &out->face[f], &w, &h);
         if (st != MS_OK)
             return st;
         if (w != h || (f > 0 && w != out->size))
@@ -97,7 +100,7 @@ static ms_status load_strip(const char *path, ms_cubemap *out)
 {
     unsigned char *px;
     int w, h;
-    ms_status st = read_png(path, &px, &w, &h);
+    ms_status st = read_png(path, MAX_FACE, 6 * MAX_FACE, &px, &w, &h);
     if (st != MS_OK)
         return st;
     if (h != 6 * w || w > MAX_FACE) {

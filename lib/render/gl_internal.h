@@ -28,7 +28,6 @@ typedef struct ms_gl_program {
  * carries the compiler's or linker's log. MS_ERR_PLUGIN on failure. */
 ms_status ms_gl_program_build(const char *what, const char *vs, const char *fs,
                               ms_gl_program *out);
-void ms_gl_program_free(ms_gl_program *p);
 /* The table a shader plugin sets its uniforms through (bound program). */
 ms_shader_uniforms ms_gl_uniform_table(ms_gl_program *p);
 

@@ -296,6 +296,11 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
 
 ms_status ms_renderer_create(const ms_scene *sc, ms_renderer **out)
 {
+    return ms_renderer_create_from_scene(sc, out);
+}
+
+ms_status ms_renderer_create_from_scene(const ms_scene *sc, ms_renderer **out)
+{
     ms_status st;
     if ((st = ms_check_not_null(PART, "out", out)) != MS_OK)
         return st;
@@ -454,6 +459,11 @@ ms_status ms_renderer_write_png(const ms_renderer *r, const char *path)
 }
 
 void ms_renderer_stats(const ms_renderer *r, ms_render_stats *out)
+{
+    ms_renderer_get_stats(r, out);
+}
+
+void ms_renderer_get_stats(const ms_renderer *r, ms_render_stats *out)
 {
     size_t size = ms_struct_out(out, MS_SIZES_RENDER_STATS, PART);
     if (!size)

@@ -16,6 +16,7 @@ typedef struct ms_scene_ctx {
     size_t len;
     ms_scene_pathelem path[MS_SCENE_MAX_DEPTH];
     int depth;
+    const char *dir;  /* the scene file's folder with its '/', "" when parsed */
 } ms_scene_ctx;
 
 /* Fail with "file:line:col: a.b[2].c: <message>", at the place the current

@@ -88,7 +88,7 @@ static ms_status parse(const char *text, size_t len, const char *file, const cha
         return ms_fail(MS_ERR_PARSE, "%s:%d:%d: JSON syntax error: %s", file, line,
                        col < 1 ? 1 : col, err.text);
     }
-    ms_scene_ctx c = {.file = file, .text = sc->text, .len = len, .depth = 0};
+    ms_scene_ctx c = {.file = file, .text = sc->text, .len = len, .depth = 0, .dir = dir};
     ms_status st = ms_scene_read_sections(&c, root, sc, dir, default_name);
     json_decref(root);
     if (st != MS_OK) {
@@ -131,7 +131,7 @@ ms_status ms_scene_load(const char *path, ms_scene **out)
                 break;
             }
             size_t ncap = cap ? 2 * cap : 65536;
-            char *nb = realloc(buf, ncap);
+            char *nb = ms_realloc(buf, ncap);
             if (!nb) {
                 st = ms_fail(MS_ERR_OUT_OF_MEMORY, "%s: out of memory reading the scene", path);
                 break;
@@ -166,7 +166,7 @@ ms_status ms_scene_load(const char *path, ms_scene **out)
         ms_free(dir);
         ms_free(name);
     }
-    free(buf);
+    ms_free(buf);
     return st;
 }
 

@@ -94,7 +94,7 @@ static int have_plugins_of_kind(const char *kind)
     return 0;
 }
 
-ms_status ms_scene_check_shader(ms_scene_ctx *c, const char *name)
+static ms_status check_shader(ms_scene_ctx *c, const char *name)
 {
     ms_status st = MS_OK;
     const ms_plugin_rec *rec;
@@ -151,6 +151,18 @@ static ms_status read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
     TRY(read_path(c, o, "path", 3, &s->path));
     TRY(ms_scene_get_bool(c, o, "surface_mask", 1, &s->surface_mask));
     s->kind = dup_string(kind);
+    /* a file a shape reads (the terrain's "png") is relative to the scene
+     * file's folder, as the cubemap is, not to the working directory */
+    json_t *png = params ? json_object_get(params, "png") : NULL;
+    if (json_is_string(png) && json_string_value(png)[0] != '/' && c->dir && c->dir[0]) {
+        size_t n = strlen(c->dir) + strlen(json_string_value(png)) + 1;
+        char *full = ms_malloc(n);
+        if (!full)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for a shape");
+        snprintf(full, n, "%s%s", c->dir, json_string_value(png));
+        json_object_set_new(params, "png", json_string(full));
+        ms_free(full);
+    }
     char *text = params ? json_dumps(params, JSON_COMPACT) : NULL; /* malloc'ed by jansson */
     s->params_json = dup_string(text ? text : "{}");
     free(text);
@@ -406,7 +418,7 @@ static ms_status read_coupling(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     TRY(ms_scene_check_keys(c, o, keys));
     TRY(ms_scene_get_int(c, o, "n_time", 0, 0, 100000, &n_time));
     sc->n_time = (int)n_time;
-    TRY(ms_scene_get_float(c, o, "surface_from_volume", 0, 0, 100, 0, "",
+    TRY(ms_scene_get_float(c, o, "surface_from_volume", 0, 0, 1, 0, "",
                            &sc->couple_surface_from_volume));
     TRY(ms_scene_get_float(c, o, "volume_from_surface", 0, 0, 1, 0, "",
                            &sc->couple_volume_from_surface));
@@ -665,7 +677,7 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
     r->width = (int)w;
     r->height = (int)h;
     TRY(ms_scene_get_string(c, o, "shader", "water", &shader));
-    TRY(ms_scene_check_shader(c, shader));
+    TRY(check_shader(c, shader));
     TRY(ms_scene_get_string(c, o, "cubemap", "builtin", &cubemap));
     r->shader = dup_string(shader);
     if (strcmp(cubemap, "builtin") == 0) {

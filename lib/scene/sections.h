@@ -13,7 +13,5 @@
 ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir,
                                  const char *default_name);
 
-/* A render.shader value must name a shader plugin. */
-ms_status ms_scene_check_shader(ms_scene_ctx *c, const char *name);
 
 #endif

@@ -21,7 +21,7 @@ ms_status ms_shape_create(const char *kind, const char *params_json, ms_shape **
     const ms_plugin_rec *rec;
     if ((st = ms_plugin_find("shape", kind, MS_PLUGIN_SHAPE, &rec)) != MS_OK)
         return st;
-    ms_shape *s = calloc(1, sizeof *s);
+    ms_shape *s = ms_alloc_array(1, sizeof *s);
     if (!s)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "shape %s: out of memory", kind);
     s->plugin = rec;
@@ -31,7 +31,7 @@ ms_status ms_shape_create(const char *kind, const char *params_json, ms_shape **
     char err[512] = "";
     int rc = s->vt->create(params_json, &s->self, err, sizeof err);
     if (rc != MS_PLUGIN_OK) {
-        free(s);
+        ms_free(s);
         err[sizeof err - 1] = '\0';
         ms_status code = ms_plugin_status(rc);
         return ms_fail(code, "shape %s: %s", kind,
@@ -46,7 +46,7 @@ void ms_shape_destroy(ms_shape *s)
     if (!s)
         return;
     s->vt->destroy(s->self);
-    free(s);
+    ms_free(s);
 }
 
 ms_status ms_shape_set_pose(ms_shape *s, const float pos[3], const float vel[3])

@@ -112,6 +112,18 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
         if (!sim->drop_order)
             return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory for %d drops", sc->ndrops);
         sim->own_effects_bytes += (size_t)sc->ndrops * sizeof *sim->drop_order;
+        /* every drop is checked now, as ms_surface_add_drop will check it
+         * when it falls: `modesplit check` then refuses what `run` would
+         * refuse at a later frame (i15) */
+        const float extent = (float)MS_MAX(sim->snx, sim->sny) * sim->sdx;
+        for (int i = 0; i < sc->ndrops; ++i) {
+            const float r = sc->drops[i].radius;
+            if (!isfinite(r) || !(r > 0) || r > extent)
+                return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                               "sim: scene drop %d (at t = %g s) has radius %g m, outside (0, "
+                               "%g] m (the wave grid's extent)",
+                               i, (double)sc->drops[i].time, (double)r, (double)extent);
+        }
         for (int i = 0; i < sc->ndrops; ++i) {
             int k = i;
             while (k > 0 && sc->drops[sim->drop_order[k - 1]].time > sc->drops[i].time) {

@@ -40,6 +40,7 @@
 #define MS_SIM_INTERNAL_H
 
 #include <pthread.h>
+#include <stdatomic.h>
 
 #include "core/internal.h"
 #include "modesplit/shape.h"
@@ -151,6 +152,7 @@ struct ms_sim {
     float dt_cur;            /* s, frame_dt of the call running */
     int primed;              /* H_0 and the particle copy of t_0 taken */
     int failed;
+    _Atomic int busy;     /* a thread is in ms_sim_step (one thread per handle) */
     char fail_msg[MS_SIM_ERR_LEN];
     ms_status fail_status;
 
@@ -192,7 +194,6 @@ static inline int ms_sim_shape_dynamic(const ms_sim_shape *sh)
 int ms_sim_motion_active(const ms_scene_motion *p, double t);
 void ms_sim_volume_task(void *task);
 void ms_sim_surface_task(void *task);
-ms_status ms_sim_volume_grab(ms_sim *sim, int slot);
 /* Phase A of the extraction into snap[slot] and the particle copy (V). */
 ms_status ms_sim_volume_snap(ms_sim *sim, int slot);
 /* Phase B into hfield[slot] and the surface flow of slot (S). */

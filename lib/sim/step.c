@@ -76,11 +76,37 @@ static void run_tasks(ms_sim *sim, ms_sim_task *v, ms_sim_task *s)
     }
 }
 
+static ms_status step_frame(ms_sim *sim, float frame_dt);
+
 ms_status ms_sim_step(ms_sim *sim, float frame_dt)
 {
     ms_status st = ms_check_not_null("sim", "sim", sim);
     if (st != MS_OK)
         return st;
+    /* one thread per handle (sim.h): a second thread caught stepping the
+     * same sim is refused, not let in to free what the first one reads */
+    if (atomic_exchange(&sim->busy, 1))
+        return ms_fail(MS_ERR_STATE,
+                       "sim: ms_sim_step while another call is stepping this sim; a sim is "
+                       "used by one thread at a time");
+    st = step_frame(sim, frame_dt);
+    atomic_store(&sim->busy, 0);
+    return st;
+}
+
+void ms_sim_cancel(ms_sim *sim)
+{
+    if (!sim)
+        return;
+    if (sim->volume)
+        ms_volume_cancel(sim->volume);
+    if (sim->surface)
+        ms_surface_cancel(sim->surface);
+}
+
+static ms_status step_frame(ms_sim *sim, float frame_dt)
+{
+    ms_status st = MS_OK;
     if (sim->failed)
         return ms_fail(MS_ERR_STATE, "sim: a previous step failed (%s); destroy the sim",
                        sim->fail_msg);
@@ -130,6 +156,9 @@ ms_status ms_sim_set_tasks(ms_sim *sim, ms_enqueue_task_fn *enqueue_task,
                        "sim: enqueue_task and finish_task must both be set or both be NULL");
     if (enqueue_task)
         ms_sim_worker_stop(sim);
+    if (sim->volume &&
+        (st = ms_volume_set_tasks(sim->volume, enqueue_task, finish_task, user_task_context)))
+        return st;
     sim->enqueue = enqueue_task;
     sim->finish = finish_task;
     sim->user_ctx = user_task_context;

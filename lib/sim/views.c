@@ -126,7 +126,12 @@ ms_surface *ms_sim_surface(ms_sim *sim)
     return sim ? sim->surface : NULL;
 }
 
-void ms_sim_stats(const ms_sim *sim, ms_stats *user)
+void ms_sim_stats(const ms_sim *sim, ms_stats *out)
+{
+    ms_sim_get_stats(sim, out);
+}
+
+void ms_sim_get_stats(const ms_sim *sim, ms_stats *user)
 {
     size_t size = ms_struct_out(user, MS_SIZES_STATS, "sim");
     if (!size)

@@ -113,7 +113,7 @@ static ms_status apply_drag(ms_sim *sim, const ms_extract_snap *s, const float p
 }
 
 /* Copy the particles (stable order) into slot `slot`, structure of arrays. */
-ms_status ms_sim_volume_grab(ms_sim *sim, int slot)
+static ms_status volume_grab(ms_sim *sim, int slot)
 {
     int n = ms_volume_count(sim->volume);
     if (n > sim->pcap[slot]) {
@@ -160,7 +160,7 @@ ms_status ms_sim_volume_grab(ms_sim *sim, int slot)
 ms_status ms_sim_volume_snap(ms_sim *sim, int slot)
 {
     ms_status st = ms_volume_extract_snap(sim->volume, &sim->snap[slot]);
-    return st == MS_OK ? ms_sim_volume_grab(sim, slot) : st;
+    return st == MS_OK ? volume_grab(sim, slot) : st;
 }
 
 /* Phase B of the extraction from snap[slot] into hfield[slot]; with

@@ -62,7 +62,7 @@ ms_status ms_surface_add_disturber(ms_surface *s, const ms_disturber_desc *user,
         return st;
     if (s->ndist == s->cap_dist) {
         int cap = s->cap_dist ? 2 * s->cap_dist : 4;
-        disturber *nd = realloc(s->dist, (size_t)cap * sizeof *nd);
+        disturber *nd = ms_realloc(s->dist, (size_t)cap * sizeof *nd);
         if (!nd)
             return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for a disturber");
         s->dist = nd;
@@ -102,7 +102,7 @@ ms_status ms_surface_move_disturber(ms_surface *s, int id, float x, float y, flo
     if ((st = check_desc(s, &d)))
         return st;
     b->d = d;
-    free(b->path);
+    ms_free(b->path);
     b->path = NULL;
     b->npath = 0;
     return MS_OK;
@@ -154,11 +154,11 @@ ms_status ms_surface_set_disturber_path(ms_surface *s, int id, int npoints, cons
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
                            "surface: path point %d has a non-finite coordinate %g", k / 2,
                            (double)xy[k]);
-    float *copy = malloc((size_t)npoints * 2 * sizeof *copy);
+    float *copy = ms_malloc((size_t)npoints * 2 * sizeof *copy);
     if (!copy)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for a path");
     memcpy(copy, xy, (size_t)npoints * 2 * sizeof *copy);
-    free(b->path);
+    ms_free(b->path);
     b->path = copy;
     b->npath = npoints;
     b->loop = loop != 0;
@@ -187,7 +187,7 @@ ms_status ms_surface_remove_disturber(ms_surface *s, int id)
     ms_status st = lookup(s, id, &b);
     if (st)
         return st;
-    free(b->path);
+    ms_free(b->path);
     *b = s->dist[--s->ndist];
     return MS_OK;
 }

@@ -8,10 +8,14 @@
 
 #define PART "surface"
 #define MIN_RADIUS_CELLS 2.0f
+/* Rain's work per second is bounded: at most this many drops a second
+ * over the whole grid (1700 a frame at 60 Hz, ~1.7e4 in a 10 s hitch), so
+ * no in-range rate over a large grid makes a frame endless. */
+#define MAX_RAIN_DROPS_PER_S 1e5
 
 /* Add the bump to f^n and f^{n-1} alike (h, not v): a displacement at rest. Cells are
  * wrapped on a periodic grid and clipped otherwise; solid cells stay 0. */
-void ms_surface_splat(ms_surface *s, float x, float y, float radius, float amplitude)
+static void splat(ms_surface *s, float x, float y, float radius, float amplitude)
 {
     const float dx = s->desc.dx;
     const float rmin = MIN_RADIUS_CELLS * dx;
@@ -64,7 +68,7 @@ ms_status ms_surface_add_drop(ms_surface *s, float x, float y, float radius, flo
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "surface: drop radius %g m is outside (0, %g] m (the grid's extent)",
                        (double)radius, (double)extent);
-    ms_surface_splat(s, x, y, radius, amplitude);
+    splat(s, x, y, radius, amplitude);
     return MS_OK;
 }
 
@@ -95,6 +99,13 @@ ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *user)
         (st = ms_check_range(PART, "rain radius", rain->radius, 1e-9, extent, "m")) ||
         (st = ms_check_finite(PART, "rain amplitude", rain->amplitude)))
         return st;
+    const double area = (double)s->nx * s->desc.dx * ((double)s->ny * s->desc.dx);
+    if ((double)rain->rate * area > MAX_RAIN_DROPS_PER_S)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "surface: rain rate %g drops/m^2/s over the grid's %g m^2 is %g drops "
+                       "a second; at most %g (rate <= %g here)",
+                       (double)rain->rate, area, rain->rate * area, MAX_RAIN_DROPS_PER_S,
+                       MAX_RAIN_DROPS_PER_S / area);
     s->rain = *rain;
     return MS_OK;
 }
@@ -111,6 +122,6 @@ void ms_surface_rain(ms_surface *s, float dt)
         float y = (float)(ms_rng_uniform(&s->rng) * ly);
         float r = s->rain.radius * (0.5f + 0.5f * ms_rng_uniform(&s->rng));
         float a = s->rain.amplitude * (0.5f + 0.5f * ms_rng_uniform(&s->rng));
-        ms_surface_splat(s, x, y, r, a);
+        splat(s, x, y, r, a);
     }
 }

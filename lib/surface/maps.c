@@ -20,7 +20,7 @@ static int sponge_width(const ms_surface *s)
 }
 
 /* Ghost speeds carry the boundary condition (see surface_impl.h). */
-void ms_surface_set_ghost_speeds(ms_surface *s)
+static void set_ghost_speeds(ms_surface *s)
 {
     const int nx = s->nx, ny = s->ny;
     float *c = s->speed;
@@ -76,7 +76,7 @@ static void rebuild_speed(ms_surface *s)
         }
     }
     s->max_speed = maxc;
-    ms_surface_set_ghost_speeds(s);
+    set_ghost_speeds(s);
     s->coef_dt = 0.0f; /* the coefficients are stale */
 }
 

@@ -66,7 +66,7 @@ ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out)
         return st;
     d = &desc;
 
-    ms_surface *s = calloc(1, sizeof *s);
+    ms_surface *s = ms_alloc_array(1, sizeof *s);
     if (!s)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for the handle");
     s->desc = *d;
@@ -108,9 +108,10 @@ void ms_surface_destroy(ms_surface *s)
     ms_free(s->solid);
     ms_free(s->view);
     for (int i = 0; i < s->ndist; ++i)
-        free(s->dist[i].path);
-    free(s->dist);
-    free(s);
+        ms_free(s->dist[i].path);
+    ms_free(s->dist);
+    ms_free(s->level_xy);
+    ms_free(s);
 }
 
 void ms_surface_zero_solid(ms_surface *s, float *field)
@@ -212,6 +213,12 @@ void ms_surface_get_info(const ms_surface *s, ms_surface_info *user)
     for (int i = 0; i < s->ndist; ++i)
         out->bytes += (size_t)s->dist[i].npath * 2 * sizeof(float);
     ms_struct_write(user, &info, size);
+}
+
+void ms_surface_cancel(ms_surface *s)
+{
+    if (s)
+        atomic_store(&s->cancel, 1);
 }
 
 ms_surface_desc ms_surface_get_desc(const ms_surface *s)

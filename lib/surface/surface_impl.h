@@ -20,6 +20,8 @@
 #ifndef MS_SURFACE_IMPL_H
 #define MS_SURFACE_IMPL_H
 
+#include <stdatomic.h>
+
 #include "core/internal.h"
 #include "modesplit/surface.h"
 
@@ -65,6 +67,10 @@ struct ms_surface {
 
     disturber *dist;
     int ndist, cap_dist, next_id;
+    float *level_xy;      /* disturber positions at each fused sub-step
+                             (wave.c), kept so a step allocates nothing */
+    int level_cap;        /* disturbers level_xy has room for */
+    _Atomic int cancel;   /* ms_surface_cancel: stop before the next block */
 };
 
 #define MS_SURFACE_ORIGIN 15
@@ -80,12 +86,10 @@ static inline size_t ms_surface_at(const ms_surface *s, int x, int y)
 }
 
 /* maps.c */
-void ms_surface_set_ghost_speeds(ms_surface *s);
 void ms_surface_refresh_coefficients(ms_surface *s, float dt);
 /* wave.c */
 float ms_surface_stable_dt(const ms_surface *s);
 /* drops.c */
-void ms_surface_splat(ms_surface *s, float x, float y, float radius, float amplitude);
 void ms_surface_rain(ms_surface *s, float dt);
 /* disturber.c */
 void ms_surface_disturbers_advance(ms_surface *s, float dt);

@@ -165,14 +165,21 @@ static void block(ms_surface *s, int K, const float *level_xy)
  * can give early, so it runs one step a sweep. */
 static ms_status advance(ms_surface *s, float dt, int n)
 {
-    float *level_xy = NULL;
-    if (s->ndist) {
-        level_xy = malloc((size_t)MAX_LEVELS * 2 * s->ndist * sizeof *level_xy);
-        if (!level_xy)
+    if (s->ndist > s->level_cap) { /* only after disturbers were added */
+        float *t = ms_malloc((size_t)MAX_LEVELS * 2 * s->cap_dist * sizeof *t);
+        if (!t)
             return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for disturbers");
+        ms_free(s->level_xy);
+        s->level_xy = t;
+        s->level_cap = s->cap_dist;
     }
+    float *level_xy = s->level_xy;
     const int periodic = s->desc.boundary == MS_BOUNDARY_PERIODIC;
     while (n > 0) {
+        if (atomic_exchange(&s->cancel, 0))
+            return ms_fail(MS_ERR_CANCELED,
+                           "surface: step canceled with %d sub-steps left at t = %g s", n,
+                           s->time);
         const int K = periodic ? 1 : MS_MIN(n, MAX_LEVELS);
         /* where each disturber is at each step of the block */
         for (int L = 0; L < K && s->ndist; ++L) {
@@ -186,7 +193,6 @@ static ms_status advance(ms_surface *s, float dt, int n)
         s->substeps += K;
         n -= K;
     }
-    free(level_xy);
     return MS_OK;
 }
 

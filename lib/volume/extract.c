@@ -69,12 +69,15 @@ static ms_status scratch(void **p, size_t *cap, size_t need, size_t size)
 {
     if (need <= *cap)
         return MS_OK;
-    void *q = ms_alloc_array(need, size);
+    /* half again what is needed: a growing liquid reallocates a few times,
+     * not every frame (i15: steps allocate only at a new high-water mark) */
+    size_t grown = need + need / 2;
+    void *q = ms_alloc_array(grown, size);
     if (!q)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for height extraction");
     ms_free(*p);
     *p = q;
-    *cap = need;
+    *cap = grown;
     return MS_OK;
 }
 

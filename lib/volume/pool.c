@@ -2,7 +2,11 @@
  * into as many contiguous chunks as there are threads. Every chunk does the
  * same per-particle arithmetic as the sequential loop (gathers, no shared
  * sums), so the results are the same bytes for any thread count; only
- * order-free reductions (max) are combined across chunks. */
+ * order-free reductions (max) are combined across chunks.
+ * When an engine gives its task interface (ms_volume_set_tasks), the pool
+ * stops its own threads and runs chunks 1.. as the engine's tasks
+ * (enqueue, then finish each), chunk 0 on the calling thread: the same
+ * split, the same bytes. */
 #include <pthread.h>
 
 #include "volume/volume_impl.h"
@@ -10,6 +14,7 @@
 typedef struct worker_arg {
     struct ms_vpool *pool;
     int part;
+    unsigned long start_gen; /* the loops before this worker started */
 } worker_arg;
 
 struct ms_vpool {
@@ -25,6 +30,11 @@ struct ms_vpool {
     ms_vpool_fn *fn;
     void *ctx;
     int n;
+    /* the engine's tasks, or NULL: the pool's own threads */
+    ms_enqueue_task_fn *enqueue;
+    ms_finish_task_fn *finish;
+    void *user;
+    void *handle[MS_VOLUME_MAX_THREADS];
 };
 
 static void chunk(int n, int parts, int part, int *b, int *e)
@@ -38,7 +48,7 @@ static void *worker(void *argp)
 {
     worker_arg *a = argp;
     ms_vpool *p = a->pool;
-    unsigned long seen = 0;
+    unsigned long seen = a->start_gen;
     for (;;) {
         pthread_mutex_lock(&p->lock);
         while (p->generation == seen && !p->quit)
@@ -63,6 +73,32 @@ static void *worker(void *argp)
     }
 }
 
+static ms_status start_workers(ms_vpool *p)
+{
+    p->quit = 0;
+    for (int t = 1; t < p->threads; ++t) {
+        p->arg[t].pool = p;
+        p->arg[t].part = t;
+        p->arg[t].start_gen = p->generation;
+        if (pthread_create(&p->tid[t], NULL, worker, &p->arg[t]) != 0)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "volume: could not start worker thread %d of %d", t, p->threads);
+        p->started = t;
+    }
+    return MS_OK;
+}
+
+static void stop_workers(ms_vpool *p)
+{
+    pthread_mutex_lock(&p->lock);
+    p->quit = 1;
+    pthread_cond_broadcast(&p->go);
+    pthread_mutex_unlock(&p->lock);
+    for (int t = 1; t <= p->started; ++t)
+        pthread_join(p->tid[t], NULL);
+    p->started = 0;
+}
+
 ms_status ms_vpool_create(int threads, ms_vpool **out)
 {
     *out = NULL;
@@ -75,17 +111,27 @@ ms_status ms_vpool_create(int threads, ms_vpool **out)
     pthread_mutex_init(&p->lock, NULL);
     pthread_cond_init(&p->go, NULL);
     pthread_cond_init(&p->done, NULL);
-    for (int t = 1; t < threads; ++t) {
-        p->arg[t].pool = p;
-        p->arg[t].part = t;
-        if (pthread_create(&p->tid[t], NULL, worker, &p->arg[t]) != 0) {
-            ms_vpool_destroy(p);
-            return ms_fail(MS_ERR_OUT_OF_MEMORY,
-                           "volume: could not start worker thread %d of %d", t, threads);
-        }
-        p->started = t;
+    ms_status st = start_workers(p);
+    if (st != MS_OK) {
+        ms_vpool_destroy(p);
+        return st;
     }
     *out = p;
+    return MS_OK;
+}
+
+ms_status ms_vpool_set_tasks(ms_vpool *p, ms_enqueue_task_fn *enqueue, ms_finish_task_fn *finish,
+                             void *user)
+{
+    if (!p)
+        return MS_OK; /* one thread: nothing runs in parallel */
+    if (enqueue && !p->enqueue)
+        stop_workers(p);
+    p->enqueue = enqueue;
+    p->finish = finish;
+    p->user = user;
+    if (!enqueue && !p->started)
+        return start_workers(p);
     return MS_OK;
 }
 
@@ -93,16 +139,41 @@ void ms_vpool_destroy(ms_vpool *p)
 {
     if (!p)
         return;
-    pthread_mutex_lock(&p->lock);
-    p->quit = 1;
-    pthread_cond_broadcast(&p->go);
-    pthread_mutex_unlock(&p->lock);
-    for (int t = 1; t <= p->started; ++t)
-        pthread_join(p->tid[t], NULL);
+    stop_workers(p);
     pthread_cond_destroy(&p->go);
     pthread_cond_destroy(&p->done);
     pthread_mutex_destroy(&p->lock);
     ms_free(p);
+}
+
+/* One chunk as an engine task. */
+static void task_part(void *argp)
+{
+    worker_arg *a = argp;
+    ms_vpool *p = a->pool;
+    int b, e;
+    chunk(p->n, p->threads, a->part, &b, &e);
+    if (e > b)
+        p->fn(p->ctx, a->part, b, e);
+}
+
+static void run_on_tasks(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n)
+{
+    p->fn = fn;
+    p->ctx = ctx;
+    p->n = n;
+    for (int t = 1; t < p->threads; ++t) {
+        p->arg[t].pool = p;
+        p->arg[t].part = t;
+        p->handle[t] = p->enqueue(task_part, &p->arg[t], p->user); /* NULL: ran inline */
+    }
+    int b, e;
+    chunk(n, p->threads, 0, &b, &e);
+    if (e > b)
+        fn(ctx, 0, b, e);
+    for (int t = 1; t < p->threads; ++t)
+        if (p->handle[t])
+            p->finish(p->handle[t], p->user);
 }
 
 int ms_vpool_threads(const ms_vpool *p)
@@ -118,6 +189,10 @@ void ms_vpool_run(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n)
      * calling thread then cover everything, with the same arithmetic. */
     if (!p || n < 256) {
         fn(ctx, 0, 0, n);
+        return;
+    }
+    if (p->enqueue) {
+        run_on_tasks(p, fn, ctx, n);
         return;
     }
     pthread_mutex_lock(&p->lock);

@@ -14,6 +14,8 @@
  */
 #include <math.h>
 
+#include <stdatomic.h>
+
 #include "volume/volume_impl.h"
 
 typedef struct bounds_ctx {
@@ -106,9 +108,25 @@ ms_status ms_volume_step(ms_volume *v, float dt)
     const float lambda = v->desc.courant, h = v->K.h;
     double rest = dt, tau = 0.0;
     long taken = 0;
+    /* Known before any work (i15): no state allows a sub-step longer than
+     * the CFL bound at rest, lambda h / c0 (the sound speed never falls
+     * below c0 and speeds add to it), so a step needing more than
+     * max_substeps of those is refused at once, not after max_substeps. */
+    const double at_rest = (double)lambda * h / v->c0, least = ceil(dt / at_rest);
+    if (v->n > 0 && least > v->desc.max_substeps)
+        return ms_fail(MS_ERR_UNSTABLE,
+                       "volume: a step of %g s needs at least %.3g sub-steps (courant %g: at "
+                       "most %g s each even at rest), more than max_substeps %d",
+                       dt, least, (double)lambda, at_rest, v->desc.max_substeps);
     if (dt > 0.0f)
         ms_volume_colliders_begin(v, dt);
     while (rest > 0.0 && v->n > 0) {
+        if (atomic_exchange(&v->cancel, 0)) {
+            st = ms_fail(MS_ERR_CANCELED,
+                         "volume: step canceled after %ld sub-steps at t = %g s (the state "
+                         "is valid at that time)", taken, v->time);
+            break;
+        }
         ms_volume_grid_build(v);
         ms_volume_boundary(v, tau);
         st = ms_volume_density(v);

@@ -3,6 +3,8 @@
 #include <math.h>
 #include <string.h>
 
+#include <stdatomic.h>
+
 #include "volume/volume_impl.h"
 #include "core/struct_sizes.h"
 
@@ -388,6 +390,23 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
         out->bytes += (v->lists[p].cap + v->ghosts[p].cap) * (sizeof(int) + sizeof(float));
     out->threads = ms_vpool_threads(v->pool);
     ms_struct_write(user, &info, size);
+}
+
+ms_status ms_volume_set_tasks(ms_volume *v, ms_enqueue_task_fn *enqueue_task,
+                              ms_finish_task_fn *finish_task, void *user_task_context)
+{
+    if (!v)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: volume is NULL");
+    if ((enqueue_task == NULL) != (finish_task == NULL))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: enqueue_task and finish_task must both be set or both be NULL");
+    return ms_vpool_set_tasks(v->pool, enqueue_task, finish_task, user_task_context);
+}
+
+void ms_volume_cancel(ms_volume *v)
+{
+    if (v)
+        atomic_store(&v->cancel, 1);
 }
 
 ms_volume_desc ms_volume_get_desc(const ms_volume *v)

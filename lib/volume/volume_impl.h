@@ -71,6 +71,10 @@ typedef struct ms_vpool ms_vpool;
 typedef void ms_vpool_fn(void *ctx, int part, int begin, int end);
 ms_status ms_vpool_create(int threads, ms_vpool **out);
 void ms_vpool_destroy(ms_vpool *p);
+/* Run the chunks as the engine's tasks (both set), or on the pool's own
+ * threads again (both NULL). Between loops only. */
+ms_status ms_vpool_set_tasks(ms_vpool *p, ms_enqueue_task_fn *enqueue, ms_finish_task_fn *finish,
+                             void *user);
 /* Split [0, n) into `parts` contiguous chunks (parts <= threads of the
  * pool, or 1 with a NULL pool) and run fn on each; returns when all are
  * done. The chunk bounds depend only on n and parts. */
@@ -163,6 +167,7 @@ struct ms_volume {
     int in_step;
     ms_action actions[MS_VOLUME_MAX_ACTIONS];
     int nactions;
+    _Atomic int cancel;         /* ms_volume_cancel: stop at the next sub-step */
 
     /* coupling from the waves: the previous wave field */
     float *wave_prev;

@@ -8,7 +8,8 @@
  *     png           grey-scale PNG, 8 or 16 bit; black is zmin, white zmax;
  *                   the image's top row is the y = sy edge (a map seen
  *                   from above); a relative path is taken from the current
- *                   directory;
+ *                   directory (a scene file's is made relative to the
+ *                   scene file's folder before it gets here);
  *   {"heights": [[h00, h10, ...], [h01, h11, ...], ...], "size": ..., "base": ...}
  *     heights       rows of heights (m), row j at y = j sy/(ny-1), sample i
  *                   at x = i sx/(nx-1); at least 2 x 2;

@@ -98,7 +98,7 @@ int main(int argc, char **argv)
                         return 1;
                     }
                     double dt = bench_now() - t0;
-                    ms_renderer_stats(r, &st);
+                    ms_renderer_get_stats(r, &st);
                     if (f >= warm) {
                         int i = f - warm;
                         t[i] = 1e3 * dt;

@@ -92,7 +92,7 @@ static int run(const ms_scene *sc, int threads, int frames_hint, int repeats, do
     out->repeats = repeats;
     for (int r = 0; r < repeats; ++r) {
         ms_stats a = ms_stats_init(), b = ms_stats_init();
-        ms_sim_stats(sim, &a);
+        ms_sim_get_stats(sim, &a);
         double s0 = bench_now();
         for (int f = 0; f < frames; ++f)
             if (ms_sim_step(sim, dt) != MS_OK) {
@@ -101,7 +101,7 @@ static int run(const ms_scene *sc, int threads, int frames_hint, int repeats, do
                 return 1;
             }
         double secs = bench_now() - s0;
-        ms_sim_stats(sim, &b);
+        ms_sim_get_stats(sim, &b);
         out->fps[r] = frames / secs;
         out->ms[0][r] = secs * 1e3 / frames;
         out->ms[1][r] = (b.volume_ms - a.volume_ms) / frames;

@@ -54,7 +54,7 @@ int cmd_check(int argc, char **argv)
             continue;
         }
         ms_stats st = ms_stats_init();
-        ms_sim_stats(sim, &st);
+        ms_sim_get_stats(sim, &st);
         char fields[64], mem[32];
         printf("%s: ok: \"%s\", %.4g s in %ld frames of %.4g s, writes %s every %d frame%s, "
                "%s of state%s\n",

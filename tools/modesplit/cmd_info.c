@@ -6,6 +6,19 @@
 
 #include "tool.h"
 
+/* Strings from a run file are data, not terminal commands: control
+ * characters (ESC sequences that retitle or rewrite the terminal, CR,
+ * BEL, ...) are written as \xNN; `keep` lists the ones kept as they are. */
+static void put_escaped(const char *s, const char *keep)
+{
+    for (const unsigned char *p = (const unsigned char *)s; *p; ++p) {
+        if ((*p < 0x20 && !strchr(keep, *p)) || *p == 0x7f)
+            printf("\\x%02x", *p);
+        else
+            putchar(*p);
+    }
+}
+
 static void field_line(ms_reader *r, unsigned bit, const char *name, long frames)
 {
     ms_grid g;
@@ -77,7 +90,7 @@ int cmd_info(int argc, char **argv)
     }
     if (scene_only) {
         const char *s = ms_reader_scene(r);
-        fputs(s, stdout);
+        put_escaped(s, "\n\t");
         if (*s && s[strlen(s) - 1] != '\n')
             fputc('\n', stdout);
         ms_reader_close(r);
@@ -85,12 +98,14 @@ int cmd_info(int argc, char **argv)
     }
     long frames = ms_reader_frames(r);
     unsigned fields = ms_reader_fields(r);
-    printf("%s: modesplit run file, format %d, written by libmodesplit %s\n", path,
-           ms_reader_format_version(r),
-           *ms_reader_library_version(r) ? ms_reader_library_version(r) : "(unknown)");
+    printf("%s: modesplit run file, format %d, written by libmodesplit ", path,
+           ms_reader_format_version(r));
+    put_escaped(*ms_reader_library_version(r) ? ms_reader_library_version(r) : "(unknown)", "");
+    printf("\n");
     const char *name = ms_reader_scene_name(r);
-    printf("  scene     %s, %zu bytes of JSON", *name ? name : "(unnamed)",
-           strlen(ms_reader_scene(r)));
+    printf("  scene     ");
+    put_escaped(*name ? name : "(unnamed)", "");
+    printf(", %zu bytes of JSON", strlen(ms_reader_scene(r)));
     double dt = ms_reader_frame_dt(r);
     if (isfinite(dt))
         printf(", frame_dt %.6g s", dt);

@@ -12,10 +12,20 @@
 #include "tool.h"
 
 static volatile sig_atomic_t stop_signal;
+static ms_sim *volatile running_sim;
 
+/* The first SIGINT/SIGTERM finishes the frame in hand; a second cancels
+ * it (ms_sim_cancel only stores atomic flags: safe in a handler), and the
+ * run still closes its file; a third ends the program at once. */
 static void on_stop(int sig)
 {
-    stop_signal = sig; /* SA_RESETHAND: a second one ends the program at once */
+    if (!stop_signal) {
+        stop_signal = sig;
+        return;
+    }
+    if (running_sim)
+        ms_sim_cancel(running_sim);
+    signal(sig, SIG_DFL);
 }
 
 static void catch_stop_signals(void)
@@ -24,7 +34,7 @@ static void catch_stop_signals(void)
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_stop;
     sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND | SA_RESTART;
+    sa.sa_flags = SA_RESTART;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
 }
@@ -145,7 +155,7 @@ static void fill_stages(const ms_sim *sim, double write_s, double png_s, long fr
                         tool_stages *s)
 {
     ms_stats st = ms_stats_init();
-    ms_sim_stats(sim, &st);
+    ms_sim_get_stats(sim, &st);
     double n = frames > 0 ? (double)frames : 1.0;
     s->volume = st.volume_ms / n;
     s->surface = st.surface_ms / n;
@@ -207,6 +217,7 @@ int cmd_run(int argc, char **argv)
     ms_grid grid;
     ms_sim_field_grid(sim, MS_FIELD_COMBINED, &grid);
 
+    running_sim = sim;
     catch_stop_signals();
     tool_progress prog;
     progress_begin(&prog, frames, o.quiet);
@@ -214,7 +225,10 @@ int cmd_run(int argc, char **argv)
     long done = 0, written = 0;
     rc = EXIT_OK;
     while (done < frames && !stop_signal) {
-        if (ms_sim_step(sim, dt) != MS_OK) {
+        ms_status step_st = ms_sim_step(sim, dt);
+        if (step_st == MS_ERR_CANCELED && stop_signal)
+            break; /* a second signal: the frame in hand is dropped */
+        if (step_st != MS_OK) {
             progress_end(&prog);
             tool_error("frame %ld: %s", done, ms_last_error());
             rc = EXIT_RUNTIME;
@@ -288,6 +302,7 @@ int cmd_run(int argc, char **argv)
     free(xmf);
     free(out);
     png_end(&png);
+    running_sim = NULL;
     ms_sim_destroy(sim);
     ms_scene_destroy(sc);
     if (stop_signal) {

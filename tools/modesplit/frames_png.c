@@ -79,7 +79,7 @@ int png_begin(tool_png *p, const char *dir, const ms_scene *sc, int preview, int
     if (!p->dir)
         return -1;
     if (!preview && ms_scene_has_render(sc)) {
-        ms_status st = ms_renderer_create(sc, &p->renderer);
+        ms_status st = ms_renderer_create_from_scene(sc, &p->renderer);
         if (st == MS_ERR_UNSUPPORTED) {
             if (!quiet)
                 tool_error("note: %s; the PNG frames are shaded-relief previews",
