@@ -594,6 +594,56 @@ START_TEST(sigint_and_sigterm_finish_the_frame_and_close_the_file)
 }
 END_TEST
 
+static double tool_clock(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+/* A frame that takes minutes (courant 1e-5: ~4e5 SPH sub-steps a frame):
+ * the first SIGTERM asks for the frame in hand to finish, the second
+ * cancels it (ms_sim_cancel), and the run still closes its file, says so
+ * and ends by the signal, in well under the frame's time. */
+START_TEST(a_second_sigterm_cancels_a_long_frame_and_closes_the_file)
+{
+    make_tmp_dir();
+    const char *scene = tmp_path("slow.json");
+    FILE *f = fopen(scene, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs("{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]},"
+          " \"volume\": {\"spacing\": 0.04, \"courant\": 1e-5, \"max_substeps\": 10000000,"
+          " \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.12]}], \"field\": [16, 16]}}",
+          f);
+    fclose(f);
+    char out[600];
+    snprintf(out, sizeof out, "%s", tmp_path("slow.h5"));
+    pid_t pid = spawn_tool((const char *[]){"run", scene, "--frames", "10", "--out", out, NULL},
+                           tmp_path("o.txt"), tmp_path("e.txt"));
+    struct timespec ts = {1, 0};
+    nanosleep(&ts, NULL);
+    kill(pid, SIGTERM);
+    nanosleep(&ts, NULL);
+    kill(pid, SIGTERM);
+    double t0 = tool_clock();
+    int status = 0;
+    while (waitpid(pid, &status, WNOHANG) == 0 && tool_clock() - t0 < 30) {
+        struct timespec poll = {0, 20000000};
+        nanosleep(&poll, NULL);
+    }
+    double waited = tool_clock() - t0;
+    if (waited >= 30)
+        kill(pid, SIGKILL), waitpid(pid, &status, 0);
+    ck_assert_msg(waited < 30, "the run did not stop after the second SIGTERM");
+    ck_assert_msg(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM, "status %d", status);
+    char *o = slurp(tmp_path("o.txt"));
+    ck_assert_msg(strstr(o, "stopped by SIGTERM"), "the run did not close its file: %s", o);
+    free(o);
+    MS_ASSERT_H5DUMP_READS(out);
+    remove_tmp_dir();
+}
+END_TEST
+
 START_TEST(unwritable_outputs_exit_1_with_a_sentence)
 {
     make_tmp_dir();
@@ -749,6 +799,7 @@ static Suite *tool_suite(void)
     tcase_set_timeout(tc, 180);
     tcase_add_test(tc, sigkill_mid_run_leaves_a_file_h5dump_and_info_read);
     tcase_add_test(tc, sigint_and_sigterm_finish_the_frame_and_close_the_file);
+    tcase_add_test(tc, a_second_sigterm_cancels_a_long_frame_and_closes_the_file);
     suite_add_tcase(s, tc);
     return s;
 }
