@@ -112,6 +112,16 @@ char *ms_strdup(const char *s)
     return p;
 }
 
+char *ms_strndup(const char *s, size_t n)
+{
+    char *p = ms_malloc(n + 1);
+    if (p) {
+        memcpy(p, s, n);
+        p[n] = '\0';
+    }
+    return p;
+}
+
 void ms_free(void *p)
 {
     if (!p)

@@ -87,6 +87,18 @@ size_t ms_struct_out(const void *user, ms_struct_sizes k, const char *part);
 /* Copy the first `size` bytes of full into user, keeping user's .size. */
 void ms_struct_write(void *user, const void *full, size_t size);
 
+/* Return the status of call if it is an error: the one early-return
+ * helper of the library (was TRY/CHECK in three files). */
+#define MS_TRY(call)                 \
+    do {                             \
+        ms_status ms_try_st_ = (call); \
+        if (ms_try_st_ != MS_OK)     \
+            return ms_try_st_;       \
+    } while (0)
+/* A NUL-terminated copy of the first n bytes of s (ms_free it); NULL when
+ * out of memory. ms_strdup (above) copies a whole string. */
+char *ms_strndup(const char *s, size_t n);
+
 /* Monotonic clock in seconds, for statistics only (never for results). */
 double ms_now(void);
 

@@ -24,13 +24,7 @@ static char **problems;
 static int n_problems, cap_problems;
 static char *search_path;
 
-static char *dup_str(const char *s)
-{
-    char *d = ms_malloc(strlen(s) + 1);
-    if (d)
-        strcpy(d, s);
-    return d;
-}
+#define dup_str ms_strdup /* lib/core */
 
 static void add_problem(const char *sentence)
 {

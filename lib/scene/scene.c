@@ -50,15 +50,7 @@ void ms_scene_destroy(ms_scene *sc)
     ms_free(sc);
 }
 
-static char *dup_n(const char *s, size_t n)
-{
-    char *d = ms_alloc(n + 1);
-    if (d) {
-        memcpy(d, s, n);
-        d[n] = '\0';
-    }
-    return d;
-}
+#define dup_n ms_strndup /* lib/core */
 
 static ms_status parse(const char *text, size_t len, const char *file, const char *path,
                        const char *dir, const char *default_name, ms_scene **out)

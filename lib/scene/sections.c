@@ -21,21 +21,8 @@
 #define MAX_SPEED 1e3 /* m/s */
 #define MAX_PARTICLES 10000000L
 
-static char *dup_string(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *d = ms_alloc(n);
-    if (d)
-        memcpy(d, s, n);
-    return d;
-}
-
-#define TRY(call)                        \
-    do {                                 \
-        ms_status try_st_ = (call);      \
-        if (try_st_ != MS_OK)            \
-            return try_st_;              \
-    } while (0)
+#define dup_string ms_strdup /* lib/core */
+#define TRY MS_TRY
 
 /* {"points": [[x, y(, z)], ...], "speed", "loop", "start"} */
 static ms_status read_path(ms_scene_ctx *c, json_t *obj, const char *key, int dim,

@@ -7,12 +7,7 @@
 #include "sim/sim_internal.h"
 #include "core/struct_sizes.h"
 
-#define TRY(call)                   \
-    do {                            \
-        ms_status try_st_ = (call); \
-        if (try_st_ != MS_OK)       \
-            return try_st_;         \
-    } while (0)
+#define TRY MS_TRY /* lib/core */
 
 ms_sim_desc ms_sim_desc_default(void)
 {
