@@ -179,6 +179,7 @@ deps:
 check: deps
 	@$(MAKE) --no-print-directory all tests
 	@$(MAKE) --no-print-directory check-headers check-exports check-readme
+	@$(MAKE) --no-print-directory check-abi
 	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS))";) \
 	skips=$(abspath $(BUILD))/skipped.txt; rm -f $$skips; \
 	pass=0; fail=0; for t in $(TESTS); do \
@@ -207,6 +208,27 @@ check-exports: $(SHARED)
 # The README's C example compiles and runs.
 check-readme: $(STATIC)
 	@CC="$(CC) $(LDSAN)" tests/check_readme.sh $(BUILD)
+
+# ---- the ABI listing and the Python package (issue 13) -----------------------
+# tools/abi/abi.json lists every public function (C signature, exported or
+# not), struct (size, field offsets) and enum value, from the headers, the
+# compiler and `nm -D` of the library; the Python package builds its ctypes
+# layouts from its copy (tools/python/modesplit/abi.json). `make check` fails
+# with a diff when either differs from what the headers and the library give;
+# after a deliberate ABI change run `make abi` and commit both.
+PYTHON ?= python3
+ABI_LISTINGS := tools/abi/abi.json tools/python/modesplit/abi.json
+.PHONY: abi check-abi check-python
+abi: $(SHARED) $(BUILD)/lib/libmodesplit.so
+	$(Q)$(PYTHON) tools/abi/abi_listing.py --lib $(BUILD)/lib/libmodesplit.so --out $(ABI_LISTINGS)
+check-abi: $(SHARED) $(BUILD)/lib/libmodesplit.so
+	$(Q)$(PYTHON) tools/abi/abi_listing.py --lib $(BUILD)/lib/libmodesplit.so --check $(ABI_LISTINGS)
+# The Python package's tests against this build's library, with the python3
+# on PATH (numpy, pytest, matplotlib, h5py); .ci/run does the same in a venv
+# with the package pip-installed. MS_PYTEST_ARGS adds pytest options.
+check-python: all
+	$(Q)PYTHONPATH=$(abspath tools/python) MODESPLIT_LIB=$(abspath $(BUILD))/lib/libmodesplit.so MODESPLIT_BUILD=$(abspath $(BUILD)) \
+	    $(PYTHON) -m pytest -q -rs tools/python/tests $(MS_PYTEST_ARGS)
 
 demo: deps
 	@$(MAKE) --no-print-directory all
