@@ -19,8 +19,29 @@ class Handle:
     def __init__(self, ptr, destroy=None, owner=None):
         self._h = ptr
         self._owner = owner
+        self._nviews = 0   # live numpy views of this object's C memory
         self._finalizer = (weakref.finalize(self, destroy, ptr)
                            if destroy is not None else None)
+
+    def _root(self):
+        h = self
+        while h._owner is not None:
+            h = h._owner
+        return h
+
+    def _view_made(self, buf):
+        root = self._root()
+        root._nviews += 1
+        weakref.finalize(buf, root._view_gone)
+
+    def _view_gone(self):
+        self._nviews -= 1
+        if self._nviews == 0 and self._h is None:
+            self._destroy_now()
+
+    def _destroy_now(self):
+        if self._finalizer is not None:
+            self._finalizer()
 
     @property
     def _ptr(self):
@@ -36,10 +57,13 @@ class Handle:
         return self._h is None or (self._owner is not None and self._owner.closed)
 
     def close(self):
-        """Release the C object (idempotent)."""
-        if self._finalizer is not None:
-            self._finalizer()
+        """Release the C object (idempotent). Further use raises Closed. If
+        numpy views of its memory are still alive, the C object is freed
+        when the last of them goes, so a stale view never reads freed
+        memory (its values are those of its last valid moment)."""
         self._h = None
+        if self._nviews == 0:
+            self._destroy_now()
 
     def __enter__(self):
         return self
@@ -121,6 +145,7 @@ def view(ptr, shape, dtype, owner, writeable=False):
     ct = np.ctypeslib.as_ctypes_type(np.dtype(dtype))
     buf = (ct * n).from_address(ptr)
     buf._modesplit_owner = owner
+    owner._view_made(buf)
     a = np.frombuffer(buf, dtype=dtype).reshape(shape)
     a.flags.writeable = writeable
     return a

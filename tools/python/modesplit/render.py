@@ -22,14 +22,19 @@ class Renderer(Handle):
 
     def __init__(self, scene=None, **desc):
         p = ctypes.c_void_p()
-        if scene is not None:
-            d = new_struct("ms_renderer_desc")
-            check(L().ms_renderer_desc_from_scene(scene._ptr, ctypes.byref(d)))
+        if scene is not None and not desc:
+            # refuses a scene without a `render` section (it asks for no image)
+            check(L().ms_renderer_create(scene._ptr, ctypes.byref(p)))
         else:
-            d = L().ms_renderer_desc_default()
-        set_fields("ms_renderer_desc", d, desc, "render")
-        check(L().ms_renderer_create_desc(ctypes.byref(d), ctypes.byref(p)))
+            if scene is not None:
+                d = new_struct("ms_renderer_desc")
+                check(L().ms_renderer_desc_from_scene(scene._ptr, ctypes.byref(d)))
+            else:
+                d = L().ms_renderer_desc_default()
+            set_fields("ms_renderer_desc", d, desc, "render")
+            check(L().ms_renderer_create_desc(ctypes.byref(d), ctypes.byref(p)))
         super().__init__(p.value, L().ms_renderer_destroy)
+        self.scene = scene   # the desc's strings point into it
 
     def draw(self, sim):
         check(L().ms_renderer_draw(self._ptr, sim._ptr))

@@ -36,6 +36,7 @@ class Scene(Handle):
         if self._users > 0:
             self._closing = True   # freed when the last sim using it closes
         else:
+            self._closing = False
             super().close()
 
     @property
@@ -56,8 +57,7 @@ class Scene(Handle):
     def _release(self):
         self._users -= 1
         if self._users == 0 and self._closing:
-            self._closing = False
-            super().close()
+            self.close()
 
     name = property(lambda self: L().ms_scene_name(self._ptr).decode())
     text = property(lambda self: L().ms_scene_text(self._ptr).decode())

@@ -3,6 +3,7 @@ step() the array a user reads is the new field."""
 import ctypes
 
 import numpy as np
+import pytest
 
 import modesplit as ms
 from conftest import SCENES
@@ -98,3 +99,30 @@ def test_renderer_pixels_view():
         assert px.shape == (48, 64, 4) and px.dtype == np.uint8 and px.ctypes.data == ptr
         assert not px.flags.owndata and not px.flags.writeable
         assert px[..., 3].min() == 255 and px[..., :3].std() > 0
+
+
+def test_a_view_outliving_close_keeps_the_memory_until_it_goes():
+    sim = ms.Sim(ms.Scene.load(SCENES / "fig1.json"))
+    sim.step()
+    sim.step()
+    h, p = sim.height, sim.positions
+    want = h.copy()
+    sim.close()
+    with pytest.raises(ms.Closed):
+        sim.height
+    assert sim._finalizer.alive                  # not freed: views are alive
+    assert np.array_equal(h, want) and np.isfinite(p).all()
+    del h
+    assert sim._finalizer.alive                  # p still views it
+    del p
+    assert not sim._finalizer.alive              # freed with the last view
+
+
+def test_borrowed_views_hold_the_owner():
+    sim = ms.Sim(ms.Scene.load(SCENES / "fig3.json"))
+    sim.step()
+    h = sim.surface.height                      # a view through a borrowed Surface
+    sim.close()
+    assert sim._finalizer.alive and h.shape == (300, 300)
+    del h
+    assert not sim._finalizer.alive
