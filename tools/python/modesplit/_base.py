@@ -76,13 +76,18 @@ class Handle:
                                       "closed" if self.closed else hex(self._h))
 
 
+SIZE_FIELDS = ("size", "struct_size")
+
+
 def new_struct(name):
-    """A zeroed output struct. If the struct carries a leading `size` field
-    (the "descs only grow" promise, issue 13/15), it is set to the size the
-    package was built for, as a C caller's sizeof would."""
+    """A zeroed struct for C to fill (ms_stats, infos) or for a desc that has
+    no *_desc_default(). If it carries a size field (the "descs only grow"
+    promise, issue 13/15), that is set to the size the package's listing
+    gives, as a C caller's sizeof would; descs with a default come from C."""
     s = STRUCTS[name]()
-    if "size" in dict(type(s)._fields_) and ABI["structs"][name]["fields"][0]["name"] == "size":
-        s.size = ctypes.sizeof(s)
+    for f in SIZE_FIELDS:
+        if f in dict(type(s)._fields_):
+            setattr(s, f, ctypes.sizeof(s))
     return s
 
 
@@ -95,10 +100,10 @@ def set_fields(struct_name, s, values, what):
     names ("absorb" for MS_BOUNDARY_ABSORB) or values."""
     fields = {f["name"]: f for f in ABI["structs"][struct_name]["fields"]}
     for key, v in values.items():
-        if key not in fields or key == "size":
+        if key not in fields or key in SIZE_FIELDS:
             raise InvalidArgument("%s: %s has no field %r; its fields: %s"
                                   % (what, struct_name, key,
-                                     ", ".join(k for k in fields if k != "size")))
+                                     ", ".join(k for k in fields if k not in SIZE_FIELDS)))
         t = fields[key]["type"]
         ct = ctype(t)
         enum = _enum_of(t)

@@ -50,3 +50,44 @@ def test_library_not_found_lists_where_it_looked(tmp_path, monkeypatch):
         raise AssertionError("a library loaded from nowhere")
     for place in ("MODESPLIT_LIB", "nowhere.so", "pkg-config", "build tree", "system loader"):
         assert place in msg, msg
+
+
+def _listing(args):
+    import subprocess
+    import sys
+    return subprocess.run([sys.executable, str(ROOT / "tools" / "abi" / "abi_listing.py")] + args,
+                          capture_output=True, text=True)
+
+
+def _copy_headers(tmp_path):
+    import shutil
+
+    import pytest
+    pytest.importorskip("pycparser")
+    inc = tmp_path / "include"
+    shutil.copytree(ROOT / "include", inc)
+    return inc
+
+
+def test_check_abi_shows_a_grown_struct_as_a_diff(tmp_path):
+    inc = _copy_headers(tmp_path)
+    sim_h = inc / "modesplit" / "sim.h"
+    last = "    int n_time;           /* wave steps in the last frame (eq. 19) */\n"
+    text = sim_h.read_text()
+    assert last in text
+    sim_h.write_text(text.replace(last, last + "    double grown_ms;\n"))
+    listing = str(ROOT / "tools" / "abi" / "abi.json")
+    r = _listing(["--lib", modesplit.lib().path, "--include", str(inc), "--check", listing])
+    assert r.returncode != 0
+    assert '"name": "grown_ms"' in r.stderr and "make abi" in r.stderr
+    r = _listing(["--lib", modesplit.lib().path, "--check", listing])
+    assert r.returncode == 0, r.stderr
+
+
+def test_check_abi_refuses_an_export_no_header_declares(tmp_path):
+    inc = _copy_headers(tmp_path)
+    core = inc / "modesplit" / "core.h"
+    core.write_text(core.read_text().replace("MS_API const char *ms_version(void);", ""))
+    r = _listing(["--lib", modesplit.lib().path, "--include", str(inc),
+                  "--out", str(tmp_path / "a.json")])
+    assert r.returncode != 0 and "ms_version" in r.stderr and "no public header" in r.stderr
