@@ -1,8 +1,10 @@
 """A small parameter sweep run in parallel processes (concurrent.futures):
 a drop in a closed basin for several wave speeds and dampings. For each case it
 measures when the ring first reaches a probe 0.3 m away (it should scale as
-1 / wave_speed) and the wave energy left after 2 s (it should fall with the
-damping). Writes a table and a figure.
+1 / wave_speed) and the wave energy left after 2 s: the damping is the
+fraction of the wave velocity kept per second, so the energy, which
+oscillates between its kinetic and potential halves, keeps damping^t after
+t seconds (damping^2 here) whatever the speed. Writes a table and a figure.
 
     python tools/python/examples/sweep.py --out sweep.png --workers 2
 

@@ -44,6 +44,8 @@ def test_sweep_example(tmp_path):
     a = {c: sweep.run_case(c, 1.0) for c in (0.25, 1.0)}
     assert abs(a[0.25]["arrival_s"] / a[1.0]["arrival_s"] - 4) < 0.2
     assert abs(a[1.0]["energy_left"] - 1) < 1e-3
+    for c in (0.25, 1.0):
+        assert abs(sweep.run_case(c, 0.7)["energy_left"] / 0.7 ** 2 - 1) < 0.02
 
 
 def test_readme_python_snippet(tmp_path):
