@@ -25,9 +25,25 @@ from .volume import Volume
 __all__ = ["ABI", "LibraryNotFound", "lib", "Closed", "Error", "InvalidArgument", "IoError",
            "OutOfMemory", "ParseError", "PluginError", "StateError", "Unstable", "Unsupported",
            "Reader", "Writer", "Renderer", "Scene", "Shape", "FIELDS", "Sim", "Surface",
-           "Volume", "version"]
+           "Volume", "plugins", "version"]
 __version__ = "%d.%d.%d" % (ABI["macros"]["MS_VERSION_MAJOR"], ABI["macros"]["MS_VERSION_MINOR"],
                             ABI["macros"]["MS_VERSION_PATCH"])
+
+
+def plugins():
+    """The shape and shader plugins found (name, kind, version, description,
+    path, abi), as `modesplit plugins` lists them."""
+    import ctypes
+
+    from ._base import new_struct, to_dict
+    from .errors import check
+    L = lib()
+    out = []
+    for i in range(L.ms_plugin_count()):
+        d = new_struct("ms_plugin_description")
+        check(L.ms_plugin_describe(i, ctypes.byref(d)))
+        out.append(to_dict(d))
+    return out
 
 
 def version():

@@ -88,6 +88,32 @@ class Surface(Handle):
                        dict(rate=rate, radius=radius, amplitude=amplitude), "surface")
         check(L().ms_surface_set_rain(self._ptr, ctypes.byref(r)))
 
+    def add_disturber(self, x, y, radius, depth, vx=0.0, vy=0.0):
+        """A moving disturber (the paper's boat, Fig. 10b): returns its id."""
+        d = set_fields("ms_disturber_desc", new_struct("ms_disturber_desc"),
+                       dict(x=x, y=y, vx=vx, vy=vy, radius=radius, depth=depth), "surface")
+        i = ctypes.c_int()
+        check(L().ms_surface_add_disturber(self._ptr, ctypes.byref(d), ctypes.byref(i)))
+        return i.value
+
+    def move_disturber(self, id, x, y, vx=0.0, vy=0.0):
+        check(L().ms_surface_move_disturber(self._ptr, id, x, y, vx, vy))
+
+    def set_disturber_path(self, id, points, speed, loop=False):
+        """points: (k, 2) float32 (x, y) in m, travelled at speed m/s."""
+        ptr = self._ptr
+        n = len(points) if hasattr(points, "__len__") else -1
+        xy = as_input(points, (n, 2), np.float32, "surface: disturber path")
+        check(L().ms_surface_set_disturber_path(ptr, id, n, xy.ctypes.data, speed, int(loop)))
+
+    def disturber_position(self, id):
+        x, y = ctypes.c_float(), ctypes.c_float()
+        check(L().ms_surface_disturber_position(self._ptr, id, ctypes.byref(x), ctypes.byref(y)))
+        return x.value, y.value
+
+    def remove_disturber(self, id):
+        check(L().ms_surface_remove_disturber(self._ptr, id))
+
     @property
     def energy(self):
         """Wave energy, m^4/s^2 (conserved without damping)."""

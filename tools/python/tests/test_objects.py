@@ -129,3 +129,24 @@ def test_main_runs_as_a_module():
     r = subprocess.run([sys.executable, "-m", "modesplit", "version"], capture_output=True,
                        text=True)
     assert r.returncode == 0 and r.stdout.startswith("libmodesplit ")
+
+
+def test_a_moving_disturber_makes_waves_a_still_one_a_dent():
+    s = ms.Surface(nx=96, ny=64, dx=0.01, wave_speed=0.3, damping=1.0, boundary="absorb")
+    boat = s.add_disturber(0.2, 0.32, radius=0.04, depth=0.01, vx=0.25)
+    for _ in range(60):
+        s.step(1 / 60)
+    x, y = s.disturber_position(boat)
+    assert x == pytest.approx(0.45, abs=0.01) and y == pytest.approx(0.32, abs=1e-6)
+    assert s.height.min() < -0.002 and s.energy > 0
+    s.set_disturber_path(boat, [[0.45, 0.32], [0.6, 0.32]], 0.1)
+    with pytest.raises(ms.InvalidArgument, match="shape"):
+        s.set_disturber_path(boat, [[0.45, 0.32, 0.0]], 0.1)
+    s.remove_disturber(boat)
+    with pytest.raises(ms.InvalidArgument):
+        s.move_disturber(boat, 0.1, 0.1)
+
+
+def test_plugins_are_listed():
+    kinds = {(p["name"], p["kind"]) for p in ms.plugins()}
+    assert ("sphere", "shape") in kinds and ("water", "shader") in kinds
