@@ -91,3 +91,19 @@ def test_check_abi_refuses_an_export_no_header_declares(tmp_path):
     r = _listing(["--lib", modesplit.lib().path, "--include", str(inc),
                   "--out", str(tmp_path / "a.json")])
     assert r.returncode != 0 and "ms_version" in r.stderr and "no public header" in r.stderr
+
+
+def test_library_found_through_pkg_config(tmp_path, monkeypatch):
+    import os
+    import shutil
+    if shutil.which("pkg-config") is None:
+        import pytest
+        pytest.skip("no pkg-config here")
+    libdir = os.path.dirname(os.path.realpath(modesplit.lib().path))
+    (tmp_path / "modesplit.pc").write_text(
+        "libdir=%s\nName: modesplit\nDescription: test\nVersion: 0.1.0\n" % libdir)
+    monkeypatch.delenv("MODESPLIT_LIB", raising=False)
+    monkeypatch.setenv("PKG_CONFIG_PATH", str(tmp_path))
+    monkeypatch.setattr(_lib, "_HERE", str(tmp_path / "a" / "b"))
+    dll, path = _lib.load_library()
+    assert path == os.path.join(libdir, "libmodesplit.so") and dll.ms_version
