@@ -226,9 +226,17 @@ check-abi: $(SHARED) $(BUILD)/lib/libmodesplit.so
 # The Python package's tests against this build's library, with the python3
 # on PATH (numpy, pytest, matplotlib, h5py); .ci/run does the same in a venv
 # with the package pip-installed. MS_PYTEST_ARGS adds pytest options.
+# SAN=asan loads the ASan+UBSan library into Python (ASan preloaded) and runs
+# every test but those marked no_asan (matplotlib's C++ aborts under ASan's
+# interceptors; RSS means nothing with ASan's quarantine).
+ifeq ($(SAN),asan)
+PY_SAN := LD_PRELOAD=$$($(CC) -print-file-name=libasan.so) ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
+          UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+PY_SAN_ARGS := -m "not no_asan"
+endif
 check-python: all
 	$(Q)PYTHONPATH=$(abspath tools/python) MODESPLIT_LIB=$(abspath $(BUILD))/lib/libmodesplit.so MODESPLIT_BUILD=$(abspath $(BUILD)) \
-	    $(PYTHON) -m pytest -q -rs tools/python/tests $(MS_PYTEST_ARGS)
+	    $(PY_SAN) $(PYTHON) -m pytest -q -rs tools/python/tests $(PY_SAN_ARGS) $(MS_PYTEST_ARGS)
 
 demo: deps
 	@$(MAKE) --no-print-directory all

@@ -26,6 +26,10 @@ def tool():
     return t
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "no_asan: not run by `make check-python SAN=asan`")
+
+
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_makereport(item, call):
     outcome = yield

@@ -5,6 +5,7 @@ import subprocess
 import sys
 
 import numpy as np
+import pytest
 
 from conftest import ROOT
 
@@ -25,12 +26,14 @@ def assert_png(path):
     assert os.path.getsize(path) > 10_000
 
 
+@pytest.mark.no_asan
 def test_pool_example(tmp_path):
     out = run([str(EXAMPLES / "pool.py"), "--out", str(tmp_path / "pool.png")], tmp_path)
     assert "120 frames, 2000 particles" in out
     assert_png(tmp_path / "pool.png")
 
 
+@pytest.mark.no_asan
 def test_sweep_example(tmp_path):
     sys.path.insert(0, str(EXAMPLES))
     try:
@@ -48,6 +51,7 @@ def test_sweep_example(tmp_path):
         assert abs(sweep.run_case(c, 0.7)["energy_left"] / 0.7 ** 2 - 1) < 0.02
 
 
+@pytest.mark.no_asan
 def test_readme_python_snippet(tmp_path):
     text = (ROOT / "README.md").read_text()
     section = text[text.index("\n## Python"):]

@@ -2,6 +2,8 @@
 import gc
 import os
 
+import pytest
+
 import modesplit as ms
 
 
@@ -22,6 +24,7 @@ def cycle():
         return sim.stats()["bytes"]
 
 
+@pytest.mark.no_asan
 def test_thousand_cycles_do_not_grow_rss():
     per_sim = cycle()
     for _ in range(100):         # warm up allocator pools and caches
