@@ -45,6 +45,14 @@ class Renderer(Handle):
         p = L().ms_renderer_pixels(self._ptr, ctypes.byref(w), ctypes.byref(h))
         return view(p, (h.value, w.value, 4), np.uint8, self)
 
+    @property
+    def caustics(self):
+        """The last draw's caustics light map, (n, n) over the pool, 1 =
+        unfocused light; (0, 0) when it was not traced. A view."""
+        n = ctypes.c_int()
+        p = L().ms_renderer_caustics(self._ptr, ctypes.byref(n))
+        return view(p, (n.value, n.value) if p else (0, 0), np.float32, self)
+
     def write_png(self, path):
         check(L().ms_renderer_write_png(self._ptr, os.fsencode(path)))
 

@@ -144,6 +144,14 @@ class Sim(Handle):
         return self._aos(n, vel)
 
     @property
+    def floaters(self):
+        """Objects carried by the flow (scene effects.floaters): (n, 3) m,
+        z on the combined surface; a view valid until the next step."""
+        n = ctypes.c_int()
+        p = L().ms_sim_floaters(self._ptr, ctypes.byref(n))
+        return view(p, (n.value, 3), np.float32, self)
+
+    @property
     def volume(self):
         """The sim's Volume (borrowed: valid while the sim is), or None."""
         p = L().ms_sim_volume(self._ptr)

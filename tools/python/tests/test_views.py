@@ -126,3 +126,31 @@ def test_borrowed_views_hold_the_owner():
     assert sim._finalizer.alive and h.shape == (300, 300)
     del h
     assert not sim._finalizer.alive
+
+
+def test_floaters_ride_on_the_surface():
+    with ms.Sim(ms.Scene.load(SCENES / "fig10.json")) as sim:
+        for _ in range(3):
+            sim.step()
+        f = sim.floaters
+        n = ctypes.c_int()
+        ptr = ms.lib().ms_sim_floaters(sim._ptr, ctypes.byref(n))
+        assert f.shape == (n.value, 3) and n.value > 0 and f.ctypes.data == ptr
+        assert not f.flags.owndata and not f.flags.writeable
+        g = sim.grid()
+        assert np.all(f[:, 0] >= g["origin"][0]) and np.all(f[:, 0] <= g["origin"][0] + g["nx"] * g["dx"])
+
+
+def test_caustics_light_map_view():
+    sc = ms.Scene.load(SCENES / "fig9a.json")
+    try:
+        r = ms.Renderer(sc, width=64, height=48, caustics_resolution=64)
+    except ms.Unsupported as e:
+        pytest.skip("no OSMesa in this build: %s" % e)
+    with ms.Sim(sc) as sim, r:
+        sim.step()
+        r.draw(sim)
+        c = r.caustics
+        assert c.shape == (64, 64) and not c.flags.owndata
+        # light is focused and spread, and none is lost: the mean stays 1
+        assert c.max() > 1 > c.min() and abs(float(c.mean()) - 1) < 0.1
