@@ -8,19 +8,34 @@ from ._lib import ABI, STRUCTS, ctype, lib
 from .errors import Closed, InvalidArgument
 
 
+def _finish(destroy, ptr, deps):
+    destroy(ptr)
+    for d in deps:          # objects the C one used (a scene, collider shapes)
+        d._unhold()
+    deps.clear()
+
+
 class Handle:
     """A C handle. An owning handle is destroyed by close(), by `with`, or by
     the garbage collector (a finalizer); a borrowed one (sim.volume) lives as
     long as its owner. Any use after close raises modesplit.Closed before C
-    is called."""
+    is called.
+
+    The C object stays alive while something still holds it: a numpy view
+    of its memory, or another C object that uses it (a sim its scene, a
+    volume its collider shapes). close() then only closes the Python side
+    and the C object is freed when the last holder goes, so nothing ever
+    reads freed memory."""
 
     _kind = "object"
 
     def __init__(self, ptr, destroy=None, owner=None):
         self._h = ptr
+        self._raw = ptr   # kept after close, for releasing what C still holds
         self._owner = owner
-        self._nviews = 0   # live numpy views of this object's C memory
-        self._finalizer = (weakref.finalize(self, destroy, ptr)
+        self._holds = 0   # live views and C objects using this one
+        self._deps = []   # handles this one holds (released after destroy)
+        self._finalizer = (weakref.finalize(self, _finish, destroy, ptr, self._deps)
                            if destroy is not None else None)
 
     def _root(self):
@@ -29,15 +44,29 @@ class Handle:
             h = h._owner
         return h
 
+    def _hold(self):
+        self._holds += 1
+
+    def _unhold(self):
+        self._holds -= 1
+        if self._holds == 0 and self._h is None:
+            self._destroy_now()
+
+    def _depend_on(self, other):
+        """This object's C side uses `other` until it is destroyed."""
+        other._hold()
+        self._root()._deps.append(other)
+
+    def _undepend(self, other):
+        deps = self._root()._deps
+        if other in deps:
+            deps.remove(other)
+            other._unhold()
+
     def _view_made(self, buf):
         root = self._root()
-        root._nviews += 1
-        weakref.finalize(buf, root._view_gone)
-
-    def _view_gone(self):
-        self._nviews -= 1
-        if self._nviews == 0 and self._h is None:
-            self._destroy_now()
+        root._hold()
+        weakref.finalize(buf, root._unhold)
 
     def _destroy_now(self):
         if self._finalizer is not None:
@@ -57,12 +86,10 @@ class Handle:
         return self._h is None or (self._owner is not None and self._owner.closed)
 
     def close(self):
-        """Release the C object (idempotent). Further use raises Closed. If
-        numpy views of its memory are still alive, the C object is freed
-        when the last of them goes, so a stale view never reads freed
-        memory (its values are those of its last valid moment)."""
+        """Close the object (idempotent): further use raises Closed; the C
+        object is freed now, or when the last view or user of it goes."""
         self._h = None
-        if self._nviews == 0:
+        if self._holds == 0:
             self._destroy_now()
 
     def __enter__(self):

@@ -34,7 +34,8 @@ class Renderer(Handle):
             set_fields("ms_renderer_desc", d, desc, "render")
             check(L().ms_renderer_create_desc(ctypes.byref(d), ctypes.byref(p)))
         super().__init__(p.value, L().ms_renderer_destroy)
-        self.scene = scene   # the desc's strings point into it
+        if scene is not None:
+            self._depend_on(scene)   # the desc's strings point into it
 
     def draw(self, sim):
         check(L().ms_renderer_draw(self._ptr, sim._ptr))

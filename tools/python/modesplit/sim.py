@@ -1,6 +1,5 @@
 """Sim: the mode-splitting coupler (eqs. 19-20, the two-core split)."""
 import ctypes
-import weakref
 
 import numpy as np
 
@@ -28,12 +27,6 @@ def field_bits(fields):
     return bits
 
 
-def _destroy(ptr, scene):
-    L().ms_sim_destroy(ptr)
-    if scene is not None:
-        scene._release()
-
-
 class Sim(Handle):
     """A mode-splitting simulation.
 
@@ -54,9 +47,8 @@ class Sim(Handle):
     def __init__(self, scene, threads=1):
         p = ctypes.c_void_p()
         check(L().ms_sim_create_from_scene(scene._ptr, threads, ctypes.byref(p)))
-        scene._acquire()
-        Handle.__init__(self, p.value, None)
-        self._finalizer = weakref.finalize(self, _destroy, p.value, scene)
+        Handle.__init__(self, p.value, L().ms_sim_destroy)
+        self._depend_on(scene)        # sim.h: the scene must outlive the sim
         self.scene = scene
         self._frame_dt = scene.frame_dt
         self._keep = ()
@@ -77,8 +69,7 @@ class Sim(Handle):
         p = ctypes.c_void_p()
         check(L().ms_sim_create(ctypes.byref(d), ctypes.byref(p)))
         self = cls.__new__(cls)
-        Handle.__init__(self, p.value, None)
-        self._finalizer = weakref.finalize(self, _destroy, p.value, None)
+        Handle.__init__(self, p.value, L().ms_sim_destroy)
         self.scene = None
         self._frame_dt = None
         self._keep = (vd, sd)

@@ -29,13 +29,11 @@ class Volume(Handle):
         p = ctypes.c_void_p()
         check(L().ms_volume_create(ctypes.byref(d), ctypes.byref(p)))
         super().__init__(p.value, L().ms_volume_destroy)
-        self._colliders = []
 
     @classmethod
     def _borrow(cls, ptr, owner):
         v = cls.__new__(cls)
         Handle.__init__(v, ptr, None, owner)
-        v._colliders = []
         return v
 
     def fill_box(self, lo, hi):
@@ -101,13 +99,15 @@ class Volume(Handle):
         return L().ms_volume_kinetic_energy(self._ptr)
 
     def add_collider(self, shape):
-        """The volume uses the shape until removed: the Volume keeps it alive."""
+        """The volume uses the shape until it is removed or the volume (or
+        its sim) is freed; the shape's C object stays alive that long, even
+        if the Shape is closed."""
         check(L().ms_volume_add_collider(self._ptr, shape._ptr))
-        self._colliders.append(shape)
+        self._depend_on(shape)
 
     def remove_collider(self, shape):
-        check(L().ms_volume_remove_collider(self._ptr, shape._ptr))
-        self._colliders.remove(shape)
+        check(L().ms_volume_remove_collider(self._ptr, shape._raw))
+        self._undepend(shape)
 
     def drag(self, centre, radius, velocity, strength):
         check(L().ms_volume_drag(self._ptr, vec(centre, 3, "volume: centre"), radius,

@@ -89,9 +89,33 @@ def test_scene_outlives_its_sims():
     sc.close()                      # deferred: the sim still reads it
     with pytest.raises(ms.Closed):
         sc.name
+    assert sc._finalizer.alive      # the C scene is still there
     sim.step()
     sim.close()
-    assert sc._h is None            # freed with its last sim
+    assert not sc._finalizer.alive  # freed with its last sim
+
+
+def test_a_closed_shape_lives_while_a_volume_uses_it():
+    v = ms.Volume(domain_max=(0.4, 0.4, 0.4))
+    v.fill_box((0, 0, 0), (0.4, 0.4, 0.1))
+    ball = ms.Shape("sphere", {"radius": 0.05})
+    ball.set_pose((0.2, 0.2, 0.05))
+    v.add_collider(ball)
+    ball.close()
+    with pytest.raises(ms.Closed):
+        ball.kind
+    assert ball._finalizer.alive    # the volume still uses it
+    v.step(1 / 60)                  # reads the shape: no use after free
+    v.remove_collider(ball)
+    assert not ball._finalizer.alive
+    sim = ms.Sim.from_desc(volume=dict(domain_max=(0.4, 0.4, 0.4)))
+    cup = ms.Shape("sphere", {"radius": 0.05})
+    sim.volume.add_collider(cup)    # through a borrowed Volume
+    del cup
+    import gc
+    gc.collect()
+    sim.step(1 / 60)
+    sim.close()
 
 
 def _last_error_unchanged(call, exc=ms.InvalidArgument):
