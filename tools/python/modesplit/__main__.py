@@ -27,7 +27,12 @@ def main(argv=None):
             print("modesplit: export needs modesplit.usd_export, which this install lacks",
                   file=sys.stderr)
             return 2
-        return mod.main(rest)
+        # usd_export.main(argv) or main() reading sys.argv: either works
+        import inspect
+        if inspect.signature(mod.main).parameters:
+            return mod.main(rest)
+        sys.argv = ["python -m modesplit export"] + rest
+        return mod.main()
     print("modesplit: unknown command %r (version, export)" % cmd, file=sys.stderr)
     return 2
 

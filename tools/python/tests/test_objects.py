@@ -123,6 +123,8 @@ def test_main_version_and_export_dispatch(monkeypatch, capsys):
     monkeypatch.setitem(sys.modules, "modesplit.usd_export", fake)
     assert main(["export", "run.h5", "--out", "run.usda"]) == 0
     assert seen == [["run.h5", "--out", "run.usda"]]
+    fake.main = lambda: seen.append(sys.argv[1:]) or 0     # an argparse main()
+    assert main(["export", "b.h5"]) == 0 and seen[-1] == ["b.h5"]
 
 
 def test_main_runs_as_a_module():
