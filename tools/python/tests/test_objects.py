@@ -152,3 +152,22 @@ def test_a_moving_disturber_makes_waves_a_still_one_a_dent():
 def test_plugins_are_listed():
     kinds = {(p["name"], p["kind"]) for p in ms.plugins()}
     assert ("sphere", "shape") in kinds and ("water", "shader") in kinds
+
+
+def test_sims_step_in_python_threads_with_their_own_errors():
+    import concurrent.futures
+
+    def run(i):
+        with ms.Sim(ms.Scene.load(SCENES / "fig3.json")) as sim:
+            for _ in range(20):
+                sim.step()
+            h = sim.height.tobytes()
+        try:                    # the sentence is the calling thread's own
+            ms.Surface(wave_speed=-(i + 1))
+        except ms.Unstable as e:
+            return h, e.message
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        out = list(pool.map(run, range(4)))
+    assert len({h for h, _ in out}) == 1          # deterministic, any thread
+    for i, (_, msg) in enumerate(out):
+        assert "wave_speed %d m/s" % -(i + 1) in msg, msg
