@@ -38,6 +38,13 @@ class Handle:
         self._finalizer = (weakref.finalize(self, _finish, destroy, ptr, self._deps)
                            if destroy is not None else None)
 
+    @classmethod
+    def _borrow(cls, ptr, owner):
+        """A wrapper of a C object that `owner` owns (sim.volume)."""
+        h = cls.__new__(cls)
+        Handle.__init__(h, ptr, None, owner)
+        return h
+
     def _root(self):
         h = self
         while h._owner is not None:
@@ -116,6 +123,13 @@ def new_struct(name):
         if f in dict(type(s)._fields_):
             setattr(s, f, ctypes.sizeof(s))
     return s
+
+
+def filled(struct_name, fn, *args):
+    """A dict of the struct C fills: fn(*args, &out) (infos, stats)."""
+    out = new_struct(struct_name)
+    fn(*args, ctypes.byref(out))
+    return to_dict(out)
 
 
 def _enum_of(type_name):

@@ -4,7 +4,7 @@ import os
 
 import numpy as np
 
-from ._base import Handle, L, new_struct, set_fields, to_dict, view
+from ._base import Handle, L, filled, new_struct, set_fields, view
 from .errors import check
 
 
@@ -58,6 +58,4 @@ class Renderer(Handle):
         check(L().ms_renderer_write_png(self._ptr, os.fsencode(path)))
 
     def stats(self):
-        out = new_struct("ms_render_stats")
-        L().ms_renderer_stats(self._ptr, ctypes.byref(out))
-        return to_dict(out)
+        return filled("ms_render_stats", L().ms_renderer_stats, self._ptr)

@@ -3,7 +3,7 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, new_struct, set_fields, to_dict, view
+from ._base import Handle, L, filled, new_struct, set_fields, to_dict, view
 from ._lib import ABI
 from .errors import InvalidArgument, check
 from .surface import Surface, surface_desc
@@ -163,19 +163,15 @@ class Sim(Handle):
 
     def stats(self):
         """ms_stats as a dict (stage ms, sub-steps, frames, bytes, ...)."""
-        out = new_struct("ms_stats")
-        L().ms_sim_stats(self._ptr, ctypes.byref(out))
-        return to_dict(out)
+        return filled("ms_stats", L().ms_sim_stats, self._ptr)
 
     def info(self):
-        out = new_struct("ms_sim_info")
-        L().ms_sim_get_info(self._ptr, ctypes.byref(out))
-        return to_dict(out)
+        return filled("ms_sim_info", L().ms_sim_get_info, self._ptr)
 
     def grid(self, field="combined"):
-        g = new_struct("ms_grid")
-        check(L().ms_sim_field_grid(self._ptr, field_bits(field), ctypes.byref(g)))
-        return to_dict(g)
+        out = new_struct("ms_grid")
+        check(L().ms_sim_field_grid(self._ptr, field_bits(field), ctypes.byref(out)))
+        return to_dict(out)
 
     def drag(self, pos, vel, radius, depth, strength):
         from ._base import vec

@@ -3,7 +3,7 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, as_input, cint, set_fields, to_dict, view, new_struct
+from ._base import Handle, L, as_input, cint, filled, new_struct, set_fields, to_dict, view
 from .errors import check
 
 
@@ -32,12 +32,6 @@ class Surface(Handle):
         p = ctypes.c_void_p()
         check(L().ms_surface_create(ctypes.byref(d), ctypes.byref(p)))
         super().__init__(p.value, L().ms_surface_destroy)
-
-    @classmethod
-    def _borrow(cls, ptr, owner):
-        s = cls.__new__(cls)
-        Handle.__init__(s, ptr, None, owner)
-        return s
 
     @property
     def shape(self):
@@ -120,9 +114,7 @@ class Surface(Handle):
         return L().ms_surface_energy(self._ptr)
 
     def info(self):
-        out = new_struct("ms_surface_info")
-        L().ms_surface_get_info(self._ptr, ctypes.byref(out))
-        return to_dict(out)
+        return filled("ms_surface_info", L().ms_surface_get_info, self._ptr)
 
     def desc(self):
         return to_dict(L().ms_surface_get_desc(self._ptr))

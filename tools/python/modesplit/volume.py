@@ -3,7 +3,7 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, as_input, new_struct, set_fields, to_dict, vec, view
+from ._base import Handle, L, as_input, filled, set_fields, to_dict, vec, view
 from .errors import check
 
 
@@ -29,12 +29,6 @@ class Volume(Handle):
         p = ctypes.c_void_p()
         check(L().ms_volume_create(ctypes.byref(d), ctypes.byref(p)))
         super().__init__(p.value, L().ms_volume_destroy)
-
-    @classmethod
-    def _borrow(cls, ptr, owner):
-        v = cls.__new__(cls)
-        Handle.__init__(v, ptr, None, owner)
-        return v
 
     def fill_box(self, lo, hi):
         check(L().ms_volume_fill_box(self._ptr, vec(lo, 3, "volume: lo"),
@@ -117,9 +111,7 @@ class Volume(Handle):
         check(L().ms_volume_set_viscosity(self._ptr, mu))
 
     def info(self):
-        out = new_struct("ms_volume_info")
-        L().ms_volume_get_info(self._ptr, ctypes.byref(out))
-        return to_dict(out)
+        return filled("ms_volume_info", L().ms_volume_get_info, self._ptr)
 
     def desc(self):
         return to_dict(L().ms_volume_get_desc(self._ptr))

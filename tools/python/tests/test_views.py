@@ -83,16 +83,22 @@ def test_volume_particle_views_and_copies():
     assert np.array_equal(np.sort(pos[:, 0]), np.sort(x))
 
 
-def test_renderer_pixels_view():
+def drawn_fig9a():
+    """A fig9a sim stepped once and a small renderer that drew it."""
     sc = ms.Scene.load(SCENES / "fig9a.json")
     try:
         r = ms.Renderer(sc, width=64, height=48, caustics_resolution=64)
     except ms.Unsupported as e:
-        import pytest
         pytest.skip("no OSMesa in this build: %s" % e)
-    with ms.Sim(sc) as sim, r:
-        sim.step()
-        r.draw(sim)
+    sim = ms.Sim(sc)
+    sim.step()
+    r.draw(sim)
+    return sim, r
+
+
+def test_renderer_pixels_view():
+    sim, r = drawn_fig9a()
+    with sim, r:
         px = r.pixels
         w, h = ctypes.c_int(), ctypes.c_int()
         ptr = ms.lib().ms_renderer_pixels(r._ptr, ctypes.byref(w), ctypes.byref(h))
@@ -142,14 +148,8 @@ def test_floaters_ride_on_the_surface():
 
 
 def test_caustics_light_map_view():
-    sc = ms.Scene.load(SCENES / "fig9a.json")
-    try:
-        r = ms.Renderer(sc, width=64, height=48, caustics_resolution=64)
-    except ms.Unsupported as e:
-        pytest.skip("no OSMesa in this build: %s" % e)
-    with ms.Sim(sc) as sim, r:
-        sim.step()
-        r.draw(sim)
+    sim, r = drawn_fig9a()
+    with sim, r:
         c = r.caustics
         assert c.shape == (64, 64) and not c.flags.owndata
         # light is focused and spread, and none is lost: the mean stays 1
