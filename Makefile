@@ -180,6 +180,7 @@ deps:
 check: deps
 	@$(MAKE) --no-print-directory all tests
 	@$(MAKE) --no-print-directory check-headers check-exports check-readme
+	@$(MAKE) --no-print-directory check-abi
 	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS))";) \
 	skips=$(abspath $(BUILD))/skipped.txt; rm -f $$skips; \
 	pass=0; fail=0; for t in $(TESTS); do \
@@ -215,6 +216,35 @@ check-readme: $(STATIC)
 golden:
 	@$(MAKE) --no-print-directory $(BUILD)/tests/test_determinism
 	@CK_RUN_CASE=golden MS_GOLDEN_WRITE=1 MS_TEST_BUILD=$(BUILD) $(BUILD)/tests/test_determinism
+
+# ---- the ABI listing and the Python package (issue 13) -----------------------
+# tools/abi/abi.json lists every public function (C signature, exported or
+# not), struct (size, field offsets) and enum value, from the headers, the
+# compiler and `nm -D` of the library; the Python package builds its ctypes
+# layouts from its copy (tools/python/modesplit/abi.json). `make check` fails
+# with a diff when either differs from what the headers and the library give;
+# after a deliberate ABI change run `make abi` and commit both.
+PYTHON ?= python3
+ABI_LISTINGS := tools/abi/abi.json tools/python/modesplit/abi.json
+.PHONY: abi check-abi check-python
+abi: $(SHARED) $(BUILD)/lib/libmodesplit.so
+	$(Q)$(PYTHON) tools/abi/abi_listing.py --lib $(BUILD)/lib/libmodesplit.so --out $(ABI_LISTINGS)
+check-abi: $(SHARED) $(BUILD)/lib/libmodesplit.so
+	$(Q)$(PYTHON) tools/abi/abi_listing.py --lib $(BUILD)/lib/libmodesplit.so --check $(ABI_LISTINGS)
+# The Python package's tests against this build's library, with the python3
+# on PATH (numpy, pytest, matplotlib, h5py); .ci/run does the same in a venv
+# with the package pip-installed. MS_PYTEST_ARGS adds pytest options.
+# SAN=asan loads the ASan+UBSan library into Python (ASan preloaded) and runs
+# every test but those marked no_asan (matplotlib's C++ aborts under ASan's
+# interceptors; RSS means nothing with ASan's quarantine).
+ifeq ($(SAN),asan)
+PY_SAN := LD_PRELOAD=$$($(CC) -print-file-name=libasan.so) ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
+          UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+PY_SAN_ARGS := -m "not no_asan"
+endif
+check-python: all
+	$(Q)PYTHONPATH=$(abspath tools/python) MODESPLIT_LIB=$(abspath $(BUILD))/lib/libmodesplit.so MODESPLIT_BUILD=$(abspath $(BUILD)) \
+	    $(PY_SAN) $(PYTHON) -m pytest -q -rs tools/python/tests $(PY_SAN_ARGS) $(MS_PYTEST_ARGS)
 
 demo: deps
 	@$(MAKE) --no-print-directory all

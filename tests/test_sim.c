@@ -917,6 +917,47 @@ START_TEST(failed_step_leaves_the_sim_refusing)
 }
 END_TEST
 
+/* sim.h: a frame's x, y, z (and vx, vy, vz) lie in one block at equal
+ * distances, so FFI users (the Python package) view them as one (n, 3)
+ * array without a copy; it holds after the particle count grows too. */
+static void assert_one_block(const ms_sim *sim, int want_n)
+{
+    int n;
+    const float *pos[3], *vel[3];
+    ck_assert_int_eq(ms_sim_particles(sim, &n, pos, vel), MS_OK);
+    ck_assert_int_eq(n, want_n);
+    ptrdiff_t dp = pos[1] - pos[0], dv = vel[1] - vel[0];
+    ck_assert_msg(dp >= n && pos[2] - pos[1] == dp, "pos arrays %td, %td apart, n %d", dp,
+                  pos[2] - pos[1], n);
+    ck_assert_msg(dv >= n && vel[2] - vel[1] == dv, "vel arrays %td, %td apart, n %d", dv,
+                  vel[2] - vel[1], n);
+}
+
+START_TEST(particle_arrays_are_one_block)
+{
+    ms_volume_desc v = ms_volume_desc_default(); /* a 1 m box */
+    ms_sim_desc d = ms_sim_desc_default();
+    d.volume = &v;
+    d.field_nx = d.field_ny = 16;
+    ms_sim *sim;
+    ck_assert_int_eq(ms_sim_create(&d, &sim), MS_OK);
+    ms_volume *vol = ms_sim_volume(sim);
+    ck_assert_int_eq(ms_volume_fill_box(vol, (float[3]){0, 0, 0}, (float[3]){0.3f, 0.3f, 0.12f}),
+                     MS_OK);
+    int n0 = ms_volume_count(vol);
+    steps(sim, 2, 1.0f / 60);
+    assert_one_block(sim, n0);
+    /* more particles than the copy holds: it is reallocated */
+    ck_assert_int_eq(ms_volume_fill_box(vol, (float[3]){0.4f, 0.4f, 0},
+                                        (float[3]){1, 1, 0.12f}), MS_OK);
+    int n1 = ms_volume_count(vol);
+    ck_assert_int_gt(n1, n0 + n0 / 8 + 64);
+    steps(sim, 2, 1.0f / 60);
+    assert_one_block(sim, n1);
+    ms_sim_destroy(sim);
+}
+END_TEST
+
 static Suite *sim_suite(void)
 {
     Suite *s = suite_create("sim");
@@ -946,6 +987,7 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, bad_descs_are_refused);
     tcase_add_test(tc, bad_calls_are_refused);
     tcase_add_test(tc, failed_step_leaves_the_sim_refusing);
+    tcase_add_test(tc, particle_arrays_are_one_block);
     suite_add_tcase(s, tc);
     return s;
 }

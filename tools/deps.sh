@@ -15,6 +15,8 @@ libosmesa6-dev check libsubunit-dev"
 # the clients users run against the library's output, and what the viewer
 # and the study need: installed by `tools/deps.sh --ci` (.ci/run), left to
 # the user otherwise (the tests that need them report themselves skipped).
+# the ABI listing (`make check-abi`, issue 13) parses the headers with pycparser
+PACKAGES="$PACKAGES python3-pycparser"
 CI_PACKAGES="gnuplot-nox libsdl2-dev xvfb xauth xdotool x11-apps imagemagick ffmpeg \
 paraview python3-paraview python3-h5py python3-venv"
 # i15: valgrind and clang (the libFuzzer harnesses) run only in CI

@@ -86,7 +86,10 @@ MS_API const float *ms_sim_volume_height(const ms_sim *sim, int *nx, int *ny);
 /* Where a field (one MS_FIELD_COMBINED/SURFACE/VOLUME bit) lies in the world. */
 MS_API ms_status ms_sim_field_grid(const ms_sim *sim, unsigned field, ms_grid *out);
 /* Particles as structure-of-arrays views: pos[0..2] = x, y, z and
- * vel[0..2] = vx, vy, vz, n each; *n = 0 and NULL views without a volume. */
+ * vel[0..2] = vx, vy, vz, n each; *n = 0 and NULL views without a volume.
+ * The three arrays of pos (and of vel) lie in one block at equal distances
+ * (pos[2] - pos[1] == pos[1] - pos[0] > 0), so an FFI user can view them as
+ * one (n, 3) array with strides (sizeof(float), pos[1] - pos[0]). */
 MS_API ms_status ms_sim_particles(const ms_sim *sim, int *n, const float *pos[3],
                                   const float *vel[3]);
 MS_API double ms_sim_time(const ms_sim *sim);   /* s, time of the fields above */

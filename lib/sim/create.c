@@ -395,10 +395,8 @@ void ms_sim_destroy(ms_sim *sim)
         ms_extract_snap_free(&sim->snap[k]);
         ms_free(sim->flow[k]);
         ms_free(sim->wave_snap[k]);
-        for (int a = 0; a < 3; ++a) {
-            ms_free(sim->ppos[k][a]);
-            ms_free(sim->pvel[k][a]);
-        }
+        ms_free(sim->ppos[k][0]); /* one block per slot (volume_task.c) */
+        ms_free(sim->pvel[k][0]);
     }
     ms_free(sim->paos);
     ms_free(sim->wave_colmap);

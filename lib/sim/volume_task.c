@@ -118,15 +118,24 @@ static ms_status volume_grab(ms_sim *sim, int slot)
     int n = ms_volume_count(sim->volume);
     if (n > sim->pcap[slot]) {
         int cap = n + n / 8 + 64;
+        /* x, y, z (and vx, vy, vz) in one block each, cap floats apart:
+         * sim.h promises it, so FFI users view them as one (n, 3) array
+         * with strides (4, 4 cap) without a copy. */
+        ms_free(sim->ppos[slot][0]);
+        ms_free(sim->pvel[slot][0]);
+        float *pos = ms_alloc_array((size_t)cap * 3, sizeof(float));
+        float *vel = ms_alloc_array((size_t)cap * 3, sizeof(float));
         for (int a = 0; a < 3; ++a) {
-            ms_free(sim->ppos[slot][a]);
-            ms_free(sim->pvel[slot][a]);
-            sim->ppos[slot][a] = ms_alloc_array((size_t)cap, sizeof(float));
-            sim->pvel[slot][a] = ms_alloc_array((size_t)cap, sizeof(float));
-            if (!sim->ppos[slot][a] || !sim->pvel[slot][a]) {
-                sim->pcap[slot] = 0;
-                return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory copying %d particles", n);
-            }
+            sim->ppos[slot][a] = pos ? pos + (size_t)a * (size_t)cap : NULL;
+            sim->pvel[slot][a] = vel ? vel + (size_t)a * (size_t)cap : NULL;
+        }
+        if (!pos || !vel) {
+            ms_free(pos);
+            ms_free(vel);
+            for (int a = 0; a < 3; ++a)
+                sim->ppos[slot][a] = sim->pvel[slot][a] = NULL;
+            sim->pcap[slot] = 0;
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory copying %d particles", n);
         }
         sim->pcap[slot] = cap;
     }

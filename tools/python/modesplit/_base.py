@@ -1,0 +1,237 @@
+"""Handles that own (or borrow) a C object, desc helpers, views and inputs."""
+import ctypes
+import weakref
+
+import numpy as np
+
+from ._lib import ABI, STRUCTS, ctype, lib
+from .errors import Closed, InvalidArgument
+
+
+def _finish(destroy, ptr, deps):
+    destroy(ptr)
+    for d in deps:          # objects the C one used (a scene, collider shapes)
+        d._unhold()
+    deps.clear()
+
+
+class Handle:
+    """A C handle. An owning handle is destroyed by close(), by `with`, or by
+    the garbage collector (a finalizer); a borrowed one (sim.volume) lives as
+    long as its owner. Any use after close raises modesplit.Closed before C
+    is called.
+
+    The C object stays alive while something still holds it: a numpy view
+    of its memory, or another C object that uses it (a sim its scene, a
+    volume its collider shapes). close() then only closes the Python side
+    and the C object is freed when the last holder goes, so nothing ever
+    reads freed memory."""
+
+    _kind = "object"
+
+    def __init__(self, ptr, destroy=None, owner=None):
+        self._h = ptr
+        self._raw = ptr   # kept after close, for releasing what C still holds
+        self._owner = owner
+        self._holds = 0   # live views and C objects using this one
+        self._deps = []   # handles this one holds (released after destroy)
+        self._finalizer = (weakref.finalize(self, _finish, destroy, ptr, self._deps)
+                           if destroy is not None else None)
+
+    @classmethod
+    def _borrow(cls, ptr, owner):
+        """A wrapper of a C object that `owner` owns (sim.volume)."""
+        h = cls.__new__(cls)
+        Handle.__init__(h, ptr, None, owner)
+        return h
+
+    def _root(self):
+        h = self
+        while h._owner is not None:
+            h = h._owner
+        return h
+
+    def _hold(self):
+        self._holds += 1
+
+    def _unhold(self):
+        self._holds -= 1
+        if self._holds == 0 and self._h is None:
+            self._destroy_now()
+
+    def _depend_on(self, other):
+        """This object's C side uses `other` until it is destroyed."""
+        other._hold()
+        self._root()._deps.append(other)
+
+    def _undepend(self, other):
+        deps = self._root()._deps
+        if other in deps:
+            deps.remove(other)
+            other._unhold()
+
+    def _view_made(self, buf):
+        root = self._root()
+        root._hold()
+        weakref.finalize(buf, root._unhold)
+
+    def _destroy_now(self):
+        if self._finalizer is not None:
+            self._finalizer()
+
+    @property
+    def _ptr(self):
+        if self._h is None:
+            raise Closed("modesplit: the %s is closed" % self._kind)
+        if self._owner is not None and self._owner.closed:
+            raise Closed("modesplit: the %s belongs to a %s that is closed"
+                         % (self._kind, self._owner._kind))
+        return self._h
+
+    @property
+    def closed(self):
+        return self._h is None or (self._owner is not None and self._owner.closed)
+
+    def close(self):
+        """Close the object (idempotent): further use raises Closed; the C
+        object is freed now, or when the last view or user of it goes."""
+        self._h = None
+        if self._holds == 0:
+            self._destroy_now()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def __repr__(self):
+        return "<modesplit.%s %s>" % (type(self).__name__,
+                                      "closed" if self.closed else hex(self._h))
+
+
+SIZE_FIELDS = ("size", "struct_size")
+
+
+def new_struct(name):
+    """A zeroed struct for C to fill (ms_stats, infos) or for a desc that has
+    no *_desc_default(). If it carries a size field (the "descs only grow"
+    promise, issue 13/15), that is set to the size the package's listing
+    gives, as a C caller's sizeof would; descs with a default come from C."""
+    s = STRUCTS[name]()
+    for f in SIZE_FIELDS:
+        if f in dict(type(s)._fields_):
+            setattr(s, f, ctypes.sizeof(s))
+    return s
+
+
+def filled(struct_name, fn, *args):
+    """A dict of the struct C fills: fn(*args, &out) (infos, stats)."""
+    out = new_struct(struct_name)
+    fn(*args, ctypes.byref(out))
+    return to_dict(out)
+
+
+def _enum_of(type_name):
+    return ABI["enums"].get(type_name.replace("const ", "").strip())
+
+
+def set_fields(struct_name, s, values, what):
+    """Set fields of a desc by name; arrays from sequences, enums from their
+    names ("absorb" for MS_BOUNDARY_ABSORB) or values."""
+    fields = {f["name"]: f for f in ABI["structs"][struct_name]["fields"]}
+    for key, v in values.items():
+        if key not in fields or key in SIZE_FIELDS:
+            raise InvalidArgument("%s: %s has no field %r; its fields: %s"
+                                  % (what, struct_name, key,
+                                     ", ".join(k for k in fields if k not in SIZE_FIELDS)))
+        t = fields[key]["type"]
+        ct = ctype(t)
+        enum = _enum_of(t)
+        if enum is not None and isinstance(v, str):
+            match = [val for n, val in enum.items() if n.lower().endswith("_" + v.lower())]
+            if not match:
+                raise InvalidArgument("%s: %s %r is not one of %s" % (
+                    what, key, v, ", ".join(n for n in enum if not n.endswith("_"))))
+            v = match[0]
+        if hasattr(ct, "_length_"):
+            seq = list(np.asarray(v, dtype=np.float64).ravel())
+            if len(seq) != ct._length_:
+                raise InvalidArgument("%s: %s needs %d values, got %d"
+                                      % (what, key, ct._length_, len(seq)))
+            v = ct(*seq)
+        elif ct is ctypes.c_char_p and isinstance(v, str):
+            v = v.encode()
+        try:
+            setattr(s, key, v)
+        except TypeError as e:
+            raise InvalidArgument("%s: %s = %r: %s" % (what, key, v, e)) from None
+    return s
+
+
+def to_dict(s):
+    out = {}
+    for name, _ in type(s)._fields_:
+        v = getattr(s, name)
+        if isinstance(v, ctypes.Array):
+            v = list(v)
+        elif isinstance(v, bytes):
+            v = v.decode()
+        out[name] = v
+    return out
+
+
+def view(ptr, shape, dtype, owner, writeable=False):
+    """A numpy array over C memory (no copy), keeping `owner` alive."""
+    n = int(np.prod(shape))
+    if not ptr or n == 0:
+        a = np.zeros(shape, dtype)
+        a.flags.writeable = False
+        return a
+    ct = np.ctypeslib.as_ctypes_type(np.dtype(dtype))
+    buf = (ct * n).from_address(ptr)
+    buf._modesplit_owner = owner
+    owner._view_made(buf)
+    a = np.frombuffer(buf, dtype=dtype).reshape(shape)
+    a.flags.writeable = writeable
+    return a
+
+
+def as_input(x, shape, dtype, what):
+    """An input array for C: an ndarray must already have the dtype and be
+    C-contiguous (nothing is converted behind the caller's back); other
+    array-likes (lists) are converted. Checked before C sees it."""
+    dtype = np.dtype(dtype)
+    if isinstance(x, np.ndarray):
+        if x.dtype != dtype:
+            raise InvalidArgument("%s: dtype %s, needs %s" % (what, x.dtype, dtype))
+        if not x.flags.c_contiguous:
+            raise InvalidArgument("%s: the array is not C-contiguous (np.ascontiguousarray "
+                                  "makes a contiguous copy)" % what)
+        a = x
+    else:
+        try:
+            a = np.ascontiguousarray(x, dtype=dtype)
+        except (TypeError, ValueError) as e:
+            raise InvalidArgument("%s: not an array of %s: %s" % (what, dtype, e)) from None
+    if tuple(a.shape) != tuple(shape):
+        raise InvalidArgument("%s: shape %s, needs %s" % (what, tuple(a.shape), tuple(shape)))
+    return a
+
+
+def vec(x, n, what):
+    """A small fixed vector (a point, a velocity): any n numbers."""
+    try:
+        a = np.asarray(x, dtype=np.float64).ravel()
+    except (TypeError, ValueError) as e:
+        raise InvalidArgument("%s: not %d numbers: %s" % (what, n, e)) from None
+    if a.size != n:
+        raise InvalidArgument("%s: %d values, needs %d" % (what, a.size, n))
+    return (ctypes.c_float * n)(*a)
+
+
+def cint():
+    return ctypes.c_int()
+
+
+L = lib

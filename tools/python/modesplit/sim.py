@@ -1,0 +1,179 @@
+"""Sim: the mode-splitting coupler (eqs. 19-20, the two-core split)."""
+import ctypes
+
+import numpy as np
+
+from ._base import Handle, L, filled, new_struct, set_fields, to_dict, view
+from ._lib import ABI
+from .errors import InvalidArgument, check
+from .surface import Surface, surface_desc
+from .volume import Volume, volume_desc
+
+FIELDS = {n[len("MS_FIELD_"):].lower(): v for e in ABI["enums"].values()
+          for n, v in e.items() if n.startswith("MS_FIELD_")}
+
+
+def field_bits(fields):
+    """MS_FIELD_* bits from names ("combined", "particles", ...) or an int."""
+    if isinstance(fields, int):
+        return fields
+    if isinstance(fields, str):
+        fields = [fields]
+    bits = 0
+    for f in fields:
+        if f not in FIELDS:
+            raise InvalidArgument("modesplit: no field %r; fields: %s" % (f, ", ".join(FIELDS)))
+        bits |= FIELDS[f]
+    return bits
+
+
+class Sim(Handle):
+    """A mode-splitting simulation.
+
+        sim = Sim(Scene.load("data/scenes/fig1.json"), threads=2)
+        sim = Sim.from_desc(volume=dict(spacing=0.04), surface=dict(nx=256, ny=256,
+                            dx=1 / 256), field=(32, 32), threads=2)
+        sim.step(1 / 60)
+        sim.height           # (ny, nx) combined field, a read-only view
+
+    Views (height, surface_height, volume_field, positions, velocities) are
+    numpy arrays over the C buffers: no copy, read-only. They are valid
+    until the next step() (the sim publishes each frame into the other of
+    two buffers): read the property again after each step. The fields are
+    one frame old (the pipeline of the paper's Fig. 8), as in C."""
+
+    _kind = "Sim"
+
+    def __init__(self, scene, threads=1):
+        p = ctypes.c_void_p()
+        check(L().ms_sim_create_from_scene(scene._ptr, threads, ctypes.byref(p)))
+        Handle.__init__(self, p.value, L().ms_sim_destroy)
+        self._depend_on(scene)        # sim.h: the scene must outlive the sim
+        self.scene = scene
+        self._frame_dt = scene.frame_dt
+        self._keep = ()
+
+    @classmethod
+    def from_desc(cls, volume=None, surface=None, field=(0, 0), threads=1, **desc):
+        """volume / surface: None (absent), True (defaults) or a dict of desc
+        fields; field = (X_SPH, Y_SPH); other keywords are ms_sim_desc
+        fields (surface_substeps, couple_surface_from_volume, ...)."""
+        vd = None if volume is None else volume_desc({} if volume is True else volume)
+        sd = None if surface is None else surface_desc({} if surface is True else surface)
+        d = L().ms_sim_desc_default()
+        nx, ny = field
+        set_fields("ms_sim_desc", d, dict(desc, field_nx=nx, field_ny=ny, threads=threads),
+                   "sim")
+        d.volume = None if vd is None else ctypes.addressof(vd)
+        d.surface = None if sd is None else ctypes.addressof(sd)
+        p = ctypes.c_void_p()
+        check(L().ms_sim_create(ctypes.byref(d), ctypes.byref(p)))
+        self = cls.__new__(cls)
+        Handle.__init__(self, p.value, L().ms_sim_destroy)
+        self.scene = None
+        self._frame_dt = None
+        self._keep = (vd, sd)
+        return self
+
+    def step(self, frame_dt=None):
+        """Advance one frame (s; default the scene's frame_dt)."""
+        ptr = self._ptr
+        if frame_dt is None:
+            if self._frame_dt is None:
+                raise InvalidArgument("sim: step needs frame_dt for a sim made from descs")
+            frame_dt = self._frame_dt
+        check(L().ms_sim_step(ptr, frame_dt))
+
+    def _field(self, fn):
+        nx, ny = ctypes.c_int(), ctypes.c_int()
+        p = fn(self._ptr, ctypes.byref(nx), ctypes.byref(ny))
+        return view(p, (ny.value, nx.value), np.float32, self)
+
+    @property
+    def height(self):
+        """The combined field (eq. 20), (ny, nx), m."""
+        return self._field(L().ms_sim_height)
+
+    @property
+    def surface_height(self):
+        """The wave field of the last frame; (0, 0) without a surface."""
+        return self._field(L().ms_sim_surface_height)
+
+    @property
+    def volume_field(self):
+        """The SPH height field of the last frame (X_SPH x Y_SPH)."""
+        return self._field(L().ms_sim_volume_height)
+
+    def _particles(self):
+        n = ctypes.c_int()
+        pos, vel = (ctypes.c_void_p * 3)(), (ctypes.c_void_p * 3)()
+        check(L().ms_sim_particles(self._ptr, ctypes.byref(n), pos, vel))
+        return n.value, pos, vel
+
+    def _aos(self, n, ptrs):
+        # sim.h: the three arrays of a frame lie in one block at equal
+        # distances, so an (n, 3) view with strides (4, distance) covers them.
+        if n == 0 or not ptrs[0]:
+            return view(None, (0, 3), np.float32, self)
+        step = ptrs[1] - ptrs[0]
+        if step <= 0 or ptrs[2] - ptrs[1] != step or step % 4:
+            raise RuntimeError("modesplit: the library's particle arrays are not one block "
+                               "(sim.h promises it): cannot view them as (n, 3)")
+        flat = view(ptrs[0], (2 * step // 4 + n,), np.float32, self)
+        return np.lib.stride_tricks.as_strided(flat, shape=(n, 3), strides=(4, step),
+                                               writeable=False)
+
+    @property
+    def positions(self):
+        """Particles of the last frame, (n, 3) m, the order they were added."""
+        n, pos, _ = self._particles()
+        return self._aos(n, pos)
+
+    @property
+    def velocities(self):
+        n, _, vel = self._particles()
+        return self._aos(n, vel)
+
+    @property
+    def floaters(self):
+        """Objects carried by the flow (scene effects.floaters): (n, 3) m,
+        z on the combined surface; a view valid until the next step."""
+        n = ctypes.c_int()
+        p = L().ms_sim_floaters(self._ptr, ctypes.byref(n))
+        return view(p, (n.value, 3), np.float32, self)
+
+    @property
+    def volume(self):
+        """The sim's Volume (borrowed: valid while the sim is), or None."""
+        p = L().ms_sim_volume(self._ptr)
+        return Volume._borrow(p, self) if p else None
+
+    @property
+    def surface(self):
+        p = L().ms_sim_surface(self._ptr)
+        return Surface._borrow(p, self) if p else None
+
+    @property
+    def time(self):
+        return L().ms_sim_time(self._ptr)
+
+    @property
+    def frame(self):
+        return L().ms_sim_frame(self._ptr)
+
+    def stats(self):
+        """ms_stats as a dict (stage ms, sub-steps, frames, bytes, ...)."""
+        return filled("ms_stats", L().ms_sim_stats, self._ptr)
+
+    def info(self):
+        return filled("ms_sim_info", L().ms_sim_get_info, self._ptr)
+
+    def grid(self, field="combined"):
+        out = new_struct("ms_grid")
+        check(L().ms_sim_field_grid(self._ptr, field_bits(field), ctypes.byref(out)))
+        return to_dict(out)
+
+    def drag(self, pos, vel, radius, depth, strength):
+        from ._base import vec
+        check(L().ms_sim_drag(self._ptr, vec(pos, 2, "sim: pos"), vec(vel, 2, "sim: vel"),
+                              radius, depth, strength))

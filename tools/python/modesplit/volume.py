@@ -1,0 +1,121 @@
+"""Volume: 3D SPH (paper eqs. 9-18), the low-frequency half."""
+import ctypes
+
+import numpy as np
+
+from ._base import Handle, L, as_input, filled, set_fields, to_dict, vec, view
+from .errors import check
+
+
+class Volume(Handle):
+    """SPH particles in a box.
+
+        v = Volume(domain_min=(0, 0, 0), domain_max=(1, 1, 1), spacing=0.04)
+        v.fill_box((0, 0, 0), (0.3, 1, 0.5))
+        v.step(1 / 60)
+        v.positions          # (n, 3) float32, stable order (a copy)
+
+    Keywords are fields of ms_volume_desc (from ms_volume_desc_default()).
+    The C volume keeps its particles as structure of arrays in an internal
+    order that changes every step, so `positions` / `velocities` are
+    copies in the order the particles were added; `particle_views()` gives
+    the zero-copy SoA views (x, y, z), (vx, vy, vz), valid until the next
+    mutating call. A Sim's particles (sim.positions) are zero-copy (n, 3)."""
+
+    _kind = "Volume"
+
+    def __init__(self, **desc):
+        d = volume_desc(desc)
+        p = ctypes.c_void_p()
+        check(L().ms_volume_create(ctypes.byref(d), ctypes.byref(p)))
+        super().__init__(p.value, L().ms_volume_destroy)
+
+    def fill_box(self, lo, hi):
+        check(L().ms_volume_fill_box(self._ptr, vec(lo, 3, "volume: lo"),
+                                     vec(hi, 3, "volume: hi")))
+
+    def add_particles(self, pos, vel=None):
+        """pos, vel: (n, 3) float32, C-contiguous (vel None = at rest)."""
+        ptr = self._ptr
+        n = len(pos) if hasattr(pos, "__len__") else -1
+        p = as_input(pos, (n, 3), np.float32, "volume: add_particles pos")
+        v = None if vel is None else as_input(vel, (n, 3), np.float32,
+                                              "volume: add_particles vel")
+        check(L().ms_volume_add_particles(ptr, n, p.ctypes.data,
+                                          None if v is None else v.ctypes.data))
+
+    def step(self, dt):
+        check(L().ms_volume_step(self._ptr, dt))
+
+    @property
+    def count(self):
+        return L().ms_volume_count(self._ptr)
+
+    def __len__(self):
+        return self.count
+
+    def _particles(self, want_pos):
+        ptr = self._ptr
+        n = L().ms_volume_count(ptr)
+        out = np.empty((n, 3), np.float32)
+        if n:
+            args = (out.ctypes.data, None) if want_pos else (None, out.ctypes.data)
+            check(L().ms_volume_get_particles(ptr, *args))
+        return out
+
+    @property
+    def positions(self):
+        """(n, 3) m, in the order added (a copy; see the class doc)."""
+        return self._particles(True)
+
+    @property
+    def velocities(self):
+        """(n, 3) m/s, in the order added (a copy)."""
+        return self._particles(False)
+
+    def particle_views(self):
+        """((x, y, z), (vx, vy, vz)): read-only zero-copy views of the C
+        arrays, internal order, valid until the next mutating call."""
+        n = ctypes.c_int()
+        pos, vel = (ctypes.c_void_p * 3)(), (ctypes.c_void_p * 3)()
+        check(L().ms_volume_particle_views(self._ptr, ctypes.byref(n), pos, vel))
+        return (tuple(view(p, (n.value,), np.float32, self) for p in pos),
+                tuple(view(p, (n.value,), np.float32, self) for p in vel))
+
+    def extract_height(self, nx, ny):
+        """The liquid's height field (eqs. 16-18), (ny, nx), m (a new array)."""
+        out = np.empty((ny, nx), np.float32) if nx > 0 and ny > 0 else np.empty(1, np.float32)
+        check(L().ms_volume_extract_height(self._ptr, nx, ny, out.ctypes.data))
+        return out
+
+    @property
+    def kinetic_energy(self):
+        return L().ms_volume_kinetic_energy(self._ptr)
+
+    def add_collider(self, shape):
+        """The volume uses the shape until it is removed or the volume (or
+        its sim) is freed; the shape's C object stays alive that long, even
+        if the Shape is closed."""
+        check(L().ms_volume_add_collider(self._ptr, shape._ptr))
+        self._depend_on(shape)
+
+    def remove_collider(self, shape):
+        check(L().ms_volume_remove_collider(self._ptr, shape._raw))
+        self._undepend(shape)
+
+    def drag(self, centre, radius, velocity, strength):
+        check(L().ms_volume_drag(self._ptr, vec(centre, 3, "volume: centre"), radius,
+                                 vec(velocity, 3, "volume: velocity"), strength))
+
+    def set_viscosity(self, mu):
+        check(L().ms_volume_set_viscosity(self._ptr, mu))
+
+    def info(self):
+        return filled("ms_volume_info", L().ms_volume_get_info, self._ptr)
+
+    def desc(self):
+        return to_dict(L().ms_volume_get_desc(self._ptr))
+
+
+def volume_desc(values):
+    return set_fields("ms_volume_desc", L().ms_volume_desc_default(), values, "volume")
