@@ -34,9 +34,10 @@ static void make_tmp_dir(void)
     ck_assert_ptr_nonnull(mkdtemp(tmp_dir));
 }
 
-static void remove_tmp_dir(void)
+/* The directory and what is in it (the legacy sidecar's run.xdmf2.d too). */
+static void remove_tree(const char *dir)
 {
-    DIR *d = opendir(tmp_dir);
+    DIR *d = opendir(dir);
     if (!d)
         return;
     struct dirent *e;
@@ -44,11 +45,17 @@ static void remove_tmp_dir(void)
         if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
             continue;
         char p[512];
-        snprintf(p, sizeof p, "%s/%s", tmp_dir, e->d_name);
-        remove(p);
+        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+        if (remove(p) != 0)
+            remove_tree(p);
     }
     closedir(d);
-    rmdir(tmp_dir);
+    rmdir(dir);
+}
+
+static void remove_tmp_dir(void)
+{
+    remove_tree(tmp_dir);
 }
 
 static char *tmp_path(const char *name)
@@ -357,8 +364,17 @@ START_TEST(xdmf_lists_every_frame_with_z_y_x_axis_order)
     ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
     ms_writer *w;
     ck_assert_int_eq(ms_writer_open_layout(tmp_path("a b&c.h5"), &l, &w), MS_OK);
+    ck_assert_str_eq(ms_writer_xdmf_legacy_path(w), tmp_path("a b&c.xdmf2"));
+    /* no frame yet: no empty temporal collection (it crashes the legacy
+     * reader); the legacy file lists the grids without data */
     char *x0 = slurp(tmp_path("a b&c.xmf"));
     ck_assert_ptr_nonnull(strstr(x0, "</Xdmf>\n"));
+    ck_assert_int_eq(count_of(x0, "Temporal"), 0);
+    free(x0);
+    x0 = slurp(tmp_path("a b&c.xdmf2"));
+    ck_assert_int_eq(count_of(x0, "Temporal"), 0);
+    ck_assert_int_eq(count_of(x0, "3DCoRectMesh"), 2);
+    ck_assert_int_eq(count_of(x0, "<xi:include"), 0);
     free(x0);
     write_frames(w, &l, 0, 5);
     /* valid after every frame, before close */
@@ -373,21 +389,100 @@ START_TEST(xdmf_lists_every_frame_with_z_y_x_axis_order)
     /* the file name is escaped; 37 x 23 points, dimensions slowest first */
     ck_assert_ptr_nonnull(strstr(x, "a b&amp;c.h5:/fields/combined"));
     ck_assert_int_eq(count_of(x, "TopologyType=\"3DCoRectMesh\" Dimensions=\"1 23 37\""), 5);
-    ck_assert_int_eq(count_of(x, "ItemType=\"HyperSlab\" Dimensions=\"1 23 37\""), 2 * 5);
     ck_assert_int_eq(count_of(x, "TopologyType=\"3DCoRectMesh\" Dimensions=\"1 6 9\""), 5);
-    ck_assert_int_eq(count_of(x, "ItemType=\"HyperSlab\" Dimensions=\"1 6 9\""), 5);
-    /* combined and surface share one grid, volume has its own */
+    /* combined and surface share one grid, volume has its own; the block
+     * names are the fields, never the frame */
     ck_assert_int_eq(count_of(x, "TopologyType=\"3DCoRectMesh\""), 2 * 5);
+    ck_assert_int_eq(count_of(x, "<Grid Name=\"combined surface\""), 5);
+    ck_assert_int_eq(count_of(x, "<Grid Name=\"volume\""), 5);
+    /* Xdmf3 selections: frame 3 of a dataset of (at least) 4 frames */
+    ck_assert_ptr_nonnull(strstr(x, "c.h5:/fields/surface|3 0 0:1 1 1:1 23 37:4 23 37<"));
+    ck_assert_int_eq(count_of(x, "HyperSlab"), 0);
     /* origin (z y x) at the first cell centre, spacing (z dy dx) */
     ck_assert_ptr_nonnull(strstr(x, "Format=\"XML\">1 0.0199999996 0.00999999978<"));
-    ck_assert_ptr_nonnull(strstr(x, ">3 0 0 1 1 1 1 23 37<"));
-    ck_assert_ptr_nonnull(strstr(x, "Dimensions=\"4 23 37\""));
-    /* particles of frame 1 (37 of them), none in frame 0 */
+    /* particles of frame 1 (37 of them) as [n][3] arrays with ids, none in frame 0 */
     ck_assert_ptr_nonnull(strstr(x, "NumberOfElements=\"37\""));
-    ck_assert_ptr_nonnull(strstr(x, "a b&amp;c.h5:/Step#1/vz"));
+    ck_assert_ptr_nonnull(strstr(x, "a b&amp;c.h5:/particles/1/velocity"));
+    ck_assert_ptr_nonnull(strstr(x, "a b&amp;c.h5:/Step#1/id"));
     ck_assert_ptr_null(strstr(x, "/Step#0/"));
     ck_assert_int_eq(count_of(x, "<Grid"), count_of(x, "</Grid>"));
     free(x);
+
+    /* the legacy flavour: one temporal file per grid, included by run.xdmf2 */
+    x = slurp(tmp_path("a b&c.xdmf2"));
+    ck_assert_int_eq(count_of(x, "<xi:include href=\"a b&amp;c.xdmf2.d/"), 3);
+    ck_assert_int_eq(count_of(x, "3DCoRectMesh"), 0);
+    free(x);
+    x = slurp(tmp_path("a b&c.xdmf2.d/combined.xml"));
+    ck_assert_ptr_nonnull(x);
+    ck_assert_int_eq(count_of(x, "CollectionType=\"Temporal\""), 1);
+    ck_assert_int_eq(count_of(x, "<Time Value="), 5);
+    ck_assert_int_eq(count_of(x, "ItemType=\"HyperSlab\" Dimensions=\"1 23 37\""), 2 * 5);
+    ck_assert_ptr_nonnull(strstr(x, ">3 0 0 1 1 1 1 23 37<"));
+    ck_assert_ptr_nonnull(strstr(x, "Dimensions=\"4 23 37\""));
+    ck_assert_int_eq(count_of(x, "<Grid"), count_of(x, "</Grid>"));
+    free(x);
+    x = slurp(tmp_path("a b&c.xdmf2.d/particles.xml"));
+    ck_assert_int_eq(count_of(x, "<Time Value="), 4); /* frame 0 has none */
+    free(x);
+    x = slurp(tmp_path("a b&c.xdmf2.d/volume.xml"));
+    ck_assert_int_eq(count_of(x, "<Grid Name=\"volume\" GridType=\"Uniform\""), 5);
+    free(x);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* Particles carry ids (their insertion index) and [n][3] copies of
+ * positions and velocities that equal the H5Part arrays. */
+START_TEST(particles_have_ids_and_xyz_arrays_equal_to_h5part)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    ms_writer *w;
+    ck_assert_int_eq(ms_writer_open_layout(tmp_path("p.h5"), &l, &w), MS_OK);
+    write_frames(w, &l, 0, 3);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    hid_t f = H5Fopen(tmp_path("p.h5"), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    int64_t version = 0;
+    ck_assert_int_ge(ms_h5_read_int64(f, "format_version", &version), 0);
+    ck_assert_int_eq(version, 2);
+    for (long k = 1; k < 3; ++k) {
+        char name[64];
+        snprintf(name, sizeof name, "/Step#%ld/id", k);
+        hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+        ck_assert_int_ge(d, 0);
+        int n = (int)H5Sget_simple_extent_npoints(H5Dget_space(d));
+        ck_assert_int_gt(n, 0);
+        int *id = malloc((size_t)n * sizeof *id);
+        float *xyz = malloc((size_t)n * 3 * sizeof *xyz), *a = malloc((size_t)n * sizeof *a);
+        ck_assert_int_ge(H5Dread(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, id), 0);
+        H5Dclose(d);
+        for (int i = 0; i < n; ++i)
+            ck_assert_int_eq(id[i], i);
+        static const char *const comp[2][3] = {{"x", "y", "z"}, {"vx", "vy", "vz"}};
+        static const char *const vec[2] = {"position", "velocity"};
+        for (int v = 0; v < 2; ++v) {
+            snprintf(name, sizeof name, "/particles/%ld/%s", k, vec[v]);
+            d = H5Dopen2(f, name, H5P_DEFAULT);
+            ck_assert_int_ge(d, 0);
+            ck_assert_int_ge(H5Dread(d, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, xyz), 0);
+            H5Dclose(d);
+            for (int c = 0; c < 3; ++c) {
+                snprintf(name, sizeof name, "/Step#%ld/%s", k, comp[v][c]);
+                d = H5Dopen2(f, name, H5P_DEFAULT);
+                ck_assert_int_ge(H5Dread(d, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, a), 0);
+                H5Dclose(d);
+                for (int i = 0; i < n; ++i)
+                    ck_assert_msg(memcmp(&xyz[3 * i + c], &a[i], sizeof *a) == 0,
+                                  "frame %ld %s[%d][%d] differs", k, vec[v], i, c);
+            }
+        }
+        free(id);
+        free(xyz);
+        free(a);
+    }
+    H5Fclose(f);
     remove_tmp_dir();
 }
 END_TEST
@@ -1000,6 +1095,7 @@ static Suite *io_suite(void)
     tcase_add_test(tc, only_the_fields_asked_for_are_written);
     tcase_add_test(tc, a_scene_text_over_64_kib_round_trips);
     tcase_add_test(tc, xdmf_lists_every_frame_with_z_y_x_axis_order);
+    tcase_add_test(tc, particles_have_ids_and_xyz_arrays_equal_to_h5part);
     tcase_add_test(tc, xdmf_path_replaces_h5_or_appends);
     tcase_add_test(tc, superblock_checksum_matches_hdf5);
     suite_add_tcase(s, tc);

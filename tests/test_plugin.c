@@ -403,12 +403,13 @@ START_TEST(out_of_tree_plugin_builds_against_installed_headers)
         slurp(path, out, sizeof out);
     }
     ck_assert_msg(rc == 0, "install/build failed (%d): %s", rc, rc ? out : "");
-    /* installed program, no MODESPLIT_PLUGIN_PATH: the install's plugins
-     * come before the build tree's */
+    /* installed program, no MODESPLIT_PLUGIN_PATH: the install's plugins,
+     * and not the build tree's (issue 17: it is not the installed code's) */
     snprintf(path, sizeof path, "%s/installed.txt", dir);
     slurp(path, out, sizeof out);
-    snprintf(want, sizeof want, "path %s/prefix/lib/modesplit/plugins:", dir);
+    snprintf(want, sizeof want, "path %s/prefix/lib/modesplit/plugins\n", dir);
     ck_assert_msg(strstr(out, want), "%s lacks \"%s\"", out, want);
+    ck_assert_msg(!strstr(out, MS_BUILD_PLUGIN_DIR), "%s searches the build tree", out);
     snprintf(want, sizeof want, "plugin sphere %s/prefix/lib/modesplit/plugins/shape_sphere.so",
              dir);
     ck_assert_msg(strstr(out, want), "%s lacks \"%s\"", out, want);

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sched.h>
+#include <sys/ioctl.h>
 #include <sys/mount.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -89,6 +90,17 @@ static const char *tool_path(void)
     const char *b = getenv("MS_TEST_BUILD");
     snprintf(p, sizeof p, "%s/bin/modesplit", b && b[0] ? b : "build");
     return p;
+}
+
+/* The directory of the tool (BUILD/bin). */
+static const char *tool_dir(void)
+{
+    static char d[512];
+    snprintf(d, sizeof d, "%s", tool_path());
+    char *slash = strrchr(d, '/');
+    if (slash)
+        *slash = '\0';
+    return d;
 }
 
 static char *slurp(const char *path)
@@ -355,6 +367,28 @@ START_TEST(every_malformed_scene_exits_2_naming_the_problem)
 END_TEST
 
 /* ---- runs ------------------------------------------------------------------ */
+
+/* A --png that is a file is refused before the run file is created:
+ * nothing empty is left behind. */
+START_TEST(png_pointing_at_a_file_leaves_no_empty_run_file)
+{
+    make_tmp_dir();
+    const char *file = tmp_path("not_a_dir");
+    FILE *f = fopen(file, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs("x", f);
+    fclose(f);
+    result r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--out",
+                                         tmp_path("left.h5"), "--png", file, NULL});
+    ck_assert_msg(WIFEXITED(r.status) && WEXITSTATUS(r.status) == 1, "%s", r.err);
+    ck_assert_msg(strstr(r.err, "not_a_dir"), "%s", r.err);
+    result_free(&r);
+    ck_assert_int_ne(access(tmp_path("left.h5"), F_OK), 0);
+    ck_assert_int_ne(access(tmp_path("left.xmf"), F_OK), 0);
+    ck_assert_int_ne(access(tmp_path("left.xdmf2"), F_OK), 0);
+    remove_tmp_dir();
+}
+END_TEST
 
 START_TEST(run_writes_hdf5_xdmf_png_and_a_summary)
 {
@@ -715,9 +749,10 @@ END_TEST
 
 /* ---- progress display ------------------------------------------------------ */
 
-START_TEST(progress_is_a_bar_on_a_terminal)
+/* Run the small scene with stderr on a terminal of `cols` columns (0: the
+ * pty's default, no size); the bytes written to it, malloc'ed. */
+static char *run_on_terminal(int cols)
 {
-    make_tmp_dir();
     int master = posix_openpt(O_RDWR | O_NOCTTY);
     ck_assert_int_ge(master, 0);
     ck_assert_int_eq(grantpt(master), 0);
@@ -727,17 +762,22 @@ START_TEST(progress_is_a_bar_on_a_terminal)
     ck_assert_int_ge(pid, 0);
     if (pid == 0) {
         int s = open(slave_name, O_RDWR);
+        if (cols > 0) {
+            struct winsize ws = {.ws_row = 24, .ws_col = (unsigned short)cols};
+            ioctl(s, TIOCSWINSZ, &ws);
+        }
         int o = open("/dev/null", O_WRONLY);
         dup2(s, 2);
         dup2(o, 1);
+        unsetenv("COLUMNS");
         execl(tool_path(), tool_path(), "run", SMALL_SCENE, "--frames", "8", "--no-out",
               (char *)NULL);
         _exit(127);
     }
-    char buf[65536];
+    char *buf = malloc(65536);
     size_t got = 0;
     for (;;) {
-        ssize_t n = read(master, buf + got, sizeof buf - 1 - got);
+        ssize_t n = read(master, buf + got, 65535 - got);
         if (n <= 0)
             break;
         got += (size_t)n;
@@ -747,9 +787,133 @@ START_TEST(progress_is_a_bar_on_a_terminal)
     waitpid(pid, &status, 0);
     close(master);
     ck_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    return buf;
+}
+
+START_TEST(progress_is_a_bar_on_a_terminal)
+{
+    make_tmp_dir();
+    char *buf = run_on_terminal(200);
     ck_assert_msg(strstr(buf, "\r[") && strstr(buf, "frames/s") && strstr(buf, "ETA"), "%s", buf);
     ck_assert_ptr_nonnull(strstr(buf, "8/8"));
     ck_assert_ptr_nonnull(strstr(buf, "vol "));
+    free(buf);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* Each redraw of the line fits the terminal (at most width - 1 columns),
+ * so it never wraps: at 80 columns the stage split goes, at 40 the bar. */
+START_TEST(progress_line_fits_the_terminal_width)
+{
+    make_tmp_dir();
+    const int widths[] = {0, 80, 40, 20};
+    for (int w = 0; w < 4; ++w) {
+        int cols = widths[w] ? widths[w] : 80; /* no size: 80 */
+        char *buf = run_on_terminal(widths[w]);
+        int lines = 0;
+        for (char *p = strchr(buf, '\r'); p; p = strchr(p + 1, '\r')) {
+            char *end = strstr(p, "\033[K");
+            if (!end)
+                continue;
+            ck_assert_msg(end - p - 1 <= cols - 1, "%d columns: a line of %d: %.*s", cols,
+                          (int)(end - p - 1), (int)(end - p), p);
+            ++lines;
+        }
+        ck_assert_int_gt(lines, 0);
+        if (cols == 40)
+            ck_assert_msg(strstr(buf, "8/8") && !strstr(buf, "vol "), "%s", buf);
+        free(buf);
+    }
+    remove_tmp_dir();
+}
+END_TEST
+
+/* An installed tool (a copy outside the build tree) searches its own
+ * lib/modesplit/plugins, never the build tree's plugins. */
+START_TEST(installed_tool_does_not_search_the_build_tree)
+{
+    make_tmp_dir();
+    char bin[600], exe[700], cmd[4096];
+    snprintf(bin, sizeof bin, "%s/prefix/bin", tmp_dir);
+    snprintf(exe, sizeof exe, "%s/modesplit", bin);
+    /* the tool and the shared library it loads ($ORIGIN/../lib) */
+    snprintf(cmd, sizeof cmd,
+             "mkdir -p '%s' '%s/../lib' && cp '%s' '%s' && cp -L '%s/../lib/libmodesplit.so.0' "
+             "'%s/../lib/'", bin, bin, tool_path(), exe, tool_dir(), bin);
+    ck_assert_int_eq(system(cmd), 0);
+    char out[700], err[700];
+    snprintf(out, sizeof out, "%s/out.txt", tmp_dir);
+    snprintf(err, sizeof err, "%s/err.txt", tmp_dir);
+    snprintf(cmd, sizeof cmd, "env -u MODESPLIT_PLUGIN_PATH '%s' plugins > '%s' 2> '%s'", exe, out,
+             err);
+    ck_assert_int_eq(system(cmd), 0);
+    char *o = slurp(out);
+    ck_assert_ptr_nonnull(strstr(o, "search path: "));
+    /* <prefix>/lib/modesplit/plugins, spelled from the library or the tool */
+    ck_assert_msg(strstr(o, "/prefix/") && strstr(o, "lib/modesplit/plugins"), "%s", o);
+    ck_assert_msg(!strstr(o, MS_BUILD_PLUGIN_DIR), "the installed tool searches %s:\n%s",
+                  MS_BUILD_PLUGIN_DIR, o);
+    free(o);
+    /* the tool in the build tree still finds the build's plugins */
+    result r = run_tool((const char *[]){"plugins", NULL});
+    ASSERT_EXIT(r, 0);
+    ck_assert_ptr_nonnull(strstr(r.out, MS_BUILD_PLUGIN_DIR));
+    result_free(&r);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* ---- per-command help and "did you mean" ----------------------------------- */
+
+START_TEST(each_command_has_its_help_and_typos_get_a_suggestion)
+{
+    make_tmp_dir();
+    result r = run_tool((const char *[]){"run", "--help", NULL});
+    ASSERT_EXIT(r, 0);
+    ck_assert_msg(!strncmp(r.out, "usage: modesplit run SCENE.json", 31), "%s", r.out);
+    ck_assert_ptr_nonnull(strstr(r.out, "--frames N"));
+    ck_assert_ptr_null(strstr(r.out, "info [--scene]")); /* only run's part */
+    result_free(&r);
+    const char *cmds[] = {"info", "check", "plugins", "export"};
+    for (int i = 0; i < 4; ++i) {
+        r = run_tool((const char *[]){cmds[i], "--help", NULL});
+        ASSERT_EXIT(r, 0);
+        char want[64];
+        snprintf(want, sizeof want, "usage: modesplit %s", cmds[i]);
+        ck_assert_msg(!strncmp(r.out, want, strlen(want)), "%s", r.out);
+        result_free(&r);
+        r = run_tool((const char *[]){"help", cmds[i], NULL});
+        ASSERT_EXIT(r, 0);
+        ck_assert_msg(!strncmp(r.out, want, strlen(want)), "%s", r.out);
+        result_free(&r);
+    }
+    r = run_tool((const char *[]){"run", SMALL_SCENE, "--frame", "3", NULL});
+    ASSERT_EXIT(r, 2);
+    ck_assert_msg(strstr(r.err, "unknown option --frame; did you mean --frames?"), "%s", r.err);
+    result_free(&r);
+    r = run_tool((const char *[]){"run", SMALL_SCENE, "--thread=2", NULL});
+    ASSERT_EXIT(r, 2);
+    ck_assert_msg(strstr(r.err, "did you mean --threads?"), "%s", r.err);
+    result_free(&r);
+    r = run_tool((const char *[]){"info", "--scen", "x.h5", NULL});
+    ASSERT_EXIT(r, 2);
+    ck_assert_msg(strstr(r.err, "did you mean --scene?"), "%s", r.err);
+    result_free(&r);
+    /* nothing close: no guess */
+    r = run_tool((const char *[]){"run", SMALL_SCENE, "--xyzzy", NULL});
+    ASSERT_EXIT(r, 2);
+    ck_assert_msg(strstr(r.err, "unknown option --xyzzy") && !strstr(r.err, "did you mean"),
+                  "%s", r.err);
+    result_free(&r);
+    r = run_tool((const char *[]){"rnu", NULL});
+    ASSERT_EXIT(r, 2);
+    ck_assert_msg(strstr(r.err, "did you mean run?"), "%s", r.err);
+    result_free(&r);
+    r = run_tool((const char *[]){"help", "nope", NULL});
+    ASSERT_EXIT(r, 2);
+    ck_assert_ptr_nonnull(strstr(r.err, "no command \"nope\""));
+    result_free(&r);
     remove_tmp_dir();
 }
 END_TEST
@@ -789,11 +953,15 @@ static Suite *tool_suite(void)
     tc = tcase_create("run");
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, run_writes_hdf5_xdmf_png_and_a_summary);
+    tcase_add_test(tc, png_pointing_at_a_file_leaves_no_empty_run_file);
     tcase_add_test(tc, run_file_holds_what_the_sim_held_bit_for_bit);
     tcase_add_test(tc, writer_refuses_fields_the_sim_lacks);
     tcase_add_test(tc, unwritable_outputs_exit_1_with_a_sentence);
     tcase_add_test(tc, full_disk_exits_1_and_keeps_the_frames);
     tcase_add_test(tc, progress_is_a_bar_on_a_terminal);
+    tcase_add_test(tc, progress_line_fits_the_terminal_width);
+    tcase_add_test(tc, each_command_has_its_help_and_typos_get_a_suggestion);
+    tcase_add_test(tc, installed_tool_does_not_search_the_build_tree);
     suite_add_tcase(s, tc);
     tc = tcase_create("signals");
     tcase_set_timeout(tc, 180);

@@ -10,7 +10,8 @@
  *     }
  *     ms_writer_close(w);           // run.h5 + run.xmf (ParaView)
  *
- * The file (format "modesplit", format_version 1):
+ * The file (format "modesplit", format_version 2; version 1 files, which
+ * lack /particles and the `id` arrays, are still read):
  *   /                     attributes format, format_version, library_version,
  *                         scene (the scene JSON), scene_name, frame_dt (s),
  *                         output_every, frames (complete frames in the file)
@@ -20,7 +21,10 @@
  *                         shuffle + deflate; attributes dx = [dx, dy] (m),
  *                         origin = [x0, y0] (m, corner of cell (0, 0))
  *   /Step#<n>/x,y,z,vx,vy,vz   particles (H5Part), float32 [count], m and
- *                         m/s; attribute TimeValue (s)
+ *                         m/s; attribute TimeValue (s); id, int32 [count]
+ *                         (the particle's insertion index, stable in time)
+ *   /particles/<n>/position, velocity   the same particles as float32
+ *                         [count][3] (what ParaView's Xdmf3 reader reads)
  * Only the fields asked for are present. Frame n is the n-th written frame.
  *
  * Crash safety: each frame is written and flushed before ms_writer_frame
@@ -32,11 +36,13 @@
  * frame that cannot fit. The writer turns off HDF5 file locking so that the
  * file can be read while the run goes on.
  *
- * The XDMF sidecar (run.xmf beside run.h5; the path with ".h5" replaced, or
- * ".xmf" appended) is a temporal collection, one entry per frame, rewritten
- * in place after each frame: ParaView (Xdmf readers) opens height fields as
- * point data on an image grid (points at the cell centres) and particles as
- * poly-vertices with a velocity vector.
+ * The XDMF sidecars (run.xmf beside run.h5, the path with ".h5" replaced,
+ * or ".xmf" appended; and run.xdmf2) are temporal collections, one entry
+ * per frame, extended in place after each frame. run.xmf is for ParaView's
+ * default reader (Xdmf3), run.xdmf2 for the legacy XDMF reader and VisIt
+ * (each reads a hyperslab only in its own syntax). Both open height fields
+ * as point data on an image grid (points at the cell centres) and
+ * particles as poly-vertices with a `velocity` vector and an `id`.
  *
  * None of this prints: HDF5's own error printing is silenced during each
  * call (and restored after), its errors become one ms_last_error() sentence.
@@ -52,7 +58,7 @@ extern "C" {
 #endif
 
 #define MS_FILE_FORMAT "modesplit"
-#define MS_FILE_FORMAT_VERSION 1
+#define MS_FILE_FORMAT_VERSION 2
 
 /* ---- writing ----------------------------------------------------------- */
 
@@ -119,6 +125,9 @@ MS_API ms_status ms_reader_particle_count(const ms_reader *r, long frame, int *n
  * pointers (or pos, vel) may be NULL to skip it. */
 MS_API ms_status ms_reader_read_particles(const ms_reader *r, long frame, int capacity,
                                           float *const pos[3], float *const vel[3]);
+
+/* The legacy (Xdmf2 / VisIt) sidecar's path, "run.xdmf2". */
+MS_API const char *ms_writer_xdmf_legacy_path(const ms_writer *w);
 
 /* ---- shaded-relief preview (PNG) ---------------------------------------- */
 

@@ -61,22 +61,29 @@ const ms_writer_layout *ms_writer_get_layout(const ms_writer *w);
 /* ---- XDMF sidecar (xdmf.c) ---- */
 typedef struct ms_xdmf ms_xdmf;
 /* Create the sidecar at xmf_path that refers to h5_name (a path relative
- * to the sidecar's directory). */
+ * to the sidecar's directory); legacy = 1 writes the Xdmf2 flavour. */
 ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_writer_layout *l,
-                       ms_xdmf **out);
+                       int legacy, ms_xdmf **out);
 /* Append frame `frame` (time t, `particles` particles in /Step#frame). */
 ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles);
 ms_status ms_xdmf_close(ms_xdmf *x);
 /* "run.xmf" for "run.h5", "out.dat.xmf" for "out.dat"; ms_malloc'ed (ms_free it). */
 char *ms_xdmf_path_for(const char *h5_path);
+/* "run.xdmf2" for "run.h5" (the legacy reader's sidecar); malloc'ed. */
+char *ms_xdmf_legacy_path_for(const char *h5_path);
 
 /* ---- H5Part particles (h5part.c) ---- */
 /* Create the group of one step, not yet linked into the file (anonymous),
- * with TimeValue and the six arrays; *group out (H5Gclose it). */
+ * with TimeValue, the six arrays and `id`; *group out (H5Gclose it). */
 ms_status ms_h5part_write_step(hid_t file, double t, int n, const float *const pos[3],
                                const float *const vel[3], hid_t *group);
 /* Link a written step as /Step#frame. */
 ms_status ms_h5part_link_step(hid_t file, hid_t group, long frame);
+/* The same particles as [n][3] arrays `position` and `velocity` (what
+ * Xdmf3 reads), in an anonymous group linked as /particles/<frame>. */
+ms_status ms_h5part_write_xyz(hid_t file, int n, const float *const pos[3],
+                              const float *const vel[3], hid_t *group);
+ms_status ms_h5part_link_xyz(hid_t file, hid_t group, long frame);
 /* "Step#12" into buf. */
 void ms_h5part_step_name(char *buf, size_t size, long frame);
 

@@ -11,9 +11,9 @@
  *      an anonymous group;
  *   3. move the superblock's EOA ahead (eoa_guard.c), H5Fflush: the frame's
  *      data and metadata are on disk;
- *   4. link /Step#k, raise the root attribute `frames`, guard and flush
+ *   4. link /Step#k and /particles/k, raise the root attribute `frames`, guard and flush
  *      again: the commit;
- *   5. append the frame to the XDMF sidecar (one pwrite).
+ *   5. append the frame to the XDMF sidecars (one pwrite each).
  * Freed file space is never reused (H5F_FSPACE_STRATEGY_NONE), so nothing a
  * flushed state refers to is overwritten by a later frame's data; a kill
  * between two flushes leaves the last committed state readable. The reader
@@ -47,6 +47,7 @@
 struct ms_writer {
     char *path;
     char *xmf_path;
+    char *xmf2_path;         /* the legacy reader's sidecar */
     hid_t file;
     hid_t dset[MS_IO_NFIELDS];
     hid_t time_dset;
@@ -55,7 +56,7 @@ struct ms_writer {
     long frames;             /* committed */
     int failed;              /* a write failed: no more frames */
     int no_space_check;      /* tests: let the write meet the full disk */
-    ms_xdmf *xdmf;
+    ms_xdmf *xdmf, *xdmf2;
 };
 
 static void close_handles(ms_writer *w)
@@ -81,6 +82,7 @@ static void free_writer(ms_writer *w)
         return;
     ms_free(w->path);
     ms_free(w->xmf_path);
+    ms_free(w->xmf2_path);
     ms_free(w);
 }
 
@@ -253,6 +255,11 @@ static int write_layout(ms_writer *w, const ms_writer_layout *l)
         if (H5Gclose(g) < 0)
             return -1;
     }
+    if (l->fields & MS_FIELD_PARTICLES) {
+        hid_t g = H5Gcreate2(f, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        if (g < 0 || H5Gclose(g) < 0)
+            return -1;
+    }
     w->time_dset = create_time(f);
     if (w->time_dset < 0)
         return -1;
@@ -325,7 +332,8 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
     w->layout.scene_text = w->layout.scene_name = NULL;
     w->path = ms_strdup(path);
     w->xmf_path = ms_xdmf_path_for(path);
-    if (!w->path || !w->xmf_path) {
+    w->xmf2_path = ms_xdmf_legacy_path_for(path);
+    if (!w->path || !w->xmf_path || !w->xmf2_path) {
         free_writer(w);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
     }
@@ -356,7 +364,15 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
     if (st == MS_OK) {
         /* The sidecar names the HDF5 file relative to itself. */
         const char *slash = strrchr(path, '/');
-        st = ms_xdmf_open(w->xmf_path, slash ? slash + 1 : path, &w->layout, &w->xdmf);
+        st = ms_xdmf_open(w->xmf_path, slash ? slash + 1 : path, &w->layout, 0, &w->xdmf);
+        if (st == MS_OK)
+            st = ms_xdmf_open(w->xmf2_path, slash ? slash + 1 : path, &w->layout, 1,
+                              &w->xdmf2);
+        if (st != MS_OK) {
+            ms_xdmf_close(w->xdmf);
+            w->xdmf = NULL;
+            unlink(w->xmf_path);
+        }
     }
     if (st != MS_OK) {
         close_handles(w);
@@ -386,7 +402,7 @@ static uint64_t frame_bound_bytes(const ms_writer *w, int particles)
         if (w->layout.fields & (1u << i))
             raw += (uint64_t)w->layout.grid[i].nx * (uint64_t)w->layout.grid[i].ny * 4u;
     if (w->layout.fields & MS_FIELD_PARTICLES)
-        raw += (uint64_t)particles * 6u * 4u;
+        raw += (uint64_t)particles * 13u * 4u; /* H5Part 6 + id + [n][3] twice */
     /* deflate can grow incompressible data a little */
     return raw + raw / 64 + META_SLACK_BYTES;
 }
@@ -506,7 +522,7 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
     }
     long k = w->frames;
     int ok = 1;
-    hid_t step = -1;
+    hid_t step = -1, xyz = -1;
     for (int i = 0; i < MS_IO_NFIELDS && ok; ++i) {
         if (!(w->layout.fields & (1u << i)))
             continue;
@@ -515,7 +531,8 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
     }
     int particles = (w->layout.fields & MS_FIELD_PARTICLES) ? d->particles : 0;
     if (ok && (w->layout.fields & MS_FIELD_PARTICLES))
-        ok = ms_h5part_write_step(w->file, d->time, particles, d->pos, d->vel, &step) == MS_OK;
+        ok = ms_h5part_write_step(w->file, d->time, particles, d->pos, d->vel, &step) == MS_OK &&
+             ms_h5part_write_xyz(w->file, particles, d->pos, d->vel, &xyz) == MS_OK;
     if (ok)
         ok = append_rows(w->time_dset, k, &d->time, H5T_NATIVE_DOUBLE, 1, NULL) >= 0;
     /* 1: the frame's data and its (still unlinked) particle step */
@@ -525,9 +542,13 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
     int64_t committed = k + 1;
     if (ok && step >= 0)
         ok = ms_h5part_link_step(w->file, step, k) == MS_OK;
+    if (ok && xyz >= 0)
+        ok = ms_h5part_link_xyz(w->file, xyz, k) == MS_OK;
     if (ok)
         ok = H5Awrite(w->frames_attr, H5T_NATIVE_INT64, &committed) >= 0 && commit(w);
     if (step >= 0 && H5Gclose(step) < 0)
+        ok = 0;
+    if (xyz >= 0 && H5Gclose(xyz) < 0)
         ok = 0;
     if (!ok) {
         w->failed = 1;
@@ -538,6 +559,8 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
     ms_h5_loud(&q);
     w->frames = k + 1;
     st = ms_xdmf_frame(w->xdmf, k, d->time, particles);
+    if (st == MS_OK)
+        st = ms_xdmf_frame(w->xdmf2, k, d->time, particles);
     if (st != MS_OK)
         w->failed = 1;
     return st;
@@ -561,6 +584,9 @@ ms_status ms_writer_close(ms_writer *w)
     ms_status xs = ms_xdmf_close(w->xdmf);
     if (st == MS_OK)
         st = xs;
+    xs = ms_xdmf_close(w->xdmf2);
+    if (st == MS_OK)
+        st = xs;
     free_writer(w);
     return st;
 }
@@ -573,6 +599,11 @@ long ms_writer_frames(const ms_writer *w)
 const char *ms_writer_xdmf_path(const ms_writer *w)
 {
     return w ? w->xmf_path : "";
+}
+
+const char *ms_writer_xdmf_legacy_path(const ms_writer *w)
+{
+    return w ? w->xmf2_path : "";
 }
 
 void ms_writer_skip_space_check(ms_writer *w)

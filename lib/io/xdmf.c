@@ -1,19 +1,40 @@
-/* lib/io: the XDMF (v2) sidecar that lets ParaView and VisIt open a run
- * file as a time series.
+/* lib/io: the XDMF sidecars that let ParaView and VisIt open a run file as
+ * a time series.
  *
- * One temporal collection; each written frame is a spatial collection with
- * its <Time>, one uniform grid per distinct field grid (combined and
- * surface share the wave grid, volume has the SPH grid) and, when the frame
- * has particles, a poly-vertex grid of them. A height field is point data
- * on a 3DCoRectMesh of 1 x ny x nx points placed at the cell centres;
- * XDMF lists dimensions slowest first (z y x), and so its origin and
- * spacing. Each field attribute is a hyperslab [frame][0..ny)[0..nx) of the
- * /fields/<name> dataset.
+ * Two sidecars, one per reader family, written side by side (format_version 2):
+ *   run.xmf    for ParaView's default reader of .xmf (Xdmf3ReaderS). Xdmf3
+ *              reads neither HyperSlab items nor X_Y_Z geometry (it skips
+ *              them, "unrecognized array type"), so a frame of a field is
+ *              an HDF item with Xdmf3's own selection suffix
+ *              "file:/fields/name|start:stride:count:dataspace", and the
+ *              particles' geometry and velocity are the [n][3] arrays of
+ *              /particles/<frame> (see h5part.c).
+ *   run.xdmf2  for the legacy XDMF reader ("XDMF Reader", Xdmf2, which
+ *              ParaView picks for .xdmf2) and VisIt: fields as HyperSlab
+ *              items, which that reader reads and Xdmf3 does not.
+ * run.xmf is one temporal collection; each written frame is a spatial
+ * collection with its <Time>, one uniform grid per distinct field grid
+ * (combined and surface share the wave grid, volume has the SPH grid) and,
+ * when the frame has particles, a poly-vertex grid of them with `velocity`
+ * (3-vector) and `id`. The legacy reader names a block of such a file
+ * after the grid *and the frame* ("volume[89]"), so a selected block does
+ * not animate; it names blocks cleanly only for a spatial collection of
+ * temporal collections, one per grid. run.xdmf2 is that: a spatial
+ * collection that XIncludes one file per grid, run.xdmf2.d/<grid>.xml,
+ * each a temporal collection of that grid's frames. Grid names are the
+ * fields they hold ("combined surface", "volume", "particles"), the same in
+ * every frame. A height field is point data on a 3DCoRectMesh of
+ * 1 x ny x nx points placed at the cell centres; XDMF lists dimensions
+ * slowest first (z y x), and so its origin and spacing.
  *
- * The file is kept valid after every frame: the closing tags are written
+ * The files are kept valid after every frame: the closing tags are written
  * after the last frame, and the next frame is written over them together
  * with a fresh copy, in a single pwrite, so a run killed at any moment
- * leaves well-formed XML that lists the frames written so far.
+ * leaves well-formed XML that lists the frames written so far. A run of no
+ * frame has an empty <Domain> (an empty temporal collection crashes the
+ * legacy reader): run.xmf's temporal collection opens with the first frame,
+ * and run.xdmf2 (rewritten whole, by rename) includes a grid's file once it
+ * holds a frame.
  */
 #include <errno.h>
 #include <fcntl.h>
@@ -21,20 +42,37 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "io/io_internal.h"
 
 static const char TAIL[] = "  </Grid>\n </Domain>\n</Xdmf>\n";
+static const char EMPTY_TAIL[] = " </Domain>\n</Xdmf>\n";
+static const char COLLECTION[] =
+    "  <Grid Name=\"run\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
 
 struct ms_xdmf {
     int fd;
     char *path;
     char *h5;          /* the HDF5 file's name, XML-escaped */
     off_t tail_at;     /* where the closing tags start */
+    int legacy;        /* 1: Xdmf2 HyperSlab items; 0: Xdmf3 selections */
+    long frames;       /* frames listed */
     ms_writer_layout layout;
     int group_of[MS_IO_NFIELDS]; /* first field slot with the same grid */
+    /* legacy: one XIncluded file per grid (field slots, then particles) */
+    char *dir;                  /* run.xdmf2.d */
+    char *dir_name;             /* its last component, for the hrefs */
+    int gfd[MS_IO_NFIELDS + 1];
+    off_t gtail[MS_IO_NFIELDS + 1];
+    long gcount[MS_IO_NFIELDS + 1];
 };
+
+#define PARTICLE_GROUP MS_IO_NFIELDS
+static const char GROUP_TAIL[] = "</Grid>\n";
+
+static ms_status write_legacy_main(const ms_xdmf *x);
 
 /* A growing string. */
 typedef struct sbuf {
@@ -133,18 +171,43 @@ static int write_all_at(int fd, const char *buf, size_t len, off_t at)
     return 0;
 }
 
+char *ms_xdmf_legacy_path_for(const char *h5_path)
+{
+    char *p = ms_xdmf_path_for(h5_path);
+    char *q = p ? ms_realloc(p, strlen(p) + 3) : NULL;
+    if (!q) {
+        ms_free(p);
+        return NULL;
+    }
+    strcpy(q + strlen(q) - 4, ".xdmf2"); /* ".xmf" -> ".xdmf2" */
+    return q;
+}
+
 ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_writer_layout *l,
-                       ms_xdmf **out)
+                       int legacy, ms_xdmf **out)
 {
     *out = NULL;
     ms_xdmf *x = ms_alloc_array(1, sizeof *x);
     if (!x)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the XDMF sidecar");
     x->fd = -1;
+    for (int i = 0; i <= MS_IO_NFIELDS; ++i)
+        x->gfd[i] = -1;
     x->layout = *l;
+    x->legacy = legacy;
     x->path = ms_strdup(xmf_path);
     x->h5 = xml_escape(h5_name);
-    if (!x->path || !x->h5) {
+    if (legacy && x->path) {
+        size_t n = strlen(xmf_path);
+        x->dir = ms_malloc(n + 3);
+        if (x->dir) {
+            memcpy(x->dir, xmf_path, n);
+            memcpy(x->dir + n, ".d", 3);
+            const char *slash = strrchr(x->dir, '/');
+            x->dir_name = xml_escape(slash ? slash + 1 : x->dir);
+        }
+    }
+    if (!x->path || !x->h5 || (legacy && (!x->dir || !x->dir_name))) {
         ms_xdmf_close(x);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the XDMF sidecar");
     }
@@ -159,6 +222,20 @@ ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_write
             }
         }
     }
+    if (legacy) {
+        ms_status st = MS_OK;
+        if (mkdir(x->dir, 0777) != 0 && errno != EEXIST)
+            st = ms_fail(MS_ERR_IO, "io: cannot create the directory %s: %s", x->dir,
+                         strerror(errno));
+        else
+            st = write_legacy_main(x);
+        if (st != MS_OK) {
+            ms_xdmf_close(x);
+            return st;
+        }
+        *out = x;
+        return MS_OK;
+    }
     x->fd = open(xmf_path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (x->fd < 0) {
         int e = errno;
@@ -172,12 +249,11 @@ ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_write
               "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
               "<!-- modesplit %s: the frames of %s as a time series (open this file in "
               "ParaView) -->\n"
-              "<Xdmf Version=\"2.0\">\n"
-              " <Domain>\n"
-              "  <Grid Name=\"run\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
-              ms_version(), x->h5);
+              "<Xdmf Version=\"%s\">\n"
+              " <Domain>\n",
+              ms_version(), x->h5, legacy ? "2.0" : "3.0");
     x->tail_at = (off_t)b.len;
-    sb_printf(&b, "%s", TAIL);
+    sb_printf(&b, "%s", EMPTY_TAIL);
     int bad = b.oom || write_all_at(x->fd, b.p, b.len, 0) < 0;
     int e = errno;
     ms_free(b.p);
@@ -190,13 +266,27 @@ ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_write
     return MS_OK;
 }
 
-static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame)
+/* "combined surface": the fields on this grid, the block's name. */
+static void grid_name(sbuf *b, const ms_xdmf *x, int slot)
+{
+    const char *sep = "";
+    for (int i = 0; i < MS_IO_NFIELDS; ++i)
+        if ((x->layout.fields & (1u << i)) && x->group_of[i] == slot) {
+            sb_printf(b, "%s%s", sep, ms_io_field_names[i]);
+            sep = " ";
+        }
+}
+
+static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame,
+                           const char *time_xml)
 {
     const ms_grid *g = &x->layout.grid[slot];
     /* points at the cell centres */
     double ox = (double)g->origin[0] + 0.5 * g->dx, oy = (double)g->origin[1] + 0.5 * g->dy;
+    sb_printf(b, "    <Grid Name=\"");
+    grid_name(b, x, slot);
     sb_printf(b,
-              "    <Grid Name=\"height %dx%d\" GridType=\"Uniform\">\n"
+              "\" GridType=\"Uniform\">\n%s"
               "     <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"1 %d %d\"/>\n"
               "     <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
               "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
@@ -204,68 +294,216 @@ static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame)
               "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
               "Format=\"XML\">1 %.9g %.9g</DataItem>\n"
               "     </Geometry>\n",
-              g->nx, g->ny, g->ny, g->nx, oy, ox, (double)g->dy, (double)g->dx);
-    for (int i = 0; i < MS_IO_NFIELDS; ++i) {
+              time_xml, g->ny, g->nx, oy, ox, (double)g->dy, (double)g->dx);
+    for (int i = 0; i < MS_IO_NFIELDS && frame >= 0; ++i) {
         if (!(x->layout.fields & (1u << i)) || x->group_of[i] != slot)
             continue;
-        sb_printf(b,
-                  "     <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-                  "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d %d\" "
-                  "Type=\"HyperSlab\">\n"
-                  "       <DataItem Dimensions=\"3 3\" Format=\"XML\">%ld 0 0 1 1 1 1 %d %d"
-                  "</DataItem>\n"
-                  "       <DataItem Dimensions=\"%ld %d %d\" NumberType=\"Float\" "
-                  "Precision=\"4\" Format=\"HDF\">%s:/fields/%s</DataItem>\n"
-                  "      </DataItem>\n"
-                  "     </Attribute>\n",
-                  ms_io_field_names[i], g->ny, g->nx, frame, g->ny, g->nx, frame + 1, g->ny,
-                  g->nx, x->h5, ms_io_field_names[i]);
+        sb_printf(b, "     <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n",
+                  ms_io_field_names[i]);
+        if (x->legacy)
+            sb_printf(b,
+                      "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d %d\" "
+                      "Type=\"HyperSlab\">\n"
+                      "       <DataItem Dimensions=\"3 3\" Format=\"XML\">%ld 0 0 1 1 1 1 %d %d"
+                      "</DataItem>\n"
+                      "       <DataItem Dimensions=\"%ld %d %d\" NumberType=\"Float\" "
+                      "Precision=\"4\" Format=\"HDF\">%s:/fields/%s</DataItem>\n"
+                      "      </DataItem>\n",
+                      g->ny, g->nx, frame, g->ny, g->nx, frame + 1, g->ny, g->nx, x->h5,
+                      ms_io_field_names[i]);
+        else /* Xdmf3: path|start:stride:count:dataspace (the dataset holds >= frame+1) */
+            sb_printf(b,
+                      "      <DataItem Dimensions=\"1 %d %d\" NumberType=\"Float\" "
+                      "Precision=\"4\" Format=\"HDF\">%s:/fields/%s|%ld 0 0:1 1 1:1 %d %d:"
+                      "%ld %d %d</DataItem>\n",
+                      g->ny, g->nx, x->h5, ms_io_field_names[i], frame, g->ny, g->nx,
+                      frame + 1, g->ny, g->nx);
+        sb_printf(b, "     </Attribute>\n");
     }
     sb_printf(b, "    </Grid>\n");
 }
 
-static void particles_xml(sbuf *b, const ms_xdmf *x, long frame, int n)
+static void particles_xml(sbuf *b, const ms_xdmf *x, long frame, int n, const char *time_xml)
 {
     char step[48];
     ms_h5part_step_name(step, sizeof step, frame);
     sb_printf(b,
-              "    <Grid Name=\"particles\" GridType=\"Uniform\">\n"
+              "    <Grid Name=\"particles\" GridType=\"Uniform\">\n%s"
               "     <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%d\" "
               "NodesPerElement=\"1\"/>\n"
-              "     <Geometry GeometryType=\"X_Y_Z\">\n",
-              n);
-    static const char *const axes[3] = {"x", "y", "z"};
-    for (int k = 0; k < 3; ++k)
-        sb_printf(b,
-                  "      <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"4\" "
-                  "Format=\"HDF\">%s:/%s/%s</DataItem>\n",
-                  n, x->h5, step, axes[k]);
-    sb_printf(b,
+              "     <Geometry GeometryType=\"XYZ\">\n"
+              "      <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"4\" "
+              "Format=\"HDF\">%s:/particles/%ld/position</DataItem>\n"
               "     </Geometry>\n"
               "     <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n"
-              "      <DataItem ItemType=\"Function\" Function=\"JOIN($0, $1, $2)\" "
-              "Dimensions=\"%d 3\">\n",
-              n);
-    for (int k = 0; k < 3; ++k)
-        sb_printf(b,
-                  "       <DataItem Dimensions=\"%d\" NumberType=\"Float\" Precision=\"4\" "
-                  "Format=\"HDF\">%s:/%s/v%s</DataItem>\n",
-                  n, x->h5, step, axes[k]);
-    sb_printf(b, "      </DataItem>\n     </Attribute>\n    </Grid>\n");
+              "      <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"4\" "
+              "Format=\"HDF\">%s:/particles/%ld/velocity</DataItem>\n"
+              "     </Attribute>\n"
+              "     <Attribute Name=\"id\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+              "      <DataItem Dimensions=\"%d\" NumberType=\"Int\" Precision=\"4\" "
+              "Format=\"HDF\">%s:/%s/id</DataItem>\n"
+              "     </Attribute>\n"
+              "    </Grid>\n",
+              time_xml, n, n, x->h5, frame, n, x->h5, frame, n, x->h5, step);
+}
+
+/* ---- legacy: run.xdmf2 + run.xdmf2.d/<grid>.xml ---- */
+
+static const char *group_file(int g)
+{
+    return g == PARTICLE_GROUP ? "particles" : ms_io_field_names[g];
+}
+
+static void group_name(sbuf *b, const ms_xdmf *x, int g)
+{
+    if (g == PARTICLE_GROUP)
+        sb_printf(b, "particles");
+    else
+        grid_name(b, x, g);
+}
+
+/* The main file, listing the grids that hold a frame: written to a
+ * temporary name and renamed over, so a reader sees the old or the new. */
+static ms_status write_legacy_main(const ms_xdmf *x)
+{
+    sbuf b = {0};
+    int any = 0;
+    for (int g = 0; g <= MS_IO_NFIELDS; ++g)
+        any |= x->gcount[g] > 0;
+    sb_printf(&b,
+              "<?xml version=\"1.0\" ?>\n"
+              "<!-- modesplit %s: the frames of %s as a time series, for the legacy XDMF "
+              "reader and VisIt (ParaView's default reader: the .xmf file) -->\n"
+              "<Xdmf Version=\"2.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+              " <Domain>\n",
+              ms_version(), x->h5);
+    sb_printf(&b, "  <Grid Name=\"run\" GridType=\"Collection\" CollectionType=\"Spatial\">\n");
+    for (int g = 0; g <= MS_IO_NFIELDS; ++g)
+        if (x->gcount[g] > 0)
+            sb_printf(&b, "   <xi:include href=\"%s/%s.xml\"/>\n", x->dir_name, group_file(g));
+    if (!any) {
+        /* No frame yet: the legacy reader crashes on a Domain without a
+         * grid, so list the field grids without data (or, for a run of
+         * particles only, an empty point set). */
+        int fields = 0;
+        for (int i = 0; i < MS_IO_NFIELDS; ++i)
+            if ((x->layout.fields & (1u << i)) && x->group_of[i] == i) {
+                field_grid_xml(&b, x, i, -1, "");
+                fields = 1;
+            }
+        if (!fields)
+            sb_printf(&b, "    <Grid Name=\"particles\" GridType=\"Uniform\">\n"
+                          "     <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"0\"/>\n"
+                          "     <Geometry GeometryType=\"XYZ\">\n"
+                          "      <DataItem Dimensions=\"0 3\" Format=\"XML\"></DataItem>\n"
+                          "     </Geometry>\n"
+                          "    </Grid>\n");
+    }
+    sb_printf(&b, "  </Grid>\n");
+    sb_printf(&b, "%s", EMPTY_TAIL);
+    size_t n = strlen(x->path);
+    char *tmp = ms_malloc(n + 5);
+    if (b.oom || !tmp) {
+        ms_free(b.p);
+        ms_free(tmp);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the XDMF sidecar");
+    }
+    memcpy(tmp, x->path, n);
+    memcpy(tmp + n, ".tmp", 5);
+    ms_status st = MS_OK;
+    int fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0 || write_all_at(fd, b.p, b.len, 0) < 0 || close(fd) != 0 ||
+        rename(tmp, x->path) != 0) {
+        st = ms_fail(MS_ERR_IO, "io: cannot write the XDMF sidecar %s: %s", x->path,
+                     strerror(errno));
+        unlink(tmp);
+    }
+    ms_free(tmp);
+    ms_free(b.p);
+    return st;
+}
+
+/* Append one entry to grid g's file (created with its first entry). */
+static ms_status legacy_append(ms_xdmf *x, int g, const sbuf *entry)
+{
+    sbuf b = {0};
+    if (x->gcount[g] == 0) {
+        size_t n = strlen(x->dir) + strlen(group_file(g)) + 6;
+        char *p = ms_malloc(n);
+        if (!p)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the XDMF sidecar");
+        snprintf(p, n, "%s/%s.xml", x->dir, group_file(g));
+        x->gfd[g] = open(p, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        if (x->gfd[g] < 0) {
+            ms_status st = ms_fail(MS_ERR_IO, "io: cannot create %s: %s", p, strerror(errno));
+            ms_free(p);
+            return st;
+        }
+        ms_free(p);
+        sb_printf(&b, "<Grid Name=\"");
+        group_name(&b, x, g);
+        sb_printf(&b, "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
+    }
+    sb_printf(&b, "%s", entry->p ? entry->p : "");
+    size_t body = b.len;
+    sb_printf(&b, "%s", GROUP_TAIL);
+    if (b.oom || entry->oom) {
+        ms_free(b.p);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the XDMF sidecar");
+    }
+    int bad = write_all_at(x->gfd[g], b.p, b.len, x->gtail[g]) < 0;
+    int e = errno;
+    ms_free(b.p);
+    if (bad)
+        return ms_fail(MS_ERR_IO, "io: writing to the XDMF grid files in %s failed: %s", x->dir,
+                       strerror(e));
+    x->gtail[g] += (off_t)body;
+    x->gcount[g]++;
+    return MS_OK;
+}
+
+static ms_status legacy_frame(ms_xdmf *x, long frame, double t, int particles)
+{
+    char time_xml[64];
+    snprintf(time_xml, sizeof time_xml, "     <Time Value=\"%.17g\"/>\n", t);
+    int grew = 0;
+    ms_status st = MS_OK;
+    for (int g = 0; g <= MS_IO_NFIELDS && st == MS_OK; ++g) {
+        int field = g < MS_IO_NFIELDS && (x->layout.fields & (1u << g)) && x->group_of[g] == g;
+        if (!field && !(g == PARTICLE_GROUP && particles > 0))
+            continue;
+        sbuf e = {0};
+        if (field)
+            field_grid_xml(&e, x, g, frame, time_xml);
+        else
+            particles_xml(&e, x, frame, particles, time_xml);
+        grew |= x->gcount[g] == 0;
+        st = legacy_append(x, g, &e);
+        ms_free(e.p);
+    }
+    if (st == MS_OK && grew)
+        st = write_legacy_main(x);
+    if (st == MS_OK)
+        x->frames++;
+    return st;
 }
 
 ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles)
 {
+    if (x->legacy)
+        return legacy_frame(x, frame, t, particles);
     sbuf b = {0};
+    if (x->frames == 0)
+        sb_printf(&b, "%s", COLLECTION);
     sb_printf(&b,
               "   <Grid Name=\"frame %ld\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
               "    <Time Value=\"%.17g\"/>\n",
               frame, t);
     for (int i = 0; i < MS_IO_NFIELDS; ++i)
         if ((x->layout.fields & (1u << i)) && x->group_of[i] == i)
-            field_grid_xml(&b, x, i, frame);
+            field_grid_xml(&b, x, i, frame, "");
     if (particles > 0)
-        particles_xml(&b, x, frame, particles);
+        particles_xml(&b, x, frame, particles, "");
     sb_printf(&b, "   </Grid>\n");
     size_t body = b.len;
     sb_printf(&b, "%s", TAIL);
@@ -280,6 +518,7 @@ ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles)
         return ms_fail(MS_ERR_IO, "io: writing frame %ld to the XDMF sidecar %s failed: %s",
                        frame, x->path, strerror(e));
     x->tail_at += (off_t)body;
+    x->frames++;
     return MS_OK;
 }
 
@@ -291,6 +530,12 @@ ms_status ms_xdmf_close(ms_xdmf *x)
     if (x->fd >= 0 && close(x->fd) != 0)
         st = ms_fail(MS_ERR_IO, "io: closing the XDMF sidecar %s failed: %s", x->path,
                      strerror(errno));
+    for (int i = 0; i <= MS_IO_NFIELDS; ++i)
+        if (x->gfd[i] >= 0 && close(x->gfd[i]) != 0 && st == MS_OK)
+            st = ms_fail(MS_ERR_IO, "io: closing a grid file of %s failed: %s", x->path,
+                         strerror(errno));
+    ms_free(x->dir);
+    ms_free(x->dir_name);
     ms_free(x->path);
     ms_free(x->h5);
     ms_free(x);

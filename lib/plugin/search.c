@@ -1,6 +1,9 @@
 /* The plugin search path: MODESPLIT_PLUGIN_PATH, then the install's
  * lib/modesplit/plugins (found from where libmodesplit's code was loaded,
- * with dladdr), then the build tree (MS_BUILD_PLUGIN_DIR from the Makefile). */
+ * with dladdr), then the build tree (MS_BUILD_PLUGIN_DIR from the Makefile)
+ * -- the build tree only when the code was loaded from inside it, so an
+ * installed tool or library never picks up plugins of a build directory
+ * that happens to still exist. */
 #define _GNU_SOURCE /* dladdr */
 #include <dlfcn.h>
 #include <stdlib.h>
@@ -99,10 +102,16 @@ char *ms_plugin_default_search_path(void)
             object = dl.dli_fname;
         }
     }
-#ifdef MS_BUILD_PLUGIN_DIR
-    const char *build = MS_BUILD_PLUGIN_DIR;
-#else
     const char *build = NULL;
+#ifdef MS_BUILD_PLUGIN_DIR
+    /* MS_BUILD_PLUGIN_DIR is "<build>/plugins": is the object under <build>/? */
+    const char *dir = MS_BUILD_PLUGIN_DIR;
+    const char *slash = strrchr(dir, '/');
+    char *real = object ? realpath(object, NULL) : NULL;
+    if (slash && real && !strncmp(real, dir, (size_t)(slash - dir)) &&
+        real[slash - dir] == '/')
+        build = dir;
+    free(real);
 #endif
     return ms_plugin_compose_search_path(getenv("MODESPLIT_PLUGIN_PATH"), object, build);
 }

@@ -24,11 +24,11 @@ int cmd_check(int argc, char **argv)
     int n = 0, bad = 0;
     for (int i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "check");
             return EXIT_OK;
         }
         if (argv[i][0] == '-' && argv[i][1]) {
-            tool_error("check: unknown option %s (see modesplit --help)", argv[i]);
+            tool_unknown_option("check", argv[i]);
             return EXIT_USAGE;
         }
     }

@@ -64,13 +64,13 @@ int cmd_info(int argc, char **argv)
     int scene_only = 0;
     for (int i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "info");
             return EXIT_OK;
         }
         if (!strcmp(argv[i], "--scene")) {
             scene_only = 1;
         } else if (argv[i][0] == '-' && argv[i][1]) {
-            tool_error("info: unknown option %s (see modesplit --help)", argv[i]);
+            tool_unknown_option("info", argv[i]);
             return EXIT_USAGE;
         } else if (path) {
             tool_error("info: one run file at a time (got %s and %s)", path, argv[i]);

@@ -9,7 +9,7 @@ int cmd_plugins(int argc, char **argv)
 {
     for (int i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "plugins");
             return EXIT_OK;
         }
         tool_error("plugins: takes no arguments (got %s)", argv[i]);

@@ -58,7 +58,7 @@ static int parse_args(int argc, char **argv, run_opts *o)
         const char *v = NULL, *a = argv[i];
         int bad = 0;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "run");
             return -1;
         } else if (tool_opt_value(argc, argv, &i, "--frames", &v, &bad)) {
             if (bad)
@@ -106,7 +106,7 @@ static int parse_args(int argc, char **argv, run_opts *o)
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             o->quiet = 1;
         } else if (a[0] == '-' && a[1]) {
-            tool_error("run: unknown option %s (see modesplit --help)", a);
+            tool_unknown_option("run", a);
             return EXIT_USAGE;
         } else if (o->scene) {
             tool_error("run: one scene at a time (got %s and %s)", o->scene, a);
@@ -194,6 +194,14 @@ int cmd_run(int argc, char **argv)
         return EXIT_USAGE;
     }
 
+    /* The PNG directory first: a --png that cannot be used (a file, no
+     * permission) must not leave an empty run file and sidecar behind. */
+    tool_png png = {0};
+    if (o.png && png_begin(&png, o.png, sc, o.preview, o.quiet) != 0) {
+        ms_sim_destroy(sim);
+        ms_scene_destroy(sc);
+        return EXIT_RUNTIME;
+    }
     char *out = NULL;
     ms_writer *w = NULL;
     if (!o.no_out) {
@@ -201,18 +209,11 @@ int cmd_run(int argc, char **argv)
         if (!out || ms_writer_open(out, sim, 0, &w) != MS_OK) {
             tool_error("%s", out ? ms_last_error() : "out of memory");
             free(out);
+            png_end(&png);
             ms_sim_destroy(sim);
             ms_scene_destroy(sc);
             return EXIT_RUNTIME;
         }
-    }
-    tool_png png = {0};
-    if (o.png && png_begin(&png, o.png, sc, o.preview, o.quiet) != 0) {
-        ms_writer_close(w);
-        free(out);
-        ms_sim_destroy(sim);
-        ms_scene_destroy(sc);
-        return EXIT_RUNTIME;
     }
     ms_grid grid;
     ms_sim_field_grid(sim, MS_FIELD_COMBINED, &grid);
@@ -267,7 +268,14 @@ int cmd_run(int argc, char **argv)
     double wall = tool_now() - prog.start;
 
     long in_file = w ? ms_writer_frames(w) : 0;
-    char *xmf = w ? strdup(ms_writer_xdmf_path(w)) : NULL;
+    char *xmf = NULL;
+    if (w) {
+        const char *a = ms_writer_xdmf_path(w), *b = ms_writer_xdmf_legacy_path(w);
+        size_t n = strlen(a) + strlen(b) + 64;
+        xmf = malloc(n);
+        if (xmf)
+            snprintf(xmf, n, "%s (ParaView), %s (legacy XDMF reader, VisIt)", a, b);
+    }
     if (w && ms_writer_close(w) != MS_OK) {
         tool_error("%s", ms_last_error());
         rc = EXIT_RUNTIME;

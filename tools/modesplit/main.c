@@ -22,8 +22,9 @@ static const char usage_text[] =
     "      --frames N             run N frames (default: the scene's duration / frame_dt)\n"
     "      --duration S           run S seconds of simulated time instead\n"
     "      --out RUN.h5           the HDF5 file (default: the scene file's base name\n"
-    "                             with .h5, in the current directory); RUN.xmf is\n"
-    "                             written beside it\n"
+    "                             with .h5, in the current directory); RUN.xmf\n"
+    "                             (ParaView) and RUN.xdmf2 (legacy XDMF reader,\n"
+    "                             VisIt) are written beside it\n"
     "      --no-out               write no HDF5 file\n"
     "      --png DIR              also write DIR/frame_NNNNN.png for every written frame\n"
     "                             (DIR is created if missing), drawn by the renderer\n"
@@ -37,7 +38,12 @@ static const char usage_text[] =
     "                             --scene prints the scene JSON stored in it instead\n"
     "  check SCENE.json...        validate scene files without running them\n"
     "  plugins                    the shape and shader plugins found, and where from\n"
-    "  help, --help, -h           this text\n"
+    "  export RUN.h5 --usd OUT.usdc  write a run as USD (Blender, Houdini, Omniverse):\n"
+    "      --usd OUT.usdc         the height field as a time-sampled mesh, particles as\n"
+    "                             time-sampled points (python3 with usd-core)\n"
+    "      --field NAME           the mesh's field: combined (default), surface, volume\n"
+    "  help [COMMAND], --help, -h this text, or one command's part of it\n"
+    "                             (also: modesplit COMMAND --help)\n"
     "  --version, -V              the library version\n"
     "\n"
     "Fields are written at the rate the scene's `output.every` asks for, and only\n"
@@ -53,6 +59,94 @@ static const char usage_text[] =
 void tool_usage(FILE *f)
 {
     fputs(usage_text, f);
+}
+
+/* The block of usage_text that starts at "  <cmd> " and runs to the next
+ * line indented by exactly two spaces (the next command). */
+static const char *command_block(const char *cmd, size_t *len)
+{
+    size_t n = strlen(cmd);
+    for (const char *l = usage_text; *l; l = strchr(l, '\n') + 1) {
+        if (!strncmp(l, "  ", 2) && !strncmp(l + 2, cmd, n) && (l[2 + n] == ' ')) {
+            const char *e = strchr(l, '\n') + 1;
+            while (*e && !strncmp(e, "   ", 3))
+                e = strchr(e, '\n') + 1;
+            *len = (size_t)(e - l);
+            return l;
+        }
+        if (!strchr(l, '\n'))
+            break;
+    }
+    return NULL;
+}
+
+int tool_command_usage(FILE *f, const char *cmd)
+{
+    size_t len;
+    const char *b = command_block(cmd, &len);
+    if (!b)
+        return -1;
+    fprintf(f, "usage: modesplit %s", cmd);
+    /* the command's own line without "  <cmd>", then its options */
+    fwrite(b + 2 + strlen(cmd), 1, len - 2 - strlen(cmd), f);
+    fputs("\n(modesplit --help: every command, exit statuses)\n", f);
+    return 0;
+}
+
+/* Levenshtein distance, for "did you mean". */
+static size_t edit_distance(const char *a, const char *b)
+{
+    size_t na = strlen(a), nb = strlen(b);
+    if (na > 63 || nb > 63)
+        return 64;
+    size_t row[64];
+    for (size_t j = 0; j <= nb; ++j)
+        row[j] = j;
+    for (size_t i = 1; i <= na; ++i) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= nb; ++j) {
+            size_t up = row[j];
+            size_t best = diag + (a[i - 1] != b[j - 1]);
+            if (row[j - 1] + 1 < best)
+                best = row[j - 1] + 1;
+            if (up + 1 < best)
+                best = up + 1;
+            row[j] = best;
+            diag = up;
+        }
+    }
+    return row[nb];
+}
+
+void tool_unknown_option(const char *cmd, const char *opt)
+{
+    /* the options are the "--word" tokens of the command's usage block */
+    size_t len = 0, best_d = 64;
+    char best[64] = "";
+    const char *b = command_block(cmd, &len);
+    char name[64];
+    size_t optlen = strcspn(opt, "=");
+    snprintf(name, sizeof name, "%.*s", (int)(optlen < 63 ? optlen : 63), opt);
+    for (const char *p = b; p && p < b + len; ++p) {
+        if (p[0] != '-' || p[1] != '-' || (p > b && p[-1] != ' ' && p[-1] != '['))
+            continue;
+        size_t k = strspn(p, "-abcdefghijklmnopqrstuvwxyz0123456789");
+        char cand[64];
+        snprintf(cand, sizeof cand, "%.*s", (int)(k < 63 ? k : 63), p);
+        size_t d = edit_distance(name, cand);
+        if (d < best_d) {
+            best_d = d;
+            snprintf(best, sizeof best, "%s", cand);
+        }
+        p += k - 1;
+    }
+    /* close enough to be a typo: at most 2 edits, fewer than half the name */
+    if (best[0] && best_d <= 2 && best_d * 2 < strlen(best))
+        tool_error("%s: unknown option %s; did you mean %s? (see modesplit %s --help)", cmd, opt,
+                   best, cmd);
+    else
+        tool_error("%s: unknown option %s (see modesplit %s --help)", cmd, opt, cmd);
 }
 
 void tool_error(const char *fmt, ...)
@@ -157,6 +251,13 @@ static int dispatch(int argc, char **argv)
     }
     const char *cmd = argv[1];
     if (!strcmp(cmd, "--help") || !strcmp(cmd, "-h") || !strcmp(cmd, "help")) {
+        if (argc > 2 && !strcmp(cmd, "help")) {
+            if (tool_command_usage(stdout, argv[2]) == 0)
+                return EXIT_OK;
+            tool_error("help: no command \"%s\"; commands: run, info, check, plugins, export",
+                       argv[2]);
+            return EXIT_USAGE;
+        }
         tool_usage(stdout);
         return EXIT_OK;
     }
@@ -173,8 +274,18 @@ static int dispatch(int argc, char **argv)
         return cmd_check(argc - 1, argv + 1);
     if (!strcmp(cmd, "plugins"))
         return cmd_plugins(argc - 1, argv + 1);
-    tool_error("unknown command \"%s\"; commands: run, info, check, plugins (see modesplit --help)",
-               cmd);
+    if (!strcmp(cmd, "export"))
+        return cmd_export(argc - 1, argv + 1);
+    static const char *const commands[] = {"run", "info", "check", "plugins", "export"};
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i)
+        if (edit_distance(cmd, commands[i]) <= 2 &&
+            edit_distance(cmd, commands[i]) < strlen(commands[i])) {
+            tool_error("unknown command \"%s\"; did you mean %s? (see modesplit --help)", cmd,
+                       commands[i]);
+            return EXIT_USAGE;
+        }
+    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, export (see "
+               "modesplit --help)", cmd);
     return EXIT_USAGE;
 }
 

@@ -1,12 +1,49 @@
 /* Progress of `modesplit run`: on a terminal one line redrawn at most ten
  * times a second (bar, frame, frames/s, ETA, per-stage split); otherwise a
  * plain line at every 10 % and at least every 10 s, for logs. All on
- * stderr, so stdout keeps only the summary. */
+ * stderr, so stdout keeps only the summary.
+ *
+ * The terminal line fits the terminal's width (asked at each redraw, so a
+ * resized window is followed): a line that wraps cannot be redrawn by \r
+ * and scrolls instead. What does not fit is dropped in this order: the
+ * per-stage split, the bar, then the end of the line. */
+#include <stdlib.h>
+#include <string.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include "tool.h"
 
 #define BAR_WIDTH 24
+
+/* Columns of the terminal on stderr: the tty's size, else $COLUMNS, else 80. */
+static int terminal_width(void)
+{
+    struct winsize ws;
+    if (ioctl(STDERR_FILENO, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0)
+        return ws.ws_col;
+    const char *c = getenv("COLUMNS");
+    long n = c ? strtol(c, NULL, 10) : 0;
+    return n > 0 && n < 10000 ? (int)n : 80;
+}
+
+/* The line for `width` columns (the last column stays empty: some
+ * terminals wrap when it is written). */
+void progress_fit(char *out, size_t size, int width, const char *bar, const char *core,
+                  const char *stages)
+{
+    size_t room = width > 1 ? (size_t)width - 1 : 0;
+    if (room >= size)
+        room = size - 1;
+    snprintf(out, size, "[%s] %s | %s", bar, core, stages);
+    if (strlen(out) <= room)
+        return;
+    snprintf(out, size, "[%s] %s", bar, core);
+    if (strlen(out) <= room)
+        return;
+    snprintf(out, size, "%s", core);
+    out[room] = '\0';
+}
 
 void progress_begin(tool_progress *p, long total, int quiet)
 {
@@ -46,11 +83,13 @@ void progress_update(tool_progress *p, long done, const tool_stages *s)
         for (int i = 0; i < BAR_WIDTH; ++i)
             bar[i] = i < fill ? '=' : (i == fill ? '>' : ' ');
         bar[BAR_WIDTH] = '\0';
-        fprintf(stderr,
-                "\r[%s] %3d%% frame %ld/%ld %6.1f frames/s ETA %s | vol %.2g surf %.2g "
-                "extr %.2g comb %.2g out %.2g ms\033[K",
-                bar, pct, done, p->total, rate, eta, s->volume, s->surface, s->extract,
-                s->combine, s->write + s->png);
+        char core[160], stages[160], line[400];
+        snprintf(core, sizeof core, "%3d%% frame %ld/%ld %6.1f frames/s ETA %s", pct, done,
+                 p->total, rate, eta);
+        snprintf(stages, sizeof stages, "vol %.2g surf %.2g extr %.2g comb %.2g out %.2g ms",
+                 s->volume, s->surface, s->extract, s->combine, s->write + s->png);
+        progress_fit(line, sizeof line, terminal_width(), bar, core, stages);
+        fprintf(stderr, "\r%s\033[K", line);
         fflush(stderr);
         return;
     }

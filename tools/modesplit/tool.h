@@ -42,6 +42,18 @@ int cmd_run(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_plugins(int argc, char **argv);
+int cmd_export(int argc, char **argv);
+/* The progress line for a terminal of `width` columns: "[bar] core |
+ * stages", dropping the stages, then the bar, then cutting the core, so it
+ * never takes more than width - 1 columns (progress.c). */
+void progress_fit(char *out, size_t size, int width, const char *bar, const char *core,
+                  const char *stages);
+/* One command's part of the usage text ("modesplit run --help"); -1 for
+ * an unknown command. */
+int tool_command_usage(FILE *f, const char *cmd);
+/* "run: unknown option --frame; did you mean --frames?" from the options
+ * the command's usage text lists. */
+void tool_unknown_option(const char *cmd, const char *opt);
 
 /* ---- progress (progress.c) ---- */
 typedef struct tool_progress {

@@ -1,0 +1,192 @@
+"""Export a modesplit run file (HDF5) to USD for Blender, Houdini and Omniverse.
+
+    python3 -m modesplit.usd_export RUN.h5 --usd OUT.usdc [--field combined]
+    modesplit export RUN.h5 --usd OUT.usdc          (the C tool runs this)
+
+Written with Pixar's own library (usd-core from PyPI, `pxr`), h5py and numpy
+only; it imports nothing else from modesplit, so it works on any run file
+without the C library.
+
+The stage (metres, z up, one time code per written frame, time codes per
+second = frames per second of the file = 1 / (frame_dt * output_every)):
+  /Run                 Xform
+  /Run/Surface         Mesh: the height field (combined, or --field) as a
+                       grid of (nx x ny) points at the cell centres, z = the
+                       height; points and vertex normals time-sampled, quads
+                       and the UVs (primvars:st, u = x, v = y over the
+                       domain, 0..1) static. A frame whose heights are not
+                       finite keeps its NaNs out: they are written as 0 and
+                       counted on stderr.
+  /Run/Particles       Points: positions, velocities (m/s) and ids
+                       time-sampled, one constant width (the mean particle
+                       spacing of frame 0, or 1 cm).
+Exit status: 0 written; 1 a read or write failure; 2 bad arguments or not a
+modesplit run file (the message names the file and what is missing).
+"""
+import argparse
+import sys
+
+import h5py
+import numpy as np
+
+FIELDS = ("combined", "surface", "volume")
+
+
+def fail(code, msg):
+    print(f"modesplit export: {msg}", file=sys.stderr)
+    sys.exit(code)
+
+
+def grid_of(ds):
+    """(nx, ny, dx, dy, x0, y0) of a /fields/<name> dataset."""
+    _, ny, nx = ds.shape
+    dx, dy = (float(v) for v in ds.attrs["dx"])
+    x0, y0 = (float(v) for v in ds.attrs["origin"])
+    return nx, ny, dx, dy, x0, y0
+
+
+def frames_in(f):
+    """Complete frames: the smallest of `frames` and every dataset's length
+    (what ms_reader_frames reports)."""
+    n = int(f.attrs.get("frames", len(f["time"])))
+    n = min(n, len(f["time"]))
+    for name in FIELDS:
+        if f"fields/{name}" in f:
+            n = min(n, f[f"fields/{name}"].shape[0])
+    return n
+
+
+def quad_topology(nx, ny):
+    """Counter-clockwise quads (seen from +z) of an nx x ny point grid."""
+    x, y = np.meshgrid(np.arange(nx - 1), np.arange(ny - 1))
+    i = (y * nx + x).ravel()
+    idx = np.stack([i, i + 1, i + 1 + nx, i + nx], axis=1).ravel()
+    return np.full((nx - 1) * (ny - 1), 4, dtype=np.int32), idx.astype(np.int32)
+
+
+def vertex_normals(h, dx, dy):
+    """Normals of z = h(x, y) from central differences (one-sided at the edges)."""
+    gy, gx = np.gradient(h.astype(np.float64), dy, dx)
+    n = np.stack([-gx, -gy, np.ones_like(gx)], axis=-1)
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    return n.reshape(-1, 3).astype(np.float32)
+
+
+def export(run, usd_path, field=None):
+    from pxr import Gf, Sdf, Usd, UsdGeom, Vt
+
+    try:
+        f = h5py.File(run, "r")
+    except OSError as e:
+        fail(1, f"cannot open {run}: {e}")
+    with f:
+        if f.attrs.get("format") not in ("modesplit", b"modesplit"):
+            fail(2, f"{run} is not a modesplit run file (no root attribute format = \"modesplit\")")
+        frames = frames_in(f)
+        frame_dt = float(f.attrs.get("frame_dt", 0.0))
+        every = int(f.attrs.get("output_every", 1))
+        fps = 1.0 / (frame_dt * every) if frame_dt > 0 else 24.0
+        present = [n for n in FIELDS if f"fields/{n}" in f]
+        if field is None:
+            field = present[0] if present else None
+        elif field not in present:
+            fail(2, f"{run} has no field {field} (it has: {', '.join(present) or 'none'})")
+
+        stage = Usd.Stage.CreateNew(usd_path)
+        if stage is None:
+            fail(1, f"cannot create {usd_path}")
+        UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
+        UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+        stage.SetTimeCodesPerSecond(fps)
+        stage.SetFramesPerSecond(fps)
+        stage.SetStartTimeCode(0)
+        stage.SetEndTimeCode(max(frames - 1, 0))
+        root = UsdGeom.Xform.Define(stage, "/Run")
+        stage.SetDefaultPrim(root.GetPrim())
+        root.GetPrim().SetCustomDataByKey("modesplit:scene_name",
+                                          str(f.attrs.get("scene_name", "")))
+        root.GetPrim().SetCustomDataByKey("modesplit:source", run)
+
+        bad = 0
+        if field is not None:
+            ds = f[f"fields/{field}"]
+            nx, ny, dx, dy, x0, y0 = grid_of(ds)
+            mesh = UsdGeom.Mesh.Define(stage, "/Run/Surface")
+            mesh.GetPrim().SetCustomDataByKey("modesplit:field", field)
+            counts, idx = quad_topology(nx, ny)
+            mesh.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(counts))
+            mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(idx))
+            mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
+            mesh.CreateOrientationAttr(UsdGeom.Tokens.rightHanded)
+            xs = x0 + (np.arange(nx) + 0.5) * dx
+            ys = y0 + (np.arange(ny) + 0.5) * dy
+            gx, gy = np.meshgrid(xs, ys)
+            st = np.stack([(gx - x0) / (nx * dx), (gy - y0) / (ny * dy)], -1).reshape(-1, 2)
+            pv = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar(
+                "st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.vertex)
+            pv.Set(Vt.Vec2fArray.FromNumpy(st.astype(np.float32)))
+            mesh.SetNormalsInterpolation(UsdGeom.Tokens.vertex)
+            pts_attr = mesh.CreatePointsAttr()
+            nrm_attr = mesh.CreateNormalsAttr()
+            ext_attr = mesh.CreateExtentAttr()
+            xy = np.stack([gx.ravel(), gy.ravel()], -1)
+            for k in range(frames):
+                h = np.asarray(ds[k], dtype=np.float32)
+                finite = np.isfinite(h)
+                if not finite.all():
+                    bad += 1
+                    h = np.where(finite, h, 0.0).astype(np.float32)
+                p = np.concatenate([xy, h.reshape(-1, 1)], 1).astype(np.float32)
+                pts_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
+                nrm_attr.Set(Vt.Vec3fArray.FromNumpy(vertex_normals(h, dx, dy)), k)
+                lo, hi = p.min(0), p.max(0)
+                ext_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))]), k)
+        if bad:
+            print(f"modesplit export: {bad} frames of {field} had non-finite heights, "
+                  "written as 0", file=sys.stderr)
+
+        if "Step#0" in f:
+            points = UsdGeom.Points.Define(stage, "/Run/Particles")
+            p_attr = points.CreatePointsAttr()
+            v_attr = points.CreateVelocitiesAttr()
+            i_attr = points.CreateIdsAttr()
+            spacing = 0.01
+            try:
+                spacing = float(__import__("json").loads(f.attrs["scene"])["volume"]["spacing"])
+            except Exception:
+                pass
+            points.CreateWidthsAttr(Vt.FloatArray([spacing]))
+            points.SetWidthsInterpolation(UsdGeom.Tokens.constant)
+            for k in range(frames):
+                step = f.get(f"Step#{k}")
+                if step is None:
+                    continue
+                p = np.stack([step[a][:] for a in "xyz"], 1).astype(np.float32)
+                v = np.stack([step[a][:] for a in ("vx", "vy", "vz")], 1).astype(np.float32)
+                ids = step["id"][:] if "id" in step else np.arange(len(p))
+                p_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
+                v_attr.Set(Vt.Vec3fArray.FromNumpy(v), k)
+                i_attr.Set(Vt.Int64Array.FromNumpy(ids.astype(np.int64)), k)
+        stage.GetRootLayer().Save()
+    return frames
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(
+        prog="python3 -m modesplit.usd_export",
+        description="Write a modesplit run file as USD: the height field as a time-sampled "
+                    "mesh, the particles as time-sampled points.")
+    ap.add_argument("run", help="the run file (RUN.h5)")
+    ap.add_argument("--usd", required=True, help="the USD file to write (.usdc, .usda or .usd)")
+    ap.add_argument("--field", choices=FIELDS,
+                    help="the height field of the mesh (default: combined, else the first present)")
+    a = ap.parse_args(argv)
+    if not a.usd.endswith((".usd", ".usda", ".usdc")):
+        fail(2, f"--usd {a.usd}: the name must end in .usdc, .usda or .usd")
+    n = export(a.run, a.usd, a.field)
+    print(f"modesplit export: wrote {a.usd} ({n} frames)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
