@@ -37,6 +37,17 @@ static const char usage_text[] =
     "                             --scene prints the scene JSON stored in it instead\n"
     "  check SCENE.json...        validate scene files without running them\n"
     "  plugins                    the shape and shader plugins found, and where from\n"
+    "  view SCENE.json [options]  the scene in a window, in real time: left-drag the\n"
+    "                             water, right-drag orbit, wheel zoom, middle-drag pan,\n"
+    "                             shift-click a drop; H in the window lists the keys\n"
+    "      --size WxH             window size (default: the scene's render size)\n"
+    "      --threads 1|2          as for run\n"
+    "      --fast                 start as fast as it can (F toggles) instead of at frame_dt\n"
+    "      --frames N             quit after N frames\n"
+    "      --record DIR           DIR/frame_NNNNN.png: every frame as the user saw it\n"
+    "      --record-input FILE    log the mouse and keys with their frame numbers\n"
+    "      --script FILE          replay such a log (the same frames, the same water)\n"
+    "      --out RUN.h5           also write the session's frames as run does\n"
     "  help, --help, -h           this text\n"
     "  --version, -V              the library version\n"
     "\n"
@@ -172,7 +183,9 @@ static int dispatch(int argc, char **argv)
         return cmd_check(argc - 1, argv + 1);
     if (!strcmp(cmd, "plugins"))
         return cmd_plugins(argc - 1, argv + 1);
-    tool_error("unknown command \"%s\"; commands: run, info, check, plugins (see modesplit --help)",
+    if (!strcmp(cmd, "view"))
+        return cmd_view(argc - 1, argv + 1);
+    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, view (see modesplit --help)",
                cmd);
     return EXIT_USAGE;
 }

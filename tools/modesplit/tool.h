@@ -42,6 +42,7 @@ int cmd_run(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_plugins(int argc, char **argv);
+int cmd_view(int argc, char **argv); /* cmd_view.c, view_*.c */
 
 /* ---- progress (progress.c) ---- */
 typedef struct tool_progress {
