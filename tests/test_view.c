@@ -273,6 +273,107 @@ START_TEST(pointer_ray_meets_the_water_where_the_camera_looks)
 }
 END_TEST
 
+
+/* ---- the library calls the viewer added -------------------------------- */
+
+static ms_sim *sim_of(const char *path, ms_scene **sc)
+{
+    ms_sim *sim;
+    ck_assert_int_eq(ms_scene_load(path, sc), MS_OK);
+    ck_assert_int_eq(ms_sim_create_from_scene(*sc, 1, &sim), MS_OK);
+    return sim;
+}
+
+START_TEST(a_steered_boat_goes_where_it_is_steered)
+{
+    ms_scene *sc;
+    ms_sim *sim = sim_of("data/scenes/fig10.json", &sc);
+    ck_assert_int_eq(ms_sim_step(sim, 0.02f), MS_OK);
+    float p0[2], p1[2];
+    ck_assert_int_eq(ms_sim_boat(sim, p0), MS_OK);
+    const float vel[2] = {0.0f, 0.3f}; /* m/s, +y */
+    ck_assert_int_eq(ms_sim_steer_boat(sim, vel), MS_OK);
+    for (int i = 0; i < 10; ++i)
+        ck_assert_int_eq(ms_sim_step(sim, 0.02f), MS_OK);
+    ck_assert_int_eq(ms_sim_boat(sim, p1), MS_OK);
+    /* 10 frames of 0.02 s at 0.3 m/s: 6 cm along +y, not along its path */
+    ck_assert_float_eq_tol(p1[0], p0[0], 1e-4f);
+    ck_assert_float_eq_tol(p1[1] - p0[1], 0.06f, 0.021f);
+    const float stop[2] = {0, 0};
+    ck_assert_int_eq(ms_sim_steer_boat(sim, stop), MS_OK);
+    ck_assert_int_eq(ms_sim_step(sim, 0.02f), MS_OK);
+    ck_assert_int_eq(ms_sim_boat(sim, p0), MS_OK);
+    ck_assert_int_eq(ms_sim_step(sim, 0.02f), MS_OK);
+    ck_assert_int_eq(ms_sim_boat(sim, p1), MS_OK);
+    ck_assert_float_eq(p0[1], p1[1]);
+    /* rain off and on again: the drops counted stop and go on */
+    ms_stats a, b;
+    ck_assert_int_eq(ms_sim_set_rain(sim, 0), MS_OK);
+    ms_sim_stats(sim, &a);
+    for (int i = 0; i < 20; ++i)
+        ck_assert_int_eq(ms_sim_step(sim, 0.02f), MS_OK);
+    ms_sim_stats(sim, &b);
+    ck_assert_int_eq(b.drops, a.drops);
+    ck_assert_int_eq(ms_sim_set_rain(sim, 1), MS_OK);
+    for (int i = 0; i < 20; ++i)
+        ck_assert_int_eq(ms_sim_step(sim, 0.02f), MS_OK);
+    ms_sim_stats(sim, &a);
+    ck_assert_int_gt(a.drops, b.drops);
+    MS_ASSERT_REFUSED(ms_sim_steer_boat(sim, (const float[2]){200.0f, 0}), MS_ERR_INVALID_ARGUMENT,
+                      "boat vel[0]");
+    MS_ASSERT_REFUSED(ms_sim_steer_boat(sim, NULL), MS_ERR_INVALID_ARGUMENT, "vel");
+    float where[3];
+    MS_ASSERT_REFUSED(ms_sim_container_pose(sim, where, NULL), MS_ERR_STATE, "no container");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+START_TEST(the_container_pose_is_where_it_was_moved)
+{
+    ms_scene *sc;
+    ms_sim *sim = sim_of("data/scenes/glass.json", &sc);
+    ck_assert_int_eq(ms_sim_step(sim, 0.0167f), MS_OK);
+    float pos[3], q[4];
+    ck_assert_int_eq(ms_sim_container_pose(sim, pos, q), MS_OK);
+    ck_assert_float_eq_tol(pos[0], 0.13f, 1e-5f); /* the path's start, before it starts */
+    ck_assert_float_eq_tol(q[0], 1.0f, 1e-6f);
+    const float to[3] = {0.2f, 0.21f, 0.0f}, v0[3] = {0, 0, 0};
+    ck_assert_int_eq(ms_sim_move_container(sim, to, v0), MS_OK);
+    ck_assert_int_eq(ms_sim_step(sim, 0.0167f), MS_OK);
+    ck_assert_int_eq(ms_sim_container_pose(sim, pos, NULL), MS_OK);
+    for (int k = 0; k < 3; ++k)
+        ck_assert_float_eq_tol(pos[k], to[k], 1e-6f);
+    MS_ASSERT_REFUSED(ms_sim_boat(sim, pos), MS_ERR_STATE, "no boat");
+    MS_ASSERT_REFUSED(ms_sim_steer_boat(sim, v0), MS_ERR_STATE, "no boat");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    /* SPH only (fig4c): no waves for rain */
+    sim = sim_of("data/scenes/fig4c.json", &sc);
+    MS_ASSERT_REFUSED(ms_sim_set_rain(sim, 1), MS_ERR_STATE, "no surface");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+START_TEST(a_renderer_in_context_needs_a_current_context)
+{
+    ms_renderer_desc d = ms_renderer_desc_default();
+    ms_renderer *r = (ms_renderer *)&d;
+    ms_status st = ms_renderer_create_in_context(&d, &r);
+    ck_assert_ptr_null(r);
+    if (st == MS_ERR_UNSUPPORTED) {
+        ck_assert_ptr_nonnull(strstr(ms_last_error(), "no OpenGL"));
+        return; /* a build without OSMesa says so; nothing more to check */
+    }
+    /* this test's thread has no GL context current */
+    ck_assert_int_eq(st, MS_ERR_STATE);
+    ck_assert_ptr_nonnull(strstr(ms_last_error(), "no OpenGL context is current"));
+    d.width = 3;
+    MS_ASSERT_REFUSED(ms_renderer_create_in_context(&d, &r), MS_ERR_INVALID_ARGUMENT, "width");
+}
+END_TEST
+
 /* ---- the window ------------------------------------------------------- */
 
 START_TEST(without_a_display_it_says_so_and_exits_2)
@@ -545,6 +646,9 @@ static Suite *view_suite(void)
     tcase_add_test(tc, overlay_stage_times_equal_sim_stats);
     tcase_add_test(tc, input_log_round_trips_and_refuses_bad_lines);
     tcase_add_test(tc, pointer_ray_meets_the_water_where_the_camera_looks);
+    tcase_add_test(tc, a_steered_boat_goes_where_it_is_steered);
+    tcase_add_test(tc, the_container_pose_is_where_it_was_moved);
+    tcase_add_test(tc, a_renderer_in_context_needs_a_current_context);
     suite_add_tcase(s, tc);
     tc = tcase_create("window");
     tcase_set_timeout(tc, 240);

@@ -139,6 +139,7 @@ typedef struct viewer {
     ms_stats before, after;    /* around the last step */
     double fps, fps_t0;
     long fps_frames, screenshots, recorded;
+    double render_ms_sum, step_ms_sum; /* for the summary: draws after a step, steps */
     char title[160];
 } viewer;
 
@@ -299,6 +300,7 @@ static int step(viewer *vw)
         return -1;
     }
     ms_sim_stats(vw->sim, &vw->after);
+    vw->step_ms_sum += vw->after.total_ms - vw->before.total_ms;
     if (vw->writer && ms_writer_frame(vw->writer, vw->sim) != MS_OK) {
         tool_error("view: %s: %s", vw->o.out, ms_last_error());
         return -1;
@@ -386,6 +388,8 @@ static int draw(viewer *vw, int stepped)
         ms_render_stats rs;
         ms_renderer_stats(vw->r, &rs);
         render_ms = rs.total_ms;
+        if (stepped)
+            vw->render_ms_sum += render_ms;
     } else {
         gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
         gl->ClearColor(0, 0, 0, 1);
@@ -534,8 +538,11 @@ static int run(viewer *vw)
         }
     }
     double wall = tool_now() - t_start;
-    printf("view: %ld frames stepped in %.2f s (%.1f frames/s), %ld recorded\n", stepped_total,
-           wall, wall > 0 ? (double)stepped_total / wall : 0.0, vw->recorded);
+    const double per = stepped_total > 0 ? 1.0 / (double)stepped_total : 0.0;
+    printf("view: %ld frames stepped in %.2f s (%.1f frames/s), %ld recorded; per frame: "
+           "step %.1f ms, render %.1f ms\n",
+           stepped_total, wall, wall > 0 ? (double)stepped_total / wall : 0.0, vw->recorded,
+           vw->step_ms_sum * per, vw->render_ms_sum * per);
     return EXIT_OK;
 }
 
