@@ -6,11 +6,13 @@
 # the left button across the water with xdotool and take a third; print
 # the mean colour difference (0-255) of the water part of the window
 # (below the overlay's text), "still D" and "dragged D"; then press Esc and
-# exit with the viewer's status. Usage: view_x11.sh TOOL TMPDIR
+# exit with the viewer's status. The session's input log and run file
+# (live.log, live.h5) stay in TMPDIR for the replay check. Usage: view_x11.sh TOOL TMPDIR
 set -eu
 TOOL=$1
 T=$2
-"$TOOL" view tests/data/view_waves.json --size 300x300 > "$T/x11.out" 2> "$T/x11.err" &
+"$TOOL" view tests/data/view_waves.json --size 300x300 --record-input "$T/live.log" \
+    --out "$T/live.h5" > "$T/x11.out" 2> "$T/x11.err" &
 pid=$!
 win=""
 i=0

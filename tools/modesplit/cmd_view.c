@@ -198,6 +198,17 @@ static int lose_context(viewer *vw)
     return make_context(vw);
 }
 
+/* v as the input log writes and reads it ("%.6f"), so a live session and
+ * its replay give the sim the same floats. */
+static float as_logged(float v, const char *fmt)
+{
+    char buf[32];
+    float out = v;
+    snprintf(buf, sizeof buf, fmt, (double)v);
+    sscanf(buf, "%f", &out);
+    return out;
+}
+
 /* SDL's event as the viewer's; 0 if it is not one the viewer uses. */
 static int from_sdl(const viewer *vw, const SDL_Event *e, view_event *out)
 {
@@ -221,18 +232,19 @@ static int from_sdl(const viewer *vw, const SDL_Event *e, view_event *out)
             return 0;
         out->type = e->type == SDL_MOUSEBUTTONDOWN ? VIEW_BUTTON_DOWN : VIEW_BUTTON_UP;
         out->button = e->button.button;
-        out->x = SDL_clamp((float)e->button.x / w, 0.0f, 1.0f);
-        out->y = SDL_clamp((float)e->button.y / h, 0.0f, 1.0f);
+        out->x = as_logged(SDL_clamp((float)e->button.x / w, 0.0f, 1.0f), "%.6f");
+        out->y = as_logged(SDL_clamp((float)e->button.y / h, 0.0f, 1.0f), "%.6f");
         out->shift = (SDL_GetModState() & KMOD_SHIFT) != 0;
         return 1;
     case SDL_MOUSEMOTION:
         out->type = VIEW_MOTION;
-        out->x = SDL_clamp((float)e->motion.x / w, 0.0f, 1.0f);
-        out->y = SDL_clamp((float)e->motion.y / h, 0.0f, 1.0f);
+        out->x = as_logged(SDL_clamp((float)e->motion.x / w, 0.0f, 1.0f), "%.6f");
+        out->y = as_logged(SDL_clamp((float)e->motion.y / h, 0.0f, 1.0f), "%.6f");
         return 1;
     case SDL_MOUSEWHEEL:
         out->type = VIEW_WHEEL;
-        out->wheel = (float)e->wheel.y * (e->wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -1 : 1);
+        out->wheel = as_logged(
+            (float)e->wheel.y * (e->wheel.direction == SDL_MOUSEWHEEL_FLIPPED ? -1 : 1), "%.3f");
         return out->wheel != 0;
     case SDL_WINDOWEVENT:
         if (e->window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
