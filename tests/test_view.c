@@ -11,6 +11,7 @@
 #include <dirent.h>
 #include <math.h>
 #include <png.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -20,6 +21,7 @@
 
 #include "modesplit/modesplit.h"
 #include "support.h"
+#include "../tools/modesplit/tool.h"
 #include "../tools/modesplit/view.h"
 
 #define POOL "tests/data/view_pool.json"
@@ -356,6 +358,90 @@ START_TEST(the_container_pose_is_where_it_was_moved)
 }
 END_TEST
 
+
+/* view_input.c reports through the tool's tool_error (main.c) */
+void tool_error(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+static void key(view_state *v, long frame, view_event_type t, const char *name)
+{
+    view_event e = {.frame = frame, .type = t};
+    snprintf(e.key, sizeof e.key, "%s", name);
+    ck_assert_int_eq(view_apply_event(v, &e), 0);
+}
+
+/* Holds `name` for n frames: its effect is applied before each step. */
+static void hold(view_state *v, const char *name, int n)
+{
+    key(v, ms_sim_frame(v->sim), VIEW_KEY_DOWN, name);
+    for (int i = 0; i < n; ++i) {
+        ck_assert_int_eq(view_before_step(v), 0);
+        ck_assert_int_eq(ms_sim_step(v->sim, v->frame_dt), MS_OK);
+    }
+    key(v, ms_sim_frame(v->sim), VIEW_KEY_UP, name);
+    ck_assert_int_eq(view_before_step(v), 0);
+    ck_assert_int_eq(ms_sim_step(v->sim, v->frame_dt), MS_OK);
+}
+
+START_TEST(keys_move_and_tilt_the_glass_and_steer_the_boat)
+{
+    ms_scene *sc;
+    ms_sim *sim = sim_of("data/scenes/glass.json", &sc);
+    ms_renderer_desc d;
+    ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
+    view_state v;
+    view_state_init(&v, sim, &d, ms_scene_frame_dt(sc));
+    ck_assert(v.has_container && !v.has_boat && v.has_volume && v.has_surface);
+    ck_assert_int_eq(v.rain, 0);
+    ck_assert_int_eq(ms_sim_step(sim, v.frame_dt), MS_OK);
+    float p0[3], p1[3], q[4];
+    ck_assert_int_eq(ms_sim_container_pose(sim, p0, q), MS_OK);
+    /* E for 10 frames of 1/60 s at 60 degrees/s: tilted 10 degrees */
+    hold(&v, "E", 10);
+    ck_assert_int_eq(ms_sim_container_pose(sim, p1, q), MS_OK);
+    double angle = 2.0 * acos(fmin(1.0, fabs((double)q[0]))) * 180.0 / 3.14159265358979;
+    ck_assert_double_eq_tol(angle, 10 * v.frame_dt * 60.0, 0.5);
+    /* W for 12 frames: towards where the camera looks (+y from the default
+     * camera), at half the pool's side per second */
+    ck_assert_int_eq(ms_sim_container_pose(sim, p0, NULL), MS_OK);
+    hold(&v, "W", 12);
+    ck_assert_int_eq(ms_sim_container_pose(sim, p1, NULL), MS_OK);
+    ck_assert_float_eq_tol(p1[0], p0[0], 1e-3f);
+    ck_assert_float_eq_tol(p1[1] - p0[1], 12 * v.frame_dt * 0.5f * 0.4f, 2e-3f);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+
+    sim = sim_of("data/scenes/fig10.json", &sc);
+    ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
+    view_state_init(&v, sim, &d, ms_scene_frame_dt(sc));
+    ck_assert(v.has_boat && !v.has_container);
+    ck_assert_int_eq(v.rain, 1); /* fig10 rains from the start */
+    ck_assert_int_eq(ms_sim_step(sim, v.frame_dt), MS_OK);
+    float b0[2], b1[2];
+    ck_assert_int_eq(ms_sim_boat(sim, b0), MS_OK);
+    hold(&v, "Right", 10); /* +x from the default camera */
+    ck_assert_int_eq(ms_sim_boat(sim, b1), MS_OK);
+    ck_assert_float_gt(b1[0] - b0[0], 0.05f);
+    ck_assert_float_lt(fabsf(b1[1] - b0[1]), 0.01f);
+    /* let go: it stays */
+    ck_assert_int_eq(ms_sim_boat(sim, b0), MS_OK);
+    ck_assert_int_eq(view_before_step(&v), 0);
+    ck_assert_int_eq(ms_sim_step(sim, v.frame_dt), MS_OK);
+    ck_assert_int_eq(ms_sim_boat(sim, b1), MS_OK);
+    ck_assert_float_eq(b0[0], b1[0]);
+    key(&v, 0, VIEW_KEY_DOWN, "R");
+    ck_assert_int_eq(v.rain, 0);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 START_TEST(a_renderer_in_context_needs_a_current_context)
 {
     ms_renderer_desc d = ms_renderer_desc_default();
@@ -680,6 +766,7 @@ static Suite *view_suite(void)
     tcase_add_test(tc, a_steered_boat_goes_where_it_is_steered);
     tcase_add_test(tc, the_container_pose_is_where_it_was_moved);
     tcase_add_test(tc, a_renderer_in_context_needs_a_current_context);
+    tcase_add_test(tc, keys_move_and_tilt_the_glass_and_steer_the_boat);
     suite_add_tcase(s, tc);
     tc = tcase_create("window");
     tcase_set_timeout(tc, 240);

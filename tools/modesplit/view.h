@@ -127,6 +127,7 @@ typedef struct view_state {
     int held[VIEW_HELD_N];
     float cont_pos[3], cont_quat[4]; /* container: where the keys put it */
     int cont_known;
+    int cont_active;            /* W A S D Q E were held at the last step */
     float tilt;                 /* rad, about the camera's right axis */
     int boat_steered;           /* arrows were held at the last step */
     char status[96];            /* the last action, shown for a while */

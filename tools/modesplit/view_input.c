@@ -291,8 +291,9 @@ static int container_step(view_state *v)
     const int *h = v->held;
     int move = h[VIEW_HELD_W] | h[VIEW_HELD_A] | h[VIEW_HELD_S] | h[VIEW_HELD_D];
     int turn = h[VIEW_HELD_Q] | h[VIEW_HELD_E];
-    if (!v->has_container || (!move && !turn))
+    if (!v->has_container || (!move && !turn && !v->cont_active))
         return 0;
+    v->cont_active = move || turn; /* let go: one more call with speeds of 0 */
     if (!v->cont_known) {
         if (ms_sim_container_pose(v->sim, v->cont_pos, v->cont_quat) != MS_OK)
             return fail("the container");

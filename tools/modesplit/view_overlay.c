@@ -189,4 +189,7 @@ void view_overlay_draw(const char *text, int w, int h, int top)
         col++;
     }
 }
+#else
+/* a build without SDL2: no window, no overlay (ISO C wants a declaration) */
+typedef int view_overlay_unused;
 #endif
