@@ -163,6 +163,23 @@ $(BUILD)/bin/%: $(BUILD)/obj/tools/bench/%.o $(STATIC)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDSAN) -o $@ $< $(STATIC) $(SYS_LIBS)
 
+# modesplit view (issue 16): the window is SDL2's, optional like OSMesa;
+# without it `modesplit view` says so and exits 2. The tool links no
+# OpenGL library (the viewer takes its few GL calls from the window's
+# context). tests/test_view also links the viewer's SDL-free parts.
+HAVE_SDL2   := $(shell $(PKG_CONFIG) --exists sdl2 2>/dev/null && echo 1 || echo 0)
+ifeq ($(HAVE_SDL2),1)
+SDL2_CFLAGS := $(shell $(PKG_CONFIG) --cflags sdl2 2>/dev/null)
+SDL2_LIBS   := $(shell $(PKG_CONFIG) --libs sdl2 2>/dev/null)
+endif
+VIEW_TEST_OBJ := $(addprefix $(BUILD)/obj/tools/modesplit/,view_log.o view_camera.o view_stats.o \
+                 view_input.o)
+$(BUILD)/obj/tools/modesplit/%.o: CPPFLAGS += -DMS_HAVE_SDL2=$(HAVE_SDL2)
+$(BUILD)/obj/tools/modesplit/%.o: ALL_CFLAGS += $(SDL2_CFLAGS)
+$(BUILD)/bin/modesplit: SYS_LIBS += $(SDL2_LIBS)
+$(BUILD)/tests/test_view: $(VIEW_TEST_OBJ)
+$(BUILD)/tests/test_view: TEST_SUPPORT += $(VIEW_TEST_OBJ)
+
 # Tests link the static library so they can also reach internal functions.
 $(BUILD)/obj/tests/%.o: tests/%.c
 	@mkdir -p $(@D)

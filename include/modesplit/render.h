@@ -116,6 +116,19 @@ MS_API ms_status ms_renderer_create_from_scene(const ms_scene *sc, ms_renderer *
 MS_DEPRECATED("use ms_renderer_create_from_scene")
 MS_API ms_status ms_renderer_create(const ms_scene *sc, ms_renderer **out);
 MS_API void ms_renderer_destroy(ms_renderer *r);
+/* A renderer that draws with the calling thread's current OpenGL context
+ * (a window's, e.g. SDL's or GLX's on Mesa; compatibility profile 2.1 with
+ * framebuffer objects and sRGB) instead of an off-screen context of its
+ * own. Every later call on it, ms_renderer_destroy included, must be made
+ * with that context current. ms_renderer_draw draws as usual, then copies
+ * the width x height image (sRGB-encoded) into the framebuffer bound for
+ * drawing at the call (0: the window's back buffer) at (0, 0); the caller
+ * swaps buffers. No pixels are read back: ms_renderer_pixels returns NULL
+ * and ms_renderer_write_png is refused (MS_ERR_STATE); read the window's
+ * framebuffer. GL state (program, bindings, enables) is left as the draw
+ * left it. MS_ERR_STATE when no context is current, MS_ERR_UNSUPPORTED
+ * in a build without OpenGL. For a new window size, make a new renderer. */
+MS_API ms_status ms_renderer_create_in_context(const ms_renderer_desc *d, ms_renderer **out);
 
 /* Draws the sim's combined field (ms_sim_height, ms_sim_field_grid of
  * MS_FIELD_COMBINED) at ms_sim_time, with the sim's floaters (the first

@@ -183,6 +183,20 @@ MS_API ms_status ms_sim_turn_container(ms_sim *sim, const float orientation[4],
 MS_API ms_status ms_sim_turn_obstacle(ms_sim *sim, int i, const float orientation[4],
                                       const float omega[3]);
 
+/* A user at the controls (lib/sim/interact.c). Rain on (1: the scene's
+ * effects.rain, or a light shower when it names none) or off (0), from
+ * the next frame on; MS_ERR_STATE without a surface. */
+MS_API ms_status ms_sim_set_rain(ms_sim *sim, int on);
+/* Steer the scene's boat (effects.boat) by hand: from the next frame on it
+ * moves at vel (m/s, each in [-100, 100]) from where it is, its scripted
+ * path dropped; it stops at the pool's edge. MS_ERR_STATE without a boat. */
+MS_API ms_status ms_sim_steer_boat(ms_sim *sim, const float vel[2]);
+/* Where the boat is now (world x, y, m). MS_ERR_STATE without a boat. */
+MS_API ms_status ms_sim_boat(const ms_sim *sim, float pos[2]);
+/* Where the container is now (m) and its orientation (w, x, y, z; NULL to
+ * skip), to move or tilt it from there. MS_ERR_STATE without one. */
+MS_API ms_status ms_sim_container_pose(const ms_sim *sim, float pos[3], float orientation[4]);
+
 #ifdef __cplusplus
 }
 #endif

@@ -48,7 +48,10 @@ static ms_status sim_discs(ms_renderer *r, const ms_sim *sim, const float *h, co
     }
     if (boat) {
         float pos[3] = {0, 0, 0}, vel[3];
-        ms_scene_motion_eval(&sc->boat_path, ms_sim_time(sim), pos, vel);
+        /* where the wave solver has it (steered by hand, ms_sim_steer_boat),
+         * else along its path */
+        if (ms_sim_boat(sim, pos) != MS_OK)
+            ms_scene_motion_eval(&sc->boat_path, ms_sim_time(sim), pos, vel);
         discs[k].pos[0] = pos[0];
         discs[k].pos[1] = pos[1];
         discs[k].pos[2] = d->pool_min[2] + height_at(h, g, pos[0], pos[1]);

@@ -42,6 +42,8 @@ ms_status ms_gl_context_create(ms_gl_context *c)
 
 ms_status ms_gl_context_begin(ms_gl_context *c)
 {
+    if (c->borrowed)
+        return ms_gl_borrowed_begin(c);
     pthread_mutex_lock(&osmesa_lock);
     MESA_LEAKS_BEGIN();
     GLboolean ok = OSMesaMakeCurrent(c->ctx, c->buffer, GL_UNSIGNED_BYTE, 16, 16);
@@ -54,6 +56,8 @@ ms_status ms_gl_context_begin(ms_gl_context *c)
 
 void ms_gl_context_end(void)
 {
+    if (ms_gl_borrowed_end())
+        return;
     pthread_mutex_lock(&osmesa_lock);
     OSMesaMakeCurrent(NULL, NULL, GL_UNSIGNED_BYTE, 0, 0);
     pthread_mutex_unlock(&osmesa_lock);

@@ -267,7 +267,10 @@ static ms_status frame(ms_renderer *r, const float *h, const ms_grid *g, double 
     draw_scene(r, time);
     glFinish();
     double t3 = ms_now();
-    read_back(r);
+    if (r->gl->context.borrowed)
+        ms_gl_present(r);
+    else
+        read_back(r);
     double t4 = ms_now();
     if ((st = ms_gl_check("drawing a frame")) != MS_OK)
         return st;

@@ -28,6 +28,9 @@ typedef struct ms_gl_program {
  * carries the compiler's or linker's log. MS_ERR_PLUGIN on failure. */
 ms_status ms_gl_program_build(const char *what, const char *vs, const char *fs,
                               ms_gl_program *out);
+/* Delete a program (a borrowed window context outlives the renderer, so
+ * the renderer deletes what it made there). */
+void ms_gl_program_free(ms_gl_program *p);
 /* The table a shader plugin sets its uniforms through (bound program). */
 ms_shader_uniforms ms_gl_uniform_table(ms_gl_program *p);
 
@@ -35,6 +38,8 @@ ms_shader_uniforms ms_gl_uniform_table(ms_gl_program *p);
 typedef struct ms_gl_context {
     OSMesaContext ctx;
     unsigned char buffer[16 * 16 * 4]; /* the context's own (unused) framebuffer */
+    int borrowed;         /* 1: the caller's current context (context_current.c) */
+    GLuint target_fbo;    /* borrowed: the framebuffer a frame is copied to */
 } ms_gl_context;
 
 ms_status ms_gl_context_create(ms_gl_context *c);
@@ -43,6 +48,20 @@ ms_status ms_gl_context_begin(ms_gl_context *c);
 /* Releases the thread's current context. */
 void ms_gl_context_end(void);
 void ms_gl_context_destroy(ms_gl_context *c);
+
+/* context_current.c: a context borrowed from the caller
+ * (ms_renderer_create_in_context). borrow_requested: the renderer being
+ * created asks for it; borrowed_begin: remember where frames go;
+ * borrowed_end: 1 if the thread's context was borrowed (then it stays
+ * current); present: the frame into the caller's framebuffer; delete_objects:
+ * the renderer's GL objects (a borrowed context outlives the renderer). */
+int ms_gl_borrow_requested(void);
+ms_status ms_gl_context_borrow(ms_gl_context *c);
+ms_status ms_gl_borrowed_begin(ms_gl_context *c);
+int ms_gl_borrowed_end(void);
+
+void ms_gl_present(ms_renderer *r);
+void ms_gl_delete_objects(ms_gl *gl);
 
 /* Floats per pool vertex: position 3, normal 3, texture coordinate 2,
  * colour 3. */

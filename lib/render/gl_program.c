@@ -77,6 +77,13 @@ ms_status ms_gl_program_build(const char *what, const char *vs, const char *fs,
     return MS_OK;
 }
 
+void ms_gl_program_free(ms_gl_program *p)
+{
+    if (p->prog)
+        glDeleteProgram(p->prog);
+    p->prog = 0;
+}
+
 /* A name the program lacks has location -1, which glUniform ignores. */
 static void set_float(void *ctx, const char *name, float v)
 {

@@ -94,7 +94,9 @@ ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky)
     if (!gl)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the GL state");
     r->gl = gl;
-    ms_status st = ms_gl_context_create(&gl->context);
+    r->in_context = ms_gl_borrow_requested();
+    ms_status st = r->in_context ? ms_gl_context_borrow(&gl->context)
+                                 : ms_gl_context_create(&gl->context);
     if (st != MS_OK)
         return st;
     if ((st = ms_gl_context_begin(&gl->context)) != MS_OK)
@@ -121,7 +123,9 @@ void ms_gl_destroy(ms_gl *gl)
 {
     if (!gl)
         return;
-    /* the context takes its objects with it */
+    /* the context takes its objects with it; a borrowed one stays */
+    if (gl->context.borrowed)
+        ms_gl_delete_objects(gl);
     ms_gl_context_destroy(&gl->context);
     ms_free(gl->vertices);
     ms_free(gl->coarse);

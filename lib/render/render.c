@@ -442,7 +442,7 @@ const unsigned char *ms_renderer_pixels(const ms_renderer *r, int *w, int *h)
         *w = r ? r->desc.width : 0;
     if (h)
         *h = r ? r->desc.height : 0;
-    return r ? r->pixels : NULL;
+    return r && !r->in_context ? r->pixels : NULL; /* in a context: the caller's framebuffer */
 }
 
 ms_status ms_renderer_write_png(const ms_renderer *r, const char *path)
@@ -454,6 +454,11 @@ ms_status ms_renderer_write_png(const ms_renderer *r, const char *path)
     if (!r->have_frame)
         return ms_fail(MS_ERR_STATE, "render: nothing drawn yet; call ms_renderer_draw before "
                                      "writing \"%s\"",
+                       path);
+    if (r->in_context)
+        return ms_fail(MS_ERR_STATE, "render: this renderer draws into the caller's OpenGL "
+                                     "framebuffer and reads no pixels back; read them there to "
+                                     "write \"%s\"",
                        path);
     return ms_png_write_rgba(path, r->pixels, r->desc.width, r->desc.height);
 }

@@ -129,6 +129,7 @@ struct ms_renderer {
     int have_frame;
     ms_render_stats stats;
     ms_gl *gl;
+    int in_context;         /* 1: the caller's GL context (context_current.c) */
 };
 
 #if MS_HAVE_OSMESA

@@ -42,6 +42,17 @@ static const char usage_text[] =
     "      --usd OUT.usdc         the height field as a time-sampled mesh, particles as\n"
     "                             time-sampled points (python3 with usd-core)\n"
     "      --field NAME           the mesh's field: combined (default), surface, volume\n"
+    "  view SCENE.json [options]  the scene in a window, in real time: left-drag the\n"
+    "                             water, right-drag orbit, wheel zoom, middle-drag pan,\n"
+    "                             shift-click a drop; H in the window lists the keys\n"
+    "      --size WxH             window size (default: the scene's render size)\n"
+    "      --threads 1|2          as for run\n"
+    "      --fast                 start as fast as it can (F toggles) instead of at frame_dt\n"
+    "      --frames N             quit after N frames\n"
+    "      --record DIR           DIR/frame_NNNNN.png: every frame as the user saw it\n"
+    "      --record-input FILE    log the mouse and keys with their frame numbers\n"
+    "      --script FILE          replay such a log (the same frames, the same water)\n"
+    "      --out RUN.h5           also write the session's frames as run does\n"
     "  help [COMMAND], --help, -h this text, or one command's part of it\n"
     "                             (also: modesplit COMMAND --help)\n"
     "  --version, -V              the library version\n"
@@ -274,9 +285,11 @@ static int dispatch(int argc, char **argv)
         return cmd_check(argc - 1, argv + 1);
     if (!strcmp(cmd, "plugins"))
         return cmd_plugins(argc - 1, argv + 1);
+    if (!strcmp(cmd, "view"))
+        return cmd_view(argc - 1, argv + 1);
     if (!strcmp(cmd, "export"))
         return cmd_export(argc - 1, argv + 1);
-    static const char *const commands[] = {"run", "info", "check", "plugins", "export"};
+    static const char *const commands[] = {"run", "info", "check", "plugins", "export", "view"};
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i)
         if (edit_distance(cmd, commands[i]) <= 2 &&
             edit_distance(cmd, commands[i]) < strlen(commands[i])) {
@@ -284,7 +297,7 @@ static int dispatch(int argc, char **argv)
                        commands[i]);
             return EXIT_USAGE;
         }
-    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, export (see "
+    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, export, view (see "
                "modesplit --help)", cmd);
     return EXIT_USAGE;
 }

@@ -54,6 +54,7 @@ int tool_command_usage(FILE *f, const char *cmd);
 /* "run: unknown option --frame; did you mean --frames?" from the options
  * the command's usage text lists. */
 void tool_unknown_option(const char *cmd, const char *opt);
+int cmd_view(int argc, char **argv); /* cmd_view.c, view_*.c */
 
 /* ---- progress (progress.c) ---- */
 typedef struct tool_progress {

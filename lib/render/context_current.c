@@ -1,0 +1,115 @@
+/* A renderer that draws with the caller's current GL context (a window's,
+ * an engine's) instead of an OSMesa context of its own:
+ * ms_renderer_create_in_context (render.h). Compiled in every build; without
+ * OSMesa the call says the build has no OpenGL. Used by `modesplit view`, whose
+ * SDL window has a GLX context: the renderer's GL code then draws into the
+ * window, not into a second renderer's buffer.
+ *
+ * How it works with the same GL code: Mesa's libOSMesa and its GLX driver
+ * share one dispatch (libglapi), so the gl* calls the renderer makes go to
+ * whichever Mesa context is current in the thread. The renderer still
+ * draws into its own sRGB framebuffer object of the desc's size; at the
+ * end of a frame, instead of reading the pixels back, it copies them
+ * (glBlitFramebuffer, no sRGB conversion: the encoded bytes) into the
+ * framebuffer that was bound for drawing when ms_renderer_draw was called
+ * (0: the window's back buffer), at (0, 0). The caller swaps buffers.
+ *
+ * A borrowed context is not made current or released by the renderer, and
+ * it is not destroyed with it: ms_renderer_destroy deletes the GL objects
+ * the renderer made, so call it with the context still current (after the
+ * context is gone, e.g. lost, the deletions do nothing). */
+#include "core/internal.h"
+#include "render/render_internal.h"
+
+#if MS_HAVE_OSMESA
+#include "render/gl_internal.h"
+
+/* Set while ms_renderer_create_in_context runs ms_renderer_create_desc,
+ * so the create path stays one (ms_gl_create reads it); per thread. */
+static _Thread_local int borrow_next;
+/* Set between begin and end of a borrowed context (ms_gl_context_end has
+ * no argument). */
+static _Thread_local int borrowed_now;
+
+int ms_gl_borrow_requested(void)
+{
+    return borrow_next;
+}
+
+ms_status ms_gl_context_borrow(ms_gl_context *c)
+{
+    c->borrowed = 1;
+    c->target_fbo = 0;
+    /* with no context current, Mesa's dispatch answers NULL */
+    if (!glGetString(GL_VERSION))
+        return ms_fail(MS_ERR_STATE, "render: no OpenGL context is current in this thread; "
+                                     "make the window's context current before "
+                                     "ms_renderer_create_in_context");
+    return MS_OK;
+}
+
+ms_status ms_gl_borrowed_begin(ms_gl_context *c)
+{
+    if (!glGetString(GL_VERSION))
+        return ms_fail(MS_ERR_STATE, "render: the renderer draws with the caller's OpenGL "
+                                     "context, and none is current in this thread");
+    GLint fbo = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+    c->target_fbo = (GLuint)fbo;
+    borrowed_now = 1;
+    return MS_OK;
+}
+
+int ms_gl_borrowed_end(void)
+{
+    int was = borrowed_now;
+    borrowed_now = 0;
+    return was;
+}
+
+void ms_gl_present(ms_renderer *r)
+{
+    const ms_gl *gl = r->gl;
+    const int w = r->desc.width, h = r->desc.height;
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, gl->fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, gl->context.target_fbo);
+    glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, gl->context.target_fbo);
+}
+
+void ms_gl_delete_objects(ms_gl *gl)
+{
+    if (!glGetString(GL_VERSION))
+        return; /* the context is gone and its objects with it */
+    GLuint tex[4] = {gl->sky_tex, gl->env_tex != gl->sky_tex ? gl->env_tex : 0, gl->tiles_tex,
+                     gl->caustics_tex};
+    glDeleteTextures(4, tex);
+    GLuint buf[4] = {gl->pool_vbo, gl->discs_vbo, gl->mesh_vbo, gl->mesh_ibo};
+    glDeleteBuffers(4, buf);
+    GLuint rb[2] = {gl->color_rb, gl->depth_rb};
+    glDeleteRenderbuffers(2, rb);
+    glDeleteFramebuffers(1, &gl->fbo);
+    ms_gl_program_free(&gl->liquid);
+    ms_gl_program_free(&gl->pool);
+    ms_gl_program_free(&gl->sky);
+}
+
+ms_status ms_renderer_create_in_context(const ms_renderer_desc *d, ms_renderer **out)
+{
+    borrow_next = 1;
+    ms_status st = ms_renderer_create_desc(d, out);
+    borrow_next = 0;
+    return st;
+}
+#else
+ms_status ms_renderer_create_in_context(const ms_renderer_desc *d, ms_renderer **out)
+{
+    (void)d;
+    if (out)
+        *out = NULL;
+    return ms_fail(MS_ERR_UNSUPPORTED,
+                   "render: this build of libmodesplit has no OpenGL (OSMesa); install "
+                   "libosmesa6-dev and rebuild to draw into a window");
+}
+#endif
