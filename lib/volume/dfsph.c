@@ -66,6 +66,14 @@
 #include "volume/volume_impl.h"
 
 enum { LANES = MS_VOLUME_LANES };
+
+/* The pair loops are inlined into each clone of dfsph_part, so they are
+ * compiled for its instruction set. */
+#if defined(__GNUC__)
+#define MS_DFSPH_INLINE __attribute__((always_inline))
+#else
+#define MS_DFSPH_INLINE
+#endif
 enum { MIN_ITERATIONS = 2 };
 
 typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSURE } pass_kind;
@@ -86,7 +94,7 @@ static inline int padded(int n)
 /* Entry g of particle i's image list: particle j's position and velocity
  * mirrored as density.c and forces.c mirror them (velocity in the shape's
  * frame at a shape). */
-static inline void image_of(const ms_volume *v, int i, int g, const float wall[3], float pj[3],
+static inline MS_DFSPH_INLINE void image_of(const ms_volume *v, int i, int g, const float wall[3], float pj[3],
                             float uj[3])
 {
     const unsigned f = (unsigned)g >> MS_VOLUME_IMAGE_SHIFT;
@@ -153,7 +161,7 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
  * answers to i's image in its own list at the same distance). Without
  * them a particle in a corner (seven images of itself) had its diagonal
  * underestimated several times over and a tank at rest blew up. */
-static void factors_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
+static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const int *restrict idx = lst->idx + v->nl_begin[i];
@@ -226,7 +234,7 @@ static void factors_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, i
 
 /* sum_j (v_i - v_j) . (x_i - x_j) g_ij over real neighbours and images:
  * D rho_i/Dt = -m G times it. */
-static float divergence_sum(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
+static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const float *restrict vx = v->vx, *restrict vy = v->vy, *restrict vz = v->vz;
@@ -262,7 +270,7 @@ static float divergence_sum(const ms_volume *v, const ms_nlist *lst, const ms_nl
 }
 
 /* v_i += scale m G sum_j (s_i + s_j) g_ij (x_i - x_j): the pressure term. */
-static void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i, float scale)
+static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i, float scale)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const float *restrict s = v->df_s;
@@ -313,6 +321,12 @@ static inline int64_t quantise(float e_rel)
     return (int64_t)((double)c * 4294967296.0);
 }
 
+/* Built for AVX-512, AVX2 and the baseline as density.c's weight_sum: the
+ * lanes loops vectorise (gathers), with no fused multiply-adds under
+ * -std=c11 and IEEE sqrt and division, so every clone gives the same bits. */
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
 static void dfsph_part(void *ctxp, int part, int b, int e)
 {
     dfsph_ctx *ctx = ctxp;
