@@ -7,7 +7,8 @@
  *   volume.c     the handle: create, particles in and out, info
  *   pool.c       the worker threads of a step (static split, same bytes for any count)
  *   grid.c       neighbour grid of cell size h, counting sort into cell order
- *   density.c    density (eq. 9 with poly6) and pressure (ideal gas, Tait)
+ *   neighbours.c the neighbour lists of a density pass (instruction-set filters)
+ *   density.c    density (eq. 9) and pressure (ideal gas, Tait)
  *   forces.c     pressure force (eq. 13), viscosity force (eq. 14), gravity
  *   collide.c    the collider force field (eq. 15), the domain box, no tunnelling
  *   step.c       ms_volume_step: time-step bounds, sub-steps, symplectic Euler
@@ -43,7 +44,7 @@
  * a block may read past the last particle (those lanes are masked). */
 #define MS_VOLUME_LANES 16
 
-/* Instruction sets of the neighbour filter (density.c), picked at run time
+/* Instruction sets of the neighbour filter (neighbours.c), picked at run time
  * (the same lists on each). The AVX-512 version needs GCC's target
  * attribute and __builtin_cpu_supports; TSan builds stay on SSE2. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
@@ -266,6 +267,19 @@ static inline long ms_volume_cell_of(const ms_volume *v, float x, float y, float
     return (cz * v->gy + cy) * v->gx + cx;
 }
 
+
+/* neighbours.c: the nine row ranges (x-1 .. x+1) of the 27 cells around
+ * a cell, and how many candidates they hold; particle i's runs of real
+ * neighbours and images appended to its part's lists (nl_*, gl_*), with
+ * the rows of its cell in own (kept while the cell stays the same) and, on
+ * the AVX-512 path, *ncand candidates copied; -1 if a list could not grow.
+ * The best neighbour filter this CPU runs is ms_volume_pick_isa. */
+typedef struct ms_rows {
+    long cell;
+    int lo[9], hi[9];
+    size_t cand;
+} ms_rows;
+int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *ncand);
 
 /* density.c: the neighbour lists, and rho, prs, inv_rho, nbr for every
  * particle; surface count and density error statistics. MS_ERR_OUT_OF_MEMORY
