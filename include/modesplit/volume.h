@@ -23,6 +23,10 @@
  * (tensile instability); the density kernel is eq. 11's by default
  * (energy-consistent with eq. 13), Mueller's poly6 on request.
  *
+ * MS_PRESSURE_DFSPH replaces the equation of state by the incompressible
+ * solves of Bender & Koschier 2015/2017 (lib/volume/dfsph.c): sub-steps
+ * at the velocity's CFL, average compression <= desc.max_density_error.
+ *
  * Deterministic: the same calls give the same bytes, for any desc.threads.
  * Not thread-safe: one handle, one thread at a time (its own worker threads
  * are internal).
@@ -216,7 +220,8 @@ typedef struct ms_volume_info {
     float max_dt;         /* s, largest stable sub-step at the current state   */
     const char *dt_limit; /* which bound set max_dt: "cfl", "viscous", "force" */
     float max_speed;      /* m/s, fastest particle                             */
-    float sound_speed;    /* m/s, of the pressure law at rest density          */
+    float sound_speed;    /* m/s, of the pressure law at rest density (DFSPH:
+                             desc.sound_speed, used only to cap the coupling) */
     float max_density_error; /* max rho/rho0 - 1: the liquid's compression     */
     float particle_mass;  /* kg                                                */
     int count;            /* particles                                         */
