@@ -5,7 +5,9 @@
  * a still liquid, adaptive smoothing (eq. 18), the hard cases (all particles
  * at one point, a 100x viscosity jump, 10 000 sub-steps at the largest
  * allowed step, a 1 s frame hitch, particles outside the domain), same bytes
- * for 1 and 2 threads, and every refusal.
+ * for 1 and 2 threads, and every refusal; the same for DFSPH (hydrostatic
+ * tank, dam break, settling energy, determinism). The colliders are in
+ * tests/test_colliders.c.
  *
  * Sizes are kept small so the suite runs in seconds; MS_TEST_LONG=1 (CI may
  * set it) runs the long variants (finer dam break, 10 000 steps with more
@@ -19,66 +21,8 @@
 
 #include "modesplit/modesplit.h"
 #include "support.h"
+#include "support_volume.h"
 #include "volume/volume_impl.h"
-
-/* Under ThreadSanitizer (MS_TEST_SAN=tsan, ~15x slower) the long
- * single-threaded physics runs are skipped: they exercise no threads, and
- * run in the plain and ASan builds. The threaded ones still run. */
-static int skip_under_tsan(void)
-{
-    const char *san = getenv("MS_TEST_SAN");
-    return san && strcmp(san, "tsan") == 0;
-}
-
-static int long_tests(void)
-{
-    const char *e = getenv("MS_TEST_LONG");
-    return e && *e && strcmp(e, "0") != 0;
-}
-
-/* A box domain of the given size (m) at the origin, spacing s, h = 2 s. */
-static ms_volume_desc box_desc(float lx, float ly, float lz, float s)
-{
-    ms_volume_desc d = ms_volume_desc_default();
-    d.domain_max[0] = lx;
-    d.domain_max[1] = ly;
-    d.domain_max[2] = lz;
-    d.spacing = s;
-    d.smoothing_length = 2.0f * s;
-    return d;
-}
-
-static ms_volume *make(const ms_volume_desc *d)
-{
-    ms_volume *v = NULL;
-    ms_status st = ms_volume_create(d, &v);
-    ck_assert_msg(st == MS_OK, "create: %s", ms_last_error());
-    return v;
-}
-
-static void step(ms_volume *v, float dt)
-{
-    ms_status st = ms_volume_step(v, dt);
-    ck_assert_msg(st == MS_OK, "step: %s", ms_last_error());
-}
-
-/* Every particle finite and inside the domain. */
-static void assert_sane(const ms_volume *v, const ms_volume_desc *d)
-{
-    int n = ms_volume_count(v);
-    float *p = malloc(sizeof(float) * 3 * (size_t)(n + 1));
-    float *u = malloc(sizeof(float) * 3 * (size_t)(n + 1));
-    ck_assert_int_eq(ms_volume_get_particles(v, p, u), MS_OK);
-    for (int i = 0; i < n; ++i)
-        for (int k = 0; k < 3; ++k) {
-            ck_assert_msg(isfinite(p[3 * i + k]) && isfinite(u[3 * i + k]),
-                          "particle %d not finite", i);
-            ck_assert_msg(p[3 * i + k] >= d->domain_min[k] && p[3 * i + k] <= d->domain_max[k],
-                          "particle %d at %g outside the domain on axis %d", i, p[3 * i + k], k);
-        }
-    free(p);
-    free(u);
-}
 
 /* Kinetic plus gravitational energy (J), potential from the domain floor. */
 static double mechanical_energy(const ms_volume *v, const ms_volume_desc *d)
@@ -156,7 +100,24 @@ START_TEST(bad_descs_are_refused_with_a_sentence)
                 MS_ERR_INVALID_ARGUMENT, "sound_speed");
     REFUSE_DESC(d_.sound_speed = NAN, MS_ERR_INVALID_ARGUMENT, "sound_speed");
     REFUSE_DESC(d_.gas_constant = NAN, MS_ERR_INVALID_ARGUMENT, "gas_constant");
-    REFUSE_DESC(d_.pressure = MS_PRESSURE_DFSPH, MS_ERR_UNSUPPORTED, "DFSPH");
+    REFUSE_DESC((d_.pressure = MS_PRESSURE_DFSPH, d_.density_kernel = MS_DENSITY_POLY6),
+                MS_ERR_INVALID_ARGUMENT, "poly6");
+    REFUSE_DESC((d_.pressure = MS_PRESSURE_DFSPH, d_.sound_speed = 0.0f),
+                MS_ERR_INVALID_ARGUMENT, "sound_speed");
+    REFUSE_DESC(d_.max_density_error = 0.0f, MS_ERR_INVALID_ARGUMENT, "max_density_error");
+    REFUSE_DESC(d_.max_density_error = 0.2f, MS_ERR_INVALID_ARGUMENT, "(0, 0.1]");
+    REFUSE_DESC(d_.max_density_error = NAN, MS_ERR_INVALID_ARGUMENT, "max_density_error");
+    REFUSE_DESC(d_.max_divergence_error = -1.0f, MS_ERR_INVALID_ARGUMENT,
+                "max_divergence_error");
+    REFUSE_DESC(d_.max_divergence_error = INFINITY, MS_ERR_INVALID_ARGUMENT,
+                "max_divergence_error");
+    REFUSE_DESC(d_.max_density_iterations = 0, MS_ERR_INVALID_ARGUMENT,
+                "max_density_iterations");
+    REFUSE_DESC(d_.max_density_iterations = 10001, MS_ERR_INVALID_ARGUMENT, "10000");
+    REFUSE_DESC(d_.max_divergence_iterations = -1, MS_ERR_INVALID_ARGUMENT,
+                "max_divergence_iterations");
+    REFUSE_DESC(d_.max_divergence_iterations = 10001, MS_ERR_INVALID_ARGUMENT,
+                "max_divergence_iterations");
     REFUSE_DESC(d_.pressure = (ms_pressure)7, MS_ERR_INVALID_ARGUMENT, "ms_pressure");
     REFUSE_DESC(d_.max_particles = 0, MS_ERR_INVALID_ARGUMENT, "max_particles");
     REFUSE_DESC(d_.courant = 0.0f, MS_ERR_INVALID_ARGUMENT, "courant");
@@ -396,7 +357,7 @@ static void hydrostatic(ms_pressure law)
 START_TEST(hydrostatic_pressure_matches_rho_g_d_ideal_gas)
 {
     if (skip_under_tsan())
-        return;
+        MS_SKIP(TSAN_WHY);
     hydrostatic(MS_PRESSURE_IDEAL_GAS);
 }
 END_TEST
@@ -404,8 +365,119 @@ END_TEST
 START_TEST(hydrostatic_pressure_matches_rho_g_d_tait)
 {
     if (skip_under_tsan())
-        return;
+        MS_SKIP(TSAN_WHY);
     hydrostatic(MS_PRESSURE_TAIT);
+}
+END_TEST
+
+/* DFSPH (incompressible): a settled 0.28 m column's pressure (the
+ * constant-density solve's, in eq. 13's convention), averaged over
+ * 0.5 s in slabs deeper than h, matches rho0 g d within 2 % plus
+ * rho0 g spacing/4 (the level is known to a quarter spacing); measured
+ * within 4.5 % at the worst slab, 1-3 % at most. The compression at the
+ * positions each step ends with, max(rho/rho0 - 1, 0), averages at most
+ * the desc's 0.1 % plus a tenth of it and peaks below 1 % (measured
+ * 0.4 %), where the ideal gas law at c = 20 m/s compresses 0.7 %. */
+START_TEST(hydrostatic_pressure_matches_rho_g_d_dfsph)
+{
+    if (skip_under_tsan())
+        MS_SKIP(TSAN_WHY);
+    ms_volume_desc d = box_desc(0.2f, 0.2f, 0.4f, 0.02f);
+    d.pressure = MS_PRESSURE_DFSPH;
+    d.viscosity = 5.0f;
+    ms_volume *v = make(&d);
+    const float H = 0.28f;
+    ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.2f, 0.2f, H});
+    const double level = v->n * (double)d.spacing * d.spacing * d.spacing / (0.2 * 0.2);
+    enum { SLABS = 14 };
+    double ps[SLABS] = {0}, zs[SLABS] = {0}, avg_sum = 0.0;
+    long cs[SLABS] = {0};
+    float max_err = 0.0f;
+    int frames = 0;
+    for (int f = 0; f < 75; ++f) {
+        step(v, 1.0f / 60);
+        if (f < 45)
+            continue;
+        for (int i = 0; i < v->n; ++i) { /* prs and positions of the step's end */
+            int b = (int)(v->z[i] / 0.02f);
+            if (b < 0 || b >= SLABS)
+                continue;
+            ps[b] += v->prs[i];
+            zs[b] += v->z[i];
+            cs[b]++;
+        }
+        ms_volume_grid_build(v);
+        ms_volume_boundary(v, 0.0);
+        ck_assert_int_eq(ms_volume_density(v), MS_OK);
+        double sum = 0.0;
+        for (int i = 0; i < v->n; ++i) {
+            float e = v->rho[i] / d.rest_density - 1.0f;
+            sum += e > 0.0f ? e : 0.0f;
+            max_err = fmaxf(max_err, e);
+        }
+        avg_sum += sum / v->n;
+        frames++;
+    }
+    int checked = 0;
+    for (int b = 0; b < SLABS; ++b) {
+        if (!cs[b])
+            continue;
+        double z = zs[b] / cs[b], depth = level - z, p = ps[b] / cs[b];
+        if (depth < d.smoothing_length)
+            continue;
+        double want = d.rest_density * 9.81 * depth;
+        double tol = 0.02 * want + d.rest_density * 9.81 * 0.25 * d.spacing;
+        ck_assert_msg(fabs(p - want) <= tol, "DFSPH: slab at z %.3f m: p %.1f Pa, rho0 g d %.1f Pa",
+                      z, p, want);
+        checked++;
+    }
+    ck_assert_int_ge(checked, 8);
+    double avg = avg_sum / frames;
+    ck_assert_msg(avg <= 1.1 * d.max_density_error, "average compression %g over 1.1 x %g", avg,
+                  (double)d.max_density_error);
+    ck_assert_msg(max_err < 0.01f, "maximum compression %g over 1 %%", max_err);
+    ms_volume_info in = ms_volume_info_init();
+    ms_volume_get_info(v, &in);
+    ck_assert_int_ge(in.density_iterations_total, 1);
+    ck_assert(in.density_error <= d.max_density_error || in.density_iterations == 100);
+    ms_volume_destroy(v);
+}
+END_TEST
+
+/* DFSPH: a tank that starts sloshing (a dam break in a closed box) loses
+ * mechanical energy from 0.2 s on: never more than 1 % above its energy
+ * at 0.2 s (measured: 0.1 % above it at 0.22 s, while the column still
+ * falls), and below 90 % of it at 1 s; and the divergence-free solve holds its
+ * error: the average over the sub-steps of the error it reached is at
+ * most its bound (it stops at the bound unless it hits its cap). */
+START_TEST(a_settling_dfsph_tank_loses_energy_and_keeps_its_divergence)
+{
+    if (skip_under_tsan())
+        MS_SKIP(TSAN_WHY);
+    ms_volume_desc d = box_desc(0.3f, 0.1f, 0.3f, 0.02f);
+    d.pressure = MS_PRESSURE_DFSPH;
+    ms_volume *v = make(&d);
+    ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.12f, 0.1f, 0.2f});
+    double e02 = 0.0, prev = 0.0, div_sum = 0.0;
+    int frames = 0;
+    for (int f = 0; f < 60; ++f) {
+        step(v, 1.0f / 60);
+        ms_volume_info in = ms_volume_info_init();
+        ms_volume_get_info(v, &in);
+        div_sum += in.divergence_error;
+        frames++;
+        double e = mechanical_energy(v, &d);
+        if (f == 11)
+            e02 = e;
+        if (f > 11) /* the solves' 0.1 % errors may return a little: 1 % */
+            ck_assert_msg(e <= 1.01 * e02, "frame %d: %g J over the %g J at 0.2 s", f, e, e02);
+        prev = e;
+    }
+    ck_assert_msg(prev < 0.9 * e02, "energy %g J at 1 s, %g J at 0.2 s: did not settle", prev, e02);
+    ck_assert_msg(div_sum / frames <= d.max_divergence_error, "divergence error %g over %g",
+                  div_sum / frames, (double)d.max_divergence_error);
+    assert_sane(v, &d);
+    ms_volume_destroy(v);
 }
 END_TEST
 
@@ -416,7 +488,7 @@ END_TEST
  * 0.01 m); the front runs slightly ahead of the experiment, as inviscid
  * simulations do (the experiment's gate and wall friction slow it). The
  * test asserts RMS < 0.3. MS_TEST_LONG=1 also runs 3200 particles. */
-static double dam_break_rms(float a, float s, int *count)
+static double dam_break_rms_law(float a, float s, ms_pressure law, int *count)
 {
     static const double mm[15][2] = {
         {0.41, 1.11}, {0.84, 1.22}, {1.19, 1.44}, {1.43, 1.67}, {1.63, 1.89},
@@ -424,6 +496,7 @@ static double dam_break_rms(float a, float s, int *count)
         {2.65, 3.22}, {2.83, 3.44}, {2.98, 3.67}, {3.11, 3.89}, {3.33, 4.11}};
     ms_volume_desc d = box_desc(5.0f * a, 4.0f * s, 2.5f * a, s);
     d.viscosity = 1.0f;
+    d.pressure = law;
     ms_volume *v = make(&d);
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){a, 4.0f * s, 2.0f * a});
     *count = ms_volume_count(v);
@@ -454,10 +527,15 @@ static double dam_break_rms(float a, float s, int *count)
     return sqrt(err2 / 15.0);
 }
 
+static double dam_break_rms(float a, float s, int *count)
+{
+    return dam_break_rms_law(a, s, MS_PRESSURE_IDEAL_GAS, count);
+}
+
 START_TEST(dam_break_follows_martin_and_moyce)
 {
     if (skip_under_tsan())
-        return;
+        MS_SKIP(TSAN_WHY);
     int n;
     double rms = dam_break_rms(0.1f, 0.01f, &n);
     ck_assert_int_eq(n, 800);
@@ -466,6 +544,22 @@ START_TEST(dam_break_follows_martin_and_moyce)
         rms = dam_break_rms(0.2f, 0.01f, &n);
         ck_assert_msg(rms < 0.35, "RMS %.3f with %d particles", rms, n);
     }
+}
+END_TEST
+
+/* The same dam break with DFSPH. Measured RMS 0.30 against the ideal
+ * gas law's 0.20 at the same 800 particles: the front runs further ahead
+ * of Martin & Moyce (an incompressible column surges faster, and the
+ * mirrored walls are frictionless). Not yet as close as the weakly
+ * compressible law, as the issue asks; asserted: RMS < 0.35. */
+START_TEST(dam_break_follows_martin_and_moyce_dfsph)
+{
+    if (skip_under_tsan())
+        MS_SKIP(TSAN_WHY);
+    int n;
+    double rms = dam_break_rms_law(0.1f, 0.01f, MS_PRESSURE_DFSPH, &n);
+    ck_assert_int_eq(n, 800);
+    ck_assert_msg(rms < 0.35, "DFSPH: RMS %.3f of Z against Martin & Moyce", rms);
 }
 END_TEST
 
@@ -522,7 +616,7 @@ static void settle_tank(ms_volume *v, int frames)
 START_TEST(still_liquid_extracts_a_flat_surface_at_its_level)
 {
     if (skip_under_tsan())
-        return;
+        MS_SKIP(TSAN_WHY);
     ms_volume_desc d = box_desc(0.4f, 0.4f, 0.4f, 0.02f);
     d.viscosity = 20.0f;
     ms_volume *v = make(&d);
@@ -615,10 +709,11 @@ static uint64_t state_hash(const ms_volume *v)
     return hsh;
 }
 
-static uint64_t run_dam_isa(int threads, int isa)
+static uint64_t run_dam_law(int threads, int isa, ms_pressure law)
 {
     ms_volume_desc d = box_desc(0.5f, 0.1f, 0.25f, 0.01f);
     d.threads = threads;
+    d.pressure = law;
     ms_volume *v = make(&d);
     if (isa >= 0)
         v->isa = isa;
@@ -637,6 +732,11 @@ static uint64_t run_dam_isa(int threads, int isa)
     return hsh;
 }
 
+static uint64_t run_dam_isa(int threads, int isa)
+{
+    return run_dam_law(threads, isa, MS_PRESSURE_IDEAL_GAS);
+}
+
 static uint64_t run_dam(int threads)
 {
     return run_dam_isa(threads, -1);
@@ -650,13 +750,28 @@ START_TEST(one_and_two_threads_give_the_same_bytes)
 }
 END_TEST
 
+/* DFSPH's iteration counts come from integer sums, so the thread split
+ * cannot change them: 1 and 2 threads, and every instruction-set path of
+ * the neighbour search and the other forces, give the same bytes. */
+START_TEST(dfsph_gives_the_same_bytes_for_threads_and_instruction_sets)
+{
+    uint64_t a = run_dam_law(1, -1, MS_PRESSURE_DFSPH), b = run_dam_law(2, -1, MS_PRESSURE_DFSPH);
+    ck_assert_msg(a == b, "DFSPH: 1 and 2 threads differ");
+    ck_assert_msg(a != run_dam(1), "DFSPH ran the ideal gas law");
+    const int best = ms_volume_pick_isa();
+    for (int isa = MS_VOLUME_ISA_C; isa <= best; ++isa)
+        ck_assert_msg(run_dam_law(1, isa, MS_PRESSURE_DFSPH) == a,
+                      "DFSPH: instruction set %d differs", isa);
+}
+END_TEST
+
 /* The neighbour filter runs in plain C, SSE2 or AVX-512 (picked at run
  * time) and the pair sums in C lanes or AVX-512 intrinsics: every path
  * gives the same bytes. */
 START_TEST(every_instruction_set_path_gives_the_same_bytes)
 {
     if (skip_under_tsan())
-        return;
+        MS_SKIP(TSAN_WHY);
     const int best = ms_volume_pick_isa();
     const uint64_t ref = run_dam_isa(1, MS_VOLUME_ISA_C);
     for (int isa = MS_VOLUME_ISA_C + 1; isa <= best; ++isa)
@@ -713,7 +828,7 @@ END_TEST
 START_TEST(a_hundredfold_viscosity_jump_stays_stable)
 {
     if (skip_under_tsan())
-        return;
+        MS_SKIP(TSAN_WHY);
     ms_volume_desc d = box_desc(0.2f, 0.04f, 0.12f, 0.01f);
     d.viscosity = 2.0f;
     ms_volume *v = make(&d);
@@ -744,7 +859,7 @@ END_TEST
 START_TEST(ten_thousand_steps_at_the_largest_step_stay_bounded)
 {
     if (skip_under_tsan())
-        return;
+        MS_SKIP(TSAN_WHY);
     const int big = long_tests();
     ms_volume_desc d = box_desc(0.3f, big ? 0.15f : 0.06f, 0.3f, 0.015f);
     d.courant = 0.5f;
@@ -776,332 +891,35 @@ END_TEST
 START_TEST(a_one_second_frame_hitch_is_substepped)
 {
     if (skip_under_tsan())
-        return;
+        MS_SKIP(TSAN_WHY);
     ms_volume_desc d = box_desc(0.2f, 0.04f, 0.12f, 0.01f);
-    ms_volume *v = make(&d);
+    ms_volume *v = make(&d), *w = make(&d);
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.06f, 0.04f, 0.1f});
+    ms_volume_fill_box(w, (float[3]){0, 0, 0}, (float[3]){0.06f, 0.04f, 0.1f});
+    const double e0 = mechanical_energy(v, &d);
     step(v, 1.0f);
+    for (int f = 0; f < 60; ++f) /* the same second in frames */
+        step(w, 1.0f / 60);
     ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     ck_assert_float_eq_tol(in.time, 1.0, 1e-6);
     ck_assert(in.substeps > 100);
     ck_assert(in.last_dt <= in.max_dt * 1.0001f);
     assert_sane(v, &d);
-    ck_assert(ms_volume_kinetic_energy(v) < mechanical_energy(v, &d) + 1.0);
+    /* No energy is created, the collapse ran (measured: 0.095 J -> 0.030 J,
+     * kinetic 0.0011 J), and the hitch ends where 60 frames end (measured
+     * 0.0300 J and 0.0302 J): sub-stepped in full, not clamped. */
+    const double e1 = mechanical_energy(v, &d), e60 = mechanical_energy(w, &d);
+    ck_assert_msg(e1 < 0.5 * e0, "energy %g J after 1 s from %g J: the column did not fall", e1,
+                  e0);
+    ck_assert_msg(ms_volume_kinetic_energy(v) < 0.05 * e0, "kinetic %g J of %g J",
+                  ms_volume_kinetic_energy(v), e0);
+    ck_assert_msg(fabs(e1 - e60) < 0.05 * e0, "1 s step: %g J, 60 frames: %g J", e1, e60);
     ms_volume_destroy(v);
+    ms_volume_destroy(w);
 }
 END_TEST
 
-
-/* ----------------------------------------------------------- colliders */
-
-static ms_shape *shape(const char *kind, const char *json, float x, float y, float z, float vx,
-                       float vy, float vz)
-{
-    ms_shape *s = NULL;
-    ms_status st = ms_shape_create(kind, json, &s);
-    ck_assert_msg(st == MS_OK, "shape %s: %s", kind, ms_last_error());
-    ck_assert_int_eq(ms_shape_set_pose(s, (float[3]){x, y, z}, (float[3]){vx, vy, vz}), MS_OK);
-    return s;
-}
-
-/* Particles inside the shape deeper than a hair (m). */
-static int inside_count(const ms_volume *v, const ms_shape *s, float depth)
-{
-    int n = ms_volume_count(v), in = 0;
-    float *p = malloc(sizeof(float) * 3 * (size_t)(n + 1));
-    ms_volume_get_particles(v, p, NULL);
-    for (int i = 0; i < n; ++i)
-        in += ms_shape_distance(s, p + 3 * i, NULL) < -depth;
-    free(p);
-    return in;
-}
-
-/* A sphere moving at 20 m/s through a tank (eq. 15 field, swept test):
- * after every frame no particle is inside it or outside the domain, none is
- * lost, nothing is non-finite, and no particle is faster than the impact
- * can make it (3 x 20 m/s). It stops 0.15 m before the far wall. */
-START_TEST(an_obstacle_at_20_m_s_pushes_the_liquid_and_none_tunnels)
-{
-    if (skip_under_tsan())
-        return;
-    ms_volume_desc d = box_desc(0.8f, 0.06f, 0.16f, 0.01f);
-    ms_volume *v = make(&d);
-    ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.8f, 0.06f, 0.08f});
-    const int n = ms_volume_count(v);
-    float x = 0.1f, u = 20.0f;
-    ms_shape *ball = shape("sphere", "{\"radius\": 0.025}", x, 0.03f, 0.04f, u, 0, 0);
-    ck_assert_int_eq(ms_volume_add_collider(v, ball), MS_OK);
-    const float dt = 1.0f / 400;
-    float vmax = 0.0f;
-    for (int f = 0; f < 40; ++f) {
-        step(v, dt);
-        x += u * dt;
-        if (x >= 0.6f) {
-            x = 0.6f;
-            u = 0.0f;
-        }
-        ms_shape_set_pose(ball, (float[3]){x, 0.03f, 0.04f}, (float[3]){u, 0, 0});
-        ck_assert_msg(inside_count(v, ball, 1e-4f) == 0, "frame %d: particles inside the ball", f);
-        assert_sane(v, &d);
-        ms_volume_info in = ms_volume_info_init();
-        ms_volume_get_info(v, &in);
-        vmax = fmaxf(vmax, in.max_speed);
-    }
-    ck_assert_int_eq(ms_volume_count(v), n);
-    ck_assert_msg(vmax < 60.0f, "a particle reached %g m/s", vmax);
-    ck_assert(ms_volume_kinetic_energy(v) > 1.0); /* it did push the liquid */
-    ms_volume_destroy(v);
-    ms_shape_destroy(ball);
-}
-END_TEST
-
-/* Particles shot at 10 m/s at a 4 mm glass wall stay inside the glass:
- * the swept test stops them at the wall, none crosses it between two
- * sub-steps or ends inside it. */
-START_TEST(fast_particles_do_not_cross_a_thin_wall)
-{
-    ms_volume_desc d = box_desc(0.4f, 0.4f, 0.3f, 0.01f);
-    d.gravity[2] = 0.0f;
-    ms_volume *v = make(&d);
-    ms_shape *glass = shape("glass",
-                            "{\"radius\": 0.1, \"height\": 0.2, \"wall\": 0.004, "
-                            "\"floor\": 0.01}",
-                            0.2f, 0.2f, 0.0f, 0, 0, 0);
-    ck_assert_int_eq(ms_volume_add_collider(v, glass), MS_OK);
-    enum { N = 64 };
-    float p[3 * N], u[3 * N];
-    for (int i = 0; i < N; ++i) { /* a ring of particles flying outwards */
-        float a = 6.2831853f * i / N;
-        p[3 * i] = 0.2f + 0.05f * cosf(a);
-        p[3 * i + 1] = 0.2f + 0.05f * sinf(a);
-        p[3 * i + 2] = 0.03f + 0.002f * (i % 8);
-        u[3 * i] = 10.0f * cosf(a);
-        u[3 * i + 1] = 10.0f * sinf(a);
-        u[3 * i + 2] = 0.0f;
-    }
-    ck_assert_int_eq(ms_volume_add_particles(v, N, p, u), MS_OK);
-    for (int f = 0; f < 20; ++f) {
-        step(v, 1.0f / 600);
-        ms_volume_get_particles(v, p, NULL);
-        for (int i = 0; i < N; ++i) {
-            float r = hypotf(p[3 * i] - 0.2f, p[3 * i + 1] - 0.2f);
-            ck_assert_msg(r < 0.096f + 1e-4f, "frame %d: particle %d at r %g m, past the wall", f,
-                          i, r);
-        }
-        ck_assert_int_eq(inside_count(v, glass, 1e-4f), 0);
-    }
-    ms_volume_destroy(v);
-    ms_shape_destroy(glass);
-}
-END_TEST
-
-/* The paper's glass of water moved by the user: a glass with settled
- * water is moved sideways (velocity ramped up over 0.1 s to 0.3 m/s, then
- * held for 0.6 s): the water goes with it (its mean velocity, averaged over
- * the last 0.5 s, about one sloshing period, within 15 % of the glass's),
- * at least 97 % stays in the glass, none ends in its wall. */
-START_TEST(a_moving_glass_carries_its_liquid)
-{
-    if (skip_under_tsan())
-        return;
-    ms_volume_desc d = box_desc(0.8f, 0.4f, 0.3f, 0.01f);
-    d.viscosity = 20.0f; /* settles quickly */
-    ms_volume *v = make(&d);
-    float x = 0.2f, u = 0.0f;
-    ms_shape *glass = shape("glass",
-                            "{\"radius\": 0.1, \"height\": 0.2, \"wall\": 0.006, "
-                            "\"floor\": 0.01}",
-                            x, 0.2f, 0.0f, 0, 0, 0);
-    ck_assert_int_eq(ms_volume_add_collider(v, glass), MS_OK);
-    ms_volume_fill_box(v, (float[3]){0.14f, 0.14f, 0.01f}, (float[3]){0.26f, 0.26f, 0.06f});
-    const int n = ms_volume_count(v);
-    const float dt = 1.0f / 60;
-    for (int f = 0; f < 30; ++f)
-        step(v, dt);
-    ck_assert_int_eq(ms_volume_set_viscosity(v, 2.0f), MS_OK);
-    double mean = 0.0;
-    int frames = 0;
-    float *p = malloc(sizeof(float) * 3 * (size_t)n), *w = malloc(sizeof(float) * 3 * (size_t)n);
-    for (int f = 0; f < 42; ++f) {
-        u = fminf(0.3f, u + 0.3f * dt / 0.1f);
-        ms_shape_set_pose(glass, (float[3]){x, 0.2f, 0.0f}, (float[3]){u, 0, 0});
-        step(v, dt);
-        x += u * dt;
-        ck_assert_int_eq(inside_count(v, glass, 1e-4f), 0);
-        if (f >= 12) {
-            ms_volume_get_particles(v, NULL, w);
-            double m = 0.0;
-            for (int i = 0; i < n; ++i)
-                m += w[3 * i];
-            mean += m / n;
-            frames++;
-        }
-    }
-    mean /= frames;
-    ms_volume_get_particles(v, p, NULL);
-    int in_glass = 0;
-    for (int i = 0; i < n; ++i)
-        in_glass += hypotf(p[3 * i] - x, p[3 * i + 1] - 0.2f) < 0.094f && p[3 * i + 2] < 0.2f;
-    ck_assert_msg(in_glass >= 0.97 * n, "%d of %d particles still in the glass", in_glass, n);
-    ck_assert_msg(fabs(mean - u) < 0.15 * u, "mean vx %g m/s, glass %g m/s", mean, u);
-    free(p);
-    free(w);
-    ms_volume_destroy(v);
-    ms_shape_destroy(glass);
-}
-END_TEST
-
-/* Water in the glass's own frame: within its inner radius and below its
- * rim (the glass of radius 0.1, wall 0.006, height 0.2 below). */
-static int in_turned_glass(const ms_volume *v, const ms_shape *glass)
-{
-    int n = ms_volume_count(v), in = 0;
-    float *p = malloc(sizeof(float) * 3 * (size_t)(n + 1)), pos[3], q[4];
-    ms_volume_get_particles(v, p, NULL);
-    ms_shape_get_pose(glass, pos, NULL);
-    ms_shape_get_orientation(glass, q, NULL);
-    /* R^T r by the conjugate quaternion: r' = r + 2 u x (u x r - w r)... in
-     * matrix form, R from q, then its transpose */
-    const float w = q[0], x = q[1], y = q[2], z = q[3];
-    const float R[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
-                        2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-                        2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)};
-    for (int i = 0; i < n; ++i) {
-        float r[3] = {p[3 * i] - pos[0], p[3 * i + 1] - pos[1], p[3 * i + 2] - pos[2]}, l[3];
-        for (int k = 0; k < 3; ++k)
-            l[k] = R[k] * r[0] + R[3 + k] * r[1] + R[6 + k] * r[2];
-        in += hypotf(l[0], l[1]) < 0.094f && l[2] > 0.0f && l[2] < 0.2f;
-    }
-    free(p);
-    return in;
-}
-
-/* A glass of water held above the floor and tilted by the user
- * (ms_shape_set_orientation with an angular velocity, 2 rad/s about y for
- * 0.9 s, to 103 degrees): while it is still steep the water stays, then it
- * pours out over the rim; no particle ever ends in the wall or outside the
- * domain, nothing is non-finite. */
-START_TEST(a_tilted_glass_pours_its_water)
-{
-    if (skip_under_tsan())
-        return;
-    ms_volume_desc d = box_desc(0.8f, 0.4f, 0.4f, 0.01f);
-    d.viscosity = 20.0f; /* settles quickly */
-    ms_volume *v = make(&d);
-    ms_shape *glass = shape("glass",
-                            "{\"radius\": 0.1, \"height\": 0.2, \"wall\": 0.006, "
-                            "\"floor\": 0.01}",
-                            0.3f, 0.2f, 0.1f, 0, 0, 0);
-    ck_assert_int_eq(ms_volume_add_collider(v, glass), MS_OK);
-    ms_volume_fill_box(v, (float[3]){0.24f, 0.14f, 0.11f}, (float[3]){0.36f, 0.26f, 0.16f});
-    const int n = ms_volume_count(v);
-    const float dt = 1.0f / 60, w = 2.0f; /* s, rad/s */
-    for (int f = 0; f < 30; ++f)
-        step(v, dt);
-    ck_assert_int_eq(in_turned_glass(v, glass), n);
-    ck_assert_int_eq(ms_volume_set_viscosity(v, 2.0f), MS_OK);
-    float angle = 0.0f;
-    int early = -1;
-    for (int f = 0; f < 84; ++f) {
-        float turn = f < 54 ? w : 0.0f;
-        float q[4] = {cosf(0.5f * angle), 0.0f, sinf(0.5f * angle), 0.0f};
-        ck_assert_int_eq(ms_shape_set_orientation(glass, q, (float[3]){0, turn, 0}), MS_OK);
-        step(v, dt);
-        angle += turn * dt;
-        q[0] = cosf(0.5f * angle);
-        q[2] = sinf(0.5f * angle);
-        ck_assert_int_eq(ms_shape_set_orientation(glass, q, NULL), MS_OK);
-        ck_assert_msg(inside_count(v, glass, 1e-4f) == 0, "frame %d: particles in the wall", f);
-        assert_sane(v, &d);
-        if (f == 10) /* 0.33 rad, 19 degrees: the level is still below the rim */
-            early = in_turned_glass(v, glass);
-    }
-    ck_assert_msg(early >= 0.97 * n, "%d of %d in the glass at 19 degrees", early, n);
-    int left = in_turned_glass(v, glass);
-    ck_assert_msg(left < 0.5 * n, "%d of %d particles still in the glass at %g rad", left, n,
-                  angle);
-    ck_assert_int_eq(ms_volume_count(v), n);
-    ms_volume_destroy(v);
-    ms_shape_destroy(glass);
-}
-END_TEST
-
-/* A paddle turning about the vertical in a tank (a box at 4 rad/s) stirs
- * the liquid: its angular momentum about the axis takes the paddle's sign
- * and no particle ends in the paddle. */
-START_TEST(a_turning_paddle_stirs_the_liquid_its_way)
-{
-    if (skip_under_tsan())
-        return;
-    ms_volume_desc d = box_desc(0.2f, 0.2f, 0.1f, 0.01f);
-    ms_volume *v = make(&d);
-    ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.2f, 0.2f, 0.05f});
-    ms_shape *paddle = shape("box", "{\"size\": [0.12, 0.02, 0.2]}", 0.1f, 0.1f, 0.05f, 0, 0, 0);
-    ck_assert_int_eq(ms_volume_add_collider(v, paddle), MS_OK);
-    const float dt = 1.0f / 120, w = 4.0f;
-    float angle = 0.0f;
-    for (int f = 0; f < 48; ++f) {
-        float q[4] = {cosf(0.5f * angle), 0.0f, 0.0f, sinf(0.5f * angle)};
-        ck_assert_int_eq(ms_shape_set_orientation(paddle, q, (float[3]){0, 0, w}), MS_OK);
-        step(v, dt);
-        angle += w * dt;
-        q[0] = cosf(0.5f * angle);
-        q[3] = sinf(0.5f * angle);
-        ck_assert_int_eq(ms_shape_set_orientation(paddle, q, (float[3]){0, 0, w}), MS_OK);
-        ck_assert_msg(inside_count(v, paddle, 1e-4f) == 0, "frame %d: particles in the paddle", f);
-        assert_sane(v, &d);
-    }
-    const int n = ms_volume_count(v);
-    float *p = malloc(sizeof(float) * 3 * (size_t)n), *u = malloc(sizeof(float) * 3 * (size_t)n);
-    ms_volume_get_particles(v, p, u);
-    double L = 0.0, speed = 0.0; /* about the axis, per unit mass */
-    for (int i = 0; i < n; ++i) {
-        double rx = p[3 * i] - 0.1, ry = p[3 * i + 1] - 0.1;
-        L += rx * u[3 * i + 1] - ry * u[3 * i];
-        speed += sqrt((double)u[3 * i] * u[3 * i] + (double)u[3 * i + 1] * u[3 * i + 1]);
-    }
-    L /= n;
-    speed /= n;
-    /* A liquid turning with the paddle as one body would hold w <r^2> =
-     * 0.027 m^2/s per kg; after 0.4 s of stirring it holds 0.0048, at a mean
-     * speed of 0.15 m/s (measured). Unturned, the paddle would leave both
-     * near 0 (the liquid at rest is symmetric about the axis). */
-    ck_assert_msg(speed > 0.05, "mean speed %g m/s: the paddle did not move the liquid", speed);
-    ck_assert_msg(L > 2e-3, "angular momentum %g m^2/s per kg, mean speed %g m/s", L, speed);
-    free(p);
-    free(u);
-    ms_volume_destroy(v);
-    ms_shape_destroy(paddle);
-}
-END_TEST
-
-/* A collider the caller moves without a velocity (a teleport by 3 cm into
- * the liquid) is swept there during the next step: no particle ends inside
- * it, nothing blows up. */
-START_TEST(a_teleported_collider_is_swept_not_crushed)
-{
-    if (skip_under_tsan())
-        return;
-    ms_volume_desc d = box_desc(0.3f, 0.1f, 0.15f, 0.01f);
-    ms_volume *v = make(&d);
-    ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.3f, 0.1f, 0.06f});
-    ms_shape *box = shape("box", "{\"size\": [0.05, 0.05, 0.05]}", 0.1f, 0.05f, 0.04f, 0, 0, 0);
-    ck_assert_int_eq(ms_volume_add_collider(v, box), MS_OK);
-    for (int f = 0; f < 10; ++f)
-        step(v, 1.0f / 60);
-    ck_assert_int_eq(inside_count(v, box, 1e-4f), 0);
-    ms_shape_set_pose(box, (float[3]){0.13f, 0.05f, 0.04f}, (float[3]){0, 0, 0});
-    step(v, 1.0f / 60);
-    ck_assert_int_eq(inside_count(v, box, 1e-4f), 0);
-    assert_sane(v, &d);
-    ms_volume_info in = ms_volume_info_init();
-    ms_volume_get_info(v, &in);
-    ck_assert(in.max_speed < 20.0f);
-    ms_volume_destroy(v);
-    ms_shape_destroy(box);
-}
-END_TEST
 
 /* ---------------------------------------------------------- interaction */
 
@@ -1112,17 +930,28 @@ START_TEST(drag_pulls_towards_its_velocity_and_never_past_it)
     ms_volume *v = make(&d);
     ms_volume_fill_box(v, (float[3]){0.15f, 0.15f, 0.0f}, (float[3]){0.45f, 0.45f, 0.15f});
     float c[3] = {0.3f, 0.3f, 0.075f}, target[3] = {0.5f, 0.0f, 0.0f};
+    int n = ms_volume_count(v), reach = 0;
+    float *u = malloc(sizeof(float) * 3 * (size_t)n);
+    ms_volume_get_particles(v, u, NULL);
+    for (int i = 0; i < n; ++i) {
+        float dx = u[3 * i] - c[0], dy = u[3 * i + 1] - c[1], dz = u[3 * i + 2] - c[2];
+        reach += dx * dx + dy * dy + dz * dz < 0.1f * 0.1f;
+    }
     for (int f = 0; f < 5; ++f) {
         ck_assert_int_eq(ms_volume_drag(v, c, 0.1f, target, 50.0f), MS_OK);
         step(v, 1.0f / 60);
     }
-    int n = ms_volume_count(v);
-    float *u = malloc(sizeof(float) * 3 * (size_t)n);
     ms_volume_get_particles(v, NULL, u);
     double mx = 0.0;
     for (int i = 0; i < n; ++i)
         mx += u[3 * i];
-    ck_assert_msg(mx / n > 0.01, "mean vx %g after dragging at 0.5 m/s", mx / n);
+    /* Measured: mean vx 0.043 m/s (500 particles). Lower bound half of
+     * that; upper bound from momentum: the drag never makes a particle
+     * faster than 0.5 m/s and reached only those within its radius at the
+     * start (1.5 x for the few that flowed in). */
+    ck_assert_msg(mx / n > 0.02, "mean vx %g after dragging at 0.5 m/s", mx / n);
+    ck_assert_msg(mx / n < 1.5 * 0.5 * reach / n, "mean vx %g over what %d dragged particles hold",
+                  mx / n, reach);
     ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     ck_assert(in.max_speed < 0.6f);
@@ -1239,6 +1068,9 @@ static Suite *volume_suite(void)
     tcase_add_test(model, hydrostatic_pressure_matches_rho_g_d_ideal_gas);
     tcase_add_test(model, hydrostatic_pressure_matches_rho_g_d_tait);
     tcase_add_test(model, dam_break_follows_martin_and_moyce);
+    tcase_add_test(model, hydrostatic_pressure_matches_rho_g_d_dfsph);
+    tcase_add_test(model, a_settling_dfsph_tank_loses_energy_and_keeps_its_divergence);
+    tcase_add_test(model, dam_break_follows_martin_and_moyce_dfsph);
     tcase_add_test(model, internal_forces_conserve_momentum);
     suite_add_tcase(s, model);
 
@@ -1253,21 +1085,13 @@ static Suite *volume_suite(void)
     tcase_set_timeout(hard, 300);
     tcase_add_test(hard, one_and_two_threads_give_the_same_bytes);
     tcase_add_test(hard, every_instruction_set_path_gives_the_same_bytes);
+    tcase_add_test(hard, dfsph_gives_the_same_bytes_for_threads_and_instruction_sets);
     tcase_add_test(hard, all_particles_at_one_point_spread_and_stay_bounded);
     tcase_add_test(hard, a_hundredfold_viscosity_jump_stays_stable);
     tcase_add_test(hard, ten_thousand_steps_at_the_largest_step_stay_bounded);
     tcase_add_test(hard, a_one_second_frame_hitch_is_substepped);
     suite_add_tcase(s, hard);
 
-    TCase *col = tcase_create("colliders");
-    tcase_set_timeout(col, 240);
-    tcase_add_test(col, an_obstacle_at_20_m_s_pushes_the_liquid_and_none_tunnels);
-    tcase_add_test(col, fast_particles_do_not_cross_a_thin_wall);
-    tcase_add_test(col, a_moving_glass_carries_its_liquid);
-    tcase_add_test(col, a_tilted_glass_pours_its_water);
-    tcase_add_test(col, a_turning_paddle_stirs_the_liquid_its_way);
-    tcase_add_test(col, a_teleported_collider_is_swept_not_crushed);
-    suite_add_tcase(s, col);
 
     TCase *in = tcase_create("interaction");
     tcase_set_timeout(in, 60);

@@ -23,6 +23,10 @@
  * (tensile instability); the density kernel is eq. 11's by default
  * (energy-consistent with eq. 13), Mueller's poly6 on request.
  *
+ * MS_PRESSURE_DFSPH replaces the equation of state by the incompressible
+ * solves of Bender & Koschier 2015/2017 (lib/volume/dfsph.c): sub-steps
+ * at the velocity's CFL, average compression <= desc.max_density_error.
+ *
  * Deterministic: the same calls give the same bytes, for any desc.threads.
  * Not thread-safe: one handle, one thread at a time (its own worker threads
  * are internal).
@@ -39,7 +43,8 @@ extern "C" {
 typedef enum ms_pressure {
     MS_PRESSURE_IDEAL_GAS = 0, /* p = k (rho - rho0), the paper's */
     MS_PRESSURE_TAIT = 1,      /* weakly compressible, gamma = 7 */
-    MS_PRESSURE_DFSPH = 2,     /* divergence-free SPH (may be unsupported) */
+    MS_PRESSURE_DFSPH = 2,     /* incompressible: divergence-free SPH (Bender &
+                                  Koschier 2015, 2017), steps at the velocity's CFL */
     MS_PRESSURE_FORCE_32BIT_ = 0x7fffffff
 } ms_pressure;
 
@@ -79,19 +84,33 @@ typedef struct ms_volume_desc {
     float smooth_energy; /* J/kg, eq. 18: E_kin / total mass at and above which
                             the height field is not smoothed; > 0 */
     ms_density_kernel density_kernel;
+    /* --- DFSPH (MS_PRESSURE_DFSPH; unused by the other laws) --- */
+    float max_density_error;    /* average predicted compression (rho/rho0 - 1) the
+                                   constant-density solve stops at; (0, 0.1] */
+    float max_divergence_error; /* average dt (D rho/Dt) / rho0 the divergence-free
+                                   solve stops at; (0, 0.1] */
+    int max_density_iterations;    /* cap of the constant-density solve, 1 .. 10000;
+                                      beyond it the sub-step goes on with the error
+                                      reached (ms_volume_info says how many) */
+    int max_divergence_iterations; /* cap of the divergence-free solve, 0 (off) .. 10000 */
 } ms_volume_desc;
 
 /* A 1 x 1 x 1 m domain at the origin, spacing 0.04 m, h = 0.08 m, water
  * (1000 kg/m^3), k = 400 m^2/s^2 (sound speed 20 m/s, ~1% compression per
  * 0.5 m of depth), viscosity 1 Pa s, gravity (0, 0, -9.81), ideal gas,
  * max_particles 262144, sound_speed 20 m/s, courant 0.4, max_substeps
- * 100000, threads 1, smooth_steps 4, smooth_energy 0.02 J/kg. */
+ * 100000, threads 1, smooth_steps 4, smooth_energy 0.02 J/kg; DFSPH:
+ * max_density_error 0.001 (0.1 %), max_divergence_error 0.001 (0.1 % of
+ * rho0 per sub-step, SPlisHSPlasH's default: the divergence solve then
+ * leaves no more drift per sub-step than the density solve allows),
+ * max_density_iterations 100, max_divergence_iterations 100. */
 MS_API ms_volume_desc ms_volume_desc_default(void);
 
 /* Refuses (MS_ERR_INVALID_ARGUMENT, a sentence naming the value and the
  * bound) any non-finite value, an empty domain, spacing <= 0, h < spacing,
  * h > 4 spacing, a domain narrower than 2 h, a neighbour grid over 2^24 cells,
- * and out-of-range counts; MS_ERR_UNSUPPORTED for MS_PRESSURE_DFSPH. */
+ * and out-of-range counts; DFSPH with the poly6 density kernel (the
+ * solve differentiates the spiky kernel) or DFSPH limits out of range. */
 MS_API ms_status ms_volume_create(const ms_volume_desc *d, ms_volume **out);
 MS_API void ms_volume_destroy(ms_volume *v);
 
@@ -203,7 +222,8 @@ typedef struct ms_volume_info {
     float max_dt;         /* s, largest stable sub-step at the current state   */
     const char *dt_limit; /* which bound set max_dt: "cfl", "viscous", "force" */
     float max_speed;      /* m/s, fastest particle                             */
-    float sound_speed;    /* m/s, of the pressure law at rest density          */
+    float sound_speed;    /* m/s, of the pressure law at rest density (DFSPH:
+                             desc.sound_speed, used only to cap the coupling) */
     float max_density_error; /* max rho/rho0 - 1: the liquid's compression     */
     float particle_mass;  /* kg                                                */
     int count;            /* particles                                         */
@@ -211,6 +231,13 @@ typedef struct ms_volume_info {
     double pairs;         /* neighbour pairs (i != j, r < h) of the last sub-step */
     size_t bytes;         /* memory held                                       */
     int threads;          /* threads used inside a step                        */
+    /* --- grown at the end: DFSPH (0 for the other laws) --- */
+    int density_iterations;    /* of the last sub-step's constant-density solve */
+    int divergence_iterations; /* of the last sub-step's divergence-free solve  */
+    long density_iterations_total;    /* over all sub-steps                    */
+    long divergence_iterations_total;
+    float density_error;       /* average predicted rho/rho0 - 1 the last solve reached */
+    float divergence_error;    /* average dt (D rho/Dt)/rho0 the last solve reached */
 } ms_volume_info;
 static inline ms_volume_info ms_volume_info_init(void)
 {

@@ -25,6 +25,10 @@ ms_volume_desc ms_volume_desc_default(void)
         .smooth_steps = 4,
         .smooth_energy = 0.02f,
         .density_kernel = MS_DENSITY_SPIKY,
+        .max_density_error = 0.001f,
+        .max_divergence_error = 0.001f,
+        .max_density_iterations = 100,
+        .max_divergence_iterations = 100,
     };
     return d;
 }
@@ -101,9 +105,14 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
             return ms_check_range(P, "sound_speed", d->sound_speed, 0, 1e4, "m/s");
         break;
     case MS_PRESSURE_DFSPH:
-        return ms_fail(MS_ERR_UNSUPPORTED,
-                       "volume: pressure MS_PRESSURE_DFSPH (divergence-free SPH) is not "
-                       "implemented yet; use MS_PRESSURE_IDEAL_GAS or MS_PRESSURE_TAIT");
+        /* sound_speed only sizes the coupling's cap and the info's c */
+        CHECK(ms_check_positive(P, "sound_speed", d->sound_speed, "m/s"));
+        if (d->density_kernel == MS_DENSITY_POLY6)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "volume: density_kernel poly6 with pressure DFSPH; the DFSPH solve "
+                           "differentiates the density kernel as the spiky one of eq. 11 "
+                           "(use MS_DENSITY_SPIKY)");
+        break;
     default:
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "volume: pressure %d is not a ms_pressure value (0 ideal gas, 1 Tait, "
@@ -129,5 +138,20 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
                        "volume: density_kernel %d is not a ms_density_kernel value (0 spiky, "
                        "1 poly6)",
                        (int)d->density_kernel);
+    if (!isfinite(d->max_density_error) || !(d->max_density_error > 0.0f) ||
+        d->max_density_error > 0.1f)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: max_density_error %g is outside (0, 0.1]; it is the average "
+                       "compression rho/rho0 - 1 the DFSPH density solve stops at",
+                       d->max_density_error);
+    if (!isfinite(d->max_divergence_error) || !(d->max_divergence_error > 0.0f) ||
+        d->max_divergence_error > 0.1f)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "volume: max_divergence_error %g is outside (0, 0.1]; it is the average "
+                       "dt (D rho/Dt) / rho0 the DFSPH divergence solve stops at",
+                       d->max_divergence_error);
+    CHECK(ms_check_int_range(P, "max_density_iterations", d->max_density_iterations, 1, 10000));
+    CHECK(ms_check_int_range(P, "max_divergence_iterations", d->max_divergence_iterations, 0,
+                             10000));
     return MS_OK;
 }

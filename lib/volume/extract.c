@@ -139,184 +139,207 @@ typedef struct column_ctx {
     float *raw; /* rw x rh, the rectangle's columns */
 } column_ctx;
 
-/* Columns [b, e) of the rectangle (index (j - j0) * rw + i - i0): gather the spheres (and their images in
- * the nearer side walls) within R horizontally, walk down from the top in
- * steps of half a spacing until phi reaches T, and close in on the
- * crossing by regula falsi to 1/256 of a spacing. */
-static void columns_part(void *ctxp, int part, int b, int e)
+/* Column (i, j)'s candidates: the spheres (and their images in the nearer
+ * side walls) within R horizontally, as (z, a = 1 - horizontal r^2 / R^2)
+ * in cz, ca, padded with weight-0 lanes; their count (padded), where the
+ * downward walk starts (*zstart) and the lowest sphere bottom (*zlow). */
+static int column_candidates(const column_ctx *cc, int i, int j, float *cz, float *ca,
+                             float *zstart, float *zlow_out)
 {
-    const column_ctx *cc = ctxp;
     const ms_extract_snap *s = cc->s;
     const int nx = cc->nx, ny = cc->ny;
     const float *lo = s->lo, *hi = s->hi;
     const float dxe = cc->dxe, dye = cc->dye;
     const float R = s->R, R2 = R * R, inv_r2 = 1.0f / R2;
     const int rx = (int)ceilf(R / dxe), ry = (int)ceilf(R / dye);
-    const float T = s->iso, dz = 0.5f * s->spacing;
-    const float ztop = hi[2] - lo[2];
     const int *cstart = cc->cstart;
     const float *bx = cc->bx, *by = cc->by, *bz = cc->bz;
-    float *cz = cc->cand + (size_t)part * cc->cand_stride, *ca = cz + cc->cand_stride / 2;
-    for (int col = b; col < e; ++col) {
-        const int i = cc->i0 + col % cc->rw, j = cc->j0 + col / cc->rw;
-        const float px = lo[0] + ((float)i + 0.5f) * dxe, py = lo[1] + ((float)j + 0.5f) * dye;
-        const float wx = px - lo[0] <= hi[0] - px ? lo[0] : hi[0];
-        const float wy = py - lo[1] <= hi[1] - py ? lo[1] : hi[1];
-        const int nxm = fabsf(px - wx) < R ? 2 : 1, nym = fabsf(py - wy) < R ? 2 : 1;
-        const int images = nxm * nym > 1;
-        int mc = 0;
-        float zmax = -INFINITY, zlow = INFINITY;
-        for (int jj = j - ry; jj <= j + ry; ++jj) {
-            if (jj < 0 || jj >= ny)
+    const float px = lo[0] + ((float)i + 0.5f) * dxe, py = lo[1] + ((float)j + 0.5f) * dye;
+    const float wx = px - lo[0] <= hi[0] - px ? lo[0] : hi[0];
+    const float wy = py - lo[1] <= hi[1] - py ? lo[1] : hi[1];
+    const int nxm = fabsf(px - wx) < R ? 2 : 1, nym = fabsf(py - wy) < R ? 2 : 1;
+    const int images = nxm * nym > 1;
+    int mc = 0;
+    float zmax = -INFINITY, zlow = INFINITY;
+    for (int jj = j - ry; jj <= j + ry; ++jj) {
+        if (jj < 0 || jj >= ny)
+            continue;
+        /* the bins of row jj within R of the column are one run of the
+         * binned particles (bins are ordered y-major) */
+        float gy = fabsf(lo[1] + ((float)jj + 0.5f) * dye - py) - 0.5f * dye;
+        gy = gy > 0.0f ? gy : 0.0f;
+        int reach = rx;
+        if (!images) {
+            if (gy >= R)
                 continue;
-            /* the bins of row jj within R of the column are one run of the
-             * binned particles (bins are ordered y-major) */
-            float gy = fabsf(lo[1] + ((float)jj + 0.5f) * dye - py) - 0.5f * dye;
-            gy = gy > 0.0f ? gy : 0.0f;
-            int reach = rx;
-            if (!images) {
-                if (gy >= R)
-                    continue;
-                reach = (int)(sqrtf(R2 - gy * gy) / dxe) + 1; /* a ceiling (cells) */
-                reach = reach < rx ? reach : rx;
+            reach = (int)(sqrtf(R2 - gy * gy) / dxe) + 1; /* a ceiling (cells) */
+            reach = reach < rx ? reach : rx;
+        }
+        const int i0 = i - reach < 0 ? 0 : i - reach;
+        const int i1 = i + reach > nx - 1 ? nx - 1 : i + reach;
+        const int k0 = cstart[jj * nx + i0], k1 = cstart[jj * nx + i1 + 1];
+        if (!images) {
+            for (int k = k0; k < k1; ++k) {
+                const float ex = bx[k] - px, ey = by[k] - py;
+                const float a = 1.0f - (ex * ex + ey * ey) * inv_r2;
+                cz[mc] = bz[k];
+                ca[mc] = a;
+                mc += a > 0.0f;
             }
-            const int i0 = i - reach < 0 ? 0 : i - reach;
-            const int i1 = i + reach > nx - 1 ? nx - 1 : i + reach;
-            const int k0 = cstart[jj * nx + i0], k1 = cstart[jj * nx + i1 + 1];
-            if (!images) {
-                for (int k = k0; k < k1; ++k) {
-                    const float ex = bx[k] - px, ey = by[k] - py;
-                    const float a = 1.0f - (ex * ex + ey * ey) * inv_r2;
+            continue;
+        }
+        for (int k = k0; k < k1; ++k) {
+            /* the particle and its images in the nearer side walls */
+            const float ex[2] = {bx[k] - px, 2.0f * wx - bx[k] - px};
+            const float ey[2] = {by[k] - py, 2.0f * wy - by[k] - py};
+            for (int my = 0; my < nym; ++my)
+                for (int mx = 0; mx < nxm; ++mx) {
+                    float a = 1.0f - (ex[mx] * ex[mx] + ey[my] * ey[my]) * inv_r2;
                     cz[mc] = bz[k];
                     ca[mc] = a;
                     mc += a > 0.0f;
                 }
-                continue;
+        }
+    }
+    /* where to start: the highest sphere top, but no higher than a
+     * spacing above the highest centre (a still lattice's phi there is
+     * ~0.6 T: the top crossing lies below) */
+    float zc = -INFINITY;
+    for (int k = 0; k < mc; ++k) {
+        if (cz[k] + R > zmax) {
+            float top = cz[k] + R * sqrtf(ca[k]);
+            zmax = top > zmax ? top : zmax;
+        }
+        zc = cz[k] > zc ? cz[k] : zc;
+        zlow = cz[k] - R < zlow ? cz[k] - R : zlow;
+    }
+    zmax = zmax < zc + s->spacing ? zmax : zc + s->spacing;
+    for (int pad = mc; pad % MS_VOLUME_LANES; ++pad) { /* weight-0 lanes */
+        cz[pad] = 0.0f;
+        ca[pad] = 0.0f;
+    }
+    mc = (mc + MS_VOLUME_LANES - 1) / MS_VOLUME_LANES * MS_VOLUME_LANES;
+    *zstart = zmax;
+    *zlow_out = zlow;
+    return mc;
+}
+
+/* The height (m above the domain floor, 0 if phi never reaches T) of a
+ * column with candidates (cz, ca, mc): walk down from zmax in steps of
+ * half a spacing until phi reaches T, and close in on the crossing by
+ * regula falsi to 1/256 of a spacing. */
+static float column_height(const ms_extract_snap *s, const float *cz, const float *ca, int mc,
+                           float zmax, float zlow)
+{
+    const float *lo = s->lo, *hi = s->hi;
+    const float R = s->R, inv_r2 = 1.0f / (R * R);
+    const float T = s->iso, dz = 0.5f * s->spacing;
+    const float ztop = hi[2] - lo[2];
+    float height = 0.0f;
+    if (mc > 0) {
+        float za = zmax, zb = zmax, fa = -T, fb = -T;
+        int found = 0, steps = 0;
+        float z = zmax;
+        /* walk down in steps of half a spacing: a calm surface is met
+         * within a few */
+        for (; z >= zlow && steps < 6 && !found; z -= dz, ++steps) {
+            float phi = phi_at(cz, ca, mc, z, inv_r2);
+            if (phi >= T) {
+                zb = z;
+                fb = phi - T;
+                found = 1;
+            } else {
+                za = z;
+                fa = phi - T;
             }
-            for (int k = k0; k < k1; ++k) {
-                /* the particle and its images in the nearer side walls */
-                const float ex[2] = {bx[k] - px, 2.0f * wx - bx[k] - px};
-                const float ey[2] = {by[k] - py, 2.0f * wy - by[k] - py};
-                for (int my = 0; my < nym; ++my)
-                    for (int mx = 0; mx < nxm; ++mx) {
-                        float a = 1.0f - (ex[mx] * ex[mx] + ey[my] * ey[my]) * inv_r2;
-                        cz[mc] = bz[k];
-                        ca[mc] = a;
-                        mc += a > 0.0f;
+        }
+        if (!found && z >= zlow) {
+            /* Below spray: an upper bound of phi in slabs of height ~R
+             * (the sum of the sphere maxima sqrt(a) overlapping a slab)
+             * skips the slabs that cannot reach T; the walk goes on in
+             * the others. */
+            enum { MAXSLABS = 256 };
+            float bound[MAXSLABS];
+            const float zhi = z + dz, span = zhi - zlow;
+            int ns = (int)(span / R) + 2;
+            ns = ns > MAXSLABS ? MAXSLABS : ns;
+            const float bs = span / (float)ns, inv_bs = 1.0f / bs;
+            for (int q = 0; q < ns; ++q)
+                bound[q] = 0.0f;
+            for (int k = 0; k < mc; ++k) {
+                if (!(ca[k] > 0.0f))
+                    continue;
+                float sa = sqrtf(ca[k]), ext = R * sa;
+                int q0 = (int)((cz[k] - ext - zlow) * inv_bs);
+                int q1 = (int)((cz[k] + ext - zlow) * inv_bs);
+                q0 = q0 < 0 ? 0 : q0;
+                q1 = q1 > ns - 1 ? ns - 1 : q1;
+                for (int q = q0; q <= q1; ++q)
+                    bound[q] += sa;
+            }
+            for (int q = ns - 1; q >= 0 && !found; --q) {
+                if (bound[q] < T)
+                    continue;
+                float top = zlow + (float)(q + 1) * bs;
+                top = top < zhi ? top : zhi;
+                const float bot = zlow + (float)q * bs;
+                for (float zz = top; zz >= bot - dz; zz -= dz) {
+                    float phi = phi_at(cz, ca, mc, zz, inv_r2);
+                    if (phi >= T) {
+                        zb = zz;
+                        fb = phi - T;
+                        found = 1;
+                        break;
                     }
-            }
-        }
-        /* where to start: the highest sphere top, but no higher than a
-         * spacing above the highest centre (a still lattice's phi there is
-         * ~0.6 T: the top crossing lies below) */
-        float zc = -INFINITY;
-        for (int k = 0; k < mc; ++k) {
-            if (cz[k] + R > zmax) {
-                float top = cz[k] + R * sqrtf(ca[k]);
-                zmax = top > zmax ? top : zmax;
-            }
-            zc = cz[k] > zc ? cz[k] : zc;
-            zlow = cz[k] - R < zlow ? cz[k] - R : zlow;
-        }
-        zmax = zmax < zc + s->spacing ? zmax : zc + s->spacing;
-        float height = 0.0f;
-        for (int pad = mc; pad % MS_VOLUME_LANES; ++pad) { /* weight-0 lanes */
-            cz[pad] = 0.0f;
-            ca[pad] = 0.0f;
-        }
-        mc = (mc + MS_VOLUME_LANES - 1) / MS_VOLUME_LANES * MS_VOLUME_LANES;
-        if (mc > 0) {
-            float za = zmax, zb = zmax, fa = -T, fb = -T;
-            int found = 0, steps = 0;
-            float z = zmax;
-            /* walk down in steps of half a spacing: a calm surface is met
-             * within a few */
-            for (; z >= zlow && steps < 6 && !found; z -= dz, ++steps) {
-                float phi = phi_at(cz, ca, mc, z, inv_r2);
-                if (phi >= T) {
-                    zb = z;
-                    fb = phi - T;
-                    found = 1;
-                } else {
-                    za = z;
+                    za = zz;
                     fa = phi - T;
                 }
             }
-            if (!found && z >= zlow) {
-                /* Below spray: an upper bound of phi in slabs of height ~R
-                 * (the sum of the sphere maxima sqrt(a) overlapping a slab)
-                 * skips the slabs that cannot reach T; the walk goes on in
-                 * the others. */
-                enum { MAXSLABS = 256 };
-                float bound[MAXSLABS];
-                const float zhi = z + dz, span = zhi - zlow;
-                int ns = (int)(span / R) + 2;
-                ns = ns > MAXSLABS ? MAXSLABS : ns;
-                const float bs = span / (float)ns, inv_bs = 1.0f / bs;
-                for (int q = 0; q < ns; ++q)
-                    bound[q] = 0.0f;
-                for (int k = 0; k < mc; ++k) {
-                    if (!(ca[k] > 0.0f))
-                        continue;
-                    float sa = sqrtf(ca[k]), ext = R * sa;
-                    int q0 = (int)((cz[k] - ext - zlow) * inv_bs);
-                    int q1 = (int)((cz[k] + ext - zlow) * inv_bs);
-                    q0 = q0 < 0 ? 0 : q0;
-                    q1 = q1 > ns - 1 ? ns - 1 : q1;
-                    for (int q = q0; q <= q1; ++q)
-                        bound[q] += sa;
-                }
-                for (int q = ns - 1; q >= 0 && !found; --q) {
-                    if (bound[q] < T)
-                        continue;
-                    float top = zlow + (float)(q + 1) * bs;
-                    top = top < zhi ? top : zhi;
-                    const float bot = zlow + (float)q * bs;
-                    for (float zz = top; zz >= bot - dz; zz -= dz) {
-                        float phi = phi_at(cz, ca, mc, zz, inv_r2);
-                        if (phi >= T) {
-                            zb = zz;
-                            fb = phi - T;
-                            found = 1;
-                            break;
-                        }
-                        za = zz;
-                        fa = phi - T;
-                    }
-                }
-            }
-            if (found && za <= zb) { /* the crossing is at the very top */
-                za = zb + dz;
-                fa = phi_at(cz, ca, mc, za, inv_r2) - T;
-                found = fa < 0.0f;
-            }
-            if (found) {
-                /* regula falsi (Illinois) to 1/256 of a spacing */
-                const float tol = s->spacing / 256.0f;
-                int side = 0;
-                for (int it = 0; it < 12 && za - zb > tol; ++it) {
-                    float zm = fb != fa ? zb + (za - zb) * fb / (fb - fa) : 0.5f * (za + zb);
-                    if (!(zm < za && zm > zb))
-                        zm = 0.5f * (za + zb);
-                    float fm = phi_at(cz, ca, mc, zm, inv_r2) - T;
-                    if (fm >= 0.0f) {
-                        zb = zm;
-                        fb = fm;
-                        if (side == -1)
-                            fa *= 0.5f;
-                        side = -1;
-                    } else {
-                        za = zm;
-                        fa = fm;
-                        if (side == 1)
-                            fb *= 0.5f;
-                        side = 1;
-                    }
-                }
-                height = fminf(fmaxf(0.5f * (za + zb) - lo[2], 0.0f), ztop);
-            }
         }
-        cc->raw[col] = height;
+        if (found && za <= zb) { /* the crossing is at the very top */
+            za = zb + dz;
+            fa = phi_at(cz, ca, mc, za, inv_r2) - T;
+            found = fa < 0.0f;
+        }
+        if (found) {
+            /* regula falsi (Illinois) to 1/256 of a spacing */
+            const float tol = s->spacing / 256.0f;
+            int side = 0;
+            for (int it = 0; it < 12 && za - zb > tol; ++it) {
+                float zm = fb != fa ? zb + (za - zb) * fb / (fb - fa) : 0.5f * (za + zb);
+                if (!(zm < za && zm > zb))
+                    zm = 0.5f * (za + zb);
+                float fm = phi_at(cz, ca, mc, zm, inv_r2) - T;
+                if (fm >= 0.0f) {
+                    zb = zm;
+                    fb = fm;
+                    if (side == -1)
+                        fa *= 0.5f;
+                    side = -1;
+                } else {
+                    za = zm;
+                    fa = fm;
+                    if (side == 1)
+                        fb *= 0.5f;
+                    side = 1;
+                }
+            }
+            height = fminf(fmaxf(0.5f * (za + zb) - lo[2], 0.0f), ztop);
+        }
+    }
+    return height;
+}
+
+/* Columns [b, e) of the rectangle (index (j - j0) * rw + i - i0). */
+static void columns_part(void *ctxp, int part, int b, int e)
+{
+    const column_ctx *cc = ctxp;
+    float *cz = cc->cand + (size_t)part * cc->cand_stride, *ca = cz + cc->cand_stride / 2;
+    for (int col = b; col < e; ++col) {
+        const int i = cc->i0 + col % cc->rw, j = cc->j0 + col / cc->rw;
+        float zmax, zlow;
+        const int mc = column_candidates(cc, i, j, cz, ca, &zmax, &zlow);
+        cc->raw[col] = column_height(cc->s, cz, ca, mc, zmax, zlow);
     }
 }
 

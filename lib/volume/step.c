@@ -1,5 +1,9 @@
 /* ms_volume_step: sub-steps of symplectic Euler (v += a dt, then
- * x += v dt) with the time step of each sub-step chosen from the state:
+ * x += v dt) with the time step of each sub-step chosen from the state.
+ * Under MS_PRESSURE_DFSPH (dfsph.c) a sub-step is Bender & Koschier's:
+ * density and factors, the divergence-free solve of v, the other forces,
+ * the kick, the constant-density solve of v*, the drift; c = 0 below (no
+ * sound speed: the velocity's CFL) and there is no eq. 15 field.
  *
  *   CFL      dt <= lambda h / (c + v_max + v_collider)   c: sound speed
  *   force    dt <= lambda sqrt(h / a_max)                 (Monaghan 1992)
@@ -91,6 +95,8 @@ static void drift_part(void *ctxp, int part, int b, int e)
 /* Sound speed (m/s) at density rho. */
 static float sound_speed_at(const ms_volume *v, float rho)
 {
+    if (v->desc.pressure == MS_PRESSURE_DFSPH)
+        return 0.0f; /* incompressible: the velocity's CFL alone */
     if (v->desc.pressure == MS_PRESSURE_TAIT) {
         float r = fminf(fmaxf(rho / v->desc.rest_density, 1.0f), 2.0f);
         return v->c0 * r * r * r; /* c^2 = dp/drho = c0^2 (rho/rho0)^6 */
@@ -106,6 +112,7 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: dt %g s is outside [0, 10] s", dt);
     ms_status st = MS_OK;
     const float lambda = v->desc.courant, h = v->K.h;
+    const int dfsph = v->desc.pressure == MS_PRESSURE_DFSPH;
     double rest = dt, tau = 0.0;
     long taken = 0;
     /* Known before any work (i15): no state allows a sub-step longer than
@@ -132,6 +139,10 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         st = ms_volume_density(v);
         if (st != MS_OK)
             break;
+        if (dfsph) {
+            ms_volume_dfsph_factors(v);
+            ms_volume_dfsph_divergence(v, v->max_dt);
+        }
         ms_volume_forces(v);
         ms_volume_actions_accel(v);
         float vcol = ms_volume_collider_speed(v);
@@ -158,6 +169,14 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         float c = sound_speed_at(v, rm);
         float dt_cfl = lambda * h / (c + vmax + vcol);
         float dt_force = amax > 0.0f ? lambda * sqrtf(h / amax) : INFINITY;
+        if (dfsph) {
+            /* a particle moves at most lambda/2 spacings a sub-step by its
+             * velocity (SPlisHSPlasH's CFL: 0.2 at lambda = 0.4), and by
+             * its acceleration a dt^2 <= lambda^2/4 spacing */
+            const float s = v->desc.spacing;
+            dt_cfl = 0.5f * lambda * s / (vmax + vcol);
+            dt_force = amax > 0.0f ? 0.5f * lambda * sqrtf(s / amax) : INFINITY;
+        }
         float dt_visc = dm > 0.0f ? lambda / dm : INFINITY;
         float bound = dt_cfl;
         v->dt_limit = "cfl";
@@ -186,6 +205,8 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         ms_vpool_run(v->pool, kick_part, &mc, v->n);
         ms_volume_collider_damp(v, tau, sub);
         ms_volume_actions_drag(v, sub);
+        if (dfsph)
+            ms_volume_dfsph_density(v, sub);
         ms_vpool_run(v->pool, drift_part, &mc, v->n);
         ms_volume_collider_resolve(v, tau, sub);
 

@@ -66,11 +66,20 @@ ms_status ms_volume_create(const ms_volume_desc *d, ms_volume **out)
      * moment M scales it again: 2/M makes the force -grad p / rho, so the
      * pressure law's p is the pressure the liquid exerts. */
     v->press_scale = (float)(2.0 / gradient_moment(d, v->mass));
-    v->c0 = d->pressure == MS_PRESSURE_TAIT ? d->sound_speed : sqrtf(d->gas_constant);
+    v->c0 = d->pressure == MS_PRESSURE_IDEAL_GAS ? sqrtf(d->gas_constant) : d->sound_speed;
     v->tait_b = (float)((double)d->rest_density * v->c0 * v->c0 / 7.0);
     v->col_range = (float)(0.5 * s);
     v->col_accel = (float)((double)v->c0 * v->c0 / h);
     v->col_damp = 2.0f * sqrtf(2.0f * v->col_accel / v->col_range);
+    if (d->pressure == MS_PRESSURE_DFSPH) {
+        /* No eq. 15 penalty field under DFSPH: its stiffness c^2/h would
+         * bound the step at the sound speed's CFL, the bound DFSPH lifts.
+         * The walls and shapes still take part in the density (their
+         * images) and the solve keeps the liquid out of them; the swept
+         * test still stops every particle at them. */
+        v->col_accel = 0.0f;
+        v->col_damp = 0.0f;
+    }
     v->surface_nbrs = (float)(0.75 * 4.0 / 3.0 * MS_PI_D * pow(h / s, 3.0));
     v->eps2 = (float)(1e-10 * h * h);
     v->inv_h = (float)(1.0 / h);
@@ -104,7 +113,7 @@ static void free_particles(ms_volume *v)
                    &v->y2, &v->z2,  &v->vx2,     &v->vy2, &v->vz2, &v->rho, &v->prs,
                    &v->inv_rho, &v->ax, &v->ay, &v->az, &v->visc_rate, &v->b_ax,
                    &v->b_ay, &v->b_az, &v->c_d, &v->c_w, &v->c_nx, &v->c_ny, &v->c_nz,
-                   &v->c_vx, &v->c_vy, &v->c_vz};
+                   &v->c_vx, &v->c_vy, &v->c_vz, &v->df_inv_diag, &v->df_s, &v->df_sum};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) {
         ms_free(*f[k]);
         *f[k] = NULL;
@@ -167,9 +176,9 @@ ms_status ms_volume_reserve(ms_volume *v, int n)
     float **other[] = {&t.x2,  &t.y2, &t.z2, &t.vx2, &t.vy2, &t.vz2, &t.rho,
                        &t.prs, &t.inv_rho, &t.ax, &t.ay, &t.az, &t.visc_rate,
                        &t.b_ax, &t.b_ay, &t.b_az, &t.c_d, &t.c_w, &t.c_nx, &t.c_ny, &t.c_nz,
-                       &t.c_vx, &t.c_vy, &t.c_vz};
+                       &t.c_vx, &t.c_vy, &t.c_vz, &t.df_inv_diag, &t.df_s, &t.df_sum};
     int ok = 1;
-    for (size_t k = 0; k < 6; ++k) {
+    for (size_t k = 0; k < sizeof state / sizeof state[0]; ++k) {
         float *p = ms_alloc_array(alloc, sizeof(float));
         if (p && v->n > 0)
             memcpy(p, *state[k], (size_t)v->n * sizeof(float));
@@ -382,13 +391,19 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
     out->count = v->n;
     out->surface_count = v->surface_count;
     out->pairs = v->pairs;
-    size_t per = 38 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
+    size_t per = 41 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
     out->bytes = sizeof *v + (size_t)v->cap * per +
                  ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
                  v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int);
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p)
         out->bytes += (v->lists[p].cap + v->ghosts[p].cap) * (sizeof(int) + sizeof(float));
     out->threads = ms_vpool_threads(v->pool);
+    out->density_iterations = v->df_density_iters;
+    out->divergence_iterations = v->df_divergence_iters;
+    out->density_iterations_total = v->df_density_total;
+    out->divergence_iterations_total = v->df_divergence_total;
+    out->density_error = v->df_density_err;
+    out->divergence_error = v->df_divergence_err;
     ms_struct_write(user, &info, size);
 }
 

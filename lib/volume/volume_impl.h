@@ -7,10 +7,13 @@
  *   volume.c     the handle: create, particles in and out, info
  *   pool.c       the worker threads of a step (static split, same bytes for any count)
  *   grid.c       neighbour grid of cell size h, counting sort into cell order
- *   density.c    density (eq. 9 with poly6) and pressure (ideal gas, Tait)
+ *   neighbours.c the neighbour lists of a density pass (instruction-set filters)
+ *   density.c    density (eq. 9) and pressure (ideal gas, Tait)
  *   forces.c     pressure force (eq. 13), viscosity force (eq. 14), gravity
  *   collide.c    the collider force field (eq. 15), the domain box, no tunnelling
  *   step.c       ms_volume_step: time-step bounds, sub-steps, symplectic Euler
+ *   dfsph.c      MS_PRESSURE_DFSPH: the divergence-free and constant-density
+ *                solves of Bender & Koschier 2015/2017
  *   interact.c   drag, push, remove, viscosity change, coupling from the waves
  *   extract.c    height field: eq. 16-17 iso-surface, eq. 18 adaptive smoothing
  *
@@ -41,7 +44,7 @@
  * a block may read past the last particle (those lanes are masked). */
 #define MS_VOLUME_LANES 16
 
-/* Instruction sets of the neighbour filter (density.c), picked at run time
+/* Instruction sets of the neighbour filter (neighbours.c), picked at run time
  * (the same lists on each). The AVX-512 version needs GCC's target
  * attribute and __builtin_cpu_supports; TSan builds stay on SSE2. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
@@ -206,6 +209,17 @@ struct ms_volume {
     float *cand[MS_VOLUME_MAX_THREADS];
     int *cand_idx[MS_VOLUME_MAX_THREADS];
     size_t cand_cap[MS_VOLUME_MAX_THREADS];
+
+    /* DFSPH (dfsph.c). Per particle, cell order, valid during a sub-step:
+     * 1 / (|sum_j m grad W_ij|^2 + sum_j |m grad W_ij|^2) (the Jacobi
+     * diagonal: alpha_i / rho_i of Bender & Koschier 2017), the current
+     * iterate s_i (m^5/kg, kappa_i dt^2 / rho_i or its divergence twin) and
+     * its running total. Nothing is kept across sub-steps (no warm start:
+     * see dfsph.c). */
+    float *df_inv_diag, *df_s, *df_sum;
+    int df_density_iters, df_divergence_iters;
+    long df_density_total, df_divergence_total;
+    float df_density_err, df_divergence_err;
 };
 
 /* A surface particle: fewer neighbours (self and wall images included)
@@ -259,6 +273,19 @@ static inline long ms_volume_cell_of(const ms_volume *v, float x, float y, float
 }
 
 
+/* neighbours.c: the nine row ranges (x-1 .. x+1) of the 27 cells around
+ * a cell, and how many candidates they hold; particle i's runs of real
+ * neighbours and images appended to its part's lists (nl_*, gl_*), with
+ * the rows of its cell in own (kept while the cell stays the same) and, on
+ * the AVX-512 path, *ncand candidates copied; -1 if a list could not grow.
+ * The best neighbour filter this CPU runs is ms_volume_pick_isa. */
+typedef struct ms_rows {
+    long cell;
+    int lo[9], hi[9];
+    size_t cand;
+} ms_rows;
+int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *ncand);
+
 /* density.c: the neighbour lists, and rho, prs, inv_rho, nbr for every
  * particle; surface count and density error statistics. MS_ERR_OUT_OF_MEMORY
  * if a list could not grow. */
@@ -270,6 +297,15 @@ int ms_volume_pick_isa(void);
 /* The boundary terms and a density pass at the current positions
  * (extraction and coupling between steps). */
 ms_status ms_volume_count_neighbours(ms_volume *v);
+
+/* dfsph.c: after a density pass (prs = 0 under DFSPH): the Jacobi
+ * diagonals; the divergence-free solve of the velocities (dt_scale, s, the
+ * step its error is measured over); the constant-density solve of the
+ * velocities v* after the kick, for a sub-step of dt, which also leaves the
+ * pressure (Pa) in prs. MS_ERR_UNSTABLE if a value is not finite. */
+void ms_volume_dfsph_factors(ms_volume *v);
+void ms_volume_dfsph_divergence(ms_volume *v, float dt_scale);
+void ms_volume_dfsph_density(ms_volume *v, float dt);
 
 /* forces.c: ax, ay, az (pressure, viscosity, gravity) and visc_rate. */
 void ms_volume_forces(ms_volume *v);

@@ -44,10 +44,17 @@ def test_plugin_error_for_an_unknown_shape():
     assert "no_such_shape_kind" in e.value.message
 
 
-def test_unsupported_pressure_law():
-    with pytest.raises(ms.Unsupported) as e:
-        ms.Volume(pressure="dfsph")
-    assert e.value.status_name == "MS_ERR_UNSUPPORTED"
+def test_dfsph_with_the_poly6_density_kernel_is_refused():
+    with pytest.raises(ms.InvalidArgument) as e:
+        ms.Volume(pressure="dfsph", density_kernel="poly6")
+    assert e.value.status_name == "MS_ERR_INVALID_ARGUMENT" and "poly6" in e.value.message
+
+
+def test_dfsph_volume_steps():
+    v = ms.Volume(pressure="dfsph")
+    v.fill_box((0, 0, 0), (0.3, 1, 0.3))
+    v.step(1 / 60)
+    assert v.count > 0
 
 
 def test_state_error_after_a_failed_sim_step():

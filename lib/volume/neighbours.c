@@ -1,0 +1,494 @@
+/* The neighbour lists (paper 3.3: "an additional space dividing grid with
+ * grid length h"): for each particle, its real neighbours within h (itself
+ * included) from the 27 cells around its cell, and its wall and shape
+ * images, appended to its part's lists in a fixed order. The instruction-
+ * set filters and gathers (plain C, SSE2, AVX-512, picked once per volume
+ * by ms_volume_pick_isa) give the same lists. Moved here from density.c,
+ * which now only sums them (review).
+ */
+#include <string.h>
+
+#include "volume/volume_impl.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if MS_VOLUME_HAVE_AVX512
+#include <immintrin.h>
+#endif
+
+enum { LANES = MS_VOLUME_LANES };
+
+/* Room for `more` entries plus a block of padding. */
+static int reserve(ms_nlist *L, size_t more)
+{
+    size_t need = L->len + more + LANES;
+    if (need <= L->cap)
+        return 1;
+    size_t cap = L->cap ? L->cap : 4096;
+    while (cap < need)
+        cap *= 2;
+    int *idx = ms_alloc_array(cap, sizeof(int));
+    float *r2 = ms_alloc_array(cap, sizeof(float));
+    if (!idx || !r2) {
+        ms_free(idx);
+        ms_free(r2);
+        return 0;
+    }
+    if (L->len) {
+        memcpy(idx, L->idx, L->len * sizeof(int));
+        memcpy(r2, L->r2, L->len * sizeof(float));
+    }
+    ms_free(L->idx);
+    ms_free(L->r2);
+    L->idx = idx;
+    L->r2 = r2;
+    L->cap = cap;
+    return 1;
+}
+
+/* Append (j | tag, r^2) for every j in the nine row ranges [lo[r], hi[r])
+ * closer than h to q (the particle itself included), in order; returns the
+ * number appended.
+ * Three versions with the same result, chosen once per volume
+ * (ms_volume_pick_isa): AVX-512 (compare into a mask, compress in
+ * registers, store whole blocks), SSE2 (compare, movemask, append the set
+ * bits) and plain C (branch-free append). The particle arrays and the list
+ * are padded, so a block may read and write past the end. */
+static size_t filter_rows_c(const ms_volume *v, const int *lo, const int *hi, const float q[3],
+                            int tag, int *restrict out, float *restrict out2)
+{
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const float h2 = v->K.h2;
+    size_t n = 0;
+    for (int r = 0; r < 9; ++r)
+        for (int j = lo[r]; j < hi[r]; ++j) {
+            float dx = q[0] - x[j], dy = q[1] - y[j], dz = q[2] - z[j];
+            float r2 = dx * dx + dy * dy + dz * dz;
+            out[n] = j | tag;
+            out2[n] = r2;
+            n += r2 < h2;
+        }
+    return n;
+}
+
+#if defined(__SSE2__)
+static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi, const float q[3],
+                               int tag, int *restrict out, float *restrict out2)
+{
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const __m128 qx = _mm_set1_ps(q[0]), qy = _mm_set1_ps(q[1]), qz = _mm_set1_ps(q[2]);
+    const __m128 hh = _mm_set1_ps(v->K.h2);
+    size_t n = 0;
+    for (int r = 0; r < 9; ++r)
+        for (int j = lo[r]; j < hi[r]; j += 4) {
+            __m128 dx = _mm_sub_ps(qx, _mm_loadu_ps(x + j));
+            __m128 dy = _mm_sub_ps(qy, _mm_loadu_ps(y + j));
+            __m128 dz = _mm_sub_ps(qz, _mm_loadu_ps(z + j));
+            __m128 r2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
+                                   _mm_mul_ps(dz, dz));
+            unsigned m = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(r2, hh));
+            if (hi[r] - j < 4)
+                m &= (1u << (hi[r] - j)) - 1u;
+            if (m) {
+                float t[4];
+                _mm_storeu_ps(t, r2);
+                while (m) {
+                    int b = __builtin_ctz(m);
+                    out[n] = (j + b) | tag;
+                    out2[n] = t[b];
+                    n++;
+                    m &= m - 1u;
+                }
+            }
+        }
+    return n;
+}
+#endif
+
+#if MS_VOLUME_HAVE_AVX512
+/* One block of up to 16 candidates (lanes outside valid are ignored): the
+ * ids of those within h of q, and their r^2, stored as whole compressed
+ * blocks (the lists have slack: a compress to memory is microcoded and
+ * slow). Returns how many were within h. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t
+filter_block(__m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y,
+             const float *z, __mmask16 valid, __m512i id, int *out, float *out2)
+{
+    __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, x));
+    __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, y));
+    __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, z));
+    __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                              _mm512_mul_ps(dz, dz));
+    __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+    _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(m, id));
+    _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(m, r2));
+    return (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+}
+
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
+filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float q[3], int tag,
+                   int *restrict out, float *restrict out2)
+{
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(v->K.h2);
+    const __m512i iota = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    const __m512i sixteen = _mm512_set1_epi32(16);
+    size_t n = 0;
+    for (int r = 0; r < 9; ++r) {
+        __m512i id = _mm512_add_epi32(_mm512_set1_epi32(lo[r] | tag), iota);
+        for (int j = lo[r]; j < hi[r]; j += 16) {
+            unsigned rem = (unsigned)(hi[r] - j);
+            __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+            n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n);
+            id = _mm512_add_epi32(id, sixteen);
+        }
+    }
+    return n;
+}
+
+/* filter_rows_avx512 over candidates already copied into one run
+ * (cand_of): the same list, without a short loop per row. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
+filter_run_avx512(const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride,
+                  const float q[3], float h2, int *restrict out, float *restrict out2)
+{
+    const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(h2);
+    size_t n = 0;
+    for (size_t j = 0; j < nc; j += 16) {
+        size_t rem = nc - j;
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+        __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
+        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n);
+    }
+    return n;
+}
+#endif
+
+typedef size_t filter_fn(const ms_volume *v, const int *lo, const int *hi, const float q[3],
+                         int tag, int *restrict out, float *restrict out2);
+
+static filter_fn *filter_of(int isa)
+{
+#if MS_VOLUME_HAVE_AVX512
+    if (isa == MS_VOLUME_ISA_AVX512)
+        return filter_rows_avx512;
+#endif
+#if defined(__SSE2__)
+    if (isa >= MS_VOLUME_ISA_SSE2)
+        return filter_rows_sse2;
+#endif
+    (void)isa;
+    return filter_rows_c;
+}
+
+int ms_volume_pick_isa(void)
+{
+#if MS_VOLUME_HAVE_AVX512
+    __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("bmi2"))
+        return MS_VOLUME_ISA_AVX512;
+#endif
+#if defined(__SSE2__)
+    return MS_VOLUME_ISA_SSE2;
+#else
+    return MS_VOLUME_ISA_C;
+#endif
+}
+
+/* The nine row ranges (x-1 .. x+1) of the 27 cells around cell c, and
+ * how many candidates they hold. */
+
+static void rows_of(const ms_volume *v, long c, ms_rows *r)
+{
+    const int *restrict start = v->cell_start;
+    const long sx = v->gx, sxy = (long)v->gx * v->gy;
+    static const signed char oz[9] = {-1, -1, -1, 0, 0, 0, 1, 1, 1};
+    static const signed char oy[9] = {-1, 0, 1, -1, 0, 1, -1, 0, 1};
+    r->cell = c;
+    r->cand = 0;
+    for (int k = 0; k < 9; ++k) {
+        const long row = c + oz[k] * sxy + oy[k] * sx;
+        r->lo[k] = start[row - 1];
+        r->hi[k] = start[row + 2];
+        r->cand += (size_t)(r->hi[k] - r->lo[k]);
+    }
+}
+
+/* Copy the candidates of the rows r (positions and indices, in row
+ * order) into part's run; its length, or -1 if the run could not grow.
+ * The particles of a cell share it: each then filters one run of about
+ * 14 full blocks instead of nine short rows (18 blocks, half of them
+ * part-empty, and a mispredicted loop exit per row). */
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target("avx512f,bmi,bmi2"))) static long cand_of(ms_volume *v, int part,
+                                                               const ms_rows *r)
+{
+    size_t need = r->cand + LANES;
+    if (need > v->cand_cap[part]) {
+        size_t cap = v->cand_cap[part] ? v->cand_cap[part] : 1024;
+        while (cap < need)
+            cap *= 2;
+        ms_free(v->cand[part]);
+        ms_free(v->cand_idx[part]);
+        v->cand[part] = ms_alloc_array(3 * cap, sizeof(float));
+        v->cand_idx[part] = ms_alloc_array(cap, sizeof(int));
+        v->cand_cap[part] = v->cand[part] && v->cand_idx[part] ? cap : 0;
+        if (!v->cand_cap[part])
+            return -1;
+    }
+    const size_t stride = v->cand_cap[part];
+    float *restrict cx = v->cand[part], *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
+    int *restrict ci = v->cand_idx[part];
+    const __m512i iota = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    size_t n = 0;
+    for (int k = 0; k < 9; ++k) {
+        const int lo = r->lo[k], hi = r->hi[k];
+        for (int j = lo; j < hi; j += 16, n += 16) {
+            unsigned rem = (unsigned)(hi - j);
+            __mmask16 m = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+            _mm512_mask_storeu_ps(cx + n, m, _mm512_maskz_loadu_ps(m, v->x + j));
+            _mm512_mask_storeu_ps(cy + n, m, _mm512_maskz_loadu_ps(m, v->y + j));
+            _mm512_mask_storeu_ps(cz + n, m, _mm512_maskz_loadu_ps(m, v->z + j));
+            _mm512_mask_storeu_epi32(ci + n, m, _mm512_add_epi32(_mm512_set1_epi32(j), iota));
+            if (rem < 16u)
+                n -= 16u - rem;
+        }
+    }
+    return (long)n;
+}
+#endif
+
+/* Append to L every particle within h of q from the rows r. Returns the
+ * neighbours appended, -1 if the list could not grow. */
+static int gather(const ms_volume *v, ms_nlist *L, const float q[3], const ms_rows *r, int tag)
+{
+    if (!reserve(L, r->cand + 2 * LANES))
+        return -1;
+    size_t n = filter_of(v->isa)(v, r->lo, r->hi, q, tag, L->idx + L->len, L->r2 + L->len);
+    L->len += n;
+    return (int)n;
+}
+
+/* The wall image q of particle p (p reflected across the domain walls of
+ * the image bits in tag) has as neighbours a subset of p's: for j inside
+ * the domain, |q - x_j|^2 = |p - x_j|^2 + 4 sum_k d_k e_k (d_k, e_k the
+ * distances of p and x_j from wall k, both >= 0). So the image list is
+ * p's real list (n entries from idx) filtered again at q, in its order:
+ * no search of the cells around q. Plain C, the same on every ISA. */
+static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
+                        const int *restrict idx, int n)
+{
+    if (!reserve(L, (size_t)n + 2 * LANES))
+        return -1;
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const float h2 = v->K.h2;
+    int *restrict out = L->idx + L->len;
+    float *restrict out2 = L->r2 + L->len;
+    size_t m = 0;
+    for (int k = 0; k < n; ++k) {
+        const int j = idx[k];
+        float dx = q[0] - x[j], dy = q[1] - y[j], dz = q[2] - z[j];
+        float r2 = dx * dx + dy * dy + dz * dz;
+        out[m] = j | tag;
+        out2[m] = r2;
+        m += r2 < h2;
+    }
+    L->len += m;
+    return (int)m;
+}
+
+#if MS_VOLUME_HAVE_AVX512
+/* gather_image in AVX-512: positions by 64-bit gathers from the packed
+ * copy (pack_part wrote them for this pass), the same r^2 and the same
+ * order (compress keeps it), so the same list. */
+__attribute__((target("avx512f,avx512dq,bmi,bmi2,popcnt"))) static int
+gather_image_avx512(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
+                    const int *restrict idx, int n)
+{
+    if (!reserve(L, (size_t)n + 2 * LANES))
+        return -1;
+    const double *pk = (const double *)(const void *)v->pk;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(v->K.h2);
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+    const __m512i vtag = _mm512_set1_epi32(tag);
+    int *restrict out = L->idx + L->len;
+    float *restrict out2 = L->r2 + L->len;
+    size_t m = 0;
+    for (int k = 0; k < n; k += 16) {
+        unsigned rem = (unsigned)(n - k);
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+        /* idx is padded (with the particle itself): a whole block is valid memory */
+        __m512i j = _mm512_loadu_si512((const void *)(idx + k));
+        __m512i j4 = _mm512_slli_epi32(j, 2);
+        __m256i jl = _mm512_castsi512_si256(j4), jh = _mm512_extracti64x4_epi64(j4, 1);
+        __m512 a0 = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk, 8));
+        __m512 a1 = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk, 8));
+        __m512 b0 = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk + 1, 8));
+        __m512 b1 = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk + 1, 8));
+        __m512 dx = _mm512_sub_ps(qx, _mm512_permutex2var_ps(a0, even, a1));
+        __m512 dy = _mm512_sub_ps(qy, _mm512_permutex2var_ps(a0, odd, a1));
+        __m512 dz = _mm512_sub_ps(qz, _mm512_permutex2var_ps(b0, even, b1));
+        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                  _mm512_mul_ps(dz, dz));
+        __mmask16 hit = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(out + m),
+                            _mm512_maskz_compress_epi32(hit, _mm512_or_si512(j, vtag)));
+        _mm512_storeu_ps(out2 + m, _mm512_maskz_compress_ps(hit, r2));
+        m += (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
+    }
+    L->len += m;
+    return (int)m;
+}
+#endif
+
+/* The images of particle i's neighbours across the tangent plane of its
+ * nearest shape collider (point c = p - d n, normal n): the particles j on
+ * the liquid side of the plane within h of p's mirror image q = p - 2 d n.
+ * Rare (particles at a shape): plain C. */
+static int gather_plane(const ms_volume *v, ms_nlist *L, const float p[3], int i)
+{
+    const float d = v->c_d[i], n[3] = {v->c_nx[i], v->c_ny[i], v->c_nz[i]};
+    const float c[3] = {p[0] - d * n[0], p[1] - d * n[1], p[2] - d * n[2]};
+    const float q[3] = {p[0] - 2.0f * d * n[0], p[1] - 2.0f * d * n[1], p[2] - 2.0f * d * n[2]};
+    const int *restrict start = v->cell_start;
+    const long sx = v->gx, sxy = (long)v->gx * v->gy;
+    const long cq = ms_volume_cell_of(v, q[0], q[1], q[2]);
+    const float h2 = v->K.h2;
+    const int tag = (int)(MS_VOLUME_IMAGE_SHAPE << MS_VOLUME_IMAGE_SHIFT);
+    size_t cand = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy) {
+            const long row = cq + dz * sxy + dy * sx;
+            cand += (size_t)(start[row + 2] - start[row - 1]);
+        }
+    if (!reserve(L, cand + 2 * LANES))
+        return -1;
+    int n_in = 0;
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy) {
+            const long row = cq + dz * sxy + dy * sx;
+            for (int j = start[row - 1]; j < start[row + 2]; ++j) {
+                float dx = q[0] - v->x[j], dyy = q[1] - v->y[j], dzz = q[2] - v->z[j];
+                float r2 = dx * dx + dyy * dyy + dzz * dzz;
+                float side = (v->x[j] - c[0]) * n[0] + (v->y[j] - c[1]) * n[1] +
+                             (v->z[j] - c[2]) * n[2];
+                if (r2 < h2 && side > 0.0f) {
+                    L->idx[L->len] = j | tag;
+                    L->r2[L->len] = r2;
+                    L->len++;
+                    n_in++;
+                }
+            }
+        }
+    return n_in;
+}
+
+/* Pad a run that began at `begin` to a multiple of the lanes (the list
+ * has a block of slack: a whole block is written). */
+static void pad(ms_nlist *L, size_t begin, int index, float h2)
+{
+    if (L->len == begin)
+        return; /* an empty run (the list may not even exist yet) */
+    size_t end = begin + (L->len - begin + LANES - 1) / LANES * LANES;
+    int *restrict idx = L->idx + L->len;
+    float *restrict r2 = L->r2 + L->len;
+#if defined(__SSE2__)
+    const __m128i vi = _mm_set1_epi32(index);
+    const __m128 vr = _mm_set1_ps(h2);
+    for (int l = 0; l < LANES; l += 4) { /* the compiler keeps this scalar */
+        _mm_storeu_si128((__m128i *)(void *)(idx + l), vi);
+        _mm_storeu_ps(r2 + l, vr);
+    }
+#else
+    for (int l = 0; l < LANES; ++l) {
+        idx[l] = index;
+        r2[l] = h2;
+    }
+#endif
+    L->len = end;
+}
+
+/* Particle i's runs (see volume_impl.h): its real neighbours from the rows
+ * of its cell (own, shared by the particles of a cell, recomputed when the
+ * cell changes; *ncand the candidates copied for the AVX-512 path) and its
+ * images; sets nl_begin, nl_count, gl_begin, gl_count. 0, or -1 if a list
+ * could not grow. */
+int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *ncand)
+{
+    ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
+    const float h2 = v->K.h2;
+#if MS_VOLUME_HAVE_AVX512
+    const int run = v->isa == MS_VOLUME_ISA_AVX512;
+#endif
+    const float p[3] = {v->x[i], v->y[i], v->z[i]};
+    const size_t begin = L->len, gbegin = G->len;
+    if (v->cell[i] != own->cell) { /* the particles of a cell share their rows */
+        rows_of(v, v->cell[i], own);
+#if MS_VOLUME_HAVE_AVX512
+        if (run)
+            *ncand = cand_of(v, part, own);
+#endif
+        if (*ncand < 0) {
+            return -1;
+        }
+    }
+    int nreal; /* the particle itself included */
+#if MS_VOLUME_HAVE_AVX512
+    if (run) {
+        if (!reserve(L, (size_t)*ncand + 2 * LANES)) {
+            return -1;
+        }
+        nreal = (int)filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand,
+                                       v->cand_cap[part], p, h2, L->idx + L->len,
+                                       L->r2 + L->len);
+        L->len += (size_t)nreal;
+    } else
+#endif
+        nreal = gather(v, L, p, own, 0);
+    if (nreal < 0) {
+        return -1;
+    }
+    pad(L, begin, i, h2);
+    int nghost = 0;
+    float wall[3];
+    unsigned near = ms_volume_walls_near(v, p[0], p[1], p[2], wall);
+    for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
+        if ((f & near) != f)
+            continue;
+        float q[3] = {p[0], p[1], p[2]};
+        for (int k = 0; k < 3; ++k)
+            if (f & (1u << k))
+                q[k] = 2.0f * wall[k] - q[k];
+        const int tag = (int)(f << MS_VOLUME_IMAGE_SHIFT);
+        int got;
+#if MS_VOLUME_HAVE_AVX512
+        if (run)
+            got = gather_image_avx512(v, G, q, tag, L->idx + begin, nreal);
+        else
+#endif
+            got = gather_image(v, G, q, tag, L->idx + begin, nreal);
+        if (got < 0) {
+            return -1;
+        }
+        nghost += got;
+    }
+    if (v->c_d[i] < v->K.h) {
+        int got = gather_plane(v, G, p, i);
+        if (got < 0) {
+            return -1;
+        }
+        nghost += got;
+    }
+    pad(G, gbegin, i, h2);
+    v->nl_begin[i] = (int)begin;
+    v->nl_count[i] = nreal;
+    v->gl_begin[i] = (int)gbegin;
+    v->gl_count[i] = nghost;
+    return 0;
+}
