@@ -398,7 +398,7 @@ START_TEST(keys_move_and_tilt_the_glass_and_steer_the_boat)
 {
     ms_scene *sc;
     ms_sim *sim = sim_of("data/scenes/glass.json", &sc);
-    ms_renderer_desc d;
+    ms_renderer_desc d = ms_renderer_desc_default();
     ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
     view_state v;
     view_state_init(&v, sim, &d, ms_scene_frame_dt(sc));
@@ -506,7 +506,7 @@ static void drag_path(float a[2], float b[2], float *level)
 {
     ms_scene *sc;
     ck_assert_int_eq(ms_scene_load(POOL, &sc), MS_OK);
-    ms_renderer_desc d;
+    ms_renderer_desc d = ms_renderer_desc_default();
     ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
     view_camera c;
     view_camera_from(&c, d.eye, d.target, d.fov);

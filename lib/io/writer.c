@@ -544,6 +544,12 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
         ok = ms_h5part_link_step(w->file, step, k) == MS_OK;
     if (ok && xyz >= 0)
         ok = ms_h5part_link_xyz(w->file, xyz, k) == MS_OK;
+    /* The links reach the disk in a flush of their own before `frames` is
+     * raised: inside one flush HDF5 writes its dirty metadata in no set
+     * order, so a kill there could leave `frames` counting a step whose
+     * link never landed (seen under load: particle_count -> MS_ERR_PARSE). */
+    if (ok && (step >= 0 || xyz >= 0))
+        ok = commit(w);
     if (ok)
         ok = H5Awrite(w->frames_attr, H5T_NATIVE_INT64, &committed) >= 0 && commit(w);
     if (step >= 0 && H5Gclose(step) < 0)

@@ -594,7 +594,7 @@ int cmd_view(int argc, char **argv)
         ms_scene_destroy(vw.sc);
         return EXIT_USAGE;
     }
-    ms_renderer_desc rd;
+    ms_renderer_desc rd = ms_renderer_desc_default();
     if (ms_renderer_desc_from_scene(vw.sc, &rd) != MS_OK) {
         tool_error("view: %s", ms_last_error());
         view_script_free(&vw.script);
