@@ -326,7 +326,8 @@ START_TEST(each_shader_compiles_and_draws_its_liquid)
     ck_assert_msg(lum[2] < 0.2f, "oil is not dark: %g", lum[2]);
     ck_assert_msg(c[3][0] > c[3][1] && c[3][1] > c[3][2], "honey is not amber: %g %g %g",
                   c[3][0], c[3][1], c[3][2]);
-    ck_assert(lum[1] > lum[0] && lum[0] > lum[2]);
+    ck_assert_msg(lum[1] > lum[0] && lum[0] > lum[2], "luma milk %g, water %g, oil %g", lum[1],
+                  lum[0], lum[2]);
 }
 END_TEST
 #endif

@@ -120,6 +120,13 @@ MS_API ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim);
 MS_API ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *g,
                                         double time);
 
+/* Draws a stored field (a run file's frame, `modesplit render`) with the
+ * objects of the scene it was run from at `time` s: the boat on its path;
+ * floaters are not stored in run files and are not drawn. The same checks
+ * as ms_renderer_draw_field. */
+MS_API ms_status ms_renderer_draw_scene_field(ms_renderer *r, const ms_scene *sc, const float *h,
+                                              const ms_grid *g, double time);
+
 /* Moves the camera (the desc's eye, target, up, fov; the same checks). The
  * environment cubemap is drawn again for the new eye: about the cost of a
  * frame. */

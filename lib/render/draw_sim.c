@@ -26,13 +26,13 @@ static float height_at(const float *h, const ms_grid *g, float x, float y)
     return (1 - fv) * ((1 - fu) * a[0] + fu * a[1]) + fv * ((1 - fu) * b[0] + fu * b[1]);
 }
 
-static ms_status sim_discs(ms_renderer *r, const ms_sim *sim, const float *h, const ms_grid *g)
+/* The discs of nf floaters at xyz and of the scene's boat (if any) at
+ * time t. */
+static ms_status scene_discs(ms_renderer *r, const ms_scene *sc, const float *xyz, int nf,
+                             double t, const float *h, const ms_grid *g)
 {
     const ms_renderer_desc *d = &r->desc;
     const float side = MS_MIN(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
-    int nf = 0;
-    const float *xyz = ms_sim_floaters(sim, &nf);
-    const ms_scene *sc = ms_sim_scene(sim);
     const int boat = sc && sc->has_boat && sc->boat_path.npoints > 0;
     int n = MS_MIN(nf, MS_RENDER_MAX_DISCS - boat) + boat;
     if (n == 0)
@@ -48,7 +48,7 @@ static ms_status sim_discs(ms_renderer *r, const ms_sim *sim, const float *h, co
     }
     if (boat) {
         float pos[3] = {0, 0, 0}, vel[3];
-        ms_scene_motion_eval(&sc->boat_path, ms_sim_time(sim), pos, vel);
+        ms_scene_motion_eval(&sc->boat_path, t, pos, vel);
         discs[k].pos[0] = pos[0];
         discs[k].pos[1] = pos[1];
         discs[k].pos[2] = d->pool_min[2] + height_at(h, g, pos[0], pos[1]);
@@ -76,7 +76,26 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
     if (g.nx != nx || g.ny != ny)
         return ms_fail(MS_ERR_STATE, "render: the sim's field is %d x %d but its grid %d x %d",
                        nx, ny, g.nx, g.ny);
-    if ((st = sim_discs(r, sim, h, &g)) != MS_OK)
+    int nf = 0;
+    const float *xyz = ms_sim_floaters(sim, &nf);
+    if ((st = scene_discs(r, ms_sim_scene(sim), xyz, nf, ms_sim_time(sim), h, &g)) != MS_OK)
         return st;
     return ms_renderer_draw_field(r, h, &g, ms_sim_time(sim));
+}
+
+ms_status ms_renderer_draw_scene_field(ms_renderer *r, const ms_scene *sc, const float *h,
+                                       const ms_grid *g, double time)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
+        (st = ms_check_not_null(PART, "scene", sc)) != MS_OK ||
+        (st = ms_check_not_null(PART, "height field", h)) != MS_OK ||
+        (st = ms_check_not_null(PART, "grid", g)) != MS_OK ||
+        (st = ms_check_finite(PART, "time", time)) != MS_OK ||
+        (st = ms_check_int_range(PART, "grid nx", g->nx, 2, 16384)) != MS_OK ||
+        (st = ms_check_int_range(PART, "grid ny", g->ny, 2, 16384)) != MS_OK)
+        return st;
+    if ((st = scene_discs(r, sc, NULL, 0, time, h, g)) != MS_OK)
+        return st;
+    return ms_renderer_draw_field(r, h, g, time);
 }

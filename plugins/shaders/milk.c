@@ -13,7 +13,7 @@
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n"
+    "#version 120\n" SHADER_TONEMAP_SOURCE
     "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
@@ -30,14 +30,18 @@ static const char fragment_source[] =
     "    if (dot(n, v) > 0.0)\n"
     "        n = -n;\n"
     "    float wrap = (dot(n, ms_light_dir) + milk_softness) / (1.0 + milk_softness);\n"
-    "    vec3 diffuse = milk_color * ms_light_color * clamp(wrap, 0.0, 1.0);\n"
-    "    vec3 ambient = milk_color * 0.3;\n"
+    "    /* milk's albedo under the sun (wrapped Lambert) and the sky, kept\n"
+    "     * near the tone map's knee so the slopes of the ripples show */\n"
+    "    vec3 diffuse = milk_color * ms_light_color * 0.75 * clamp(wrap, 0.0, 1.0);\n"
+    "    vec3 ambient = milk_color * 0.25;\n"
     "    float cosi = clamp(-dot(v, n), 0.0, 1.0);\n"
-    "    float sheen = milk_sheen * pow(1.0 - cosi, 3.0);\n"
+    "    /* Schlick with milk's index (about 1.35), broadened by milk_sheen */\n"
+    "    float fresnel = 0.022 + 0.978 * pow(1.0 - cosi, 5.0);\n"
+    "    float sheen = clamp(fresnel * (1.0 + 8.0 * milk_sheen), 0.0, 1.0);\n"
     "    vec3 env = textureCube(ms_env, reflect(v, n)).rgb;\n"
     "    vec3 h = normalize(ms_light_dir - v);\n"
-    "    vec3 spec = ms_light_color * 0.15 * pow(max(dot(n, h), 0.0), 24.0);\n"
-    "    gl_FragColor = vec4(mix(ambient + diffuse, env, sheen) + spec, 1.0);\n"
+    "    vec3 spec = ms_light_color * 0.5 * pow(max(dot(n, h), 0.0), 24.0);\n"
+    "    gl_FragColor = vec4(ms_tonemap(mix(ambient + diffuse, env, sheen) + spec), 1.0);\n"
     "}\n";
 
 typedef struct milk {
@@ -49,7 +53,7 @@ static int milk_create(const char *json, void **out, char *err, size_t err_size)
 {
     static const char *const keys[] = {"color", "softness", "sheen", NULL};
     static const float dcolor[3] = {0.93f, 0.92f, 0.88f};
-    milk m = {{0.93f, 0.92f, 0.88f}, 0.6f, 0.35f};
+    milk m = {{0.93f, 0.92f, 0.88f}, 0.3f, 0.35f};
     params pm;
     if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
         params_vec(&pm, "color", 3, m.color, dcolor, 0.0, 1.0, "");

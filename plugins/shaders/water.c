@@ -16,7 +16,7 @@
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n"
+    "#version 120\n" SHADER_TONEMAP_SOURCE
     "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
@@ -49,7 +49,7 @@ static const char fragment_source[] =
     "    below = mix(water_color, below, exp(-len / water_clarity));\n"
     "    vec3 h = normalize(ms_light_dir - v);\n"
     "    vec3 spec = ms_light_color * pow(max(dot(n, h), 0.0), 400.0) * fresnel * 4.0;\n"
-    "    gl_FragColor = vec4(mix(below, reflected, fresnel) + spec, 1.0);\n"
+    "    gl_FragColor = vec4(ms_tonemap(mix(below, reflected, fresnel) + spec), 1.0);\n"
     "}\n";
 
 typedef struct water {

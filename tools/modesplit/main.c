@@ -172,7 +172,10 @@ static int dispatch(int argc, char **argv)
         return cmd_check(argc - 1, argv + 1);
     if (!strcmp(cmd, "plugins"))
         return cmd_plugins(argc - 1, argv + 1);
-    tool_error("unknown command \"%s\"; commands: run, info, check, plugins (see modesplit --help)",
+    /* the renderer's commands (issue 14) */
+    if (!strcmp(cmd, "render"))
+        return cmd_render(argc - 1, argv + 1);
+    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, render (see modesplit --help)",
                cmd);
     return EXIT_USAGE;
 }

@@ -42,6 +42,8 @@ int cmd_run(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_plugins(int argc, char **argv);
+/* the renderer's commands (issue 14) */
+int cmd_render(int argc, char **argv);
 
 /* ---- progress (progress.c) ---- */
 typedef struct tool_progress {
