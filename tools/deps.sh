@@ -18,6 +18,8 @@ libosmesa6-dev check libsubunit-dev valgrind clang"
 # the user otherwise (the tests that need them report themselves skipped).
 CI_PACKAGES="gnuplot-nox libsdl2-dev xvfb xauth xdotool x11-apps imagemagick ffmpeg \
 paraview python3-paraview python3-h5py python3-venv"
+# the renderer's EGL context backend (issue 14): surfaceless Mesa
+PACKAGES="$PACKAGES libegl-dev libegl-mesa0"
 
 if [ "${1:-}" = "--ci" ]; then
     PACKAGES="$PACKAGES $CI_PACKAGES"

@@ -94,9 +94,10 @@ ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky)
     if (!gl)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the GL state");
     r->gl = gl;
-    ms_status st = ms_gl_context_create(&gl->context);
+    ms_status st = ms_gl_context_create(&gl->context, r->desc.backend);
     if (st != MS_OK)
         return st;
+    r->stats.backend = gl->context.backend->name;
     if ((st = ms_gl_context_begin(&gl->context)) != MS_OK)
         return st;
     st = build(r, sky);

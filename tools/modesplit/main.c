@@ -175,7 +175,9 @@ static int dispatch(int argc, char **argv)
     /* the renderer's commands (issue 14) */
     if (!strcmp(cmd, "render"))
         return cmd_render(argc - 1, argv + 1);
-    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, render (see modesplit --help)",
+    if (!strcmp(cmd, "cubemap"))
+        return cmd_cubemap(argc - 1, argv + 1);
+    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, render, cubemap (see modesplit --help)",
                cmd);
     return EXIT_USAGE;
 }

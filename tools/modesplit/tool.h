@@ -44,6 +44,7 @@ int cmd_check(int argc, char **argv);
 int cmd_plugins(int argc, char **argv);
 /* the renderer's commands (issue 14) */
 int cmd_render(int argc, char **argv);
+int cmd_cubemap(int argc, char **argv);
 
 /* ---- progress (progress.c) ---- */
 typedef struct tool_progress {
@@ -75,6 +76,7 @@ typedef struct tool_png {
     float relief;        /* vertical exaggeration, lowered as frames need */
     int have_range;
     long written;
+    const ms_sim *sim;     /* set: the renderer draws its field with floaters and boat */
 } tool_png;
 
 /* Create DIR (and its parents) if missing and, when the scene has a
