@@ -953,32 +953,40 @@ START_TEST(draw_renders_the_sims_field_with_its_floaters_and_boat)
         ck_assert_int_eq(ms_sim_step(sim, 1.0f / 60), MS_OK);
     st = ms_renderer_draw(r, sim);
     ck_assert_msg(st == MS_OK, "%s", ms_last_error());
-    /* three leaves and the boat */
-    ck_assert_int_eq(r->ndiscs, 4);
+    /* three leaves as discs, and the boat as a hull */
+    ck_assert_int_eq(r->ndiscs, 3);
     int nf = 0;
     const float *xyz = ms_sim_floaters(sim, &nf);
     ck_assert_int_eq(nf, 3);
     ck_assert_float_eq(r->discs[1].pos[0], xyz[3]);
     ck_assert_float_eq(r->discs[1].pos[2], xyz[5]);
-    /* the boat has moved 0.2 m/s x the fields' time along its path */
-    ck_assert_float_eq_tol(r->discs[3].pos[0], 0.2f + 0.2f * (float)ms_sim_time(sim), 1e-5f);
-    ck_assert_float_eq_tol(r->discs[3].radius, 0.04f, 1e-7f);
+    /* the boat has moved 0.2 m/s x the fields' time along its path, its
+     * bow along it (+x) */
+    ck_assert(r->has_boat);
+    ck_assert_float_eq_tol(r->boat_pos[0], 0.2f + 0.2f * (float)ms_sim_time(sim), 1e-5f);
+    ck_assert_float_eq_tol(r->boat_radius, 0.04f, 1e-7f);
+    ck_assert_float_eq_tol(r->boat_heading[0], 1.0f, 1e-6f);
+    ck_assert_float_eq_tol(r->boat_heading[1], 0.0f, 1e-6f);
 
-    /* the same as drawing the sim's combined field over its grid, with
-     * the same discs, by hand */
+    /* the same as drawing the sim's combined field with the scene's
+     * objects and the same leaves, by hand */
     unsigned char *want = malloc((size_t)W * W * 4);
     memcpy(want, ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
-    ms_render_disc discs[4];
+    ms_render_disc discs[3];
     memcpy(discs, r->discs, sizeof discs);
     ms_renderer_destroy(r);
     ck_assert_int_eq(ms_renderer_create(sc, &r), MS_OK);
-    ck_assert_int_eq(ms_renderer_set_discs(r, discs, 4), MS_OK);
+    ck_assert_int_eq(ms_renderer_set_discs(r, discs, 3), MS_OK);
     int nx, ny;
     const float *h = ms_sim_height(sim, &nx, &ny);
     ms_grid g;
     ck_assert_int_eq(ms_sim_field_grid(sim, MS_FIELD_COMBINED, &g), MS_OK);
     ck_assert_int_eq(g.nx, nx);
+    /* draw_scene_field draws the boat but keeps the discs set by hand */
+    ck_assert_int_eq(ms_renderer_set_discs(r, discs, 3), MS_OK);
     ck_assert_int_eq(ms_renderer_draw_field(r, h, &g, ms_sim_time(sim)), MS_OK);
+    ck_assert_int_gt(box_max_abs_diff(ms_renderer_pixels(r, NULL, NULL), want, 0, 0, W, W), 20);
+    ck_assert_int_eq(ms_renderer_draw_scene_field(r, sc, h, &g, ms_sim_time(sim)), MS_OK);
     ck_assert_int_eq(memcmp(ms_renderer_pixels(r, NULL, NULL), want, (size_t)W * W * 4), 0);
     /* and the drop shows: the image is not the still pool's */
     float *still = field(64, sc->level);

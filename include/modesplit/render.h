@@ -117,8 +117,11 @@ MS_API void ms_renderer_destroy(ms_renderer *r);
 
 /* Draws the sim's combined field (ms_sim_height, ms_sim_field_grid of
  * MS_FIELD_COMBINED) at ms_sim_time, with the sim's floaters (the first
- * MS_RENDER_MAX_DISCS) as leaves and the scene's boat as discs, replacing
- * any set by ms_renderer_set_discs. MS_ERR_STATE before the sim's first
+ * MS_RENDER_MAX_DISCS) as leaf discs, replacing any set by
+ * ms_renderer_set_discs, and the scene's boat as a small hull on its path
+ * (bow along its velocity). Where the sim up-samples an SPH field (eq. 20)
+ * the SPH part is shown by Catmull-Rom instead of bilinear interpolation
+ * (display only: no kinks at the SPH cells' edges). MS_ERR_STATE before the sim's first
  * step. The views it reads are the sim's: call it between steps. */
 MS_API ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim);
 /* Draws any height field: h holds g->nx * g->ny heights (m above the pool
@@ -128,9 +131,10 @@ MS_API ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms
                                         double time);
 
 /* Draws a stored field (a run file's frame, `modesplit render`) with the
- * objects of the scene it was run from at `time` s: the boat on its path;
- * floaters are not stored in run files and are not drawn. The same checks
- * as ms_renderer_draw_field. */
+ * objects of the scene it was run from at `time` s: the boat as a hull on
+ * its path, bow along its velocity. Floaters are not stored in run files:
+ * the discs set by ms_renderer_set_discs are kept. The same checks as
+ * ms_renderer_draw_field. */
 MS_API ms_status ms_renderer_draw_scene_field(ms_renderer *r, const ms_scene *sc, const float *h,
                                               const ms_grid *g, double time);
 

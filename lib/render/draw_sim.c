@@ -9,6 +9,7 @@
  * edge, and the normals' jumps there showed as saw-tooth seams in the
  * refracted floor; Catmull-Rom passes through the same SPH values with a
  * continuous slope. The simulated field is not changed. */
+#include <math.h>
 #include <string.h>
 
 #include "core/internal.h"
@@ -19,7 +20,7 @@
 #define PART "render"
 
 /* Linear RGB of the floating things. */
-static const float leaf_color[3] = {0.45f, 0.30f, 0.08f}, boat_color[3] = {0.80f, 0.78f, 0.72f};
+static const float leaf_color[3] = {0.45f, 0.30f, 0.08f};
 
 /* Taps of 1D interpolation of a cell-centred coarse row of n values at
  * fine cell centres: for fine index i, coarse coordinate u (clamped to
@@ -147,26 +148,37 @@ static ms_status scene_discs(ms_renderer *r, const ms_scene *sc, const float *xy
     const ms_renderer_desc *d = &r->desc;
     const float side = MS_MIN(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
     const int boat = sc && sc->has_boat && sc->boat_path.npoints > 0;
-    int n = MS_MIN(nf, MS_RENDER_MAX_DISCS - boat) + boat;
+    if (boat) {
+        /* the boat: a hull on its path, its bow along its velocity */
+        float pos[3] = {0, 0, 0}, vel[3] = {0, 0, 0};
+        ms_scene_motion_eval(&sc->boat_path, t, pos, vel);
+        float sp = sqrtf(vel[0] * vel[0] + vel[1] * vel[1]);
+        if (sp > 1e-6f) {
+            r->boat_heading[0] = vel[0] / sp;
+            r->boat_heading[1] = vel[1] / sp;
+        } else if (!r->has_boat) {
+            r->boat_heading[0] = 1, r->boat_heading[1] = 0;
+        }
+        r->boat_pos[0] = pos[0];
+        r->boat_pos[1] = pos[1];
+        r->boat_pos[2] = d->pool_min[2] + height_at(h, g, pos[0], pos[1]);
+        r->boat_radius = sc->boat_radius;
+    }
+    if (boat || r->has_boat)
+        r->discs_changed = 1;
+    r->has_boat = boat;
+    if (!xyz)
+        return MS_OK; /* no floaters known: the discs set by hand stay */
+    int n = MS_MIN(nf, MS_RENDER_MAX_DISCS);
     if (n == 0)
         return r->ndiscs ? ms_renderer_set_discs(r, NULL, 0) : MS_OK;
     ms_render_disc *discs = ms_alloc_array((size_t)n, sizeof *discs);
     if (!discs)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d floaters", n);
-    int k = 0;
-    for (; k < n - boat; ++k) {
+    for (int k = 0; k < n; ++k) {
         memcpy(discs[k].pos, xyz + 3 * k, sizeof discs[k].pos);
         discs[k].radius = 0.015f * side; /* a leaf: 3 cm across in a 1 m pool */
         memcpy(discs[k].color, leaf_color, sizeof leaf_color);
-    }
-    if (boat) {
-        float pos[3] = {0, 0, 0}, vel[3];
-        ms_scene_motion_eval(&sc->boat_path, t, pos, vel);
-        discs[k].pos[0] = pos[0];
-        discs[k].pos[1] = pos[1];
-        discs[k].pos[2] = d->pool_min[2] + height_at(h, g, pos[0], pos[1]);
-        discs[k].radius = sc->boat_radius;
-        memcpy(discs[k].color, boat_color, sizeof boat_color);
     }
     ms_status st = ms_renderer_set_discs(r, discs, n);
     ms_free(discs);

@@ -6,8 +6,11 @@
  * the renderer knows which backend it runs on.
  *
  * EGL displays are per process: the display is initialised by the first
- * context and terminated when the last one is destroyed (a count under a
- * mutex), never under a renderer that still lives. */
+ * context (under a mutex) and kept for the process's life, as OSMesa keeps
+ * its framebuffers: eglTerminate would pull it from under other renderers,
+ * and Mesa's surfaceless driver leaks 128 bytes per eglTerminate (seen by
+ * LeakSanitizer), while a display left initialised frees everything at
+ * exit. */
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 #include <pthread.h>
@@ -22,7 +25,6 @@ typedef struct egl_impl {
 
 static pthread_mutex_t egl_lock = PTHREAD_MUTEX_INITIALIZER;
 static EGLDisplay egl_display = EGL_NO_DISPLAY;
-static int egl_users;
 
 static int has_extension(const char *list, const char *name)
 {
@@ -88,12 +90,6 @@ static ms_status egl_create(ms_gl_context *c)
             st = ms_fail(MS_ERR_UNSUPPORTED,
                          "render: EGL cannot make an OpenGL context (error 0x%04x)",
                          (unsigned)eglGetError());
-        else
-            egl_users++;
-    }
-    if (st != MS_OK && egl_users == 0 && egl_display != EGL_NO_DISPLAY) {
-        eglTerminate(egl_display);
-        egl_display = EGL_NO_DISPLAY;
     }
     MS_MESA_LEAKS_END();
     pthread_mutex_unlock(&egl_lock);
@@ -130,13 +126,7 @@ static void egl_destroy(ms_gl_context *c)
     egl_impl *e = c->impl;
     if (!e)
         return;
-    pthread_mutex_lock(&egl_lock);
     eglDestroyContext(egl_display, e->ctx);
-    if (--egl_users == 0) {
-        eglTerminate(egl_display);
-        egl_display = EGL_NO_DISPLAY;
-    }
-    pthread_mutex_unlock(&egl_lock);
     ms_free(e);
     c->impl = NULL;
 }

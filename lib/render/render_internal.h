@@ -124,7 +124,11 @@ struct ms_renderer {
     ms_caustics caustics;
     ms_render_disc *discs;  /* floating things, ms_renderer_set_discs */
     int ndiscs, discs_cap;
-    int discs_changed;      /* the GL side must rebuild their vertices */
+    int discs_changed;      /* the GL side must rebuild their vertices (and the boat's) */
+    int has_boat;           /* the scene's boat is drawn as a hull (draw_sim.c) */
+    float boat_pos[3];      /* m, world: its centre at the water line */
+    float boat_heading[2];  /* unit, x-y: where its bow points */
+    float boat_radius;      /* m: half its length */
     float *display;         /* the field drawn by ms_renderer_draw (draw_sim.c) and scratch */
     size_t display_cap;     /* floats */
     unsigned char *pixels;  /* width * height * 4, top row first */
