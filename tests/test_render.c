@@ -1310,6 +1310,60 @@ START_TEST(the_shipped_scenes_render_their_golden_pictures)
 }
 END_TEST
 
+/* A camera under flat water looking straight up sees the sky through
+ * Snell's window, a disc of half-angle asin(1 / n) = 48.6 degrees, and the
+ * floor mirrored by total internal reflection outside it: the window's
+ * edge is measured where the image turns from the white sky to the dark
+ * floor, along four directions. */
+START_TEST(under_water_the_sky_shows_through_snells_window)
+{
+    REQUIRE_GL();
+    make_tmpdir();
+    static const unsigned char white[6][3] = {{255, 255, 255}, {255, 255, 255}, {255, 255, 255},
+                                              {255, 255, 255}, {255, 255, 255}, {255, 255, 255}};
+    char sky[300];
+    snprintf(sky, sizeof sky, "%s/white", tmpdir);
+    write_cubemap_dir(sky, white);
+    ms_renderer_desc d = ms_renderer_desc_default();
+    const int side = 256;
+    d.width = d.height = side;
+    d.caustics = 0;
+    d.cubemap = sky;
+    d.floor_color[0] = d.floor_color[1] = d.floor_color[2] = 0.1f;
+    const float eye[3] = {0.5f, 0.5f, 0.1f}, target[3] = {0.5f, 0.5f, 0.25f}, up[3] = {0, 1, 0};
+    memcpy(d.eye, eye, sizeof eye);
+    memcpy(d.target, target, sizeof target);
+    memcpy(d.up, up, sizeof up);
+    d.fov = 120;
+    float *h = field(N, 0.25f);
+    ms_renderer *r = create_ok(&d);
+    draw_ok(r, h, N);
+    const unsigned char *px = ms_renderer_pixels(r, NULL, NULL);
+    const double focal = 0.5 * side / tan(60 * 3.14159265358979 / 180); /* pixels */
+    const double want = focal * tan(asin(1 / 1.333));
+    const int dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (int k = 0; k < 4; ++k) {
+        double inside = luma(px, (size_t)(side / 2) * side + side / 2), edge = -1;
+        for (int q = 1; q < side / 2; ++q) {
+            int x = side / 2 + dirs[k][0] * q, y = side / 2 + dirs[k][1] * q;
+            if (luma(px, (size_t)y * side + (size_t)x) < 0.5 * inside) {
+                edge = q;
+                break;
+            }
+        }
+        ck_assert_msg(fabs(edge - want) <= 3, "direction %d: the window ends at %g px, Snell: %g",
+                      k, edge, want);
+    }
+    /* outside the window: the floor, mirrored, not the sky */
+    double outside = luma(px, (size_t)(side / 2) * side + (size_t)(side / 2 + (int)want + 20));
+    ck_assert_msg(outside < 120, "outside Snell's window luma %g: no total internal reflection",
+                  outside);
+    ms_renderer_destroy(r);
+    free(h);
+    remove_tmpdir();
+}
+END_TEST
+
 static Suite *render_suite(void)
 {
     Suite *s = suite_create("render");
@@ -1338,6 +1392,7 @@ static Suite *render_suite(void)
     tcase_add_test(tc, a_scene_renders_and_every_shader_draws);
     tcase_add_test(tc, each_backend_draws_the_same_picture);
     tcase_add_test(tc, each_shader_shows_its_ripples_unclipped);
+    tcase_add_test(tc, under_water_the_sky_shows_through_snells_window);
     suite_add_tcase(s, tc);
     return s;
 }
