@@ -182,6 +182,8 @@ static ms_status scene_discs(ms_renderer *r, const ms_scene *sc, const float *xy
     }
     ms_status st = ms_renderer_set_discs(r, discs, n);
     ms_free(discs);
+    if (st == MS_OK)
+        r->nleaves = n; /* after set_discs, which counts its discs as plain */
     return st;
 }
 

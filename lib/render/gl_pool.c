@@ -229,6 +229,38 @@ static void hull(builder *b, const ms_renderer *r)
     }
 }
 
+/* A floating leaf (the sim's floaters, Fig. 10): a pointed blade of
+ * length 2 radius and half that width, turned and tinted by a hash of its
+ * index (deterministic): LEAF_SEGMENTS triangles about its centre. */
+#define LEAF_SEGMENTS 12
+static void leaf(builder *b, const float ctr[3], float radius, const float color[3], unsigned i)
+{
+    static const float up[3] = {0, 0, 1};
+    unsigned hsh = i * 2654435761u;
+    hsh ^= hsh >> 15;
+    const float turn = 6.2831853f * (float)(hsh & 1023u) / 1024.0f;
+    const float tint = 0.8f + 0.4f * (float)((hsh >> 10) & 255u) / 255.0f;
+    const float col[3] = {MS_MIN(color[0] * tint, 1.0f), MS_MIN(color[1] * tint, 1.0f),
+                          MS_MIN(color[2] * tint, 1.0f)};
+    const float ca = cosf(turn), sa = sinf(turn);
+    float p[LEAF_SEGMENTS][3];
+    for (int s = 0; s < LEAF_SEGMENTS; ++s) {
+        const float a = 6.2831853f * (float)s / LEAF_SEGMENTS;
+        /* pointed at both tips: the width goes as |sin a|^1.5 */
+        const float x = radius * cosf(a), sn = sinf(a);
+        const float y = 0.5f * radius * sn * sqrtf(fabsf(sn));
+        p[s][0] = ctr[0] + ca * x - sa * y;
+        p[s][1] = ctr[1] + sa * x + ca * y;
+        p[s][2] = ctr[2];
+    }
+    for (int s = 0; s < LEAF_SEGMENTS; ++s) {
+        const int t = (s + 1) % LEAF_SEGMENTS;
+        vertex(b, ctr, up, col);
+        vertex(b, p[s], up, col);
+        vertex(b, p[t], up, col);
+    }
+}
+
 ms_status ms_gl_discs_upload(ms_renderer *r)
 {
     ms_gl *gl = r->gl;
@@ -237,7 +269,8 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
     if (r->ndiscs == 0 && !r->has_boat)
         return MS_OK;
     enum { SEGMENTS = 10 };
-    const size_t verts = (size_t)r->ndiscs * SEGMENTS * 3 + (r->has_boat ? HULL_VERTICES : 0);
+    const size_t per = 3 * (size_t)MS_MAX((int)SEGMENTS, LEAF_SEGMENTS);
+    const size_t verts = (size_t)r->ndiscs * per + (r->has_boat ? HULL_VERTICES : 0);
     float *v = ms_alloc_array(verts, MS_POOL_STRIDE * sizeof(float));
     if (!v)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d discs", r->ndiscs);
@@ -247,6 +280,10 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
         const ms_render_disc *c = &r->discs[i];
         const float lift = 0.02f * c->radius; /* m: clear of the water it floats on */
         const float ctr[3] = {c->pos[0], c->pos[1], c->pos[2] + lift};
+        if (i < r->nleaves) {
+            leaf(&b, ctr, c->radius, c->color, (unsigned)i);
+            continue;
+        }
         for (int s = 0; s < SEGMENTS; ++s) {
             const float a0 = 6.2831853f * (float)s / SEGMENTS;
             const float a1 = 6.2831853f * (float)(s + 1) / SEGMENTS;

@@ -406,6 +406,7 @@ ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int
     if (n > 0)
         memcpy(r->discs, discs, (size_t)n * sizeof *discs);
     r->ndiscs = n;
+    r->nleaves = 0;
     r->discs_changed = 1;
     return MS_OK;
 }

@@ -125,6 +125,7 @@ struct ms_renderer {
     ms_render_disc *discs;  /* floating things, ms_renderer_set_discs */
     int ndiscs, discs_cap;
     int discs_changed;      /* the GL side must rebuild their vertices (and the boat's) */
+    int nleaves;            /* the first nleaves discs are the sim's floaters: drawn as leaves */
     int has_boat;           /* the scene's boat is drawn as a hull (draw_sim.c) */
     float boat_pos[3];      /* m, world: its centre at the water line */
     float boat_heading[2];  /* unit, x-y: where its bow points */
