@@ -222,7 +222,7 @@ int cmd_render(int argc, char **argv)
     }
     ms_status st = ms_renderer_create_desc(&d, &r);
     if (st != MS_OK) {
-        tool_error("render: %s", ms_last_error());
+        tool_error("%s", ms_last_error());
         rc = st == MS_ERR_INVALID_ARGUMENT || st == MS_ERR_PLUGIN ? EXIT_USAGE : EXIT_RUNTIME;
         goto done;
     }
