@@ -17,7 +17,7 @@ for ex in readme header; do
         exit 1
     fi
     ${CC:-cc} -std=c11 -Wall -Wextra -Werror -Iinclude "$tmp/$ex.c" "$build/lib/libmodesplit.a" \
-        $(pkg-config --libs jansson hdf5 libpng osmesa 2>/dev/null) -ldl -lpthread -lm \
+        ${MS_LIBS:-$(pkg-config --libs jansson hdf5 libpng osmesa 2>/dev/null) -ldl -lpthread -lm} \
         -o "$tmp/$ex"
     if ! "$tmp/$ex" > "$tmp/$ex.out" 2> "$tmp/$ex.err"; then
         echo "examples: the $ex example failed:" >&2

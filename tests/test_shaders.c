@@ -326,7 +326,15 @@ START_TEST(each_shader_compiles_and_draws_its_liquid)
     ck_assert_msg(lum[2] < 0.2f, "oil is not dark: %g", lum[2]);
     ck_assert_msg(c[3][0] > c[3][1] && c[3][1] > c[3][2], "honey is not amber: %g %g %g",
                   c[3][0], c[3][1], c[3][2]);
-    ck_assert(lum[1] > lum[0] && lum[0] > lum[2]);
+    ck_assert_msg(lum[1] > lum[0] && lum[0] > lum[2], "luma milk %g, water %g, oil %g", lum[1],
+                  lum[0], lum[2]);
+}
+END_TEST
+#else
+START_TEST(each_shader_compiles_and_draws_its_liquid)
+{
+    MS_SKIP("built without OSMesa: this case drives an OSMesa context directly (the "
+            "renderer's EGL path draws every shader in test_render)");
 }
 END_TEST
 #endif
@@ -340,9 +348,7 @@ static Suite *shaders_suite(void)
     tcase_add_test(tc, passes_match_what_each_shader_is);
     tcase_add_test(tc, each_shader_sets_exactly_its_own_uniforms);
     tcase_add_test(tc, bad_parameters_name_the_key);
-#if MS_HAVE_OSMESA
     tcase_add_test(tc, each_shader_compiles_and_draws_its_liquid);
-#endif
     suite_add_tcase(s, tc);
     return s;
 }

@@ -12,16 +12,18 @@ set -eu
 # OSMesa (off-screen GL); tests: Check, h5dump (hdf5-tools).
 PACKAGES="build-essential pkg-config libjansson-dev libhdf5-dev hdf5-tools libpng-dev \
 libosmesa6-dev check libsubunit-dev"
+# the ABI listing (`make check-abi`, issue 13) parses the headers with pycparser
+PACKAGES="$PACKAGES python3-pycparser"
+# the renderer's EGL context backend (issue 14): surfaceless Mesa
+PACKAGES="$PACKAGES libegl-dev libegl-mesa0"
 # the clients users run against the library's output, and what the viewer
 # and the study need: installed by `tools/deps.sh --ci` (.ci/run), left to
 # the user otherwise (the tests that need them report themselves skipped).
-# the ABI listing (`make check-abi`, issue 13) parses the headers with pycparser
-PACKAGES="$PACKAGES python3-pycparser"
 CI_PACKAGES="gnuplot-nox libsdl2-dev xvfb xauth xdotool x11-apps imagemagick ffmpeg \
 paraview python3-paraview python3-h5py python3-venv"
-# i15: valgrind and clang (the libFuzzer harnesses) run only in CI
-# (.ci/valgrind, .ci/fuzz): `make check` of a user without them must not
-# fail for their absence.
+# valgrind and clang (the libFuzzer harnesses) run only in CI (.ci/valgrind,
+# .ci/fuzz): `make check` of a user without them must not fail for their
+# absence.
 CI_PACKAGES="$CI_PACKAGES valgrind clang"
 
 if [ "${1:-}" = "--ci" ]; then

@@ -1,7 +1,8 @@
 /* ms_renderer: OSMesa off-screen rendering of the combined height field
  * (paper section 3.6): cubemap reflection and refraction mixed by Fresnel,
  * a caustics light map from Snell's law, shader plugins (water, milk, oil).
- * Every call returns MS_ERR_UNSUPPORTED in a build without OSMesa.
+ * The GL context is OSMesa's or EGL's (desc.backend); every call returns
+ * MS_ERR_UNSUPPORTED in a build with neither.
  *
  *     ms_renderer *r;
  *     if (ms_renderer_create_from_scene(scene, &r) != MS_OK) // its `render`
@@ -91,6 +92,11 @@ typedef struct ms_renderer_desc {
      * eye (so 1 whenever a cell covers 2 pixels or more). The caustics
      * always trace the full field. Default 0. */
     int mesh_step;
+    /* The GL context: "osmesa" (Mesa's off-screen library, gone from Mesa
+     * 25.1 on), "egl" (an EGL context without a surface: surfaceless Mesa,
+     * or a GPU's EGL) or "auto" (OSMesa, then EGL: the first this build
+     * has that works). NULL = "auto". */
+    const char *backend;
 } ms_renderer_desc;
 
 MS_API ms_renderer_desc ms_renderer_desc_default(void);
@@ -103,7 +109,8 @@ MS_API ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_des
 /* Validates every field (MS_ERR_INVALID_ARGUMENT naming it), loads the
  * shader plugin (MS_ERR_PLUGIN; a GLSL compile or link error carries the
  * info log), the cubemap (MS_ERR_IO, MS_ERR_PARSE), makes the GL context
- * (MS_ERR_UNSUPPORTED without OSMesa). */
+ * (MS_ERR_UNSUPPORTED without OSMesa or EGL, or when the backend asked for
+ * is not built or cannot make a context). */
 MS_API ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out);
 /* ms_renderer_desc_from_scene + ms_renderer_create_desc; a scene without a
  * `render` section is refused (it asks for no image). */
@@ -132,8 +139,11 @@ MS_API ms_status ms_renderer_create_in_context(const ms_renderer_desc *d, ms_ren
 
 /* Draws the sim's combined field (ms_sim_height, ms_sim_field_grid of
  * MS_FIELD_COMBINED) at ms_sim_time, with the sim's floaters (the first
- * MS_RENDER_MAX_DISCS) as leaves and the scene's boat as discs, replacing
- * any set by ms_renderer_set_discs. MS_ERR_STATE before the sim's first
+ * MS_RENDER_MAX_DISCS) as leaf discs, replacing any set by
+ * ms_renderer_set_discs, and the scene's boat as a small hull on its path
+ * (bow along its velocity). Where the sim up-samples an SPH field (eq. 20)
+ * the SPH part is shown by Catmull-Rom instead of bilinear interpolation
+ * (display only: no kinks at the SPH cells' edges). MS_ERR_STATE before the sim's first
  * step. The views it reads are the sim's: call it between steps. */
 MS_API ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim);
 /* Draws any height field: h holds g->nx * g->ny heights (m above the pool
@@ -141,6 +151,14 @@ MS_API ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim);
  * the shader's ms_time. A non-finite height is refused. */
 MS_API ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *g,
                                         double time);
+
+/* Draws a stored field (a run file's frame, `modesplit render`) with the
+ * objects of the scene it was run from at `time` s: the boat as a hull on
+ * its path, bow along its velocity. Floaters are not stored in run files:
+ * the discs set by ms_renderer_set_discs are kept. The same checks as
+ * ms_renderer_draw_field. */
+MS_API ms_status ms_renderer_draw_scene_field(ms_renderer *r, const ms_scene *sc, const float *h,
+                                              const ms_grid *g, double time);
 
 /* Moves the camera (the desc's eye, target, up, fov; the same checks). The
  * environment cubemap is drawn again for the new eye: about the cost of a
@@ -176,6 +194,7 @@ typedef struct ms_render_stats {
     double readback_ms;   /* pixels read back and flipped */
     double total_ms;      /* the whole last draw */
     int mesh_nx, mesh_ny; /* vertices of the last draw's mesh (mesh_step) */
+    const char *backend;  /* the GL context in use: "osmesa" or "egl" (static string) */
 } ms_render_stats;
 static inline ms_render_stats ms_render_stats_init(void)
 {
@@ -186,6 +205,13 @@ static inline ms_render_stats ms_render_stats_init(void)
 MS_API void ms_renderer_get_stats(const ms_renderer *r, ms_render_stats *out);
 MS_DEPRECATED("use ms_renderer_get_stats")
 MS_API void ms_renderer_stats(const ms_renderer *r, ms_render_stats *out);
+
+/* Writes the builtin procedural sky (the environment a renderer uses when
+ * its cubemap is "builtin") for a sun whose light travels along light_dir,
+ * as six size x size PNG faces px.png nx.png py.png ny.png pz.png nz.png
+ * in dir (created if missing), for a scene's render.cubemap to load or an
+ * artist to paint over. size in [16, 4096]. Needs no GL. */
+MS_API ms_status ms_sky_write_cubemap(const char *dir, int size, const float light_dir[3]);
 
 /* The caustics light map of the last draw (texels over the pool, row-major
  * from pool_min, 1 = unfocused light); NULL when it was not traced. */

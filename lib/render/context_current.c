@@ -1,7 +1,7 @@
 /* A renderer that draws with the caller's current GL context (a window's,
  * an engine's) instead of an OSMesa context of its own:
  * ms_renderer_create_in_context (render.h). Compiled in every build; without
- * OSMesa the call says the build has no OpenGL. Used by `modesplit view`, whose
+ * a GL backend the call says the build has no OpenGL. Used by `modesplit view`, whose
  * SDL window has a GLX context: the renderer's GL code then draws into the
  * window, not into a second renderer's buffer.
  *
@@ -21,23 +21,60 @@
 #include "core/internal.h"
 #include "render/render_internal.h"
 
-#if MS_HAVE_OSMESA
+#if MS_HAVE_GL
 #include "render/gl_internal.h"
 
 /* Set while ms_renderer_create_in_context runs ms_renderer_create_desc,
  * so the create path stays one (ms_gl_create reads it); per thread. */
 static _Thread_local int borrow_next;
-/* Set between begin and end of a borrowed context (ms_gl_context_end has
- * no argument). */
-static _Thread_local int borrowed_now;
 
 int ms_gl_borrow_requested(void)
 {
     return borrow_next;
 }
 
+/* The borrowed context as a backend of gl_context.c (ms_gl_backend): it is
+ * the caller's, so it is never made current, released or destroyed here;
+ * begin checks it is current and remembers where the frame goes. */
+static ms_status borrowed_create(ms_gl_context *c)
+{
+    (void)c;
+    return MS_OK;
+}
+
+static ms_status borrowed_begin(ms_gl_context *c)
+{
+    if (!glGetString(GL_VERSION))
+        return ms_fail(MS_ERR_STATE, "render: the renderer draws with the caller's OpenGL "
+                                     "context, and none is current in this thread");
+    GLint fbo = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
+    c->target_fbo = (GLuint)fbo;
+    return MS_OK;
+}
+
+static void borrowed_end(ms_gl_context *c)
+{
+    (void)c; /* the caller's context stays current */
+}
+
+static void borrowed_destroy(ms_gl_context *c)
+{
+    (void)c; /* the caller's; ms_gl_delete_objects deleted what the renderer made */
+}
+
+static const ms_gl_backend backend_borrowed = {
+    .name = "window",
+    .create = borrowed_create,
+    .begin = borrowed_begin,
+    .end = borrowed_end,
+    .destroy = borrowed_destroy,
+};
+
 ms_status ms_gl_context_borrow(ms_gl_context *c)
 {
+    c->backend = &backend_borrowed;
+    c->impl = NULL;
     c->borrowed = 1;
     c->target_fbo = 0;
     /* with no context current, Mesa's dispatch answers NULL */
@@ -46,25 +83,6 @@ ms_status ms_gl_context_borrow(ms_gl_context *c)
                                      "make the window's context current before "
                                      "ms_renderer_create_in_context");
     return MS_OK;
-}
-
-ms_status ms_gl_borrowed_begin(ms_gl_context *c)
-{
-    if (!glGetString(GL_VERSION))
-        return ms_fail(MS_ERR_STATE, "render: the renderer draws with the caller's OpenGL "
-                                     "context, and none is current in this thread");
-    GLint fbo = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &fbo);
-    c->target_fbo = (GLuint)fbo;
-    borrowed_now = 1;
-    return MS_OK;
-}
-
-int ms_gl_borrowed_end(void)
-{
-    int was = borrowed_now;
-    borrowed_now = 0;
-    return was;
 }
 
 void ms_gl_present(ms_renderer *r)
@@ -109,7 +127,7 @@ ms_status ms_renderer_create_in_context(const ms_renderer_desc *d, ms_renderer *
     if (out)
         *out = NULL;
     return ms_fail(MS_ERR_UNSUPPORTED,
-                   "render: this build of libmodesplit has no OpenGL (OSMesa); install "
-                   "libosmesa6-dev and rebuild to draw into a window");
+                   "render: this build of libmodesplit has no OpenGL (OSMesa or EGL); "
+                   "install libegl-dev (or libosmesa6-dev) and rebuild to draw into a window");
 }
 #endif

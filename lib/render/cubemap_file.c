@@ -3,6 +3,8 @@
  * one PNG of the six faces stacked top to bottom in that order. Faces are
  * taken as they are (sRGB, OpenGL's cube map layout); grey or paletted
  * PNGs are converted to RGBA by libpng. */
+#include <errno.h>
+#include <math.h>
 #include <png.h>
 #include <stdio.h>
 #include <string.h>
@@ -139,5 +141,66 @@ ms_status ms_cubemap_load(const char *path, ms_cubemap *out)
     ms_status st = S_ISDIR(sb.st_mode) ? load_dir(path, out) : load_strip(path, out);
     if (st != MS_OK)
         ms_cubemap_free(out);
+    return st;
+}
+
+ms_status ms_sky_write_cubemap(const char *dir, int size, const float light_dir[3])
+{
+    ms_status st;
+    if ((st = ms_check_not_null("render", "dir", dir)) != MS_OK ||
+        (st = ms_check_not_null("render", "light_dir", light_dir)) != MS_OK ||
+        (st = ms_check_int_range("render", "cubemap size", size, 16, MAX_FACE)) != MS_OK)
+        return st;
+    for (int k = 0; k < 3; ++k)
+        if ((st = ms_check_range("render", "light_dir", light_dir[k], -1e6, 1e6, "")) != MS_OK)
+            return st;
+    double l = sqrt((double)light_dir[0] * light_dir[0] + (double)light_dir[1] * light_dir[1] +
+                    (double)light_dir[2] * light_dir[2]);
+    if (!(l > 1e-6))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: light_dir [%g, %g, %g] is the zero vector; it must be a "
+                       "direction",
+                       (double)light_dir[0], (double)light_dir[1], (double)light_dir[2]);
+    if (!*dir)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "render: cubemap directory \"\" is empty");
+    /* dir and its parents, as mkdir -p */
+    size_t dn = strlen(dir);
+    char *p = ms_alloc(dn + 1);
+    if (!p)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for a file name");
+    memcpy(p, dir, dn + 1);
+    int err = 0;
+    for (size_t i = 1; i <= dn && !err; ++i)
+        if (p[i] == '/' || p[i] == '\0') {
+            char c = p[i];
+            p[i] = '\0';
+            if (mkdir(p, 0777) != 0 && errno != EEXIST)
+                err = errno;
+            p[i] = c;
+        }
+    ms_free(p);
+    struct stat sb;
+    if (!err && (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode)))
+        err = ENOTDIR;
+    if (err)
+        return ms_fail(MS_ERR_IO, "render: cannot create the cubemap directory \"%s\": %s", dir,
+                       strerror(err));
+    const float unit[3] = {(float)(light_dir[0] / l), (float)(light_dir[1] / l),
+                           (float)(light_dir[2] / l)};
+    ms_cubemap sky = {0, {NULL}};
+    if ((st = ms_sky_builtin(size, unit, &sky)) != MS_OK)
+        return st;
+    for (int f = 0; f < 6 && st == MS_OK; ++f) {
+        size_t n = strlen(dir) + 16;
+        char *path = ms_alloc(n);
+        if (!path) {
+            st = ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for a file name");
+            break;
+        }
+        snprintf(path, n, "%s/%s.png", dir, short_names[f]);
+        st = ms_png_write_rgba(path, sky.face[f], size, size);
+        ms_free(path);
+    }
+    ms_cubemap_free(&sky);
     return st;
 }

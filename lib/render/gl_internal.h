@@ -1,12 +1,12 @@
-/* The GL side of the renderer (compiled only with OSMesa): what the gl_*.c
- * files share. One OSMesa context per renderer, made current for each call
- * and released after it; drawing goes to an sRGB framebuffer object of the
- * image's size, read back at the end of the frame. */
+/* The GL side of the renderer (compiled only with OSMesa or EGL): what the
+ * gl_*.c files share. One context per renderer (OSMesa or EGL, behind
+ * ms_gl_backend), made current for each call and released after it;
+ * drawing goes to an sRGB framebuffer object of the image's size, read
+ * back at the end of the frame. */
 #ifndef MS_RENDER_GL_INTERNAL_H
 #define MS_RENDER_GL_INTERNAL_H
 
 #define GL_GLEXT_PROTOTYPES 1
-#include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -34,16 +34,50 @@ void ms_gl_program_free(ms_gl_program *p);
 /* The table a shader plugin sets its uniforms through (bound program). */
 ms_shader_uniforms ms_gl_uniform_table(ms_gl_program *p);
 
-/* The OSMesa context (gl_context.c). */
-typedef struct ms_gl_context {
-    OSMesaContext ctx;
-    unsigned char buffer[16 * 16 * 4]; /* the context's own (unused) framebuffer */
-    int borrowed;         /* 1: the caller's current context (context_current.c) */
-    GLuint target_fbo;    /* borrowed: the framebuffer a frame is copied to */
-} ms_gl_context;
+/* Mesa keeps some allocations for the life of the process (OSMesa's
+ * framebuffers, EGL's display state): under AddressSanitizer the leak
+ * checker looks away while Mesa makes them. */
+#if defined(__SANITIZE_ADDRESS__)
+#include <sanitizer/lsan_interface.h>
+#define MS_MESA_LEAKS_BEGIN() __lsan_disable()
+#define MS_MESA_LEAKS_END() __lsan_enable()
+#else
+#define MS_MESA_LEAKS_BEGIN() ((void)0)
+#define MS_MESA_LEAKS_END() ((void)0)
+#endif
 
-ms_status ms_gl_context_create(ms_gl_context *c);
-/* Makes c current in this thread; MS_ERR_UNSUPPORTED if OSMesa refuses. */
+/* The GL context (gl_context.c) and its backends: one file each
+ * (gl_context_osmesa.c, gl_context_egl.c); another (a window's context)
+ * slots in with the same four calls. */
+typedef struct ms_gl_context ms_gl_context;
+typedef struct ms_gl_backend {
+    const char *name; /* the render.backend value that picks it */
+    /* makes c->impl; MS_ERR_UNSUPPORTED with a sentence when it cannot */
+    ms_status (*create)(ms_gl_context *c);
+    ms_status (*begin)(ms_gl_context *c); /* current in this thread */
+    void (*end)(ms_gl_context *c);        /* released */
+    void (*destroy)(ms_gl_context *c);
+} ms_gl_backend;
+#if MS_HAVE_OSMESA
+extern const ms_gl_backend ms_gl_backend_osmesa;
+#endif
+#if MS_HAVE_EGL
+extern const ms_gl_backend ms_gl_backend_egl;
+#endif
+
+struct ms_gl_context {
+    const ms_gl_backend *backend; /* NULL until created */
+    void *impl;                   /* the backend's */
+    int borrowed;                 /* 1: the caller's current context (context_current.c) */
+    GLuint target_fbo;            /* borrowed: the framebuffer a frame is copied to */
+};
+
+/* The backends of this build, as a list for sentences. */
+const char *ms_gl_backends_built(void);
+/* want: "auto" (or NULL: the built backends in turn, OSMesa first),
+ * "osmesa" or "egl"; MS_ERR_UNSUPPORTED naming why when none can. */
+ms_status ms_gl_context_create(ms_gl_context *c, const char *want);
+/* Makes c current in this thread; MS_ERR_UNSUPPORTED if the backend refuses. */
 ms_status ms_gl_context_begin(ms_gl_context *c);
 /* Releases the thread's current context. */
 void ms_gl_context_end(void);
@@ -51,14 +85,12 @@ void ms_gl_context_destroy(ms_gl_context *c);
 
 /* context_current.c: a context borrowed from the caller
  * (ms_renderer_create_in_context). borrow_requested: the renderer being
- * created asks for it; borrowed_begin: remember where frames go;
- * borrowed_end: 1 if the thread's context was borrowed (then it stays
+ * created asks for it; context_borrow: c becomes the caller's context
+ * (a backend of its own: begin remembers where frames go, end leaves it
  * current); present: the frame into the caller's framebuffer; delete_objects:
  * the renderer's GL objects (a borrowed context outlives the renderer). */
 int ms_gl_borrow_requested(void);
 ms_status ms_gl_context_borrow(ms_gl_context *c);
-ms_status ms_gl_borrowed_begin(ms_gl_context *c);
-int ms_gl_borrowed_end(void);
 
 void ms_gl_present(ms_renderer *r);
 void ms_gl_delete_objects(ms_gl *gl);

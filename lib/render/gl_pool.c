@@ -179,15 +179,98 @@ ms_status ms_gl_pool_create(ms_renderer *r)
     return ms_gl_check("making the pool");
 }
 
+/* Vertices of the boat's hull (gl_pool.c's triangles) */
+#define HULL_POINTS 7
+#define HULL_VERTICES (HULL_POINTS * 3 + HULL_POINTS * 6)
+
+/* The boat as a small hull: a pointed deck outline (bow along heading), a
+ * wooden deck at the freeboard, white sides down to below the water line,
+ * lit like the pool. */
+static void hull(builder *b, const ms_renderer *r)
+{
+    static const float white[3] = {0.85f, 0.83f, 0.78f}, wood[3] = {0.45f, 0.28f, 0.12f};
+    static const float up[3] = {0, 0, 1};
+    /* the deck outline in (forward, left) units of (half length, half beam) */
+    static const float outline[HULL_POINTS][2] = {{1.0f, 0.0f},    {0.35f, 1.0f}, {-0.85f, 0.85f},
+                                                  {-1.0f, 0.7f},   {-1.0f, -0.7f},
+                                                  {-0.85f, -0.85f}, {0.35f, -1.0f}};
+    const float L = r->boat_radius, B = 0.42f * L, H = 0.35f * L, D = 0.2f * L;
+    const float f[2] = {r->boat_heading[0], r->boat_heading[1]}, l[2] = {-f[1], f[0]};
+    const float *c = r->boat_pos;
+    float top[HULL_POINTS][3], bot[HULL_POINTS][3];
+    for (int i = 0; i < HULL_POINTS; ++i) {
+        const float u = outline[i][0] * L, v = outline[i][1] * B;
+        top[i][0] = c[0] + u * f[0] + v * l[0];
+        top[i][1] = c[1] + u * f[1] + v * l[1];
+        top[i][2] = c[2] + H;
+        bot[i][0] = c[0] + 0.85f * (u * f[0] + v * l[0]);
+        bot[i][1] = c[1] + 0.85f * (u * f[1] + v * l[1]);
+        bot[i][2] = c[2] - D;
+    }
+    const float mid[3] = {c[0] - 0.1f * L * f[0], c[1] - 0.1f * L * f[1], c[2] + H};
+    for (int i = 0; i < HULL_POINTS; ++i) {
+        const int j = (i + 1) % HULL_POINTS;
+        vertex(b, mid, up, wood);
+        vertex(b, top[i], up, wood);
+        vertex(b, top[j], up, wood);
+        /* the side between outline points i and j: its outward normal */
+        float ex = top[j][0] - top[i][0], ey = top[j][1] - top[i][1];
+        float ln = sqrtf(ex * ex + ey * ey);
+        float nrm[3] = {ln > 0 ? -ey / ln : 0, ln > 0 ? ex / ln : 0, 0};
+        /* the outline runs counter-clockwise seen from above: outward is
+         * to the right of the edge */
+        nrm[0] = -nrm[0], nrm[1] = -nrm[1];
+        vertex(b, top[i], nrm, white);
+        vertex(b, bot[i], nrm, white);
+        vertex(b, bot[j], nrm, white);
+        vertex(b, top[i], nrm, white);
+        vertex(b, bot[j], nrm, white);
+        vertex(b, top[j], nrm, white);
+    }
+}
+
+/* A floating leaf (the sim's floaters, Fig. 10): a pointed blade of
+ * length 2 radius and half that width, turned and tinted by a hash of its
+ * index (deterministic): LEAF_SEGMENTS triangles about its centre. */
+#define LEAF_SEGMENTS 12
+static void leaf(builder *b, const float ctr[3], float radius, const float color[3], unsigned i)
+{
+    static const float up[3] = {0, 0, 1};
+    unsigned hsh = i * 2654435761u;
+    hsh ^= hsh >> 15;
+    const float turn = 6.2831853f * (float)(hsh & 1023u) / 1024.0f;
+    const float tint = 0.8f + 0.4f * (float)((hsh >> 10) & 255u) / 255.0f;
+    const float col[3] = {MS_MIN(color[0] * tint, 1.0f), MS_MIN(color[1] * tint, 1.0f),
+                          MS_MIN(color[2] * tint, 1.0f)};
+    const float ca = cosf(turn), sa = sinf(turn);
+    float p[LEAF_SEGMENTS][3];
+    for (int s = 0; s < LEAF_SEGMENTS; ++s) {
+        const float a = 6.2831853f * (float)s / LEAF_SEGMENTS;
+        /* pointed at both tips: the width goes as |sin a|^1.5 */
+        const float x = radius * cosf(a), sn = sinf(a);
+        const float y = 0.5f * radius * sn * sqrtf(fabsf(sn));
+        p[s][0] = ctr[0] + ca * x - sa * y;
+        p[s][1] = ctr[1] + sa * x + ca * y;
+        p[s][2] = ctr[2];
+    }
+    for (int s = 0; s < LEAF_SEGMENTS; ++s) {
+        const int t = (s + 1) % LEAF_SEGMENTS;
+        vertex(b, ctr, up, col);
+        vertex(b, p[s], up, col);
+        vertex(b, p[t], up, col);
+    }
+}
+
 ms_status ms_gl_discs_upload(ms_renderer *r)
 {
     ms_gl *gl = r->gl;
     r->discs_changed = 0;
     gl->discs_count = 0;
-    if (r->ndiscs == 0)
+    if (r->ndiscs == 0 && !r->has_boat)
         return MS_OK;
     enum { SEGMENTS = 10 };
-    const size_t verts = (size_t)r->ndiscs * SEGMENTS * 3;
+    const size_t per = 3 * (size_t)MS_MAX((int)SEGMENTS, LEAF_SEGMENTS);
+    const size_t verts = (size_t)r->ndiscs * per + (r->has_boat ? HULL_VERTICES : 0);
     float *v = ms_alloc_array(verts, MS_POOL_STRIDE * sizeof(float));
     if (!v)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d discs", r->ndiscs);
@@ -197,6 +280,10 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
         const ms_render_disc *c = &r->discs[i];
         const float lift = 0.02f * c->radius; /* m: clear of the water it floats on */
         const float ctr[3] = {c->pos[0], c->pos[1], c->pos[2] + lift};
+        if (i < r->nleaves) {
+            leaf(&b, ctr, c->radius, c->color, (unsigned)i);
+            continue;
+        }
         for (int s = 0; s < SEGMENTS; ++s) {
             const float a0 = 6.2831853f * (float)s / SEGMENTS;
             const float a1 = 6.2831853f * (float)(s + 1) / SEGMENTS;
@@ -209,6 +296,8 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
             vertex(&b, p1, up, c->color);
         }
     }
+    if (r->has_boat)
+        hull(&b, r);
     if (!gl->discs_vbo)
         glGenBuffers(1, &gl->discs_vbo);
     glBindBuffer(GL_ARRAY_BUFFER, gl->discs_vbo);
@@ -246,7 +335,7 @@ void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
     glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(6 * sizeof(float)));
     glColorPointer(3, GL_FLOAT, stride, (const void *)(8 * sizeof(float)));
     glDrawArrays(GL_TRIANGLES, 0, keep < 0 ? gl->pool_apron_count : gl->pool_count);
-    if (keep == 0 && r->ndiscs > 0 && gl->discs_count > 0) {
+    if (keep == 0 && gl->discs_count > 0) {
         /* the floating discs: untextured, lifted off the water by the
          * depth offset */
         glUniform1f(glGetUniformLocation(p, "u_textured"), 0.0f);

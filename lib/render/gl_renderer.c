@@ -96,9 +96,10 @@ ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky)
     r->gl = gl;
     r->in_context = ms_gl_borrow_requested();
     ms_status st = r->in_context ? ms_gl_context_borrow(&gl->context)
-                                 : ms_gl_context_create(&gl->context);
+                                 : ms_gl_context_create(&gl->context, r->desc.backend);
     if (st != MS_OK)
         return st;
+    r->stats.backend = gl->context.backend->name;
     if ((st = ms_gl_context_begin(&gl->context)) != MS_OK)
         return st;
     st = build(r, sky);

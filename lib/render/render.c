@@ -40,6 +40,7 @@ ms_renderer_desc ms_renderer_desc_default(void)
         .tile_size = 0.0f,
         .floor_color = {0.30f, 0.52f, 0.60f},
         .mesh_step = 0,
+        .backend = "auto",
     };
     return d;
 }
@@ -81,6 +82,7 @@ ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out)
         memcpy(d.target, r->target, sizeof d.target);
         memcpy(d.up, r->up, sizeof d.up);
         d.fov = r->fov;
+        d.backend = ms_scene_render_backends[r->backend];
     } else {
         /* the scene's default camera: the domain's centre from the -y side */
         float ext = 0;
@@ -162,6 +164,12 @@ static ms_status check_desc(const ms_renderer_desc *d)
     if (!d->shader[0])
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "render: shader \"\" is empty; name a shader "
                                                 "plugin (\"water\", \"milk\", \"oil\")");
+    if (d->backend && strcmp(d->backend, "auto") != 0 && strcmp(d->backend, "osmesa") != 0 &&
+        strcmp(d->backend, "egl") != 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: backend \"%.40s\" is unknown; allowed: \"auto\", \"osmesa\", "
+                       "\"egl\"",
+                       d->backend);
     if (!d->cubemap[0])
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "render: cubemap \"\" is empty; allowed: \"builtin\", a directory of "
@@ -197,7 +205,7 @@ static ms_status check_desc(const ms_renderer_desc *d)
     return check_camera(d->eye, d->target, d->up, d->fov);
 }
 
-#if MS_HAVE_OSMESA
+#if MS_HAVE_GL
 static char *dup_or_null(const char *s)
 {
     if (!s)
@@ -210,7 +218,7 @@ static char *dup_or_null(const char *s)
 }
 #endif
 
-#if MS_HAVE_OSMESA
+#if MS_HAVE_GL
 /* Texels per side of the builtin sky's faces: about half the image's
  * longer side (a face spans 90 degrees, the clouds are soft), a power of
  * two in [32, 512]. */
@@ -234,10 +242,11 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
         (st = check_desc(&desc)) != MS_OK)
         return st;
     d = &desc;
-#if !MS_HAVE_OSMESA
+#if !MS_HAVE_GL
     return ms_fail(MS_ERR_UNSUPPORTED,
-                   "render: this build of libmodesplit has no OSMesa (off-screen OpenGL); "
-                   "install libosmesa6-dev and rebuild to render images");
+                   "render: this build of libmodesplit has no OpenGL context backend "
+                   "(OSMesa or EGL); install libegl-dev (or libosmesa6-dev) and rebuild to "
+                   "render images");
 #else
     ms_renderer *r = ms_alloc(sizeof *r);
     if (!r)
@@ -246,9 +255,10 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
     r->shader_name = dup_or_null(d->shader);
     r->shader_params = dup_or_null(d->shader_params);
     r->cubemap_path = dup_or_null(d->cubemap);
+    r->backend_name = dup_or_null(d->backend ? d->backend : "auto");
     r->pixels = ms_alloc_array((size_t)d->width * (size_t)d->height, 4);
     if (!r->shader_name || (d->shader_params && !r->shader_params) || !r->cubemap_path ||
-        !r->pixels) {
+        !r->backend_name || !r->pixels) {
         ms_renderer_destroy(r);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for a %d x %d image",
                        d->width, d->height);
@@ -256,6 +266,7 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
     r->desc.shader = r->shader_name;
     r->desc.shader_params = r->shader_params;
     r->desc.cubemap = r->cubemap_path;
+    r->desc.backend = r->backend_name;
     double ln = norm3(d->light_dir);
     for (int k = 0; k < 3; ++k) {
         r->desc.light_dir[k] = (float)(d->light_dir[k] / ln);
@@ -322,16 +333,18 @@ void ms_renderer_destroy(ms_renderer *r)
 {
     if (!r)
         return;
-#if MS_HAVE_OSMESA
+#if MS_HAVE_GL
     ms_gl_destroy(r->gl);
 #endif
     ms_shader_instance_destroy(&r->shader);
     ms_caustics_free(&r->caustics);
     ms_free(r->discs);
+    ms_free(r->display);
     ms_free(r->pixels);
     ms_free(r->shader_name);
     ms_free(r->shader_params);
     ms_free(r->cubemap_path);
+    ms_free(r->backend_name);
     ms_free(r);
 }
 
@@ -359,7 +372,7 @@ ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *
                        "render: height %g m at cell (%ld, %ld) is not finite; every height "
                        "must be a finite number",
                        (double)h[bad], bad % g->nx, bad / g->nx);
-#if MS_HAVE_OSMESA
+#if MS_HAVE_GL
     double t0 = ms_now();
     st = ms_gl_draw(r, h, g, time);
     if (st != MS_OK)
@@ -369,7 +382,7 @@ ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *
     r->stats.total_ms = 1e3 * (ms_now() - t0);
     return MS_OK;
 #else
-    return ms_fail(MS_ERR_UNSUPPORTED, "render: this build has no OSMesa");
+    return ms_fail(MS_ERR_UNSUPPORTED, "render: this build has no OpenGL (OSMesa or EGL)");
 #endif
 }
 
@@ -406,6 +419,7 @@ ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int
     if (n > 0)
         memcpy(r->discs, discs, (size_t)n * sizeof *discs);
     r->ndiscs = n;
+    r->nleaves = 0;
     r->discs_changed = 1;
     return MS_OK;
 }
@@ -425,7 +439,7 @@ ms_status ms_renderer_set_camera(ms_renderer *r, const float eye[3], const float
     memcpy(r->desc.target, target, sizeof r->desc.target);
     memcpy(r->desc.up, up, sizeof r->desc.up);
     r->desc.fov = fov;
-#if MS_HAVE_OSMESA
+#if MS_HAVE_GL
     if ((st = ms_gl_camera_moved(r)) != MS_OK) {
         r->desc = old;
         return st;

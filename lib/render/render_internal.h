@@ -5,7 +5,7 @@
  * mesh.c: the height-field mesh and its normals by central differences;
  * sky.c: the builtin procedural sky; cubemap_file.c: cubemap faces from PNG
  * files; tiles.c: the pool's tile texture; png_out.c: the PNG writer), and
- * the GL side, compiled only with OSMesa (gl_*.c: context, programs, the
+ * the GL side, compiled only with OSMesa or EGL (gl_*.c: context, programs, the
  * pool and sky geometry, the refraction cubemap, the frame).
  *
  * Implements: Snell's law (n1 sin t1 = n2 sin t2) in vector form for the
@@ -114,7 +114,7 @@ typedef struct ms_gl ms_gl; /* the GL side (gl_*.c) */
 
 struct ms_renderer {
     ms_renderer_desc desc;  /* checked; strings below are owned copies */
-    char *shader_name, *shader_params, *cubemap_path;
+    char *shader_name, *shader_params, *cubemap_path, *backend_name;
     float light_to[3];      /* unit vector towards the light */
     float rim_z;            /* m */
     float tile_size;        /* m, resolved */
@@ -124,7 +124,14 @@ struct ms_renderer {
     ms_caustics caustics;
     ms_render_disc *discs;  /* floating things, ms_renderer_set_discs */
     int ndiscs, discs_cap;
-    int discs_changed;      /* the GL side must rebuild their vertices */
+    int discs_changed;      /* the GL side must rebuild their vertices (and the boat's) */
+    int nleaves;            /* the first nleaves discs are the sim's floaters: drawn as leaves */
+    int has_boat;           /* the scene's boat is drawn as a hull (draw_sim.c) */
+    float boat_pos[3];      /* m, world: its centre at the water line */
+    float boat_heading[2];  /* unit, x-y: where its bow points */
+    float boat_radius;      /* m: half its length */
+    float *display;         /* the field drawn by ms_renderer_draw (draw_sim.c) and scratch */
+    size_t display_cap;     /* floats */
     unsigned char *pixels;  /* width * height * 4, top row first */
     int have_frame;
     ms_render_stats stats;
@@ -132,7 +139,7 @@ struct ms_renderer {
     int in_context;         /* 1: the caller's GL context (context_current.c) */
 };
 
-#if MS_HAVE_OSMESA
+#if MS_HAVE_GL
 /* gl_renderer.c: make the GL side for r (desc checked, shader and passes
  * set); on failure r->gl stays NULL and the error is set. */
 ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky);

@@ -82,36 +82,61 @@ static float smoothstepf(float a, float b, float x)
     return t * t * (3 - 2 * t);
 }
 
-/* Linear RGB of the sky in unit direction d; sun = unit vector to the sun. */
+/* Linear RGB of the sky in unit direction d; sun = unit vector to the sun.
+ * Above the horizon: a zenith-to-horizon gradient that warms as the sun
+ * sinks, clouds on a plane above (value-noise fbm, lit on the sun's side),
+ * the sun's glow and disc. Below: a lawn with patches and a dark tree line
+ * along the horizon, so reflections and the frame's background carry an
+ * environment, not one colour. */
 static void sky_color(const float d[3], const float sun[3], float rgb[3])
 {
     static const float zenith[3] = {0.08f, 0.22f, 0.62f}, horizon[3] = {0.52f, 0.68f, 0.88f};
-    static const float ground_near[3] = {0.30f, 0.31f, 0.25f}, ground_far[3] = {0.13f, 0.15f,
-                                                                                0.10f};
-    float z = d[2];
+    static const float dusk[3] = {0.95f, 0.55f, 0.30f};
+    static const float grass[3] = {0.10f, 0.20f, 0.05f}, dry[3] = {0.24f, 0.26f, 0.10f};
+    static const float trees[3] = {0.03f, 0.07f, 0.03f};
+    const float z = d[2];
+    const float low = 1.0f - smoothstepf(0.05f, 0.45f, sun[2]); /* 1: the sun near the horizon */
+    const float az = atan2f(d[1], d[0]);
+    /* the tree line: its top wanders between 1 and 4 degrees */
+    const float tree_top = 0.018f + 0.05f * fbm(3.0f * cosf(az) + 7.0f, 3.0f * sinf(az) + 3.0f);
     if (z >= 0) {
         float k = powf(1.0f - z, 2.5f);
-        for (int c = 0; c < 3; ++c)
+        float cs = d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2];
+        float warm = low * powf(MS_MAX(cs, 0.0f), 3.0f) * k;
+        for (int c = 0; c < 3; ++c) {
             rgb[c] = zenith[c] + (horizon[c] - zenith[c]) * k;
+            rgb[c] += (dusk[c] - rgb[c]) * warm;
+        }
         if (z > 0.02f) {
             /* clouds on a plane above: denser patches, thinning at the horizon */
             float px = 1.5f * d[0] / z, py = 1.5f * d[1] / z;
             float dens = smoothstepf(0.5f, 0.78f, fbm(px, py)) * smoothstepf(0.02f, 0.25f, z);
+            float lit = 0.75f + 0.25f * MS_MAX(cs, 0.0f);
+            for (int c = 0; c < 3; ++c) {
+                float cloud = lit * (0.9f + (dusk[c] - 0.9f) * 0.6f * low);
+                rgb[c] += (cloud - rgb[c]) * 0.85f * dens;
+            }
+        }
+        if (z < tree_top) {
             for (int c = 0; c < 3; ++c)
-                rgb[c] += (0.85f - rgb[c]) * 0.85f * dens;
+                rgb[c] = trees[c] * (0.8f + 0.4f * value_noise(40.0f * az, 40.0f * z));
         }
     } else {
-        float k = sqrtf(-z);
-        for (int c = 0; c < 3; ++c)
-            rgb[c] = ground_near[c] + (ground_far[c] - ground_near[c]) * k;
+        /* the lawn seen on a plane below: patches, fading into haze far off */
+        float px = 2.0f * d[0] / -z, py = 2.0f * d[1] / -z;
+        float patch = fbm(px, py), haze = expf(-8.0f * -z);
+        for (int c = 0; c < 3; ++c) {
+            float g = grass[c] + (dry[c] - grass[c]) * patch;
+            rgb[c] = g + (0.35f * horizon[c] - g) * 0.5f * haze;
+        }
     }
     if (sun[2] > 0 && z > 0) {
         float cs = d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2];
         if (cs > 0) {
             float glow = 0.5f * powf(cs, 64.0f) + (cs > 0.99985f ? 4.0f : 0.0f);
             rgb[0] += glow;
-            rgb[1] += 0.92f * glow;
-            rgb[2] += 0.75f * glow;
+            rgb[1] += (0.92f - 0.25f * low) * glow;
+            rgb[2] += (0.75f - 0.4f * low) * glow;
         }
     }
 }

@@ -65,7 +65,11 @@ typedef struct ms_scene_render {
     float light_dir[3];       /* unit vector, towards where the light goes */
     float eye[3], target[3], up[3]; /* m, camera */
     float fov;                /* degrees, vertical */
+    int backend;              /* index in ms_scene_render_backends: the GL context */
 } ms_scene_render;
+
+/* render.backend's names: "auto", "osmesa", "egl" (NULL-terminated). */
+extern const char *const ms_scene_render_backends[];
 
 struct ms_scene {
     char *text;    /* the JSON text, NUL-terminated */

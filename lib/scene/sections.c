@@ -642,10 +642,12 @@ static ms_status read_effects(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     return MS_OK;
 }
 
+const char *const ms_scene_render_backends[] = {"auto", "osmesa", "egl", NULL};
+
 static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir)
 {
     static const char *const keys[] = {"width", "height", "shader", "cubemap", "caustics",
-                                       "camera", NULL};
+                                       "camera", "backend", NULL};
     static const char *const ckeys[] = {"resolution", "intensity", "light", NULL};
     static const char *const camkeys[] = {"eye", "target", "up", "fov", NULL};
     static const float light[3] = {0.3f, 0.2f, -1.0f}, up[3] = {0, 0, 1};
@@ -666,6 +668,7 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
     TRY(ms_scene_get_string(c, o, "shader", "water", &shader));
     TRY(check_shader(c, shader));
     TRY(ms_scene_get_string(c, o, "cubemap", "builtin", &cubemap));
+    TRY(ms_scene_get_enum(c, o, "backend", ms_scene_render_backends, 0, &r->backend));
     r->shader = dup_string(shader);
     if (strcmp(cubemap, "builtin") == 0) {
         r->cubemap = dup_string(cubemap);

@@ -25,6 +25,23 @@
     "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"                             \
     "}\n"
 
+/* The display transform every shipped fragment program ends with: the
+ * program shades in linear light, ms_tonemap compresses what lies above
+ * MS_TONEMAP_KNEE (0.6) smoothly towards 1 (a per-channel exponential
+ * shoulder, value and slope continuous at the knee), so bright liquid such
+ * as milk keeps its shading instead of clipping at white; the renderer's
+ * sRGB framebuffer then applies the sRGB curve. Below the knee it is the
+ * identity, so water and the pool keep their physical (linear) values.
+ * Put it after "#version" in a fragment source. */
+#define SHADER_TONEMAP_SOURCE                                                                   \
+    "vec3 ms_tonemap(vec3 c)\n"                                                                 \
+    "{\n"                                                                                       \
+    "    const float knee = 0.6;\n"                                                             \
+    "    vec3 x = max(c, vec3(0.0));\n"                                                         \
+    "    vec3 s = knee + (1.0 - knee) * (1.0 - exp(-(x - knee) / (1.0 - knee)));\n"            \
+    "    return mix(x, s, step(vec3(knee), x));\n"                                              \
+    "}\n"
+
 /* A heap copy of the size bytes of parsed parameters at parsed, in *out
  * (the shader's self); MS_PLUGIN_ERR_OUT_OF_MEMORY with err set if none. */
 static inline int shader_keep(const void *parsed, size_t size, void **out, char *err,

@@ -3,17 +3,21 @@
  * milk), a faint, broad sheen of the environment at grazing angles; no
  * refraction, no caustics.
  *
- * Parameters: {"color": [0.93, 0.92, 0.88], "softness": 0.6, "sheen": 0.35}
+ * Parameters: {"color": [0.93, 0.92, 0.88], "softness": 0.3, "sheen": 0.35,
+ *              "relief": 3}
  *   color     linear RGB, 0..1;
  *   softness  how far light wraps past the terminator, 0 (hard) .. 1;
- *   sheen     strength of the environment's reflection at grazing angles.
+ *   sheen     strength of the environment's reflection at grazing angles;
+ *   relief    how much the slopes shade the diffuse light, 0 .. 20 (1 =
+ *             physical; the default 3 lets millimetre ripples show on an
+ *             opaque liquid, as in the paper's Fig. 9b).
  */
 #include "../common/params.h"
 #include "../common/shader.h"
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n"
+    "#version 120\n" SHADER_TONEMAP_SOURCE
     "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
@@ -21,6 +25,7 @@ static const char fragment_source[] =
     "uniform vec3 milk_color;\n"
     "uniform float milk_softness;\n"
     "uniform float milk_sheen;\n"
+    "uniform float milk_relief;\n"
     "varying vec3 v_pos;\n"
     "varying vec3 v_normal;\n"
     "void main()\n"
@@ -29,32 +34,40 @@ static const char fragment_source[] =
     "    vec3 v = normalize(v_pos - ms_eye);\n"
     "    if (dot(n, v) > 0.0)\n"
     "        n = -n;\n"
-    "    float wrap = (dot(n, ms_light_dir) + milk_softness) / (1.0 + milk_softness);\n"
-    "    vec3 diffuse = milk_color * ms_light_color * clamp(wrap, 0.0, 1.0);\n"
-    "    vec3 ambient = milk_color * 0.3;\n"
+    "    /* the slopes scaled by milk_relief for the diffuse light only: an\n"
+    "     * opaque liquid shows its ripples by shading alone */\n"
+    "    vec3 nd = normalize(vec3(n.xy * milk_relief, n.z));\n"
+    "    float wrap = (dot(nd, ms_light_dir) + milk_softness) / (1.0 + milk_softness);\n"
+    "    /* milk's albedo under the sun (wrapped Lambert) and the sky, kept\n"
+    "     * near the tone map's knee so the slopes of the ripples show */\n"
+    "    vec3 diffuse = milk_color * ms_light_color * 0.75 * clamp(wrap, 0.0, 1.0);\n"
+    "    vec3 ambient = milk_color * 0.25;\n"
     "    float cosi = clamp(-dot(v, n), 0.0, 1.0);\n"
-    "    float sheen = milk_sheen * pow(1.0 - cosi, 3.0);\n"
+    "    /* Schlick with milk's index (about 1.35), broadened by milk_sheen */\n"
+    "    float fresnel = 0.022 + 0.978 * pow(1.0 - cosi, 5.0);\n"
+    "    float sheen = clamp(fresnel * (1.0 + 8.0 * milk_sheen), 0.0, 1.0);\n"
     "    vec3 env = textureCube(ms_env, reflect(v, n)).rgb;\n"
     "    vec3 h = normalize(ms_light_dir - v);\n"
-    "    vec3 spec = ms_light_color * 0.15 * pow(max(dot(n, h), 0.0), 24.0);\n"
-    "    gl_FragColor = vec4(mix(ambient + diffuse, env, sheen) + spec, 1.0);\n"
+    "    vec3 spec = ms_light_color * 0.5 * pow(max(dot(n, h), 0.0), 24.0);\n"
+    "    gl_FragColor = vec4(ms_tonemap(mix(ambient + diffuse, env, sheen) + spec), 1.0);\n"
     "}\n";
 
 typedef struct milk {
     float color[3];
-    float softness, sheen;
+    float softness, sheen, relief;
 } milk;
 
 static int milk_create(const char *json, void **out, char *err, size_t err_size)
 {
-    static const char *const keys[] = {"color", "softness", "sheen", NULL};
+    static const char *const keys[] = {"color", "softness", "sheen", "relief", NULL};
     static const float dcolor[3] = {0.93f, 0.92f, 0.88f};
-    milk m = {{0.93f, 0.92f, 0.88f}, 0.6f, 0.35f};
+    milk m = {{0.93f, 0.92f, 0.88f}, 0.3f, 0.35f, 3.0f};
     params pm;
     if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
         params_vec(&pm, "color", 3, m.color, dcolor, 0.0, 1.0, "");
         m.softness = params_number(&pm, "softness", m.softness, 0.0, 1.0, "");
         m.sheen = params_number(&pm, "sheen", m.sheen, 0.0, 1.0, "");
+        m.relief = params_number(&pm, "relief", m.relief, 0.0, 20.0, "");
     }
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
@@ -68,6 +81,7 @@ static void milk_set_uniforms(const void *self, const ms_shader_uniforms *u)
     u->set_vec3(u->ctx, "milk_color", m->color[0], m->color[1], m->color[2]);
     u->set_float(u->ctx, "milk_softness", m->softness);
     u->set_float(u->ctx, "milk_sheen", m->sheen);
+    u->set_float(u->ctx, "milk_relief", m->relief);
 }
 
 static const ms_shader_vtable milk_vtable = {

@@ -13,7 +13,7 @@
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n"
+    "#version 120\n" SHADER_TONEMAP_SOURCE
     "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
@@ -38,7 +38,7 @@ static const char fragment_source[] =
     "    vec3 h = normalize(ms_light_dir - v);\n"
     "    float norm = (oil_shininess + 8.0) / 25.0;\n"
     "    vec3 spec = ms_light_color * norm * pow(max(dot(n, h), 0.0), oil_shininess);\n"
-    "    gl_FragColor = vec4(mix(body, env, fresnel) + spec * (0.3 + fresnel), 1.0);\n"
+    "    gl_FragColor = vec4(ms_tonemap(mix(body, env, fresnel) + spec * fresnel * 2.0), 1.0);\n"
     "}\n";
 
 typedef struct oil {

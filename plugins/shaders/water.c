@@ -2,7 +2,9 @@
  * refraction looked up in the environment cubemap and mixed by the Fresnel
  * equations (Schlick's approximation), the refracted ray lit where it meets
  * the pool floor by the caustics light map, light absorbed along its path
- * under water, and a sun highlight.
+ * under water, and a sun highlight. Seen from below the surface: Snell's
+ * window (the sky within asin(1 / ior) of the normal) and total internal
+ * reflection outside it.
  *
  * Parameters: {"color": [0.02, 0.28, 0.33], "ior": 1.333, "caustics": 1.2,
  *              "clarity": 1.5}
@@ -16,7 +18,7 @@
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n"
+    "#version 120\n" SHADER_TONEMAP_SOURCE
     "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
@@ -34,13 +36,28 @@ static const char fragment_source[] =
     "{\n"
     "    vec3 n = normalize(v_normal);\n"
     "    vec3 v = normalize(v_pos - ms_eye);\n"
-    "    if (dot(n, v) > 0.0)\n"
+    "    /* seen from below (the eye under the surface): light leaves the\n"
+    "     * water, n1 = ior > n2 = 1; Snell's window, total internal\n"
+    "     * reflection outside it */\n"
+    "    bool under = dot(n, v) > 0.0;\n"
+    "    if (under)\n"
     "        n = -n;\n"
     "    float cosi = clamp(-dot(v, n), 0.0, 1.0);\n"
     "    float r0 = (1.0 - water_ior) / (1.0 + water_ior);\n"
     "    r0 *= r0;\n"
-    "    float fresnel = r0 + (1.0 - r0) * pow(1.0 - cosi, 5.0);\n"
     "    vec3 reflected = textureCube(ms_env, reflect(v, n)).rgb;\n"
+    "    if (under) {\n"
+    "        vec3 out_t = refract(v, n, water_ior);\n"
+    "        /* Schlick from the denser side takes the angle in air */\n"
+    "        float f = dot(out_t, out_t) == 0.0 ? 1.0\n"
+    "                : r0 + (1.0 - r0) * pow(1.0 - clamp(-dot(out_t, n), 0.0, 1.0), 5.0);\n"
+    "        vec3 sky = f < 1.0 ? textureCube(ms_env, out_t).rgb : vec3(0.0);\n"
+    "        /* the reflected ray runs back down through the water */\n"
+    "        reflected = mix(water_color, reflected, 0.8);\n"
+    "        gl_FragColor = vec4(ms_tonemap(mix(sky, reflected, f)), 1.0);\n"
+    "        return;\n"
+    "    }\n"
+    "    float fresnel = r0 + (1.0 - r0) * pow(1.0 - cosi, 5.0);\n"
     "    vec3 t = refract(v, n, 1.0 / water_ior);\n"
     "    float len = max(v_pos.z - ms_floor_z, 0.0) / max(-t.z, 0.05);\n"
     "    vec2 uv = (v_pos.xy + len * t.xy - ms_pool.xy) / ms_pool.zw;\n"
@@ -49,7 +66,7 @@ static const char fragment_source[] =
     "    below = mix(water_color, below, exp(-len / water_clarity));\n"
     "    vec3 h = normalize(ms_light_dir - v);\n"
     "    vec3 spec = ms_light_color * pow(max(dot(n, h), 0.0), 400.0) * fresnel * 4.0;\n"
-    "    gl_FragColor = vec4(mix(below, reflected, fresnel) + spec, 1.0);\n"
+    "    gl_FragColor = vec4(ms_tonemap(mix(below, reflected, fresnel) + spec), 1.0);\n"
     "}\n";
 
 typedef struct water {

@@ -9,6 +9,8 @@
  * machine's load average is printed with each row, since other work on the
  * cores slows it. Writes render.csv. */
 #include <math.h>
+#include <string.h>
+#include <unistd.h>
 
 #include "bench_common.h"
 #include "modesplit/modesplit.h"
@@ -36,13 +38,100 @@ static double loadavg(void)
     return l;
 }
 
+/* The paper's scenes as shipped (data/scenes/<name>.json, their render
+ * sections at 950 x 950): per frame the simulation step (ms_sim_step), the
+ * draw (ms_renderer_draw) and its stages, and the PNG encoding, medians
+ * over the frames after a warm-up; the whole frame rate is 1000 / (sim +
+ * draw) (PNG encoding can run off the render thread). Writes
+ * render_scenes.csv. Returns 0, or 1 on an error. */
+static int bench_scenes(int reps, const char *csv_dir, const char *commit, const char *machine,
+                        const char *lp)
+{
+    static const char *const names[4] = {"fig1", "fig9a", "fig9b", "fig10"};
+    FILE *csv = bench_csv_open(csv_dir, "render_scenes.csv",
+                               "commit,machine,lp_num_threads,scene,width,height,frames,"
+                               "sim_ms,draw_ms_median,draw_ms_p10,draw_ms_p90,mesh_ms,"
+                               "caustics_ms,gl_ms,readback_ms,png_ms,frame_fps,loadavg");
+    if (!csv)
+        return 1;
+    printf("\nscenes at their render size (950^2): ms per frame (median; draw p10-p90)\n");
+    printf("%-6s %7s %8s %13s %7s %9s %7s %9s %7s %9s\n", "scene", "sim", "draw", "(p10-p90)",
+           "mesh", "caustics", "GL", "readback", "png", "sim+draw");
+    const int warm = 5;
+    for (int k = 0; k < 4; ++k) {
+        char path[64], png[96];
+        snprintf(path, sizeof path, "data/scenes/%s.json", names[k]);
+        snprintf(png, sizeof png, "/tmp/bench_render_%d.png", (int)getpid());
+        ms_scene *sc = NULL;
+        ms_sim *sim = NULL;
+        ms_renderer *r = NULL;
+        if (ms_scene_load(path, &sc) != MS_OK || ms_sim_create_from_scene(sc, 0, &sim) != MS_OK ||
+            ms_renderer_create_from_scene(sc, &r) != MS_OK) {
+            fprintf(stderr, "bench_render: %s: %s (run from the source tree)\n", path,
+                    ms_last_error());
+            return 1;
+        }
+        const float dt = ms_scene_frame_dt(sc);
+        double simv[64], drawv[64], mesh[64], caus[64], gl[64], rb[64], pngv[64];
+        ms_render_stats st = ms_render_stats_init();
+        for (int f = 0; f < warm + reps; ++f) {
+            double t0 = bench_now();
+            if (ms_sim_step(sim, dt) != MS_OK) {
+                fprintf(stderr, "bench_render: %s: %s\n", path, ms_last_error());
+                return 1;
+            }
+            double t1 = bench_now();
+            if (ms_renderer_draw(r, sim) != MS_OK) {
+                fprintf(stderr, "bench_render: %s: %s\n", path, ms_last_error());
+                return 1;
+            }
+            double t2 = bench_now();
+            if (ms_renderer_write_png(r, png) != MS_OK) {
+                fprintf(stderr, "bench_render: %s\n", ms_last_error());
+                return 1;
+            }
+            double t3 = bench_now();
+            ms_renderer_get_stats(r, &st);
+            if (f >= warm) {
+                int i = f - warm;
+                simv[i] = 1e3 * (t1 - t0);
+                drawv[i] = 1e3 * (t2 - t1);
+                pngv[i] = 1e3 * (t3 - t2);
+                mesh[i] = st.mesh_ms;
+                caus[i] = st.caustics_ms;
+                gl[i] = st.draw_ms;
+                rb[i] = st.readback_ms;
+            }
+        }
+        remove(png);
+        bench_stats d = bench_summarise(drawv, reps);
+        double sm = bench_summarise(simv, reps).median, m = bench_summarise(mesh, reps).median;
+        double c = bench_summarise(caus, reps).median, g = bench_summarise(gl, reps).median;
+        double b = bench_summarise(rb, reps).median, pn = bench_summarise(pngv, reps).median;
+        double fps = 1e3 / (sm + d.median), load = loadavg();
+        printf("%-6s %7.1f %8.1f (%5.1f-%5.1f) %7.2f %9.2f %7.1f %9.2f %7.1f %5.1f fps\n",
+               names[k], sm, d.median, d.p10, d.p90, m, c, g, b, pn, fps);
+        fprintf(csv, "%s,%s,%s,%s,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f\n",
+                commit, machine, lp ? lp : "default", names[k], 950, 950, reps, sm, d.median,
+                d.p10, d.p90, m, c, g, b, pn, fps, load);
+        fflush(stdout);
+        ms_renderer_destroy(r);
+        ms_sim_destroy(sim);
+        ms_scene_destroy(sc);
+    }
+    fclose(csv);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
                    "usage: bench_render [--csv-dir DIR] [--quick]\n"
         "ms per frame of ms_renderer_draw_field (OSMesa) for 256^2, 512^2 and 950^2\n"
         "images of 200^2 and 400^2 fields, water shader with caustics (median,\n"
-        "10th-90th percentile, stages); writes DIR/render.csv (default DIR: bench).\n"))
+        "10th-90th percentile, stages); writes DIR/render.csv (default DIR: bench).\n"
+        "Then the shipped scenes fig1, fig9a, fig9b, fig10 at 950^2 (sim step, draw and its\n"
+        "split, PNG encoding): DIR/render_scenes.csv. --scenes: only those.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     const int reps = quick ? 3 : 8, warm = 2;
@@ -63,6 +152,11 @@ int main(int argc, char **argv)
         }
         ms_renderer_destroy(r);
     }
+    int scenes_only = 0;
+    for (int i = 1; i < argc; ++i)
+        scenes_only |= !strcmp(argv[i], "--scenes");
+    if (scenes_only)
+        return bench_scenes(quick ? 8 : 30, bench_csv_dir(argc, argv), commit, machine, lp);
     FILE *csv = bench_csv_open(bench_csv_dir(argc, argv), "render.csv",
                                "commit,machine,lp_num_threads,width,height,field,mesh_step,"
                                "mesh_vertices,frames,ms_median,ms_p10,ms_p90,mesh_ms,"
@@ -129,5 +223,5 @@ int main(int argc, char **argv)
         free(h);
     }
     fclose(csv);
-    return 0;
+    return bench_scenes(quick ? 8 : 30, bench_csv_dir(argc, argv), commit, machine, lp);
 }

@@ -217,6 +217,7 @@ int cmd_run(int argc, char **argv)
     }
     ms_grid grid;
     ms_sim_field_grid(sim, MS_FIELD_COMBINED, &grid);
+    png.sim = sim; /* the renderer draws the sim's floaters and boat too (issue 14) */
 
     running_sim = sim;
     catch_stop_signals();

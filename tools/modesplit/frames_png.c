@@ -102,7 +102,9 @@ int png_frame(tool_png *p, long index, const float *h, const ms_grid *g, double 
         return -1;
     snprintf(ppath, plen, "%s/frame_%05ld.png", p->dir, index);
     if (p->renderer) {
-        ms_status st = ms_renderer_draw_field(p->renderer, h, g, t);
+        /* with the sim: its floaters (leaves) and the scene's boat too */
+        ms_status st = p->sim ? ms_renderer_draw(p->renderer, p->sim)
+                              : ms_renderer_draw_field(p->renderer, h, g, t);
         if (st == MS_OK)
             st = ms_renderer_write_png(p->renderer, ppath);
         free(ppath);

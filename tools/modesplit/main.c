@@ -11,6 +11,11 @@
 
 #include "tool.h"
 
+/* One string, so each command's help is the block of it that starts with
+ * the command (command_block): past C99's 4095 characters, which GCC and
+ * clang take in full; the pedantic warning is off for this one literal. */
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Woverlength-strings"
 static const char usage_text[] =
     "usage: modesplit <command> [options]\n"
     "\n"
@@ -53,6 +58,16 @@ static const char usage_text[] =
     "      --record-input FILE    log the mouse and keys with their frame numbers\n"
     "      --script FILE          replay such a log (the same frames, the same water)\n"
     "      --out RUN.h5           also write the session's frames as run does\n"
+    "  render RUN.h5 [options]    draw a run file's frames again, without simulating\n"
+    "      --png DIR              write DIR/frame_NNNNN.png (NNNNN = the frame's index)\n"
+    "      --video FILE.mp4       pipe the frames to ffmpeg (when it is installed)\n"
+    "      --shader NAME          another shader plugin (water, milk, oil, honey)\n"
+    "      --camera EX,EY,EZ,TX,TY,TZ[,FOV]  eye and target (m), vertical FOV (degrees)\n"
+    "      --size WxH             another image size (pixels)\n"
+    "      --frames A:B           only frames A to B (A: to the end)\n"
+    "  cubemap --out DIR [--size N] [--sun X,Y,Z]\n"
+    "                             write the builtin sky as six PNG faces (px.png ...\n"
+    "                             nz.png) for a scene's render.cubemap\n"
     "  help [COMMAND], --help, -h this text, or one command's part of it\n"
     "                             (also: modesplit COMMAND --help)\n"
     "  --version, -V              the library version\n"
@@ -66,6 +81,7 @@ static const char usage_text[] =
     "exit status: 0 success; 1 a failure while running (I/O, an unstable step);\n"
     "2 bad usage or bad input (a scene error names file:line:col and the key).\n"
     "A run ended by SIGINT/SIGTERM ends by that signal once the file is closed.\n";
+#pragma GCC diagnostic pop
 
 void tool_usage(FILE *f)
 {
@@ -285,11 +301,17 @@ static int dispatch(int argc, char **argv)
         return cmd_check(argc - 1, argv + 1);
     if (!strcmp(cmd, "plugins"))
         return cmd_plugins(argc - 1, argv + 1);
+    /* the renderer's commands (issue 14) */
+    if (!strcmp(cmd, "render"))
+        return cmd_render(argc - 1, argv + 1);
+    if (!strcmp(cmd, "cubemap"))
+        return cmd_cubemap(argc - 1, argv + 1);
     if (!strcmp(cmd, "view"))
         return cmd_view(argc - 1, argv + 1);
     if (!strcmp(cmd, "export"))
         return cmd_export(argc - 1, argv + 1);
-    static const char *const commands[] = {"run", "info", "check", "plugins", "export", "view"};
+    static const char *const commands[] = {"run", "info", "check", "plugins", "export", "view",
+                                           "render", "cubemap"};
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i)
         if (edit_distance(cmd, commands[i]) <= 2 &&
             edit_distance(cmd, commands[i]) < strlen(commands[i])) {
@@ -297,8 +319,8 @@ static int dispatch(int argc, char **argv)
                        commands[i]);
             return EXIT_USAGE;
         }
-    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, export, view (see "
-               "modesplit --help)", cmd);
+    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, export, view, render, "
+               "cubemap (see modesplit --help)", cmd);
     return EXIT_USAGE;
 }
 

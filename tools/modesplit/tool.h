@@ -55,6 +55,9 @@ int tool_command_usage(FILE *f, const char *cmd);
  * the command's usage text lists. */
 void tool_unknown_option(const char *cmd, const char *opt);
 int cmd_view(int argc, char **argv); /* cmd_view.c, view_*.c */
+/* the renderer's commands (issue 14) */
+int cmd_render(int argc, char **argv);
+int cmd_cubemap(int argc, char **argv);
 
 /* ---- progress (progress.c) ---- */
 typedef struct tool_progress {
@@ -86,6 +89,7 @@ typedef struct tool_png {
     float relief;        /* vertical exaggeration, lowered as frames need */
     int have_range;
     long written;
+    const ms_sim *sim;     /* set: the renderer draws its field with floaters and boat */
 } tool_png;
 
 /* Create DIR (and its parents) if missing and, when the scene has a

@@ -1,0 +1,304 @@
+/* modesplit render RUN.h5 [--shader NAME] [--camera EX,EY,EZ,TX,TY,TZ[,FOV]]
+ *                  [--size WxH] [--frames A:B] --png DIR [--video FILE.mp4]
+ *
+ * Re-renders a finished (or still growing, or killed) run file without
+ * simulating again: each frame's combined field is read back and drawn by
+ * the renderer with the scene stored in the file (its `render` section and
+ * its pool, the boat on its path), so a batch user changes the shader, the
+ * camera or the size after a long run. --video pipes the frames as raw
+ * RGBA to ffmpeg (libx264, yuv420p) when ffmpeg is on PATH, and says so
+ * when it is not. */
+#include <errno.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "tool.h"
+
+typedef struct render_opts {
+    const char *run, *shader, *png, *video;
+    int have_camera, width, height;
+    float eye[3], target[3], fov;
+    long first, last; /* frames [first, last], last < 0: to the end */
+} render_opts;
+
+static int parse_camera(const char *s, render_opts *o)
+{
+    double v[7];
+    int n = 0;
+    const char *p = s;
+    while (n < 7) {
+        char *end;
+        errno = 0;
+        v[n] = strtod(p, &end);
+        if (end == p || errno || !(v[n] > -1e6 && v[n] < 1e6))
+            return 0;
+        ++n;
+        if (*end == '\0')
+            break;
+        if (*end != ',')
+            return 0;
+        p = end + 1;
+    }
+    if (n != 6 && n != 7)
+        return 0;
+    for (int k = 0; k < 3; ++k) {
+        o->eye[k] = (float)v[k];
+        o->target[k] = (float)v[3 + k];
+    }
+    o->fov = n == 7 ? (float)v[6] : 0;
+    o->have_camera = 1;
+    return 1;
+}
+
+static int parse_args(int argc, char **argv, render_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->last = -1;
+    for (int i = 1; i < argc; ++i) {
+        const char *a = argv[i], *v = NULL;
+        int bad = 0;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            tool_usage(stdout);
+            return -1;
+        } else if (tool_opt_value(argc, argv, &i, "--shader", &v, &bad)) {
+            if (bad || !v[0]) {
+                tool_error("render: --shader needs a shader plugin name (water, milk, oil, "
+                           "honey)");
+                return EXIT_USAGE;
+            }
+            o->shader = v;
+        } else if (tool_opt_value(argc, argv, &i, "--png", &v, &bad)) {
+            if (bad || !v[0]) {
+                tool_error("render: --png needs a directory");
+                return EXIT_USAGE;
+            }
+            o->png = v;
+        } else if (tool_opt_value(argc, argv, &i, "--video", &v, &bad)) {
+            if (bad || !v[0]) {
+                tool_error("render: --video needs a file name (FILE.mp4)");
+                return EXIT_USAGE;
+            }
+            o->video = v;
+        } else if (tool_opt_value(argc, argv, &i, "--camera", &v, &bad)) {
+            if (bad || !parse_camera(v, o)) {
+                tool_error("render: --camera %s: give EX,EY,EZ,TX,TY,TZ[,FOV] (eye and "
+                           "target in m, finite; FOV in degrees)",
+                           v ? v : "");
+                return EXIT_USAGE;
+            }
+        } else if (tool_opt_value(argc, argv, &i, "--size", &v, &bad)) {
+            int w = 0, h = 0;
+            char tail;
+            if (bad || sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 ||
+                w > 8192 || h > 8192) {
+                tool_error("render: --size %s: give WxH, each in [16, 8192] pixels",
+                           v ? v : "");
+                return EXIT_USAGE;
+            }
+            o->width = w, o->height = h;
+        } else if (tool_opt_value(argc, argv, &i, "--frames", &v, &bad)) {
+            long a0 = 0, b0 = -1;
+            char tail;
+            int n = bad ? 0 : sscanf(v, "%ld:%ld%c", &a0, &b0, &tail);
+            if (n == 1 && strchr(v, ':') == NULL)
+                b0 = a0;
+            if (n < 1 || n > 2 || a0 < 0 || (b0 >= 0 && b0 < a0)) {
+                tool_error("render: --frames %s: give A:B or A: or A (frame indices, A <= B)",
+                           v ? v : "");
+                return EXIT_USAGE;
+            }
+            o->first = a0, o->last = b0;
+        } else if (a[0] == '-' && a[1]) {
+            tool_error("render: unknown option %s (see modesplit --help)", a);
+            return EXIT_USAGE;
+        } else if (o->run) {
+            tool_error("render: one run file at a time (got %s and %s)", o->run, a);
+            return EXIT_USAGE;
+        } else {
+            o->run = a;
+        }
+    }
+    if (!o->run) {
+        tool_error("render: which run file? usage: modesplit render RUN.h5 [--shader NAME] "
+                   "[--camera EX,EY,EZ,TX,TY,TZ[,FOV]] [--size WxH] [--frames A:B] --png DIR "
+                   "[--video FILE.mp4]");
+        return EXIT_USAGE;
+    }
+    if (!o->png && !o->video) {
+        tool_error("render: say where the frames go: --png DIR and/or --video FILE.mp4");
+        return EXIT_USAGE;
+    }
+    return 0;
+}
+
+/* ffmpeg on PATH? */
+static int have_ffmpeg(void)
+{
+    return system("command -v ffmpeg >/dev/null 2>&1") == 0;
+}
+
+static FILE *open_video(const render_opts *o, int w, int h, double fps)
+{
+    char cmd[4096];
+    /* the path goes in single quotes; one with a quote is refused */
+    if (strchr(o->video, '\'')) {
+        tool_error("render: --video %s: a file name with a single quote is not supported",
+                   o->video);
+        return NULL;
+    }
+    snprintf(cmd, sizeof cmd,
+             "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s %dx%d -r %.6g -i - "
+             "-vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' -c:v libx264 -pix_fmt yuv420p '%s'",
+             w, h, fps, o->video);
+    FILE *f = popen(cmd, "w");
+    if (!f)
+        tool_error("render: cannot start ffmpeg: %s", strerror(errno));
+    return f;
+}
+
+int cmd_render(int argc, char **argv)
+{
+    render_opts o;
+    int rc = parse_args(argc, argv, &o);
+    if (rc != 0)
+        return rc < 0 ? EXIT_OK : rc;
+    if (o.video && !have_ffmpeg()) {
+        tool_error("render: --video needs ffmpeg, which is not installed (Debian: apt-get "
+                   "install ffmpeg); use --png DIR and encode the frames later");
+        return EXIT_USAGE;
+    }
+    ms_reader *rd = NULL;
+    if (ms_reader_open(o.run, &rd) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        return EXIT_USAGE;
+    }
+    rc = EXIT_RUNTIME;
+    ms_scene *sc = NULL;
+    ms_renderer *r = NULL;
+    float *h = NULL;
+    FILE *video = NULL;
+    const char *json = ms_reader_scene(rd);
+    if (!json || !json[0]) {
+        tool_error("render: %s stores no scene, so its pool and camera are unknown", o.run);
+        rc = EXIT_USAGE;
+        goto done;
+    }
+    if (ms_scene_parse(json, strlen(json), &sc) != MS_OK) {
+        tool_error("render: the scene stored in %s: %s", o.run, ms_last_error());
+        rc = EXIT_USAGE;
+        goto done;
+    }
+    if (!(ms_reader_fields(rd) & MS_FIELD_COMBINED)) {
+        tool_error("render: %s holds no combined field (the scene's output.fields lacks "
+                   "\"combined\"); nothing to draw",
+                   o.run);
+        rc = EXIT_USAGE;
+        goto done;
+    }
+    const long frames = ms_reader_frames(rd);
+    long last = o.last < 0 ? frames - 1 : o.last;
+    if (frames <= 0 || o.first >= frames || last >= frames) {
+        tool_error("render: %s holds %ld frames; --frames asks for %ld:%ld", o.run, frames,
+                   o.first, last);
+        rc = EXIT_USAGE;
+        goto done;
+    }
+    ms_renderer_desc d = ms_renderer_desc_default();
+    if (ms_renderer_desc_from_scene(sc, &d) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        goto done;
+    }
+    if (o.shader)
+        d.shader = o.shader;
+    if (o.width)
+        d.width = o.width, d.height = o.height;
+    if (o.have_camera) {
+        memcpy(d.eye, o.eye, sizeof d.eye);
+        memcpy(d.target, o.target, sizeof d.target);
+        if (o.fov > 0)
+            d.fov = o.fov;
+    }
+    ms_status st = ms_renderer_create_desc(&d, &r);
+    if (st != MS_OK) {
+        tool_error("%s", ms_last_error());
+        rc = st == MS_ERR_INVALID_ARGUMENT || st == MS_ERR_PLUGIN ? EXIT_USAGE : EXIT_RUNTIME;
+        goto done;
+    }
+    ms_grid g;
+    if (ms_reader_field_grid(rd, MS_FIELD_COMBINED, &g) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        goto done;
+    }
+    const size_t n = (size_t)g.nx * (size_t)g.ny;
+    h = malloc(n * sizeof *h);
+    if (!h) {
+        tool_error("render: out of memory for a %d x %d field", g.nx, g.ny);
+        goto done;
+    }
+    if (o.png) {
+        if (mkdir(o.png, 0777) != 0 && errno != EEXIST) {
+            tool_error("render: cannot create %s: %s", o.png, strerror(errno));
+            goto done;
+        }
+    }
+    if (o.video) {
+        double dt = ms_reader_frame_dt(rd) * ms_reader_output_every(rd);
+        double fps = dt > 0 ? 1.0 / dt : 30.0;
+        signal(SIGPIPE, SIG_IGN);
+        if (!(video = open_video(&o, d.width, d.height, fps)))
+            goto done;
+    }
+    long written = 0;
+    for (long f = o.first; f <= last; ++f) {
+        double t = 0;
+        if (ms_reader_read_field(rd, MS_FIELD_COMBINED, f, h, n) != MS_OK ||
+            ms_reader_time(rd, f, &t) != MS_OK ||
+            ms_renderer_draw_scene_field(r, sc, h, &g, t) != MS_OK) {
+            tool_error("render: frame %ld: %s", f, ms_last_error());
+            goto done;
+        }
+        if (o.png) {
+            char path[4096];
+            snprintf(path, sizeof path, "%s/frame_%05ld.png", o.png, f);
+            if (ms_renderer_write_png(r, path) != MS_OK) {
+                tool_error("%s", ms_last_error());
+                goto done;
+            }
+        }
+        if (video) {
+            int w = 0, hh = 0;
+            const unsigned char *px = ms_renderer_pixels(r, &w, &hh);
+            if (fwrite(px, 4, (size_t)w * (size_t)hh, video) != (size_t)w * (size_t)hh) {
+                tool_error("render: ffmpeg stopped taking frames (frame %ld)", f);
+                goto done;
+            }
+        }
+        ++written;
+    }
+    if (video) {
+        int vrc = pclose(video);
+        video = NULL;
+        if (vrc != 0) {
+            tool_error("render: ffmpeg failed writing %s (status %d)", o.video, vrc);
+            goto done;
+        }
+    }
+    printf("rendered %ld frames of %s (%dx%d, shader %s)", written, o.run, d.width, d.height,
+           d.shader);
+    if (o.png)
+        printf(" to %s", o.png);
+    if (o.video)
+        printf("%s%s", o.png ? " and " : " to ", o.video);
+    printf("\n");
+    rc = EXIT_OK;
+done:
+    if (video)
+        pclose(video);
+    free(h);
+    ms_renderer_destroy(r);
+    ms_scene_destroy(sc);
+    ms_reader_close(rd);
+    return rc;
+}
