@@ -41,6 +41,13 @@ static const char usage_text[] =
     "  check SCENE.json... [--set KEY=VALUE]...\n"
     "                             validate scene files without running them\n"
     "  plugins                    the shape and shader plugins found, and where from\n"
+    "  accuracy [--quick] [--out DIR] [--jobs | --case NAME | --merge PARTS]\n"
+    "                             validation studies against analytic and experimental\n"
+    "                             references, with what each setting costs: DIR/\n"
+    "                             accuracy.csv, accuracy.md, accuracy.gp and PNG plots\n"
+    "                             (default DIR: accuracy). --jobs prints one command per\n"
+    "                             case (run them with `| parallel`), --case runs one into\n"
+    "                             DIR, --merge joins the parts in PARTS into DIR\n"
     "  help, --help, -h           this text\n"
     "  --version, -V              the library version\n"
     "\n"
@@ -176,7 +183,9 @@ static int dispatch(int argc, char **argv)
         return cmd_check(argc - 1, argv + 1);
     if (!strcmp(cmd, "plugins"))
         return cmd_plugins(argc - 1, argv + 1);
-    tool_error("unknown command \"%s\"; commands: run, info, check, plugins (see modesplit --help)",
+    if (!strcmp(cmd, "accuracy"))
+        return cmd_accuracy(argc - 1, argv + 1);
+    tool_error("unknown command \"%s\"; commands: run, info, check, plugins, accuracy (see modesplit --help)",
                cmd);
     return EXIT_USAGE;
 }
