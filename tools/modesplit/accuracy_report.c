@@ -189,7 +189,7 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
     }
     fprintf(gp, "# gnuplot script written by `modesplit accuracy` (commit %s); run it in this\n"
                 "# directory: gnuplot accuracy.gp. Restyle freely.\n"
-                "set terminal pngcairo size 1000,650 font 'sans,11'\n"
+                "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\n"
                 "set logscale xy\nset grid\nset key outside right\n",
             commit);
     const char *st[MAXK];
