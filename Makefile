@@ -341,6 +341,30 @@ uninstall:
 clean:
 	rm -rf build build-asan build-tsan demo
 
+# ---- issue 11: the accuracy study and the long stability runs ----
+# make accuracy     the full study of `modesplit accuracy` (both cores, one
+#                   case per job), committed in data/accuracy/
+# make check-long   the coupled long runs of tests/test_stability.c (fig1 and
+#                   fig10 at the top coupling gains for 10 simulated minutes,
+#                   every shipped scene at 1 and 2 threads); .ci/run runs it
+ACCURACY_DIR ?= data/accuracy
+.PHONY: accuracy check-long
+accuracy: all
+	@rm -rf $(ACCURACY_DIR)/parts
+	$(BUILD)/bin/modesplit accuracy --jobs --out $(ACCURACY_DIR) | xargs -P $$(nproc) -I{} sh -c '{}'
+	$(BUILD)/bin/modesplit accuracy --merge $(ACCURACY_DIR)/parts --out $(ACCURACY_DIR)
+
+# The two long cases run side by side (one core each); both must pass.
+check-long: all $(BUILD)/tests/test_stability
+	@skips=$(abspath $(BUILD))/skipped-long.txt; rm -f $$skips; pids=; \
+	for c in coupled_top_gains coupled_every_scene; do \
+	    MS_TEST_LONG=1 CK_RUN_CASE=$$c MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) \
+	        MS_TEST_SKIP_FILE=$$skips $(BUILD)/tests/test_stability & pids="$$pids $$!"; \
+	done; fail=0; for p in $$pids; do wait $$p || fail=1; done; \
+	if [ -s $$skips ]; then echo "make check-long: skipped:"; cat $$skips; fi; \
+	if [ $$fail -ne 0 ]; then echo "make check-long: FAILED"; exit 1; fi; \
+	echo "make check-long: passed ($(BUILD))"
+
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
 # Plugins include plugins/common/*.h: their dependency files too.
 -include $(wildcard $(BUILD)/plugins/*.d)

@@ -26,6 +26,19 @@ MS_API int ms_scene_output_every(const ms_scene *sc);   /* write every n-th fram
 MS_API int ms_scene_output_deflate(const ms_scene *sc); /* 0..9, 0 = no compression */
 MS_API int ms_scene_has_render(const ms_scene *sc);     /* a `render` section exists */
 
+/* A scene with overrides "KEY=VALUE" of keys by their dotted path
+ * ("volume.spacing=0.025", "surface.cells=[512,512]",
+ * "obstacles[0].position=[1,2,0.5]"); VALUE is JSON, or else a string
+ * ("volume.pressure=tait"). The same type and range checks as the file
+ * apply; an error at an overridden key names "--set KEY=VALUE" (an unknown
+ * key lists the allowed ones). The file alone must be valid. The scene text
+ * (ms_scene_text) is the merged JSON, listing the overrides under
+ * "overrides". n = 0 is ms_scene_load / ms_scene_parse. */
+MS_API ms_status ms_scene_load_with_overrides(const char *path, int n,
+                                              const char *const *overrides, ms_scene **out);
+MS_API ms_status ms_scene_parse_with_overrides(const char *json, size_t len, int n,
+                                               const char *const *overrides, ms_scene **out);
+
 #ifdef __cplusplus
 }
 #endif

@@ -48,6 +48,13 @@ ms_status ms_scene_fail(const ms_scene_ctx *c, ms_status st, const char *fmt, ..
     vsnprintf(what, sizeof what, fmt, ap);
     va_end(ap);
     path_string(c, where, sizeof where);
+    for (int k = 0; k < c->nset; ++k) {
+        const char *set = c->set[k];
+        size_t klen = strcspn(set, "=");
+        if (strncmp(where, set, klen) == 0 &&
+            (where[klen] == '\0' || where[klen] == '.' || where[klen] == '['))
+            return ms_fail(st, "--set %s: %s %s", set, where, what);
+    }
     size_t pos = 0;
     int line = 1, col = 1;
     ms_scene_locate(c->text, c->len, c->path, c->depth, &pos);

@@ -17,6 +17,10 @@ typedef struct ms_scene_ctx {
     ms_scene_pathelem path[MS_SCENE_MAX_DEPTH];
     int depth;
     const char *dir;  /* the scene file's folder with its '/', "" when parsed */
+    /* --set overrides (override.c): a failure whose key is one of these (or
+     * inside one) names "--set KEY=VALUE" instead of file:line:col. */
+    const char *const *set;
+    int nset;
 } ms_scene_ctx;
 
 /* Fail with "file:line:col: a.b[2].c: <message>", at the place the current

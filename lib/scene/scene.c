@@ -11,9 +11,17 @@
 #include <jansson.h>
 
 #include "core/internal.h"
+#include "scene/override.h"
 #include "scene/sections.h"
 
 #define MAX_SCENE_BYTES (16u << 20)
+
+#define TRY(call)                        \
+    do {                                 \
+        ms_status try_st_ = (call);      \
+        if (try_st_ != MS_OK)            \
+            return try_st_;              \
+    } while (0)
 
 static void free_path(ms_scene_motion *p)
 {
@@ -52,8 +60,9 @@ void ms_scene_destroy(ms_scene *sc)
 
 #define dup_n ms_strndup /* lib/core */
 
-static ms_status parse(const char *text, size_t len, const char *file, const char *path,
-                       const char *dir, const char *default_name, ms_scene **out)
+static ms_status parse_one(const char *text, size_t len, const char *file, const char *path,
+                           const char *dir, const char *default_name, int nset,
+                           const char *const *set, ms_scene **out)
 {
     if (len > MAX_SCENE_BYTES)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: scene of %zu bytes; allowed: at most %u bytes",
@@ -80,7 +89,8 @@ static ms_status parse(const char *text, size_t len, const char *file, const cha
         return ms_fail(MS_ERR_PARSE, "%s:%d:%d: JSON syntax error: %s", file, line,
                        col < 1 ? 1 : col, err.text);
     }
-    ms_scene_ctx c = {.file = file, .text = sc->text, .len = len, .depth = 0, .dir = dir};
+    ms_scene_ctx c = {.file = file, .text = sc->text, .len = len, .depth = 0, .dir = dir,
+                      .set = set, .nset = nset};
     ms_status st = ms_scene_read_sections(&c, root, sc, dir, default_name);
     json_decref(root);
     if (st != MS_OK) {
@@ -91,17 +101,64 @@ static ms_status parse(const char *text, size_t len, const char *file, const cha
     return MS_OK;
 }
 
+/* The scene of text with n overrides (override.c). The text alone is read
+ * first, so its own errors name its own lines; then the merged scene, whose
+ * errors at an overridden key name the "--set"; the rest name the merged
+ * text ("FILE with --set:line:col"), the text ms_scene_text returns. */
+static ms_status parse(const char *text, size_t len, const char *file, const char *path,
+                       const char *dir, const char *default_name, int nset,
+                       const char *const *set, ms_scene **out)
+{
+    if (nset == 0)
+        return parse_one(text, len, file, path, dir, default_name, 0, NULL, out);
+    if (nset < 0 || !set)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: %d overrides at %p; allowed: n >= 0 "
+                       "and a list when n > 0", nset, (const void *)set);
+    for (int i = 0; i < nset; ++i)
+        TRY(ms_scene_override_check(set[i]));
+    ms_scene *plain = NULL;
+    TRY(parse_one(text, len, file, path, dir, default_name, 0, NULL, &plain));
+    ms_scene_destroy(plain);
+    char *merged = NULL;
+    size_t mlen = 0;
+    TRY(ms_scene_apply_overrides(text, len, nset, set, &merged, &mlen));
+    size_t flen = strlen(file) + 16;
+    char *where = ms_alloc(flen);
+    ms_status st = MS_ERR_OUT_OF_MEMORY;
+    if (where) {
+        snprintf(where, flen, "%s with --set", file);
+        st = parse_one(merged, mlen, where, path, dir, default_name, nset, set, out);
+    } else {
+        ms_fail(st, "scene: out of memory");
+    }
+    ms_free(where);
+    ms_free(merged);
+    return st;
+}
+
 ms_status ms_scene_parse(const char *json, size_t len, ms_scene **out)
+{
+    return ms_scene_parse_with_overrides(json, len, 0, NULL, out);
+}
+
+ms_status ms_scene_parse_with_overrides(const char *json, size_t len, int n,
+                                        const char *const *overrides, ms_scene **out)
 {
     if (!out)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: out is NULL");
     *out = NULL;
     if (!json)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: json text is NULL");
-    return parse(json, len, "<scene>", "", "", "scene", out);
+    return parse(json, len, "<scene>", "", "", "scene", n, overrides, out);
 }
 
 ms_status ms_scene_load(const char *path, ms_scene **out)
+{
+    return ms_scene_load_with_overrides(path, 0, NULL, out);
+}
+
+ms_status ms_scene_load_with_overrides(const char *path, int n, const char *const *overrides,
+                                       ms_scene **out)
 {
     if (!out)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: out is NULL");
@@ -154,7 +211,7 @@ ms_status ms_scene_load(const char *path, ms_scene **out)
         if (!dir || !name)
             st = ms_fail(MS_ERR_OUT_OF_MEMORY, "%s: out of memory", path);
         else
-            st = parse(buf, len, path, path, dir, name[0] ? name : "scene", out);
+            st = parse(buf, len, path, path, dir, name[0] ? name : "scene", n, overrides, out);
         ms_free(dir);
         ms_free(name);
     }

@@ -801,7 +801,9 @@ ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, co
 {
     static const char *const keys[] = {"name", "duration", "frame_dt", "seed", "threads",
                                        "domain", "volume", "surface", "coupling", "obstacles",
-                                       "effects", "render", "output", NULL};
+                                       "effects", "render", "output",
+                                       /* --set overrides (override.c) */
+                                       "overrides", NULL};
     const char *name;
     long seed, threads;
     if (!json_is_object(root))
@@ -835,5 +837,14 @@ ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, co
     TRY(read_effects(c, root, sc));
     TRY(read_render(c, root, sc, dir));
     TRY(read_output(c, root, sc));
+    /* the --set overrides a scene was made with: kept as information */
+    json_t *ovr = NULL;
+    TRY(ms_scene_get_array(c, root, "overrides", 0, 4096, &ovr));
+    for (size_t i = 0; ovr && i < json_array_size(ovr); ++i)
+        if (!json_is_string(json_array_get(ovr, i))) {
+            ms_scene_push_key(c, "overrides");
+            ms_scene_push_index(c, (long)i);
+            return ms_scene_fail(c, MS_ERR_PARSE, "is not a string; allowed: KEY=VALUE strings");
+        }
     return MS_OK;
 }

@@ -22,10 +22,19 @@ static const char *field_list(unsigned f, char *buf, size_t size)
 int cmd_check(int argc, char **argv)
 {
     int n = 0, bad = 0;
+    tool_sets sets = {0};
     for (int i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             tool_command_usage(stdout, "check");
             return EXIT_OK;
+        }
+        int usage = 0, start = i;
+        if (tool_set_option(argc, argv, &i, &sets, &usage)) {
+            if (usage)
+                return EXIT_USAGE;
+            for (int k = start; k <= i; ++k)
+                argv[k] = NULL; /* --set and its value are not scenes */
+            continue;
         }
         if (argv[i][0] == '-' && argv[i][1]) {
             tool_unknown_option("check", argv[i]);
@@ -33,10 +42,11 @@ int cmd_check(int argc, char **argv)
         }
     }
     for (int i = 1; i < argc; ++i) {
+        if (!argv[i])
+            continue;
         ++n;
         ms_scene *sc = NULL;
-        if (ms_scene_load(argv[i], &sc) != MS_OK) {
-            tool_error("%s", ms_last_error());
+        if (tool_load_scene(argv[i], &sets, &sc) != 0) {
             ++bad;
             continue;
         }

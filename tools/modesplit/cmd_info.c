@@ -4,6 +4,8 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include <jansson.h>
+
 #include "tool.h"
 
 /* Strings from a run file are data, not terminal commands: control
@@ -113,6 +115,13 @@ int cmd_info(int argc, char **argv)
     if (every > 1)
         printf(", written every %d frames", every);
     printf("\n");
+    /* the --set overrides the run was made with (lib/scene/override.c) */
+    json_t *root = json_loads(ms_reader_scene(r), 0, NULL);
+    json_t *ovr = root ? json_object_get(root, "overrides") : NULL;
+    for (size_t k = 0; json_is_array(ovr) && k < json_array_size(ovr); ++k)
+        if (json_is_string(json_array_get(ovr, k)))
+            printf("  --set     %s\n", json_string_value(json_array_get(ovr, k)));
+    json_decref(root);
     if (frames > 0) {
         double t0 = NAN, t1 = NAN;
         ms_reader_time(r, 0, &t0);

@@ -47,6 +47,7 @@ typedef struct run_opts {
     double duration;     /* s, < 0: the scene's */
     int threads;         /* 0: the scene's */
     int no_out, quiet, preview;
+    tool_sets sets;      /* --set KEY=VALUE */
 } run_opts;
 
 static int parse_args(int argc, char **argv, run_opts *o)
@@ -99,6 +100,9 @@ static int parse_args(int argc, char **argv, run_opts *o)
                 return EXIT_USAGE;
             }
             o->threads = (int)t;
+        } else if (tool_set_option(argc, argv, &i, &o->sets, &bad)) {
+            if (bad)
+                return EXIT_USAGE;
         } else if (!strcmp(a, "--preview")) {
             o->preview = 1;
         } else if (!strcmp(a, "--no-out")) {
@@ -175,10 +179,8 @@ int cmd_run(int argc, char **argv)
         return rc;
 
     ms_scene *sc = NULL;
-    if (ms_scene_load(o.scene, &sc) != MS_OK) {
-        tool_error("%s", ms_last_error());
+    if (tool_load_scene(o.scene, &o.sets, &sc) != 0)
         return EXIT_USAGE;
-    }
     float dt = ms_scene_frame_dt(sc);
     long frames = o.frames;
     if (frames < 0 && tool_scene_frames(sc, o.scene, o.duration, &frames) != 0) {

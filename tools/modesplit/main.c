@@ -39,9 +39,13 @@ static const char usage_text[] =
     "      --threads 1|2          1: sequential, 2: the two-core split\n"
     "                             (default: the scene's `threads`)\n"
     "      --quiet                no progress and no summary\n"
+    "      --set KEY=VALUE        override a scene key by its dotted path, e.g.\n"
+    "                             --set volume.spacing=0.025 --set surface.cells=[512,512]\n"
+    "                             (checked as the file is; listed in the stored scene)\n"
     "  info [--scene] RUN.h5      what a run file holds: scene, frames, fields, sizes;\n"
     "                             --scene prints the scene JSON stored in it instead\n"
-    "  check SCENE.json...        validate scene files without running them\n"
+    "  check SCENE.json... [--set KEY=VALUE]...\n"
+    "                             validate scene files without running them\n"
     "  plugins                    the shape and shader plugins found, and where from\n"
     "  export RUN.h5 --usd OUT.usdc  write a run as USD (Blender, Houdini, Omniverse):\n"
     "      --usd OUT.usdc         the height field as a time-sampled mesh, particles as\n"
@@ -68,6 +72,13 @@ static const char usage_text[] =
     "  cubemap --out DIR [--size N] [--sun X,Y,Z]\n"
     "                             write the builtin sky as six PNG faces (px.png ...\n"
     "                             nz.png) for a scene's render.cubemap\n"
+    "  accuracy [--quick] [--out DIR] [--jobs | --case NAME | --merge PARTS]\n"
+    "                             validation studies against analytic and experimental\n"
+    "                             references, with what each setting costs: DIR/\n"
+    "                             accuracy.csv, accuracy.md, accuracy.gp and PNG plots\n"
+    "                             (default DIR: accuracy). --jobs prints one command per\n"
+    "                             case (run them with `| parallel`), --case runs one into\n"
+    "                             DIR, --merge joins the parts in PARTS into DIR\n"
     "  help [COMMAND], --help, -h this text, or one command's part of it\n"
     "                             (also: modesplit COMMAND --help)\n"
     "  --version, -V              the library version\n"
@@ -301,6 +312,8 @@ static int dispatch(int argc, char **argv)
         return cmd_check(argc - 1, argv + 1);
     if (!strcmp(cmd, "plugins"))
         return cmd_plugins(argc - 1, argv + 1);
+    if (!strcmp(cmd, "accuracy"))
+        return cmd_accuracy(argc - 1, argv + 1);
     /* the renderer's commands (issue 14) */
     if (!strcmp(cmd, "render"))
         return cmd_render(argc - 1, argv + 1);
@@ -311,7 +324,7 @@ static int dispatch(int argc, char **argv)
     if (!strcmp(cmd, "export"))
         return cmd_export(argc - 1, argv + 1);
     static const char *const commands[] = {"run", "info", "check", "plugins", "export", "view",
-                                           "render", "cubemap"};
+                                           "render", "cubemap", "accuracy"};
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i)
         if (edit_distance(cmd, commands[i]) <= 2 &&
             edit_distance(cmd, commands[i]) < strlen(commands[i])) {
@@ -320,7 +333,7 @@ static int dispatch(int argc, char **argv)
             return EXIT_USAGE;
         }
     tool_error("unknown command \"%s\"; commands: run, info, check, plugins, export, view, render, "
-               "cubemap (see modesplit --help)", cmd);
+               "cubemap, accuracy (see modesplit --help)", cmd);
     return EXIT_USAGE;
 }
 

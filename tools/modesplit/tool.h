@@ -38,6 +38,18 @@ const char *tool_bytes(double bytes, char *buf, size_t size);
  * 1e9; 0 on success, else prints "<path>: ..." and returns -1. */
 int tool_scene_frames(const ms_scene *sc, const char *path, double duration, long *frames);
 
+/* ---- --set KEY=VALUE (overrides.c) ---- */
+#define TOOL_MAX_SETS 256
+typedef struct tool_sets {
+    int n;
+    const char *v[TOOL_MAX_SETS]; /* views into argv */
+} tool_sets;
+/* argv[*i] is "--set": store its value in s and return 1 (*bad set, and a
+ * message printed, when it is missing or not KEY=VALUE); else 0. */
+int tool_set_option(int argc, char **argv, int *i, tool_sets *s, int *bad);
+/* ms_scene_load_with_overrides; 0 on success, else prints and returns -1. */
+int tool_load_scene(const char *path, const tool_sets *s, ms_scene **out);
+
 int cmd_run(int argc, char **argv);
 int cmd_info(int argc, char **argv);
 int cmd_check(int argc, char **argv);
@@ -58,6 +70,7 @@ int cmd_view(int argc, char **argv); /* cmd_view.c, view_*.c */
 /* the renderer's commands (issue 14) */
 int cmd_render(int argc, char **argv);
 int cmd_cubemap(int argc, char **argv);
+int cmd_accuracy(int argc, char **argv);
 
 /* ---- progress (progress.c) ---- */
 typedef struct tool_progress {

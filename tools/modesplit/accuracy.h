@@ -1,0 +1,77 @@
+/* `modesplit accuracy`: validation studies against analytic and
+ * experimental references, side by side with what each setting costs.
+ *
+ * cmd_accuracy.c: options, the case list, --jobs / --case / --merge, the
+ *                 CSV; accuracy_report.c: the tables (accuracy.md), orders,
+ *                 Pareto fronts and the gnuplot script; study_*.c: one
+ *                 study each. Every case is built from a scene text and
+ *                 `--set` overrides (ms_scene_parse_with_overrides), the
+ *                 mechanism `modesplit run --set` uses, and run through the
+ *                 public API only.
+ */
+#ifndef MS_TOOL_ACCURACY_H
+#define MS_TOOL_ACCURACY_H
+
+#include <stdio.h>
+
+#include "tool.h"
+
+/* One run of one configuration: a row of accuracy.csv. */
+typedef struct acc_row {
+    char study[24];   /* waves, water, sph, extract, coupler */
+    char knob[32];    /* what was varied: cells, courant, particles, ... */
+    double value;     /* the knob's value (its unit in the knob's name) */
+    char config[96];  /* the configuration in words ("tait c0=20 m/s") */
+    char metric[48];  /* what the error measures */
+    double error;     /* that error (relative unless the metric says) */
+    double reference; /* the reference value it was measured against */
+    double ms_per_s;  /* ms of wall clock per simulated second (NAN: n/a) */
+    double ms_per_step; /* ms per step (wave step, SPH frame, extraction) */
+    double size;      /* cells or particles */
+    int threads;
+} acc_row;
+
+typedef struct acc_ctx {
+    int quick;
+    acc_row *rows;
+    int nrows, cap;
+    char note[4096];  /* notes for accuracy.md: solvers not in this build, ... */
+} acc_ctx;
+
+/* Append a row; 0 on success. */
+int acc_add(acc_ctx *c, const acc_row *r);
+/* Append a line to the notes. */
+void acc_note(acc_ctx *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* A scene from its JSON text and --set overrides ("KEY=VALUE", NULL
+ * ended); NULL after printing the error. */
+ms_scene *acc_scene(const char *json, const char *const *sets);
+/* A sim (1 thread) of that scene. The scene must outlive the sim: both are
+ * freed by acc_free. MS_ERR_UNSUPPORTED is returned quietly (the study
+ * notes it); other failures print. */
+ms_status acc_sim(const char *json, const char *const *sets, ms_scene **sc, ms_sim **sim);
+void acc_free(ms_scene *sc, ms_sim *sim);
+
+/* One study case: rows into c; 0 on success, else prints and returns -1. */
+typedef int acc_case_fn(acc_ctx *c);
+int study_waves_cells(acc_ctx *c);
+int study_waves_courant(acc_ctx *c);
+int study_waves_ring(acc_ctx *c);
+int study_water_dispersion(acc_ctx *c);
+int study_sph_particles(acc_ctx *c);
+int study_sph_laws(acc_ctx *c);
+int study_sph_sound(acc_ctx *c);
+int study_sph_courant(acc_ctx *c);
+int study_sph_rest(acc_ctx *c);
+int study_extract_flat(acc_ctx *c);
+int study_extract_tilted(acc_ctx *c);
+int study_coupler(acc_ctx *c);
+
+/* The report from rows: DIR/accuracy.md, DIR/accuracy.gp (+ the .dat files
+ * it reads) and, when gnuplot runs, the PNG plots in DIR. 0 on success. */
+int acc_report(const char *dir, const acc_row *rows, int n, const char *notes,
+               const char *machine, const char *commit, int *plotted);
+/* Observed order: minus the least-squares slope of log(error) against
+ * log(value) over the rows of (study, knob); NAN when < 2 points. */
+double acc_order(const acc_row *rows, int n, const char *study, const char *knob);
+
+#endif

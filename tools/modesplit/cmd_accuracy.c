@@ -1,0 +1,428 @@
+/* modesplit accuracy [--quick] [--out DIR] [--jobs] [--case NAME] [--merge DIR]:
+ * the validation studies (accuracy.h) and what each setting costs.
+ *
+ * Without --case or --merge every case runs here, writing its part to
+ * DIR/parts/NAME.csv, and the parts are then merged as --merge does: one
+ * code path, so a study split over GNU parallel or a Slurm array gives the
+ * same files as one run on one machine. --jobs prints the command of each
+ * case, one a line.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/utsname.h>
+#include <unistd.h>
+
+#include "accuracy.h"
+
+static const struct {
+    const char *name;
+    acc_case_fn *fn;
+} cases[] = {
+    {"waves-cells", study_waves_cells},     {"waves-courant", study_waves_courant},
+    {"waves-ring", study_waves_ring},       {"water-dispersion", study_water_dispersion},
+    {"sph-particles", study_sph_particles}, {"sph-laws", study_sph_laws},
+    {"sph-sound", study_sph_sound},         {"sph-courant", study_sph_courant},
+    {"sph-rest", study_sph_rest},           {"extract-flat", study_extract_flat},
+    {"extract-tilted", study_extract_tilted}, {"coupler", study_coupler},
+};
+#define NCASES ((int)(sizeof cases / sizeof cases[0]))
+
+static const char csv_header[] =
+    "study,knob,value,config,metric,error,reference,ms_per_simulated_s,ms_per_step,"
+    "cells_or_particles,threads,machine,commit\n";
+
+int acc_add(acc_ctx *c, const acc_row *r)
+{
+    if (c->nrows == c->cap) {
+        int ncap = c->cap ? 2 * c->cap : 64;
+        acc_row *nr = realloc(c->rows, sizeof *nr * (size_t)ncap);
+        if (!nr) {
+            tool_error("accuracy: out of memory");
+            return -1;
+        }
+        c->rows = nr;
+        c->cap = ncap;
+    }
+    c->rows[c->nrows++] = *r;
+    return 0;
+}
+
+void acc_note(acc_ctx *c, const char *fmt, ...)
+{
+    size_t used = strlen(c->note);
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->note + used, sizeof c->note - used, fmt, ap);
+    va_end(ap);
+    used = strlen(c->note);
+    if (used + 1 < sizeof c->note) {
+        c->note[used] = '\n';
+        c->note[used + 1] = '\0';
+    }
+}
+
+ms_scene *acc_scene(const char *json, const char *const *sets)
+{
+    int n = 0;
+    while (sets && sets[n])
+        ++n;
+    ms_scene *sc = NULL;
+    if (ms_scene_parse_with_overrides(json, strlen(json), n, sets, &sc) != MS_OK) {
+        tool_error("accuracy: %s", ms_last_error());
+        return NULL;
+    }
+    return sc;
+}
+
+ms_status acc_sim(const char *json, const char *const *sets, ms_scene **sc, ms_sim **sim)
+{
+    *sim = NULL;
+    *sc = acc_scene(json, sets);
+    if (!*sc)
+        return MS_ERR_INVALID_ARGUMENT;
+    ms_status st = ms_sim_create_from_scene(*sc, 1, sim);
+    if (st != MS_OK) {
+        if (st != MS_ERR_UNSUPPORTED)
+            tool_error("accuracy: %s", ms_last_error());
+        ms_scene_destroy(*sc);
+        *sc = NULL;
+    }
+    return st;
+}
+
+void acc_free(ms_scene *sc, ms_sim *sim)
+{
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+
+/* ---- machine and commit, in every row ---- */
+
+static void machine_text(char *buf, size_t size)
+{
+    char model[160] = "unknown CPU";
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    if (f) {
+        char line[512];
+        while (fgets(line, sizeof line, f))
+            if (!strncmp(line, "model name", 10)) {
+                char *p = strchr(line, ':');
+                if (p) {
+                    p += strspn(p + 1, " \t") + 1;
+                    p[strcspn(p, "\n")] = '\0';
+                    snprintf(model, sizeof model, "%s", p);
+                }
+                break;
+            }
+        fclose(f);
+    }
+    struct utsname u;
+    const char *sys = uname(&u) == 0 ? u.release : "?";
+    snprintf(buf, size, "%s; %ld cores; Linux %s", model, sysconf(_SC_NPROCESSORS_ONLN), sys);
+    for (char *p = buf; *p; ++p)
+        if (*p == '"' || *p == ',')
+            *p = *p == ',' ? ';' : '\'';
+}
+
+static void commit_text(char *buf, size_t size)
+{
+    snprintf(buf, size, "unknown");
+    FILE *p = popen("git describe --always --dirty 2>/dev/null", "r");
+    if (!p)
+        return;
+    char line[128];
+    if (fgets(line, sizeof line, p)) {
+        line[strcspn(line, "\n")] = '\0';
+        if (line[0])
+            snprintf(buf, size, "%s", line);
+    }
+    pclose(p);
+}
+
+/* ---- CSV parts ---- */
+
+static void csv_text(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; ++s)
+        fputc(*s == '"' ? '\'' : *s, f);
+    fputc('"', f);
+}
+
+static int write_rows(const char *path, const acc_row *rows, int n, const char *machine,
+                      const char *commit)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        tool_error("accuracy: cannot write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    fputs(csv_header, f);
+    for (int i = 0; i < n; ++i) {
+        const acc_row *r = &rows[i];
+        fprintf(f, "%s,%s,%.9g,", r->study, r->knob, r->value);
+        csv_text(f, r->config);
+        fputc(',', f);
+        csv_text(f, r->metric);
+        fprintf(f, ",%.6g,%.9g,%.6g,%.6g,%.9g,%d,", r->error, r->reference, r->ms_per_s,
+                r->ms_per_step, r->size, r->threads);
+        csv_text(f, machine);
+        fputc(',', f);
+        csv_text(f, commit);
+        fputc('\n', f);
+    }
+    if (fclose(f) != 0) {
+        tool_error("accuracy: cannot write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* Split one CSV line (our own format: fields quoted when text) in place. */
+static int split_csv(char *line, char **field, int max)
+{
+    int n = 0;
+    char *p = line;
+    while (n < max) {
+        if (*p == '"') {
+            field[n++] = ++p;
+            p = strchr(p, '"');
+            if (!p)
+                return -1;
+            *p++ = '\0';
+        } else {
+            field[n++] = p;
+            p += strcspn(p, ",\n");
+        }
+        if (*p == ',')
+            *p++ = '\0';
+        else {
+            *p = '\0';
+            break;
+        }
+    }
+    return n;
+}
+
+static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, size_t size)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return 1; /* a case that wrote nothing */
+    char line[4096];
+    int rc = 0, lineno = 0;
+    while (fgets(line, sizeof line, f)) {
+        ++lineno;
+        if (lineno == 1) {
+            if (strcmp(line, csv_header) != 0) {
+                tool_error("accuracy: %s: not a part of this accuracy study (header)", path);
+                rc = -1;
+                break;
+            }
+            continue;
+        }
+        char *fl[13];
+        if (split_csv(line, fl, 13) != 13) {
+            tool_error("accuracy: %s:%d: not 13 fields", path, lineno);
+            rc = -1;
+            break;
+        }
+        acc_row r;
+        memset(&r, 0, sizeof r);
+        snprintf(r.study, sizeof r.study, "%s", fl[0]);
+        snprintf(r.knob, sizeof r.knob, "%s", fl[1]);
+        r.value = strtod(fl[2], NULL);
+        snprintf(r.config, sizeof r.config, "%s", fl[3]);
+        snprintf(r.metric, sizeof r.metric, "%s", fl[4]);
+        r.error = strtod(fl[5], NULL);
+        r.reference = strtod(fl[6], NULL);
+        r.ms_per_s = strtod(fl[7], NULL);
+        r.ms_per_step = strtod(fl[8], NULL);
+        r.size = strtod(fl[9], NULL);
+        r.threads = atoi(fl[10]);
+        snprintf(machine, size, "%s", fl[11]);
+        snprintf(commit, size, "%s", fl[12]);
+        if (acc_add(c, &r) != 0) {
+            rc = -1;
+            break;
+        }
+    }
+    fclose(f);
+    return rc;
+}
+
+static int make_dir(const char *dir)
+{
+    char p[1024];
+    snprintf(p, sizeof p, "%s", dir);
+    for (char *s = p + 1; *s; ++s)
+        if (*s == '/') {
+            *s = '\0';
+            mkdir(p, 0777);
+            *s = '/';
+        }
+    if (mkdir(p, 0777) != 0 && errno != EEXIST) {
+        tool_error("accuracy: cannot create %s: %s", dir, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+static int run_case(int k, int quick, const char *parts)
+{
+    acc_ctx c;
+    memset(&c, 0, sizeof c);
+    c.quick = quick;
+    double t0 = tool_now();
+    fprintf(stderr, "accuracy: %s%s ...\n", cases[k].name, quick ? " (quick)" : "");
+    int rc = cases[k].fn(&c);
+    if (rc == 0) {
+        char machine[256], commit[128], path[1200];
+        machine_text(machine, sizeof machine);
+        commit_text(commit, sizeof commit);
+        snprintf(path, sizeof path, "%s/%s.csv", parts, cases[k].name);
+        rc = write_rows(path, c.rows, c.nrows, machine, commit);
+        snprintf(path, sizeof path, "%s/%s.notes", parts, cases[k].name);
+        FILE *f = rc == 0 ? fopen(path, "w") : NULL;
+        if (f) {
+            fputs(c.note, f);
+            fclose(f);
+        }
+        fprintf(stderr, "accuracy: %s: %d rows in %.1f s\n", cases[k].name, c.nrows,
+                tool_now() - t0);
+    }
+    free(c.rows);
+    return rc;
+}
+
+static int merge(const char *parts, const char *out)
+{
+    acc_ctx c;
+    memset(&c, 0, sizeof c);
+    char machine[256] = "unknown", commit[128] = "unknown", path[1200];
+    int found = 0, rc = 0;
+    for (int k = 0; k < NCASES && rc == 0; ++k) {
+        snprintf(path, sizeof path, "%s/%s.csv", parts, cases[k].name);
+        int r = read_part(path, &c, machine, commit, sizeof commit);
+        if (r < 0)
+            rc = -1;
+        else if (r == 0)
+            ++found;
+        snprintf(path, sizeof path, "%s/%s.notes", parts, cases[k].name);
+        FILE *f = fopen(path, "r");
+        if (f) {
+            size_t used = strlen(c.note);
+            size_t got = fread(c.note + used, 1, sizeof c.note - used - 1, f);
+            c.note[used + got] = '\0';
+            fclose(f);
+        }
+    }
+    if (rc == 0 && found == 0) {
+        tool_error("accuracy: --merge %s: no part (NAME.csv of a case) found", parts);
+        rc = -1;
+    }
+    if (rc == 0 && found < NCASES)
+        acc_note(&c, "- %d of %d cases in this report (the others were not run).", found,
+                 NCASES);
+    int plotted = 0;
+    if (rc == 0)
+        rc = make_dir(out);
+    if (rc == 0) {
+        snprintf(path, sizeof path, "%s/accuracy.csv", out);
+        rc = write_rows(path, c.rows, c.nrows, machine, commit);
+    }
+    if (rc == 0)
+        rc = acc_report(out, c.rows, c.nrows, c.note, machine, commit, &plotted);
+    if (rc == 0)
+        fprintf(stderr, "accuracy: wrote %s/accuracy.csv (%d rows), %s/accuracy.md%s\n", out,
+                c.nrows, out, plotted ? " and the PNG plots" : " (no plots: see above)");
+    free(c.rows);
+    return rc;
+}
+
+int cmd_accuracy(int argc, char **argv)
+{
+    int quick = 0, jobs = 0, bad = 0;
+    const char *out = "accuracy", *one = NULL, *parts = NULL;
+    for (int i = 1; i < argc; ++i) {
+        const char *v = NULL, *a = argv[i];
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            tool_usage(stdout);
+            return EXIT_OK;
+        } else if (!strcmp(a, "--quick")) {
+            quick = 1;
+        } else if (!strcmp(a, "--jobs")) {
+            jobs = 1;
+        } else if (tool_opt_value(argc, argv, &i, "--out", &v, &bad)) {
+            if (bad || !*v) {
+                tool_error("accuracy: --out needs a directory");
+                return EXIT_USAGE;
+            }
+            out = v;
+        } else if (tool_opt_value(argc, argv, &i, "--case", &v, &bad)) {
+            if (bad)
+                return EXIT_USAGE;
+            one = v;
+        } else if (tool_opt_value(argc, argv, &i, "--merge", &v, &bad)) {
+            if (bad || !*v) {
+                tool_error("accuracy: --merge needs the directory of the parts");
+                return EXIT_USAGE;
+            }
+            parts = v;
+        } else {
+            tool_error("accuracy: unknown argument %s (see modesplit --help)", a);
+            return EXIT_USAGE;
+        }
+    }
+    if ((jobs != 0) + (one != NULL) + (parts != NULL) > 1) {
+        tool_error("accuracy: give one of --jobs, --case and --merge");
+        return EXIT_USAGE;
+    }
+    int k = -1;
+    if (one) {
+        for (int j = 0; j < NCASES; ++j)
+            if (!strcmp(one, cases[j].name))
+                k = j;
+        if (k < 0) {
+            char list[600] = "";
+            for (int j = 0; j < NCASES; ++j) {
+                strncat(list, cases[j].name, sizeof list - strlen(list) - 1);
+                if (j + 1 < NCASES)
+                    strncat(list, ", ", sizeof list - strlen(list) - 1);
+            }
+            tool_error("accuracy: --case %s is not a case; allowed: %s", one, list);
+            return EXIT_USAGE;
+        }
+    }
+    if (jobs) {
+        char self[1024];
+        ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+        if (n <= 0)
+            snprintf(self, sizeof self, "modesplit");
+        else
+            self[n] = '\0';
+        for (int j = 0; j < NCASES; ++j)
+            printf("'%s' accuracy%s --case %s --out '%s/parts'\n", self, quick ? " --quick" : "",
+                   cases[j].name, out);
+        return EXIT_OK;
+    }
+    if (parts)
+        return merge(parts, out) == 0 ? EXIT_OK : EXIT_RUNTIME;
+    if (k >= 0) /* one case: its part into DIR itself (DIR/parts of the merge) */
+        return make_dir(out) == 0 && run_case(k, quick, out) == 0 ? EXIT_OK : EXIT_RUNTIME;
+    char pdir[1200];
+    snprintf(pdir, sizeof pdir, "%s/parts", out);
+    if (make_dir(pdir) != 0)
+        return EXIT_RUNTIME;
+    double t0 = tool_now();
+    for (int j = 0; j < NCASES; ++j)
+        if (run_case(j, quick, pdir) != 0)
+            return EXIT_RUNTIME;
+    int rc = merge(pdir, out);
+    fprintf(stderr, "accuracy: %d cases in %.1f s\n", NCASES, tool_now() - t0);
+    return rc == 0 ? EXIT_OK : EXIT_RUNTIME;
+}

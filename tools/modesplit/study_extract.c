@@ -1,0 +1,165 @@
+/* Study 3, height-field extraction (eqs. 16-18), on liquid shapes whose
+ * surface is known:
+ *  - a flat layer at rest: its level is the filled volume over the area;
+ *  - a layer at rest in a box accelerating at a along x: in the box's frame
+ *    gravity is (-a, 0, -g), and the surface is the plane
+ *    z = level - (a / g) (x - L / 2) (its volume unchanged);
+ * against the field resolution (cells per side) and the eq. 18 smoothing
+ * passes. The error is the RMS over every column, in particle spacings;
+ * the cost is one extraction.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accuracy.h"
+
+#define L 0.5     /* m, box side */
+#define FILL 0.12 /* m, fill height */
+
+/* A settled layer (sideways gravity gx, m/s^2); NULL after printing. */
+static ms_sim *settle(double spacing, double gx, ms_scene **sc)
+{
+    char json[1024], grav[96];
+    snprintf(json, sizeof json,
+             "{\"name\": \"accuracy-extract\", \"frame_dt\": 0.02, \"threads\": 1,"
+             " \"domain\": {\"min\": [0, 0, 0], \"max\": [%g, %g, 0.3]},"
+             " \"volume\": {\"spacing\": %.9g, \"smoothing_length\": %.9g, \"viscosity\": 20.0,"
+             "   \"fill\": [{\"min\": [0, 0, 0], \"max\": [%g, %g, %g]}]}}",
+             L, L, spacing, 2 * spacing, L, L, FILL);
+    snprintf(grav, sizeof grav, "volume.gravity=[%.9g,0,-9.81]", -gx);
+    const char *sets[] = {grav, NULL};
+    ms_sim *sim = NULL;
+    ms_status st = acc_sim(json, sets, sc, &sim);
+    if (st != MS_OK)
+        return NULL;
+    for (int f = 0; st == MS_OK && f < 75; ++f)
+        st = ms_sim_step(sim, 0.02f);
+    if (st != MS_OK) {
+        tool_error("accuracy: extract: %s", ms_last_error());
+        acc_free(*sc, sim);
+        return NULL;
+    }
+    return sim;
+}
+
+/* RMS (in spacings) of the extracted field against the known plane, and
+ * the median time of one extraction (ms). */
+static int measure(ms_volume *v, int R, double slope, double spacing, double *rms, double *ms)
+{
+    /* the level: the particles' volume at rest density (spacing^3 each)
+     * over the area, as the fill boxes lay them */
+    const double LEVEL = ms_volume_count(v) * spacing * spacing * spacing / (L * L);
+    float *h = malloc(sizeof(float) * (size_t)R * R);
+    double t[5];
+    for (int rep = 0; rep < 5; ++rep) {
+        double t0 = tool_now();
+        if (ms_volume_extract_height(v, R, R, h) != MS_OK) {
+            tool_error("accuracy: extract: %s", ms_last_error());
+            free(h);
+            return -1;
+        }
+        t[rep] = tool_now() - t0;
+    }
+    for (int i = 1; i < 5; ++i) /* median of 5 */
+        for (int j = i; j > 0 && t[j] < t[j - 1]; --j) {
+            double x = t[j];
+            t[j] = t[j - 1];
+            t[j - 1] = x;
+        }
+    double e2 = 0;
+    for (int y = 0; y < R; ++y)
+        for (int x = 0; x < R; ++x) {
+            double xc = (x + 0.5) * L / R, want = LEVEL + slope * (xc - 0.5 * L);
+            double d = h[y * R + x] - want;
+            e2 += d * d;
+        }
+    free(h);
+    *rms = sqrt(e2 / ((double)R * R)) / spacing;
+    *ms = 1e3 * t[2];
+    return 0;
+}
+
+static int row(acc_ctx *c, const char *knob, double value, const char *shape, int R, int smooth,
+               double spacing, int count, double rms, double ms)
+{
+    acc_row r = {.value = value, .error = rms, .reference = FILL, .ms_per_s = NAN,
+                 .ms_per_step = ms, .size = (double)R * R, .threads = 1};
+    snprintf(r.study, sizeof r.study, "extract");
+    snprintf(r.knob, sizeof r.knob, "%s", knob);
+    snprintf(r.config, sizeof r.config, "%s, %dx%d field, %d smoothing passes, %d particles",
+             shape, R, R, smooth, count);
+    snprintf(r.metric, sizeof r.metric, "height RMS error in spacings");
+    (void)spacing;
+    return acc_add(c, &r);
+}
+
+/* The settled particles of sim in a volume whose desc differs only in
+ * smooth_steps (eq. 18 passes are fixed at creation). */
+static ms_volume *with_smoothing(ms_volume *v, int smooth)
+{
+    ms_volume_desc d = ms_volume_get_desc(v);
+    d.smooth_steps = smooth;
+    int n = ms_volume_count(v);
+    float *p = malloc(sizeof(float) * 3 * (size_t)n), *u = malloc(sizeof(float) * 3 * (size_t)n);
+    ms_volume *w = NULL;
+    if (p && u && ms_volume_get_particles(v, p, u) == MS_OK && ms_volume_create(&d, &w) == MS_OK &&
+        ms_volume_add_particles(w, n, p, u) != MS_OK) {
+        ms_volume_destroy(w);
+        w = NULL;
+    }
+    if (!w)
+        tool_error("accuracy: extract: %s", ms_last_error());
+    free(p);
+    free(u);
+    return w;
+}
+
+static int study(acc_ctx *c, const char *shape, double gx)
+{
+    const double s = c->quick ? 0.025 : 0.0125;
+    ms_scene *sc = NULL;
+    ms_sim *sim = settle(s, gx, &sc);
+    if (!sim)
+        return -1;
+    ms_volume *v = ms_sim_volume(sim);
+    int n = ms_volume_count(v), rc = 0;
+    double slope = -gx / 9.81, rms, ms; /* gravity (-gx, 0, -g): z falls along x */
+    static const int full[] = {8, 16, 32, 64, 128}, quick[] = {8, 16, 32};
+    const int *Rs = c->quick ? quick : full;
+    char knob[32];
+    snprintf(knob, sizeof knob, "%s_field_cells", shape);
+    for (int i = 0; i < (c->quick ? 3 : 5) && rc == 0; ++i) {
+        rc = measure(v, Rs[i], slope, s, &rms, &ms);
+        if (rc == 0)
+            rc = row(c, knob, Rs[i], shape, Rs[i], ms_volume_get_desc(v).smooth_steps, s, n,
+                     rms, ms);
+    }
+    static const int smooth[] = {0, 1, 2, 4, 8, 16};
+    snprintf(knob, sizeof knob, "%s_smoothing_passes", shape);
+    for (int i = 0; i < (c->quick ? 3 : 6) && rc == 0; ++i) {
+        ms_volume *w = with_smoothing(v, smooth[i]);
+        if (!w) {
+            rc = -1;
+            break;
+        }
+        rc = measure(w, 32, slope, s, &rms, &ms);
+        if (rc == 0)
+            rc = row(c, knob, smooth[i], shape, 32, smooth[i], s, n, rms, ms);
+        ms_volume_destroy(w);
+    }
+    acc_free(sc, sim);
+    return rc;
+}
+
+int study_extract_flat(acc_ctx *c)
+{
+    return study(c, "flat", 0);
+}
+
+int study_extract_tilted(acc_ctx *c)
+{
+    /* a = 0.2 g: the surface rises 0.05 m across the 0.5 m box */
+    return study(c, "tilted", 0.2 * 9.81);
+}

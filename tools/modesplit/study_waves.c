@@ -1,0 +1,238 @@
+/* Study 1, waves (eq. 2), against analytic answers:
+ *  - the (2, 1) standing mode of a 1 m x 1 m reflecting basin, whose
+ *    angular frequency is c pi sqrt(2^2 + 1^2) (separation of variables):
+ *    its error against cells per wavelength (second order expected) and
+ *    against the Courant number c dt / dx;
+ *  - the speed of the leading crest of a ring wave from a drop, against c;
+ *  - the paper's non-dispersive model against real water, whose phase speed
+ *    is sqrt((g k + sigma k^3 / rho) tanh(k d)) / k (linear capillary-
+ *    gravity waves), at a given depth d.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "accuracy.h"
+
+#define PI 3.14159265358979323846
+
+static const char wave_scene[] =
+    "{\"name\": \"accuracy-waves\", \"frame_dt\": 0.01,"
+    " \"domain\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0.5]},"
+    " \"surface\": {\"cells\": [64, 64], \"wave_speed\": 1.0, \"damping\": 1.0,"
+    "              \"boundary\": \"reflect\"}}";
+
+/* The scene's surface, built through --set overrides as `modesplit run`
+ * builds its own; *sim owns it (acc_free). */
+static ms_surface *wave_surface(const char *json, const char *const *sets, ms_scene **sc,
+                                ms_sim **sim)
+{
+    if (acc_sim(json, sets, sc, sim) != MS_OK)
+        return NULL;
+    return ms_sim_surface(*sim);
+}
+
+/* Measured angular frequency (rad/s) of the (2, 1) mode on an N x N grid
+ * at Courant number cr, from the zero crossings of the mode's amplitude;
+ * *ms_step and *ms_per_s the cost of the wave steps alone. */
+static int standing_mode(int N, double cr, double *omega, double *ms_step, double *ms_per_s)
+{
+    char cells[64];
+    snprintf(cells, sizeof cells, "surface.cells=[%d,%d]", N, N);
+    const char *sets[] = {cells, NULL};
+    ms_sim *sim;
+    ms_scene *sc;
+    ms_surface *s = wave_surface(wave_scene, sets, &sc, &sim);
+    if (!s)
+        return -1;
+    const int m = 2, n = 1;
+    const double c = 1.0, dx = 1.0 / N;
+    float *f = malloc((size_t)N * N * sizeof *f);
+    double norm = 0;
+    for (int y = 0; y < N; ++y)
+        for (int x = 0; x < N; ++x) {
+            double v = cos(m * PI * (x + 0.5) * dx) * cos(n * PI * (y + 0.5) * dx);
+            f[y * N + x] = (float)v;
+            norm += v * v;
+        }
+    ms_surface_set_height(s, f);
+    const double w_exact = c * PI * sqrt(m * m + n * n);
+    const float dt = (float)(cr * dx / c);
+    const int steps = (int)ceil(4.5 * 2 * PI / w_exact / dt);
+    double prev = 1.0, t_first = -1, t_last = -1, wall = 0;
+    int crossings = 0, rc = 0;
+    for (int k = 1; k <= steps; ++k) {
+        double t0 = tool_now();
+        if (ms_surface_step(s, dt) != MS_OK) {
+            tool_error("accuracy: waves: %s", ms_last_error());
+            rc = -1;
+            break;
+        }
+        wall += tool_now() - t0;
+        const float *h = ms_surface_height(s, NULL, NULL);
+        double a = 0;
+        for (int i = 0; i < N * N; ++i)
+            a += (double)h[i] * f[i];
+        a /= norm;
+        if ((prev > 0) != (a > 0)) {
+            double t = (k - 1 + prev / (prev - a)) * (double)dt;
+            if (t_first < 0)
+                t_first = t;
+            t_last = t;
+            ++crossings;
+        }
+        prev = a;
+    }
+    free(f);
+    acc_free(sc, sim);
+    if (rc == 0 && crossings < 2) {
+        tool_error("accuracy: waves: the mode did not oscillate on %d^2", N);
+        return -1;
+    }
+    *omega = PI * (crossings - 1) / (t_last - t_first);
+    *ms_step = 1e3 * wall / steps;
+    *ms_per_s = 1e3 * wall / (steps * (double)dt);
+    return rc;
+}
+
+static int mode_row(acc_ctx *c, const char *knob, double value, int N, double cr)
+{
+    double w, ms_step, ms_s;
+    if (standing_mode(N, cr, &w, &ms_step, &ms_s) != 0)
+        return -1;
+    const double w_exact = PI * sqrt(5.0);
+    acc_row r = {.value = value, .error = fabs(w - w_exact) / w_exact, .reference = w_exact,
+                 .ms_per_s = ms_s, .ms_per_step = ms_step, .size = (double)N * N, .threads = 1};
+    snprintf(r.study, sizeof r.study, "waves");
+    snprintf(r.knob, sizeof r.knob, "%s", knob);
+    snprintf(r.config, sizeof r.config, "%dx%d cells, Courant %.2f", N, N, cr);
+    snprintf(r.metric, sizeof r.metric, "standing-mode frequency rel. error");
+    return acc_add(c, &r);
+}
+
+int study_waves_cells(acc_ctx *c)
+{
+    /* the (2, 1) mode's wavelength is 2 pi / (pi sqrt 5) = 0.894 m */
+    static const int full[] = {64, 128, 256, 512, 1024}, quick[] = {32, 64, 128};
+    const int *N = c->quick ? quick : full;
+    int n = c->quick ? 3 : 5;
+    for (int i = 0; i < n; ++i)
+        if (mode_row(c, "cells_per_wavelength", N[i] * 2.0 / sqrt(5.0), N[i], 0.5) != 0)
+            return -1;
+    return 0;
+}
+
+int study_waves_courant(acc_ctx *c)
+{
+    static const double full[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7}, quick[] = {0.1, 0.4, 0.7};
+    const double *cr = c->quick ? quick : full;
+    int n = c->quick ? 3 : 7, N = c->quick ? 64 : 128;
+    for (int i = 0; i < n; ++i)
+        if (mode_row(c, "courant", cr[i], N, cr[i]) != 0)
+            return -1;
+    return 0;
+}
+
+/* Radius (m) of the highest point along the ray y = centre, x > centre,
+ * refined by a parabola through the three cells around it. */
+static double crest_radius(const float *h, int N, double dx)
+{
+    int y = N / 2, best = N / 2 + 1;
+    for (int x = N / 2 + 1; x < N - 1; ++x)
+        if (h[y * N + x] > h[y * N + best])
+            best = x;
+    double a = h[y * N + best - 1], b = h[y * N + best], d = h[y * N + best + 1];
+    double den = a - 2 * b + d, off = den < 0 ? 0.5 * (a - d) / den : 0;
+    return (best + 0.5 + off) * dx - 0.5 * N * dx;
+}
+
+int study_waves_ring(acc_ctx *c)
+{
+    static const int full[] = {128, 256, 512, 1024}, quick[] = {64, 128, 256};
+    const int *Ns = c->quick ? quick : full;
+    int n = c->quick ? 3 : 4;
+    static const char ring_scene[] =
+        "{\"name\": \"accuracy-ring\", \"frame_dt\": 0.01,"
+        " \"domain\": {\"min\": [0, 0, 0], \"max\": [2, 2, 0.5]},"
+        " \"surface\": {\"cells\": [64, 64], \"wave_speed\": 1.0, \"damping\": 1.0,"
+        "              \"boundary\": \"absorb\"}}";
+    for (int i = 0; i < n; ++i) {
+        int N = Ns[i];
+        char cells[64];
+        snprintf(cells, sizeof cells, "surface.cells=[%d,%d]", N, N);
+        const char *sets[] = {cells, NULL};
+        ms_sim *sim;
+        ms_scene *sc;
+        ms_surface *s = wave_surface(ring_scene, sets, &sc, &sim);
+        if (!s)
+            return -1;
+        const double dx = 2.0 / N, c0 = 1.0;
+        /* a drop 0.1 m wide: resolved by 6 cells on the coarsest grid */
+        ms_surface_add_drop(s, 1.0f, 1.0f, 0.1f, 0.01f);
+        const float dt = (float)(0.5 * dx / c0);
+        double t = 0, wall = 0, r1 = NAN, t1 = 0.3, t2 = 0.7, r2 = NAN;
+        long steps = 0;
+        while (t < t2 + 0.5 * dt) {
+            double w0 = tool_now();
+            if (ms_surface_step(s, dt) != MS_OK) {
+                tool_error("accuracy: ring: %s", ms_last_error());
+                acc_free(sc, sim);
+                return -1;
+            }
+            wall += tool_now() - w0;
+            ++steps;
+            t = steps * (double)dt;
+            if (isnan(r1) && t >= t1) {
+                t1 = t;
+                r1 = crest_radius(ms_surface_height(s, NULL, NULL), N, dx);
+            }
+        }
+        t2 = t;
+        r2 = crest_radius(ms_surface_height(s, NULL, NULL), N, dx);
+        acc_free(sc, sim);
+        double speed = (r2 - r1) / (t2 - t1);
+        acc_row r = {.value = 0.1 / dx, .error = fabs(speed - c0) / c0, .reference = c0,
+                     .ms_per_s = 1e3 * wall / t, .ms_per_step = 1e3 * wall / steps,
+                     .size = (double)N * N, .threads = 1};
+        snprintf(r.study, sizeof r.study, "waves");
+        snprintf(r.knob, sizeof r.knob, "ring_cells_per_drop_radius");
+        snprintf(r.config, sizeof r.config, "%dx%d cells over 2 m, speed %.4f m/s", N, N, speed);
+        snprintf(r.metric, sizeof r.metric, "ring front speed rel. error");
+        if (acc_add(c, &r) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+int study_water_dispersion(acc_ctx *c)
+{
+    /* eq. 2 with the shallow-water speed of the library's depth map
+     * (ms_surface_speed_from_depth) against linear capillary-gravity waves
+     * of real water at 20 C: sigma 0.0728 N/m, rho 998 kg/m^3 */
+    static const float depths[] = {0.02f, 0.1f, 1.0f};
+    const double g = 9.81, sigma = 0.0728, rho = 998.0;
+    int npts = c->quick ? 9 : 41;
+    for (int di = 0; di < 3; ++di) {
+        float cm = 0;
+        if (ms_surface_speed_from_depth(&depths[di], 1, (float)g, &cm) != MS_OK) {
+            tool_error("accuracy: water: %s", ms_last_error());
+            return -1;
+        }
+        for (int i = 0; i < npts; ++i) {
+            double lambda = 1e-3 * pow(1e4, (double)i / (npts - 1)); /* 1 mm .. 10 m */
+            double k = 2 * PI / lambda;
+            double creal = sqrt((g * k + sigma * k * k * k / rho) * tanh(k * depths[di])) / k;
+            acc_row r = {.value = lambda, .error = fabs(cm - creal) / creal, .reference = creal,
+                         .ms_per_s = NAN, .ms_per_step = NAN, .size = NAN, .threads = 1};
+            snprintf(r.study, sizeof r.study, "water");
+            snprintf(r.knob, sizeof r.knob, "lambda_m_depth_%.3gm", (double)depths[di]);
+            snprintf(r.config, sizeof r.config, "depth %g m, model c = %.4f m/s", depths[di],
+                     cm);
+            snprintf(r.metric, sizeof r.metric, "phase speed rel. error vs real water");
+            if (acc_add(c, &r) != 0)
+                return -1;
+        }
+    }
+    return 0;
+}
