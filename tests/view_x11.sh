@@ -38,10 +38,12 @@ shot "$T/b.png"
 xdotool mousemove --window "$win" 90 170 mousedown 1
 for x in 100 110 120 130 140 150 160 170 180 190 200 210; do
     xdotool mousemove --window "$win" "$x" 170
-    sleep 0.1
+    sleep 0.2
 done
 xdotool mouseup 1
-sleep 0.5
+# a frame under a loaded llvmpipe can take half a second: let the drag's
+# frames reach the window before the screenshot
+sleep 2
 shot "$T/c.png"
 echo "still $(diff_of "$T/a.png" "$T/b.png")"
 echo "dragged $(diff_of "$T/b.png" "$T/c.png")"
