@@ -44,7 +44,7 @@ typedef struct ms_sim_desc {
     const ms_surface_desc *surface;  /* NULL: no surface waves */
     int field_nx, field_ny;          /* X_SPH x Y_SPH; N_surf = surface nx / field_nx (eq. 20) */
     int surface_substeps;            /* N_time (eq. 19); 0 = derived from the CFL bound */
-    float couple_surface_from_volume, couple_volume_from_surface; /* each in [0, 1] */
+    float couple_surface_from_volume, couple_volume_from_surface; /* [0, 0.25], [0, 1] */
     int threads;                     /* 1 = sequential, 2 = two-core split */
     /* --- grown at the end (ABI: descs only grow) --- */
     ms_enqueue_task_fn *enqueue_task;

@@ -405,7 +405,7 @@ static ms_status read_coupling(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     TRY(ms_scene_check_keys(c, o, keys));
     TRY(ms_scene_get_int(c, o, "n_time", 0, 0, 100000, &n_time));
     sc->n_time = (int)n_time;
-    TRY(ms_scene_get_float(c, o, "surface_from_volume", 0, 0, 1, 0, "",
+    TRY(ms_scene_get_float(c, o, "surface_from_volume", 0, 0, 0.25f, 0, "",
                            &sc->couple_surface_from_volume));
     TRY(ms_scene_get_float(c, o, "volume_from_surface", 0, 0, 1, 0, "",
                            &sc->couple_volume_from_surface));
