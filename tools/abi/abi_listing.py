@@ -226,10 +226,15 @@ def probe(args, inc, structs, enums, macros):
     return sizes, offsets, values
 
 
+# The linker's section bounds, which GNU ld puts in the dynamic table of
+# some builds (ThreadSanitizer's): not exports of the library.
+LINKER_SYMBOLS = {"__bss_start", "_edata", "_end"}
+
+
 def exported(lib):
     out = run(["nm", "-D", "--defined-only", lib])
     return {p[2] for p in (l.split() for l in out.splitlines())
-            if len(p) == 3 and p[1] in "TDRBW"}
+            if len(p) == 3 and p[1] in "TDRBW" and p[2] not in LINKER_SYMBOLS}
 
 
 def listing(args):
