@@ -21,10 +21,11 @@ PACKAGES="$PACKAGES libegl-dev libegl-mesa0"
 # the user otherwise (the tests that need them report themselves skipped).
 CI_PACKAGES="gnuplot-nox libsdl2-dev xvfb xauth xdotool x11-apps imagemagick ffmpeg \
 paraview python3-paraview python3-h5py python3-venv"
-# valgrind and clang (the libFuzzer harnesses) run only in CI (.ci/valgrind,
+# valgrind and clang with its runtimes (libFuzzer, ASan: libclang-rt-14-dev,
+# which --no-install-recommends leaves out) run only in CI (.ci/valgrind,
 # .ci/fuzz): `make check` of a user without them must not fail for their
 # absence.
-CI_PACKAGES="$CI_PACKAGES valgrind clang"
+CI_PACKAGES="$CI_PACKAGES valgrind clang libclang-rt-14-dev"
 
 if [ "${1:-}" = "--ci" ]; then
     PACKAGES="$PACKAGES $CI_PACKAGES"
