@@ -1085,6 +1085,115 @@ START_TEST(preview_refuses_bad_arguments)
 }
 END_TEST
 
+/* ---- reopening to append (resume, issue 17) ----------------------------- */
+
+/* A kill between a frame's data and its commit: datasets one longer than
+ * `frames` and the step's links, as the writer leaves them. */
+static void leave_cut_frame(const char *path, const ms_writer_layout *l, long frames)
+{
+    hid_t f = H5Fopen(path, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    for (int s = 0; s < MS_IO_NFIELDS; ++s) {
+        char name[64];
+        snprintf(name, sizeof name, "fields/%s", ms_io_field_names[s]);
+        hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+        hsize_t dims[3] = {(hsize_t)frames + 1, (hsize_t)l->grid[s].ny, (hsize_t)l->grid[s].nx};
+        ck_assert_int_ge(H5Dset_extent(d, dims), 0);
+        H5Dclose(d);
+    }
+    hid_t d = H5Dopen2(f, "time", H5P_DEFAULT);
+    hsize_t tdims[1] = {(hsize_t)frames + 1};
+    ck_assert_int_ge(H5Dset_extent(d, tdims), 0);
+    H5Dclose(d);
+    char step[64];
+    ms_h5part_step_name(step, sizeof step, frames);
+    hid_t g = H5Gcreate2(f, step, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    ck_assert_int_ge(g, 0);
+    H5Gclose(g);
+    H5Fclose(f);
+}
+
+START_TEST(append_continues_after_the_last_complete_frame)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    ms_writer *w;
+    ck_assert_int_eq(ms_writer_open_layout(tmp_path("a.h5"), &l, &w), MS_OK);
+    write_frames(w, &l, 0, 5);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    leave_cut_frame(tmp_path("a.h5"), &l, 5);
+    ck_assert_msg(ms_writer_open_append_layout(tmp_path("a.h5"), &l, &w) == MS_OK, "%s",
+                  ms_last_error());
+    ck_assert_int_eq(ms_writer_frames(w), 5);
+    write_frames(w, &l, 5, 9);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    /* twice */
+    ck_assert_int_eq(ms_writer_open_append_layout(tmp_path("a.h5"), &l, &w), MS_OK);
+    ck_assert_int_eq(ms_writer_frames(w), 9);
+    write_frames(w, &l, 9, 11);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    MS_ASSERT_H5DUMP_READS(tmp_path("a.h5"));
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(tmp_path("a.h5"), &r), MS_OK);
+    check_frames(r, &l, 11);
+    ms_reader_close(r);
+    char *x = slurp(tmp_path("a.xmf"));
+    ck_assert_ptr_nonnull(x);
+    ck_assert_int_eq(count_of(x, "<Time Value="), 11);
+    free(x);
+    remove_tmp_dir();
+}
+END_TEST
+
+START_TEST(append_refuses_another_scene_build_or_fields)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    ms_writer *w;
+    ck_assert_int_eq(ms_writer_open_layout(tmp_path("a.h5"), &l, &w), MS_OK);
+    write_frames(w, &l, 0, 3);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+
+    ms_writer_layout other = l;
+    other.scene_text = "{\"name\": \"test scene\", \"frame_dt\": 0.01}";
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("a.h5"), &other, &w),
+                      MS_ERR_INVALID_ARGUMENT, "frame_dt is 0.02 in the file, 0.01 here");
+    ck_assert_ptr_null(w);
+    other = l;
+    other.scene_text = "{\"frame_dt\": 0.02, \"name\": \"test scene\"}"; /* same values */
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("a.h5"), &other, &w),
+                      MS_ERR_INVALID_ARGUMENT, "another scene text: line 1");
+    other = l;
+    other.fields = MS_FIELD_COMBINED | MS_FIELD_PARTICLES;
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("a.h5"), &other, &w),
+                      MS_ERR_INVALID_ARGUMENT, "holds the field surface");
+    other = l;
+    other.grid[MS_IO_VOLUME].nx = 10;
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("a.h5"), &other, &w),
+                      MS_ERR_INVALID_ARGUMENT, "[frame][6][10]");
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("none.h5"), &l, &w), MS_ERR_IO,
+                      "none.h5");
+    FILE *f = fopen(tmp_path("text.h5"), "w");
+    fputs("not a run\n", f);
+    fclose(f);
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("text.h5"), &l, &w), MS_ERR_IO,
+                      "text.h5");
+    /* another build */
+    hid_t h = H5Fopen(tmp_path("a.h5"), H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(H5Adelete(h, "library_version"), 0);
+    ck_assert_int_ge(ms_h5_attr_string(h, "library_version", "0.0.1-other"), 0);
+    H5Fclose(h);
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("a.h5"), &l, &w),
+                      MS_ERR_INVALID_ARGUMENT, "library version 0.0.1-other");
+    /* the refusals changed nothing */
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(tmp_path("a.h5"), &r), MS_OK);
+    check_frames(r, &l, 3);
+    ms_reader_close(r);
+    remove_tmp_dir();
+}
+END_TEST
+
 static Suite *io_suite(void)
 {
     Suite *s = suite_create("io");
@@ -1112,6 +1221,8 @@ static Suite *io_suite(void)
     tcase_add_test(tc, writer_refuses_bad_layouts_and_frames);
     tcase_add_test(tc, reader_refuses_what_is_not_a_run);
     tcase_add_test(tc, reader_refuses_malformed_datasets);
+    tcase_add_test(tc, append_continues_after_the_last_complete_frame);
+    tcase_add_test(tc, append_refuses_another_scene_build_or_fields);
     suite_add_tcase(s, tc);
     tc = tcase_create("preview");
     tcase_set_timeout(tc, 60);

@@ -82,6 +82,21 @@ MS_API long ms_writer_frames(const ms_writer *w);
 /* The XDMF sidecar's path. */
 MS_API const char *ms_writer_xdmf_path(const ms_writer *w);
 
+/* Reopen a run file that a writer of this sim's scene wrote (killed or
+ * finished) to append frames to it: how `modesplit run --resume` continues
+ * a run. The file must hold format_version MS_FILE_FORMAT_VERSION, be
+ * written by this library version, from the same scene text (the sentence
+ * names the first line that differs) and with the same fields and grids;
+ * otherwise MS_ERR_INVALID_ARGUMENT (MS_ERR_UNSUPPORTED for another format
+ * version, MS_ERR_PARSE for a file that is not a run) and the file is left
+ * as it was. A frame cut by a kill (data past the `frames` attribute) is
+ * dropped; ms_writer_frames then gives the frames kept, the next
+ * ms_writer_frame appends after them, and the sidecars are written again.
+ * The caller brings the sim to the state of the last frame kept (replaying
+ * it: same scene, same build -> same bytes). */
+MS_API ms_status ms_writer_open_append(const char *path, const ms_sim *sim, unsigned fields,
+                                       ms_writer **out);
+
 /* ---- reading ----------------------------------------------------------- */
 
 typedef struct ms_reader ms_reader;

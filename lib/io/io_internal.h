@@ -51,12 +51,24 @@ typedef struct ms_writer_data {
 } ms_writer_data;
 
 ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out);
+/* Reopen a run file written with layout l to append to it: refuses another
+ * format version, library version, scene text or set of fields (nothing in
+ * the file is changed then), drops a frame cut by a kill and lists the
+ * complete frames in fresh sidecars (ms_writer_open_append). */
+ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout *l,
+                                       ms_writer **out);
 ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d);
 /* Tests only: turn off the free-space check, so that the write itself
  * meets the full disk. */
 void ms_writer_skip_space_check(ms_writer *w);
 /* The layout the writer was opened with (its grids and fields). */
 const ms_writer_layout *ms_writer_get_layout(const ms_writer *w);
+
+/* ---- scene texts compared key by key (scene_diff.c) ---- */
+/* Name up to three dotted key paths whose values differ between the two
+ * scene JSON texts, with both values, into buf; returns how many differ
+ * (0: the same scene, numbers compared by value), -1 if either does not parse. */
+int ms_io_scene_diff(const char *file_text, const char *this_text, char *buf, size_t size);
 
 /* ---- XDMF sidecar (xdmf.c) ---- */
 typedef struct ms_xdmf ms_xdmf;

@@ -621,3 +621,305 @@ const ms_writer_layout *ms_writer_get_layout(const ms_writer *w)
 {
     return &w->layout;
 }
+
+/* ---- reopening a run file to append to it (resume, issue 17) ---------- */
+
+/* Line `line` (1-based) of s, at most n bytes, into buf. */
+static void text_line(const char *s, int line, char *buf, size_t n)
+{
+    for (int l = 1; l < line && s; ++l) {
+        s = strchr(s, '\n');
+        if (s)
+            ++s;
+    }
+    size_t len = 0;
+    if (s)
+        while (s[len] && s[len] != '\n')
+            ++len;
+    if (len >= n)
+        len = n - 1;
+    if (s)
+        memcpy(buf, s, len);
+    buf[len] = '\0';
+}
+
+/* The file's scene and this one differ as text: name the keys whose
+ * values differ (scene_diff.c), or the first line that differs when the
+ * values are the same (then the texts differ in keys' order or spacing,
+ * which is no difference to the simulation, but the stored scene must be
+ * the one the frames came from). */
+static ms_status refuse_scene(const char *path, const char *have, const char *want)
+{
+    char keys[768];
+    if (ms_io_scene_diff(have, want, keys, sizeof keys) > 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: %s was written from another scene: %s; resuming would not "
+                       "continue that run", path, keys);
+    int line = 1;
+    size_t i = 0;
+    for (; have[i] && have[i] == want[i]; ++i)
+        if (have[i] == '\n')
+            ++line;
+    char a[96], b[96];
+    text_line(have, line, a, sizeof a);
+    text_line(want, line, b, sizeof b);
+    return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                   "io: %s was written from another scene text: line %d of its scene is "
+                   "\"%s\", this scene's is \"%s\"", path, line, a, b);
+}
+
+/* Length of a 1-D or 3-D dataset's first dimension, -1 on error. */
+static long first_dim(hid_t d)
+{
+    hsize_t dims[3] = {0, 0, 0};
+    hid_t s = H5Dget_space(d);
+    int rank = s >= 0 ? H5Sget_simple_extent_ndims(s) : -1;
+    if (rank < 1 || rank > 3 || H5Sget_simple_extent_dims(s, dims, NULL) < 0) {
+        if (s >= 0)
+            H5Sclose(s);
+        return -1;
+    }
+    H5Sclose(s);
+    return (long)dims[0];
+}
+
+/* Check the file's identity against the layout: format, build, scene, the
+ * fields and their grids. Opens w->dset[], w->time_dset, w->frames_attr
+ * and sets w->frames to the complete frames. */
+static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
+{
+    hid_t f = w->file;
+    const char *p = w->path;
+    char *s = NULL;
+    int64_t version = 0;
+    if (ms_h5_read_string(f, "format", 64, &s) < 0 || strcmp(s, MS_FILE_FORMAT) != 0) {
+        ms_free(s);
+        return ms_fail(MS_ERR_PARSE, "io: %s is not a modesplit run file (no format \"%s\")",
+                       p, MS_FILE_FORMAT);
+    }
+    ms_free(s);
+    s = NULL;
+    if (ms_h5_read_int64(f, "format_version", &version) < 0 ||
+        version != MS_FILE_FORMAT_VERSION)
+        return ms_fail(MS_ERR_UNSUPPORTED,
+                       "io: %s has format_version %lld; only version %d files can be resumed",
+                       p, (long long)version, MS_FILE_FORMAT_VERSION);
+    if (ms_h5_read_string(f, "library_version", 256, &s) < 0 || strcmp(s, ms_version()) != 0) {
+        ms_status st = ms_fail(MS_ERR_INVALID_ARGUMENT,
+                               "io: %s was written by library version %s, this is %s: another "
+                               "build may give other bytes, so it cannot continue that run",
+                               p, s ? s : "(none)", ms_version());
+        ms_free(s);
+        return st;
+    }
+    ms_free(s);
+    s = NULL;
+    const char *want = l->scene_text ? l->scene_text : "";
+    if (ms_h5_read_string(f, "scene", 64u << 20, &s) < 0) {
+        ms_free(s);
+        return ms_fail(MS_ERR_PARSE, "io: %s has no scene attribute", p);
+    }
+    if (strcmp(s, want) != 0) {
+        ms_status st = refuse_scene(p, s, want);
+        ms_free(s);
+        return st;
+    }
+    ms_free(s);
+
+    int64_t frames = 0;
+    if (ms_h5_read_int64(f, "frames", &frames) < 0 || frames < 0)
+        return ms_fail(MS_ERR_PARSE, "io: %s has no frames attribute", p);
+    long k = (long)frames;
+    for (int i = 0; i < MS_IO_NFIELDS; ++i) {
+        char name[64];
+        snprintf(name, sizeof name, "fields/%s", ms_io_field_names[i]);
+        int want_it = (l->fields & (1u << i)) != 0;
+        htri_t has = H5Lexists(f, "fields", H5P_DEFAULT) > 0 ? H5Lexists(f, name, H5P_DEFAULT)
+                                                             : 0;
+        if ((has > 0) != want_it)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "io: %s %s the field %s and this run %s it: not the same output", p,
+                           has > 0 ? "holds" : "lacks", ms_io_field_names[i],
+                           want_it ? "writes" : "does not write");
+        if (!want_it)
+            continue;
+        w->dset[i] = H5Dopen2(f, name, H5P_DEFAULT);
+        hsize_t dims[3] = {0, 0, 0};
+        hid_t sp = w->dset[i] >= 0 ? H5Dget_space(w->dset[i]) : -1;
+        int rank = sp >= 0 ? H5Sget_simple_extent_ndims(sp) : -1;
+        if (rank == 3)
+            H5Sget_simple_extent_dims(sp, dims, NULL);
+        if (sp >= 0)
+            H5Sclose(sp);
+        if (rank != 3 || dims[1] != (hsize_t)l->grid[i].ny || dims[2] != (hsize_t)l->grid[i].nx)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "io: %s's field %s is not a [frame][%d][%d] dataset as this run "
+                           "writes", p, ms_io_field_names[i], l->grid[i].ny, l->grid[i].nx);
+        if ((long)dims[0] < k)
+            k = (long)dims[0];
+    }
+    htri_t has_particles = H5Lexists(f, "particles", H5P_DEFAULT);
+    if ((has_particles > 0) != ((l->fields & MS_FIELD_PARTICLES) != 0))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: %s %s particles and this run %s them: not the same output", p,
+                       has_particles > 0 ? "holds" : "lacks",
+                       (l->fields & MS_FIELD_PARTICLES) ? "writes" : "does not write");
+    w->time_dset = H5Dopen2(f, "time", H5P_DEFAULT);
+    long nt = w->time_dset >= 0 ? first_dim(w->time_dset) : -1;
+    if (nt < 0)
+        return ms_fail(MS_ERR_PARSE, "io: %s has no readable /time", p);
+    if (nt < k)
+        k = nt;
+    w->frames_attr = H5Aopen(f, "frames", H5P_DEFAULT);
+    if (w->frames_attr < 0)
+        return ms_fail(MS_ERR_PARSE, "io: %s has no frames attribute", p);
+    w->frames = k;
+    return MS_OK;
+}
+
+/* Particles of committed frame k (the H5Part step's x), -1 on error. */
+static int step_count(hid_t f, long k)
+{
+    char name[64];
+    ms_h5part_step_name(name, sizeof name, k);
+    strncat(name, "/x", sizeof name - strlen(name) - 1);
+    hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+    if (d < 0)
+        return -1;
+    long n = first_dim(d);
+    H5Dclose(d);
+    return n > MS_IO_MAX_PARTICLES ? -1 : (int)n;
+}
+
+/* Drop what lies past the complete frames (a frame cut by a kill), then
+ * write the sidecars again for the frames kept. */
+static ms_status trim_and_relist(ms_writer *w)
+{
+    hid_t f = w->file;
+    long k = w->frames;
+    for (int i = 0; i < MS_IO_NFIELDS; ++i) {
+        if (w->dset[i] < 0)
+            continue;
+        hsize_t dims[3] = {(hsize_t)k, (hsize_t)w->layout.grid[i].ny,
+                           (hsize_t)w->layout.grid[i].nx};
+        if (H5Dset_extent(w->dset[i], dims) < 0)
+            return MS_ERR_IO;
+    }
+    hsize_t tdims[1] = {(hsize_t)k};
+    if (H5Dset_extent(w->time_dset, tdims) < 0)
+        return MS_ERR_IO;
+    if (w->layout.fields & MS_FIELD_PARTICLES) {
+        /* links of later frames, if the kill came between link and `frames` */
+        for (long j = k;; ++j) {
+            char a[64], b[64];
+            ms_h5part_step_name(a, sizeof a, j);
+            snprintf(b, sizeof b, "particles/%ld", j);
+            int ha = H5Lexists(f, a, H5P_DEFAULT) > 0, hb = H5Lexists(f, b, H5P_DEFAULT) > 0;
+            if (!ha && !hb)
+                break;
+            if ((ha && H5Ldelete(f, a, H5P_DEFAULT) < 0) ||
+                (hb && H5Ldelete(f, b, H5P_DEFAULT) < 0))
+                return MS_ERR_IO;
+        }
+    }
+    int64_t committed = k;
+    if (H5Awrite(w->frames_attr, H5T_NATIVE_INT64, &committed) < 0 || !commit(w))
+        return MS_ERR_IO;
+    return MS_OK;
+}
+
+static ms_status relist_sidecars(ms_writer *w)
+{
+    const char *slash = strrchr(w->path, '/');
+    const char *h5 = slash ? slash + 1 : w->path;
+    ms_status st = ms_xdmf_open(w->xmf_path, h5, &w->layout, 0, &w->xdmf);
+    if (st == MS_OK)
+        st = ms_xdmf_open(w->xmf2_path, h5, &w->layout, 1, &w->xdmf2);
+    for (long j = 0; j < w->frames && st == MS_OK; ++j) {
+        double t = 0;
+        hsize_t start[1] = {(hsize_t)j}, count[1] = {1};
+        hid_t fs = H5Dget_space(w->time_dset);
+        hid_t ms = H5Screate_simple(1, count, NULL);
+        int ok = fs >= 0 && ms >= 0 &&
+                 H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) >= 0 &&
+                 H5Dread(w->time_dset, H5T_NATIVE_DOUBLE, ms, fs, H5P_DEFAULT, &t) >= 0;
+        if (fs >= 0)
+            H5Sclose(fs);
+        if (ms >= 0)
+            H5Sclose(ms);
+        int n = 0;
+        if (ok && (w->layout.fields & MS_FIELD_PARTICLES))
+            ok = (n = step_count(w->file, j)) >= 0;
+        if (!ok)
+            return ms_h5_fail(MS_ERR_PARSE, "io: frame %ld of %s cannot be read back", j,
+                              w->path);
+        st = ms_xdmf_frame(w->xdmf, j, t, n);
+        if (st == MS_OK)
+            st = ms_xdmf_frame(w->xdmf2, j, t, n);
+    }
+    return st;
+}
+
+ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout *l,
+                                       ms_writer **out)
+{
+    ms_status st;
+    if ((st = ms_check_not_null("io", "out", out)) != MS_OK)
+        return st;
+    *out = NULL;
+    if ((st = ms_check_not_null("io", "path", path)) != MS_OK ||
+        (st = ms_check_not_null("io", "layout", l)) != MS_OK)
+        return st;
+    if ((st = check_layout(l)) != MS_OK)
+        return st;
+    ms_writer *w = ms_alloc_array(1, sizeof *w);
+    if (!w)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+    w->file = w->time_dset = w->frames_attr = -1;
+    for (int i = 0; i < MS_IO_NFIELDS; ++i)
+        w->dset[i] = -1;
+    w->layout = *l;
+    w->layout.scene_text = w->layout.scene_name = NULL;
+    w->path = ms_strdup(path);
+    w->xmf_path = ms_xdmf_path_for(path);
+    w->xmf2_path = ms_xdmf_legacy_path_for(path);
+    if (!w->path || !w->xmf_path || !w->xmf2_path) {
+        free_writer(w);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+    }
+    if (access(path, R_OK | W_OK) != 0) {
+        st = ms_fail(MS_ERR_IO, "io: cannot resume %s: %s", path, strerror(errno));
+        free_writer(w);
+        return st;
+    }
+    ms_h5_quiet q;
+    ms_h5_hush(&q);
+    hid_t fapl = ms_h5_fapl();
+    w->file = fapl >= 0 ? H5Fopen(path, H5F_ACC_RDWR, fapl) : -1;
+    if (fapl >= 0)
+        H5Pclose(fapl);
+    if (w->file < 0)
+        st = ms_h5_fail(MS_ERR_IO, "io: cannot open %s to resume it", path);
+    if (st == MS_OK)
+        st = check_resumable(w, l);
+    /* Nothing has been changed in the file before this point: a refused
+     * file is closed untouched. */
+    if (st == MS_OK && trim_and_relist(w) != MS_OK)
+        st = ms_h5_fail(MS_ERR_IO, "io: cannot drop the cut frame of %s", path);
+    if (st == MS_OK)
+        st = relist_sidecars(w);
+    if (st != MS_OK) {
+        ms_xdmf_close(w->xdmf);
+        ms_xdmf_close(w->xdmf2);
+        close_handles(w);
+        if (w->file >= 0)
+            H5Fclose(w->file);
+        H5Eclear2(H5E_DEFAULT);
+        ms_h5_loud(&q);
+        free_writer(w);
+        return st;
+    }
+    ms_h5_loud(&q);
+    *out = w;
+    return MS_OK;
+}

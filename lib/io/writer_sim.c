@@ -16,12 +16,10 @@ static int sim_has(const ms_sim *sim, unsigned bit)
     return ms_sim_field_grid(sim, grid_of, &g) == MS_OK;
 }
 
-ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields, ms_writer **out)
+/* The layout of sim's run file with `fields` (0: the scene's). */
+static ms_status sim_layout(const ms_sim *sim, unsigned fields, ms_writer_layout *out)
 {
     ms_status st;
-    if ((st = ms_check_not_null("io", "out", out)) != MS_OK)
-        return st;
-    *out = NULL;
     if ((st = ms_check_not_null("io", "sim", sim)) != MS_OK)
         return st;
     const ms_scene *sc = ms_sim_scene(sim);
@@ -50,7 +48,33 @@ ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields, m
     l.frame_dt = sc ? ms_scene_frame_dt(sc) : 0.0;
     l.output_every = sc ? ms_scene_output_every(sc) : 1;
     l.deflate = sc ? ms_scene_output_deflate(sc) : 1;
+    *out = l;
+    return MS_OK;
+}
+
+ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields, ms_writer **out)
+{
+    ms_status st;
+    if ((st = ms_check_not_null("io", "out", out)) != MS_OK)
+        return st;
+    *out = NULL;
+    ms_writer_layout l;
+    if ((st = sim_layout(sim, fields, &l)) != MS_OK)
+        return st;
     return ms_writer_open_layout(path, &l, out);
+}
+
+ms_status ms_writer_open_append(const char *path, const ms_sim *sim, unsigned fields,
+                                ms_writer **out)
+{
+    ms_status st;
+    if ((st = ms_check_not_null("io", "out", out)) != MS_OK)
+        return st;
+    *out = NULL;
+    ms_writer_layout l;
+    if ((st = sim_layout(sim, fields, &l)) != MS_OK)
+        return st;
+    return ms_writer_open_append_layout(path, &l, out);
 }
 
 ms_status ms_writer_frame(ms_writer *w, const ms_sim *sim)

@@ -43,6 +43,7 @@ typedef struct run_opts {
     const char *scene;
     const char *out;     /* NULL: default name */
     const char *png;
+    const char *resume;  /* --resume RUN.h5 (resume.c) */
     long frames;         /* -1: from the duration */
     double duration;     /* s, < 0: the scene's */
     int threads;         /* 0: the scene's */
@@ -83,6 +84,10 @@ static int parse_args(int argc, char **argv, run_opts *o)
                 return EXIT_USAGE;
             }
             o->out = v;
+        } else if (tool_opt_value(argc, argv, &i, "--resume", &v, &bad)) {
+            if (bad)
+                return EXIT_USAGE;
+            o->resume = v;
         } else if (tool_opt_value(argc, argv, &i, "--png", &v, &bad)) {
             if (bad)
                 return EXIT_USAGE;
@@ -126,6 +131,10 @@ static int parse_args(int argc, char **argv, run_opts *o)
     }
     if (o->frames >= 0 && o->duration >= 0) {
         tool_error("run: give --frames or --duration, not both");
+        return EXIT_USAGE;
+    }
+    if (o->resume && (o->out || o->no_out)) {
+        tool_error("run: --resume RUN.h5 appends to RUN.h5: give no --out or --no-out with it");
         return EXIT_USAGE;
     }
     if (o->out && o->no_out) {
@@ -206,7 +215,19 @@ int cmd_run(int argc, char **argv)
     }
     char *out = NULL;
     ms_writer *w = NULL;
-    if (!o.no_out) {
+    long done = 0, written = 0;
+    if (o.resume) {
+        out = strdup(o.resume);
+        rc = out ? resume_run(out, sim, dt, every, frames, o.quiet, &w, &done, &written)
+                 : EXIT_RUNTIME;
+        if (rc != EXIT_OK) {
+            free(out);
+            png_end(&png);
+            ms_sim_destroy(sim);
+            ms_scene_destroy(sc);
+            return rc;
+        }
+    } else if (!o.no_out) {
         out = o.out ? strdup(o.out) : default_out(o.scene);
         if (!out || ms_writer_open(out, sim, 0, &w) != MS_OK) {
             tool_error("%s", out ? ms_last_error() : "out of memory");
@@ -226,7 +247,6 @@ int cmd_run(int argc, char **argv)
     tool_progress prog;
     progress_begin(&prog, frames, o.quiet);
     double write_s = 0, png_s = 0;
-    long done = 0, written = 0;
     rc = EXIT_OK;
     while (done < frames && !stop_signal) {
         ms_status step_st = ms_sim_step(sim, dt);

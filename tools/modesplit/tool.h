@@ -51,6 +51,11 @@ int tool_set_option(int argc, char **argv, int *i, tool_sets *s, int *bad);
 int tool_load_scene(const char *path, const tool_sets *s, ms_scene **out);
 
 int cmd_run(int argc, char **argv);
+/* resume.c: --resume RUN.h5: replay sim to the file's last complete frame,
+ * check it bit for bit, reopen the file to append; *done steps taken and
+ * *written frames kept. 0 or an EXIT_* code (the error printed). */
+int resume_run(const char *path, ms_sim *sim, float dt, int every, long frames, int quiet,
+               ms_writer **w, long *done, long *written);
 int cmd_info(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_plugins(int argc, char **argv);
