@@ -359,6 +359,24 @@ START_TEST(resume_drops_a_frame_cut_by_the_kill)
 }
 END_TEST
 
+/* A run killed before its first frame (or run with --frames 0) resumes
+ * from the start. */
+START_TEST(resume_a_run_of_no_frame)
+{
+    make_tmp_dir();
+    const char *full = tmp_path("full.h5"), *part = tmp_path("part.h5");
+    const char *a[] = {"run", SCENE, "--frames", "6", "--quiet", "--out", full, NULL};
+    ck_assert_msg(run_tool(a) == 0, "%s", log_text);
+    const char *b[] = {"run", SCENE, "--frames", "0", "--quiet", "--out", part, NULL};
+    ck_assert_msg(run_tool(b) == 0, "%s", log_text);
+    ck_assert_int_eq(frames_now(part), 0);
+    const char *r[] = {"run", SCENE, "--frames", "6", "--quiet", "--resume", part, NULL};
+    ck_assert_msg(run_tool(r) == 0, "%s", log_text);
+    assert_same_run(full, part, 6);
+    remove_tree(tmp_dir);
+}
+END_TEST
+
 START_TEST(resume_refuses_another_scene_and_leaves_the_file)
 {
     make_tmp_dir();
@@ -433,6 +451,7 @@ static Suite *resume_suite(void)
     tcase_add_test(tc, sigkill_then_resume_is_the_unbroken_run_2_threads);
     tcase_add_test(tc, resume_twice_with_output_every_3);
     tcase_add_test(tc, resume_drops_a_frame_cut_by_the_kill);
+    tcase_add_test(tc, resume_a_run_of_no_frame);
     tcase_add_test(tc, resume_refuses_another_scene_and_leaves_the_file);
     tcase_add_test(tc, resume_refuses_a_file_this_build_does_not_reproduce);
     suite_add_tcase(s, tc);
