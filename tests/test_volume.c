@@ -1050,6 +1050,130 @@ START_TEST(waves_nudge_surface_particles_without_adding_unbounded_energy)
 }
 END_TEST
 
+/* ---------------------------------------------------------------- views */
+
+/* The views of ms_volume_particles hold exactly what ms_volume_get_particles
+ * copies out (insertion order), byte for byte, at equal distances. */
+static void assert_views_current(ms_volume *v, const float *pos[3], const float *vel[3])
+{
+    int n = ms_volume_count(v);
+    ck_assert(pos[0] && vel[0]);
+    ck_assert(pos[1] - pos[0] > 0 && pos[2] - pos[1] == pos[1] - pos[0]);
+    ck_assert(vel[1] - vel[0] == pos[1] - pos[0] && vel[2] - vel[1] == pos[1] - pos[0]);
+    float *p = malloc(sizeof(float) * 3 * (size_t)(n + 1));
+    float *u = malloc(sizeof(float) * 3 * (size_t)(n + 1));
+    ck_assert_int_eq(ms_volume_get_particles(v, p, u), MS_OK);
+    for (int i = 0; i < n; ++i)
+        for (int a = 0; a < 3; ++a) {
+            ck_assert_msg(memcmp(&pos[a][i], &p[3 * i + a], sizeof(float)) == 0,
+                          "particle %d axis %d: view %g, copy %g", i, a, pos[a][i], p[3 * i + a]);
+            ck_assert_msg(memcmp(&vel[a][i], &u[3 * i + a], sizeof(float)) == 0,
+                          "particle %d axis %d: velocity view %g, copy %g", i, a, vel[a][i],
+                          u[3 * i + a]);
+        }
+    free(p);
+    free(u);
+}
+
+START_TEST(particle_views_stay_current_across_steps_and_count_changes)
+{
+    ms_volume_desc d = box_desc(0.4f, 0.4f, 0.8f, 0.04f);
+    ms_volume *v = make(&d);
+    int n = -1;
+    const float *pos[3], *vel[3];
+    MS_ASSERT_REFUSED(ms_volume_particles(NULL, &n, pos, vel), MS_ERR_INVALID_ARGUMENT, "volume");
+    MS_ASSERT_REFUSED(ms_volume_particles(v, NULL, pos, vel), MS_ERR_INVALID_ARGUMENT, "n");
+    /* never held a particle: no storage, NULL views */
+    ck_assert_int_eq(ms_volume_particles(v, &n, pos, vel), MS_OK);
+    ck_assert(n == 0 && pos[0] == NULL && vel[2] == NULL);
+    ms_volume_info before = ms_volume_info_init(), after = ms_volume_info_init();
+    ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.4f, 0.4f, 0.12f}); /* 10x10x3 */
+    ck_assert_int_eq(ms_volume_particles(v, &n, pos, vel), MS_OK);
+    ck_assert_int_eq(n, 300);
+    assert_views_current(v, pos, vel);
+    const float *p0 = pos[0], *v0 = vel[0];
+    /* steps reorder the particles internally; the views keep their place
+     * and follow the state (insertion order) */
+    for (int f = 0; f < 5; ++f) {
+        step(v, 1.0f / 60);
+        assert_views_current(v, pos, vel);
+    }
+    ck_assert(vel[2][0] != 0.0f); /* they moved: the views are not the start */
+    ck_assert_int_eq(ms_volume_particles(v, &n, pos, vel), MS_OK);
+    ck_assert(pos[0] == p0 && vel[0] == v0 && n == 300);
+    /* removal: same place, the survivors first */
+    int removed = 0;
+    ck_assert_int_eq(ms_volume_remove_box(v, (float[3]){0, 0, 0}, (float[3]){0.2f, 0.4f, 0.4f},
+                                          &removed),
+                     MS_OK);
+    ck_assert_int_gt(removed, 0);
+    ck_assert_int_eq(ms_volume_particles(v, &n, pos, vel), MS_OK);
+    ck_assert(pos[0] == p0 && n == 300 - removed);
+    assert_views_current(v, pos, vel);
+    /* an added particle within the storage: same place */
+    float q[3] = {0.1f, 0.1f, 0.3f}, qv[3] = {0.5f, 0, 0};
+    ck_assert_int_eq(ms_volume_add_particles(v, 1, q, qv), MS_OK);
+    ck_assert_int_eq(ms_volume_particles(v, &n, pos, vel), MS_OK);
+    ck_assert(pos[0] == p0 && n == 301 - removed);
+    ck_assert(pos[0][n - 1] == 0.1f && vel[0][n - 1] == 0.5f);
+    assert_views_current(v, pos, vel);
+    /* the coupling from the waves changes vz: the views follow */
+    ms_grid g = {.nx = 8, .ny = 8, .dx = 0.05f, .dy = 0.05f};
+    float w[64] = {0};
+    ck_assert_int_eq(ms_volume_adapt_to_waves(v, w, &g, 0.5f), MS_OK);
+    step(v, 0.01f);
+    for (int c = 0; c < 64; ++c)
+        w[c] = 0.01f;
+    ck_assert_int_eq(ms_volume_adapt_to_waves(v, w, &g, 0.5f), MS_OK);
+    assert_views_current(v, pos, vel);
+    /* growth past the storage (1024 particles) moves them: call again */
+    ms_volume_get_info(v, &before);
+    ck_assert_int_eq(ms_volume_fill_box(v, (float[3]){0, 0, 0.2f}, (float[3]){0.4f, 0.4f, 0.8f}),
+                     MS_OK);
+    ck_assert_int_gt(ms_volume_count(v), 1024);
+    ck_assert_int_eq(ms_volume_particles(v, &n, pos, vel), MS_OK);
+    ck_assert_int_eq(n, ms_volume_count(v));
+    assert_views_current(v, pos, vel);
+    step(v, 1.0f / 60);
+    assert_views_current(v, pos, vel);
+    ms_volume_get_info(v, &after);
+    ck_assert(after.bytes > before.bytes);
+    ms_volume_destroy(v);
+}
+END_TEST
+
+/* The views are a copy out of the state: asking for them changes nothing
+ * the simulation computes (same bytes as a volume that never asked). */
+START_TEST(particle_views_do_not_change_the_simulation)
+{
+    ms_volume_desc d = box_desc(0.4f, 0.4f, 0.4f, 0.04f);
+    ms_volume *a = make(&d), *b = make(&d);
+    int n;
+    const float *pos[3], *vel[3];
+    ck_assert_int_eq(ms_volume_particles(a, &n, pos, vel), MS_OK); /* before any particle */
+    for (int k = 0; k < 2; ++k)
+        ms_volume_fill_box(k ? b : a, (float[3]){0, 0, 0}, (float[3]){0.2f, 0.4f, 0.2f});
+    for (int f = 0; f < 10; ++f) {
+        step(a, 1.0f / 60);
+        step(b, 1.0f / 60);
+    }
+    n = ms_volume_count(a);
+    ck_assert_int_eq(n, ms_volume_count(b));
+    float *pa = malloc(sizeof(float) * 6 * (size_t)n), *pb = malloc(sizeof(float) * 6 * (size_t)n);
+    ms_volume_get_particles(a, pa, pa + 3 * n);
+    ms_volume_get_particles(b, pb, pb + 3 * n);
+    ck_assert(memcmp(pa, pb, sizeof(float) * 6 * (size_t)n) == 0);
+    float ha[16 * 16], hb[16 * 16];
+    ck_assert_int_eq(ms_volume_extract_height(a, 16, 16, ha), MS_OK);
+    ck_assert_int_eq(ms_volume_extract_height(b, 16, 16, hb), MS_OK);
+    ck_assert(memcmp(ha, hb, sizeof ha) == 0);
+    free(pa);
+    free(pb);
+    ms_volume_destroy(a);
+    ms_volume_destroy(b);
+}
+END_TEST
+
 static Suite *volume_suite(void)
 {
     Suite *s = suite_create("volume");
@@ -1100,6 +1224,12 @@ static Suite *volume_suite(void)
     tcase_add_test(in, remove_box_removes_and_keeps_the_order_of_the_rest);
     tcase_add_test(in, waves_nudge_surface_particles_without_adding_unbounded_energy);
     suite_add_tcase(s, in);
+
+    TCase *views = tcase_create("views");
+    tcase_set_timeout(views, 60);
+    tcase_add_test(views, particle_views_stay_current_across_steps_and_count_changes);
+    tcase_add_test(views, particle_views_do_not_change_the_simulation);
+    suite_add_tcase(s, views);
     return s;
 }
 

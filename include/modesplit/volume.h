@@ -266,6 +266,24 @@ MS_API ms_status ms_volume_set_tasks(ms_volume *v, ms_enqueue_task_fn *enqueue_t
  * mutating call on v. */
 MS_API ms_status ms_volume_particle_views(const ms_volume *v, int *n, const float *pos[3],
                                           const float *vel[3]);
+/* The particles in the order they were added (as ms_volume_get_particles),
+ * as views the volume keeps current: pos[0..2] = x, y, z and vel[0..2] =
+ * vx, vy, vz, *n each. As ms_sim_particles, the three arrays of pos (and
+ * of vel) lie in one block at equal distances (pos[2] - pos[1] ==
+ * pos[1] - pos[0] > 0), so an FFI user views them as one (n, 3) array with
+ * strides (sizeof(float), pos[1] - pos[0]) without a copy.
+ * The first call makes the volume keep them (6 floats a particle, in
+ * ms_volume_info.bytes); from then on each call that changes the particles
+ * (ms_volume_step, add_particles, fill_box, remove_box, adapt_to_waves)
+ * refreshes them before it returns, one copy of the n particles per call.
+ * Lifetime: the pointers stay valid, and what they hold is the current
+ * state, across those calls until the volume is destroyed, except that
+ * ms_volume_add_particles or ms_volume_fill_box moves them when the count
+ * grows past the storage (then the old pointers dangle: call again). After
+ * a removal the first *n (new count) entries are the survivors. NULL views
+ * while the volume has never held a particle. */
+MS_API ms_status ms_volume_particles(ms_volume *v, int *n, const float *pos[3],
+                                     const float *vel[3]);
 
 #ifdef __cplusplus
 }

@@ -147,6 +147,7 @@ ms_status ms_volume_remove_box(ms_volume *v, const float lo[3], const float hi[3
     v->counts_valid = 0;
     if (removed)
         *removed = n - k;
+    ms_volume_publish(v);
     return MS_OK;
 }
 
@@ -220,6 +221,7 @@ ms_status ms_volume_adapt_to_waves(ms_volume *v, const float *wave_height, const
             float u = fminf(fmaxf((float)(dw / elapsed), -umax), umax);
             v->vz[i] += gain * (u - v->vz[i]);
         }
+        ms_volume_publish(v);
     } else if (cells > v->wave_cap) {
         float *p = ms_alloc_array(cells, sizeof(float));
         if (!p)

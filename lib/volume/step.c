@@ -225,6 +225,7 @@ ms_status ms_volume_step(ms_volume *v, float dt)
     if (taken > 0 || v->n == 0)
         v->steps++;
     v->nactions = 0; /* drags and pushes last one step */
+    ms_volume_publish(v); /* ms_volume_particles' views: this step's state */
     return st;
 }
 

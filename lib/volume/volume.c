@@ -128,7 +128,8 @@ static void free_particles(ms_volume *v)
     ms_free(v->cell);
     ms_free(v->mark);
     ms_free(v->pk);
-    v->pk = NULL;
+    ms_free(v->pub);
+    v->pk = v->pub = NULL;
     v->id = v->id2 = v->nbr = v->cell = NULL;
     v->nl_begin = v->nl_count = v->gl_begin = v->gl_count = NULL;
     v->mark = NULL;
@@ -201,6 +202,9 @@ ms_status ms_volume_reserve(ms_volume *v, int n)
     t.cell = ms_alloc_array(alloc, sizeof(int));
     t.mark = ms_alloc_array(alloc, 1);
     t.pk = ms_alloc_array(8 * alloc, sizeof(float));
+    /* the published block: same capacity, filled by the caller's publish */
+    t.pub = v->pub_on ? ms_alloc_array(6 * cap, sizeof(float)) : NULL;
+    ok &= !v->pub_on || t.pub;
     ok &= t.id && t.id2 && t.nbr && t.nl_begin && t.nl_count && t.gl_begin && t.gl_count &&
           t.cell && t.mark && t.pk;
     if (!ok) {
@@ -273,6 +277,7 @@ ms_status ms_volume_add_particles(ms_volume *v, int n, const float *pos, const f
     }
     v->n += n;
     v->counts_valid = 0;
+    ms_volume_publish(v);
     return MS_OK;
 }
 
@@ -321,6 +326,7 @@ ms_status ms_volume_fill_box(ms_volume *v, const float lo[3], const float hi[3])
             }
     v->n = k;
     v->counts_valid = 0;
+    ms_volume_publish(v);
     return MS_OK;
 }
 
@@ -368,6 +374,59 @@ ms_status ms_volume_particle_views(const ms_volume *v, int *n, const float *pos[
     return MS_OK;
 }
 
+void ms_volume_publish(ms_volume *v)
+{
+    if (!v->pub)
+        return;
+    size_t c = (size_t)v->cap;
+    float *restrict px = v->pub, *restrict py = px + c, *restrict pz = py + c;
+    float *restrict ux = pz + c, *restrict uy = ux + c, *restrict uz = uy + c;
+    for (int i = 0; i < v->n; ++i) {
+        int k = v->id[i];
+        px[k] = v->x[i];
+        py[k] = v->y[i];
+        pz[k] = v->z[i];
+        ux[k] = v->vx[i];
+        uy[k] = v->vy[i];
+        uz[k] = v->vz[i];
+    }
+}
+
+ms_status ms_volume_particles(ms_volume *v, int *n, const float *pos[3], const float *vel[3])
+{
+    if (n)
+        *n = 0;
+    for (int a = 0; a < 3; ++a) {
+        if (pos)
+            pos[a] = NULL;
+        if (vel)
+            vel[a] = NULL;
+    }
+    ms_status st = ms_check_not_null("volume", "volume", v);
+    if (st == MS_OK)
+        st = ms_check_not_null("volume", "n", n);
+    if (st != MS_OK)
+        return st;
+    if (!v->pub_on && v->cap > 0) {
+        v->pub = ms_alloc_array(6 * (size_t)v->cap, sizeof(float));
+        if (!v->pub)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "volume: out of memory for the views of %d particles", v->cap);
+        v->pub_on = 1;
+        ms_volume_publish(v);
+    }
+    v->pub_on = 1; /* with no storage yet, ms_volume_reserve makes the block */
+    *n = v->n;
+    size_t c = (size_t)v->cap;
+    for (int a = 0; a < 3 && v->pub; ++a) {
+        if (pos)
+            pos[a] = v->pub + (size_t)a * c;
+        if (vel)
+            vel[a] = v->pub + (size_t)(3 + a) * c;
+    }
+    return MS_OK;
+}
+
 void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
 {
     size_t size = ms_struct_out(user, MS_SIZES_VOLUME_INFO, "volume");
@@ -395,6 +454,8 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
     out->bytes = sizeof *v + (size_t)v->cap * per +
                  ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
                  v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int);
+    if (v->pub)
+        out->bytes += (size_t)v->cap * 6 * sizeof(float);
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p)
         out->bytes += (v->lists[p].cap + v->ghosts[p].cap) * (sizeof(int) + sizeof(float));
     out->threads = ms_vpool_threads(v->pool);

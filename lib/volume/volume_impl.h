@@ -179,6 +179,14 @@ struct ms_volume {
     double wave_time;
     int wave_valid;
 
+    /* ms_volume_particles: the particles in insertion order, one block
+     * x | y | z | vx | vy | vz of cap floats each (a fixed stride, so an
+     * FFI user views it as (n, 3)); kept only once a caller asked for it
+     * (pub_on), refreshed by ms_volume_publish at the end of every public
+     * call that changes the particles, reallocated only by ms_volume_reserve */
+    float *pub;
+    int pub_on;
+
     /* extraction scratch */
     float *ex_buf;
     size_t ex_cap;
@@ -252,6 +260,9 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d);
 
 /* volume.c */
 ms_status ms_volume_reserve(ms_volume *v, int n);
+/* Refresh ms_volume_particles' block (nothing if no caller asked for it);
+ * the last thing every public call that changes the particles does. */
+void ms_volume_publish(ms_volume *v);
 
 /* grid.c: sort the particles into cell order; fills cell[] and cell_start. */
 void ms_volume_grid_build(ms_volume *v);

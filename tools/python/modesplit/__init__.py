@@ -13,7 +13,7 @@ beside this package, or the system loader (see modesplit._lib).
 """
 from ._lib import ABI, LibraryNotFound, lib
 from .errors import (Closed, Error, InvalidArgument, IoError, OutOfMemory, ParseError,
-                     PluginError, StateError, Unstable, Unsupported)
+                     PluginError, StateError, Unstable, Unsupported, ViewsAlive)
 from .io import Reader, Writer
 from .render import Renderer
 from .scene import Scene
@@ -25,7 +25,7 @@ from .volume import Volume
 __all__ = ["ABI", "LibraryNotFound", "lib", "Closed", "Error", "InvalidArgument", "IoError",
            "OutOfMemory", "ParseError", "PluginError", "StateError", "Unstable", "Unsupported",
            "Reader", "Writer", "Renderer", "Scene", "Shape", "FIELDS", "Sim", "Surface",
-           "Volume", "plugins", "version"]
+           "Volume", "ViewsAlive", "plugins", "version"]
 __version__ = "%d.%d.%d" % (ABI["macros"]["MS_VERSION_MAJOR"], ABI["macros"]["MS_VERSION_MINOR"],
                             ABI["macros"]["MS_VERSION_PATCH"])
 

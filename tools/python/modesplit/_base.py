@@ -34,6 +34,7 @@ class Handle:
         self._raw = ptr   # kept after close, for releasing what C still holds
         self._owner = owner
         self._holds = 0   # live views and C objects using this one
+        self._pviews = 0  # live particle views (positions, velocities)
         self._deps = []   # handles this one holds (released after destroy)
         self._finalizer = (weakref.finalize(self, _finish, destroy, ptr, self._deps)
                            if destroy is not None else None)
@@ -74,6 +75,28 @@ class Handle:
         root = self._root()
         root._hold()
         weakref.finalize(buf, root._unhold)
+
+    def _particle_view_made(self, buf):
+        root = self._root()
+        root._pviews += 1
+        weakref.finalize(buf, root._particle_view_gone)
+
+    def _particle_view_gone(self):
+        self._pviews -= 1
+
+    def _no_particle_views(self, what):
+        """Refuse a call that changes the particle count while views of the
+        particles are alive (as a bytearray refuses to resize while a
+        memoryview exports it): their shape would be stale and a grown
+        count moves the memory they view."""
+        n = self._root()._pviews
+        if n:
+            from .errors import ViewsAlive
+            raise ViewsAlive("modesplit: %s would change the particle count while %d view%s of "
+                             "the particles (positions, velocities) %s alive; a view has a "
+                             "fixed shape and a grown count moves the memory it reads: del "
+                             "the views (or keep .copy()s) first"
+                             % (what, n, "" if n == 1 else "s", "is" if n == 1 else "are"))
 
     def _destroy_now(self):
         if self._finalizer is not None:
@@ -181,8 +204,10 @@ def to_dict(s):
     return out
 
 
-def view(ptr, shape, dtype, owner, writeable=False):
-    """A numpy array over C memory (no copy), keeping `owner` alive."""
+def view(ptr, shape, dtype, owner, writeable=False, particles=False):
+    """A numpy array over C memory (no copy), keeping `owner` alive;
+    `particles`: it counts as a particle view of owner's (see
+    Handle._no_particle_views) while it or any array made from it lives."""
     n = int(np.prod(shape))
     if not ptr or n == 0:
         a = np.zeros(shape, dtype)
@@ -192,9 +217,27 @@ def view(ptr, shape, dtype, owner, writeable=False):
     buf = (ct * n).from_address(ptr)
     buf._modesplit_owner = owner
     owner._view_made(buf)
+    if particles:
+        owner._particle_view_made(buf)
     a = np.frombuffer(buf, dtype=dtype).reshape(shape)
     a.flags.writeable = writeable
     return a
+
+
+def soa_view(n, ptrs, owner):
+    """A read-only (n, 3) float32 view of three arrays x, y, z that lie in
+    one block at equal distances (ms_sim_particles, ms_volume_particles
+    promise it): strides (4, distance), no copy. It counts as a particle
+    view of `owner` (see Handle._no_particle_views)."""
+    if n == 0 or not ptrs[0]:
+        return view(None, (0, 3), np.float32, owner)
+    step = ptrs[1] - ptrs[0]
+    if step <= 0 or ptrs[2] - ptrs[1] != step or step % 4:
+        raise RuntimeError("modesplit: the library's particle arrays are not one block "
+                           "(its header promises it): cannot view them as (n, 3)")
+    flat = view(ptrs[0], (2 * step // 4 + n,), np.float32, owner, particles=True)
+    return np.lib.stride_tricks.as_strided(flat, shape=(n, 3), strides=(4, step),
+                                           writeable=False)
 
 
 def as_input(x, shape, dtype, what):

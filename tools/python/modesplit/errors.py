@@ -56,6 +56,12 @@ class StateError(Error):
     """MS_ERR_STATE: the call is not allowed in the object's current state."""
 
 
+class ViewsAlive(StateError, BufferError):
+    """A call that would change a volume's particle count while numpy views
+    of its particles are alive (raised before C is called, as a bytearray
+    refuses to resize while a memoryview of it exists)."""
+
+
 class Closed(Error, ValueError):
     """The Python object's handle was closed (raised before C is called)."""
 

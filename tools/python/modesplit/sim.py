@@ -3,7 +3,7 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, filled, new_struct, set_fields, to_dict, view
+from ._base import Handle, L, filled, new_struct, set_fields, soa_view, to_dict, view
 from ._lib import ABI
 from .errors import InvalidArgument, check
 from .surface import Surface, surface_desc
@@ -110,29 +110,16 @@ class Sim(Handle):
         check(L().ms_sim_particles(self._ptr, ctypes.byref(n), pos, vel))
         return n.value, pos, vel
 
-    def _aos(self, n, ptrs):
-        # sim.h: the three arrays of a frame lie in one block at equal
-        # distances, so an (n, 3) view with strides (4, distance) covers them.
-        if n == 0 or not ptrs[0]:
-            return view(None, (0, 3), np.float32, self)
-        step = ptrs[1] - ptrs[0]
-        if step <= 0 or ptrs[2] - ptrs[1] != step or step % 4:
-            raise RuntimeError("modesplit: the library's particle arrays are not one block "
-                               "(sim.h promises it): cannot view them as (n, 3)")
-        flat = view(ptrs[0], (2 * step // 4 + n,), np.float32, self)
-        return np.lib.stride_tricks.as_strided(flat, shape=(n, 3), strides=(4, step),
-                                               writeable=False)
-
     @property
     def positions(self):
         """Particles of the last frame, (n, 3) m, the order they were added."""
         n, pos, _ = self._particles()
-        return self._aos(n, pos)
+        return soa_view(n, pos, self)
 
     @property
     def velocities(self):
         n, _, vel = self._particles()
-        return self._aos(n, vel)
+        return soa_view(n, vel, self)
 
     @property
     def floaters(self):

@@ -3,7 +3,7 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, as_input, filled, set_fields, to_dict, vec, view
+from ._base import Handle, L, as_input, filled, set_fields, soa_view, to_dict, vec, view
 from .errors import check
 
 
@@ -13,14 +13,22 @@ class Volume(Handle):
         v = Volume(domain_min=(0, 0, 0), domain_max=(1, 1, 1), spacing=0.04)
         v.fill_box((0, 0, 0), (0.3, 1, 0.5))
         v.step(1 / 60)
-        v.positions          # (n, 3) float32, stable order (a copy)
+        v.positions          # (n, 3) float32, a read-only view, order added
 
     Keywords are fields of ms_volume_desc (from ms_volume_desc_default()).
-    The C volume keeps its particles as structure of arrays in an internal
-    order that changes every step, so `positions` / `velocities` are
-    copies in the order the particles were added; `particle_views()` gives
-    the zero-copy SoA views (x, y, z), (vx, vy, vz), valid until the next
-    mutating call. A Sim's particles (sim.positions) are zero-copy (n, 3)."""
+
+    `positions` / `velocities` are numpy views of C memory (no copy): the
+    block ms_volume_particles gives, x | y | z at a fixed distance, viewed
+    as (n, 3) with strides (4, 4 cap), in the order the particles were
+    added. The first access makes the volume keep that block (one copy of
+    the n particles at the end of each step, 24 bytes a particle). A view
+    stays valid and CURRENT across step() and the other calls: read after a
+    step it holds the new state. Its shape cannot follow a count change, so
+    add_particles, fill_box and remove_box raise modesplit.ViewsAlive while
+    a view of the particles (of this volume, or of the sim that owns it) is
+    alive: del it or keep a .copy(). `particle_views()` gives the solver's
+    own arrays (x, y, z), (vx, vy, vz) in its internal order, which changes
+    at every step (valid until the next mutating call)."""
 
     _kind = "Volume"
 
@@ -31,12 +39,14 @@ class Volume(Handle):
         super().__init__(p.value, L().ms_volume_destroy)
 
     def fill_box(self, lo, hi):
+        self._no_particle_views("volume: fill_box")
         check(L().ms_volume_fill_box(self._ptr, vec(lo, 3, "volume: lo"),
                                      vec(hi, 3, "volume: hi")))
 
     def add_particles(self, pos, vel=None):
         """pos, vel: (n, 3) float32, C-contiguous (vel None = at rest)."""
         ptr = self._ptr
+        self._no_particle_views("volume: add_particles")
         n = len(pos) if hasattr(pos, "__len__") else -1
         p = as_input(pos, (n, 3), np.float32, "volume: add_particles pos")
         v = None if vel is None else as_input(vel, (n, 3), np.float32,
@@ -54,24 +64,24 @@ class Volume(Handle):
     def __len__(self):
         return self.count
 
-    def _particles(self, want_pos):
-        ptr = self._ptr
-        n = L().ms_volume_count(ptr)
-        out = np.empty((n, 3), np.float32)
-        if n:
-            args = (out.ctypes.data, None) if want_pos else (None, out.ctypes.data)
-            check(L().ms_volume_get_particles(ptr, *args))
-        return out
+    def _particles(self):
+        n = ctypes.c_int()
+        pos, vel = (ctypes.c_void_p * 3)(), (ctypes.c_void_p * 3)()
+        check(L().ms_volume_particles(self._ptr, ctypes.byref(n), pos, vel))
+        return n.value, pos, vel
 
     @property
     def positions(self):
-        """(n, 3) m, in the order added (a copy; see the class doc)."""
-        return self._particles(True)
+        """(n, 3) m, order added: a read-only view, current after each step
+        (see the class doc)."""
+        n, pos, _ = self._particles()
+        return soa_view(n, pos, self)
 
     @property
     def velocities(self):
-        """(n, 3) m/s, in the order added (a copy)."""
-        return self._particles(False)
+        """(n, 3) m/s, order added: a read-only view like `positions`."""
+        n, _, vel = self._particles()
+        return soa_view(n, vel, self)
 
     def particle_views(self):
         """((x, y, z), (vx, vy, vz)): read-only zero-copy views of the C
@@ -106,6 +116,21 @@ class Volume(Handle):
     def drag(self, centre, radius, velocity, strength):
         check(L().ms_volume_drag(self._ptr, vec(centre, 3, "volume: centre"), radius,
                                  vec(velocity, 3, "volume: velocity"), strength))
+
+    def push(self, centre, radius, accel):
+        """During the next step only: extra acceleration accel (m/s^2)
+        within radius (m) of centre."""
+        check(L().ms_volume_push(self._ptr, vec(centre, 3, "volume: centre"), radius,
+                                 vec(accel, 3, "volume: accel")))
+
+    def remove_box(self, lo, hi):
+        """Remove the particles inside [lo, hi] (m); returns how many."""
+        ptr = self._ptr
+        self._no_particle_views("volume: remove_box")
+        removed = ctypes.c_int()
+        check(L().ms_volume_remove_box(ptr, vec(lo, 3, "volume: lo"), vec(hi, 3, "volume: hi"),
+                                       ctypes.byref(removed)))
+        return removed.value
 
     def set_viscosity(self, mu):
         check(L().ms_volume_set_viscosity(self._ptr, mu))

@@ -73,14 +73,109 @@ def test_sim_particles_are_zero_copy_n_by_3():
         assert np.all(np.isfinite(p)) and np.abs(v).max() > 0
 
 
-def test_volume_particle_views_and_copies():
-    v = ms.Volume()
-    v.fill_box((0, 0, 0), (0.2, 0.2, 0.2))
-    (x, y, z), (vx, vy, vz) = v.particle_views()
-    assert x.shape == (v.count,) and not x.flags.owndata and not x.flags.writeable
-    pos = v.positions
-    assert pos.flags.owndata and pos.shape == (v.count, 3)
-    assert np.array_equal(np.sort(pos[:, 0]), np.sort(x))
+def c_particles(v):
+    """What ms_volume_particles gives: n and the six column pointers."""
+    n = ctypes.c_int()
+    pos, vel = (ctypes.c_void_p * 3)(), (ctypes.c_void_p * 3)()
+    ms.lib().ms_volume_particles(v._ptr, ctypes.byref(n), pos, vel)
+    return n.value, list(pos), list(vel)
+
+
+def ordered_copy(v):
+    """ms_volume_get_particles' copy (insertion order), beside the views."""
+    n = v.count
+    pos, vel = np.empty((n, 3), np.float32), np.empty((n, 3), np.float32)
+    ms.lib().ms_volume_get_particles(v._ptr, pos.ctypes.data, vel.ctypes.data)
+    return pos, vel
+
+
+def test_volume_particles_are_zero_copy_n_by_3():
+    v = ms.Volume(domain_max=(0.4, 0.4, 0.4))
+    v.fill_box((0, 0, 0), (0.2, 0.4, 0.2))
+    p, u = v.positions, v.velocities
+    n, pos, vel = c_particles(v)
+    assert p.shape == u.shape == (n, 3) == (v.count, 3) and p.dtype == np.float32
+    assert not p.flags.owndata and not p.flags.writeable and not u.flags.writeable
+    with pytest.raises(ValueError):
+        p[0, 0] = 1.0                                  # read-only: C owns it
+    for a in range(3):
+        assert p[:, a].ctypes.data == pos[a] and u[:, a].ctypes.data == vel[a]
+    assert p.strides == (4, pos[1] - pos[0]) and np.shares_memory(p, v.positions)
+    want_p, want_u = ordered_copy(v)
+    assert np.array_equal(p, want_p) and np.array_equal(u, want_u)
+    # the solver's own arrays (internal order) hold the same particles
+    (x, y, z), _ = v.particle_views()
+    assert x.shape == (n,) and not x.flags.owndata and not x.flags.writeable
+    assert np.array_equal(np.sort(x), np.sort(p[:, 0]))
+
+
+def test_a_volume_view_taken_before_step_reads_the_new_state_after_it():
+    v = ms.Volume(domain_max=(0.4, 0.4, 0.4))
+    v.fill_box((0, 0, 0), (0.2, 0.4, 0.2))
+    p, u = v.positions, v.velocities
+    start = p.copy()
+    for _ in range(5):
+        v.step(1 / 60)
+        want_p, want_u = ordered_copy(v)
+        assert np.array_equal(p, want_p) and np.array_equal(u, want_u)
+    assert not np.array_equal(p, start) and np.abs(u).max() > 0   # the dam broke
+    (x, _, _), _ = v.particle_views()
+    assert not np.array_equal(x, p[:, 0])    # internal order differs: the view is ordered
+
+
+def test_a_count_change_while_a_particle_view_lives_raises():
+    v = ms.Volume(domain_max=(0.4, 0.4, 0.4))
+    v.fill_box((0, 0, 0), (0.2, 0.4, 0.2))
+    n = v.count
+    col = v.positions[:, 2]          # a slice of a view is a view too
+    for call in (lambda: v.fill_box((0.2, 0, 0), (0.4, 0.4, 0.2)),
+                 lambda: v.add_particles([[0.3, 0.3, 0.3]]),
+                 lambda: v.remove_box((0, 0, 0), (0.1, 0.1, 0.1))):
+        with pytest.raises(ms.ViewsAlive, match="del the views") as e:
+            call()
+        assert isinstance(e.value, BufferError) and isinstance(e.value, ms.StateError)
+    assert v.count == n                # refused before C: nothing changed
+    v.step(1 / 60)                     # a step is fine: the view follows it
+    assert np.array_equal(col, ordered_copy(v)[0][:, 2])
+    del col
+    removed = v.remove_box((0, 0, 0), (0.1, 0.1, 0.1))
+    assert removed > 0 and v.positions.shape == (n - removed, 3)
+    v.add_particles(np.full((1, 3), 0.3, np.float32))
+    v.fill_box((0.2, 0, 0), (0.4, 0.4, 0.4))    # grows past the storage: moves it
+    p = v.positions
+    assert p.shape == (v.count, 3) and np.array_equal(p, ordered_copy(v)[0])
+    assert p[n - removed].tolist() == pytest.approx([0.3, 0.3, 0.3])
+
+
+def test_a_sims_particle_views_guard_its_volume_too():
+    with ms.Sim(ms.Scene.load(SCENES / "fig1.json")) as sim:
+        sim.step()
+        p = sim.positions
+        vol = sim.volume
+        with pytest.raises(ms.ViewsAlive):
+            vol.fill_box((0, 0, 0), (0.1, 0.1, 0.1))
+        q = vol.positions               # the volume's own block: current state
+        assert q.shape == p.shape and np.array_equal(q, ordered_copy(vol)[0])
+        del p
+        with pytest.raises(ms.ViewsAlive):
+            vol.add_particles([[0.5, 0.5, 0.5]])
+        del q
+        vol.add_particles([[0.5, 0.5, 0.5]])
+        assert vol.count == sim.info()["particles"]
+
+
+def test_a_volume_view_outliving_close_keeps_the_memory():
+    v = ms.Volume(domain_max=(0.4, 0.4, 0.4))
+    v.fill_box((0, 0, 0), (0.2, 0.4, 0.2))
+    v.step(1 / 60)
+    p = v.positions
+    want = p.copy()
+    v.close()
+    with pytest.raises(ms.Closed):
+        v.positions
+    assert v._finalizer.alive and np.array_equal(p, want)
+    del p
+    assert not v._finalizer.alive
 
 
 def drawn_fig9a():
