@@ -99,6 +99,12 @@ void ms_struct_write(void *user, const void *full, size_t size);
  * out of memory. ms_strdup (above) copies a whole string. */
 char *ms_strndup(const char *s, size_t n);
 
+/* The name in the NULL-terminated list closest to s by edit distance
+ * (lib/core/spell.c), for a "did you mean" in the sentence of an unknown
+ * key or value: at most 1 edit for s of up to 4 characters, 2 beyond;
+ * NULL when none is that close (or s is in the list). */
+const char *ms_closest_name(const char *s, const char *const *names);
+
 /* Monotonic clock in seconds, for statistics only (never for results). */
 double ms_now(void);
 
