@@ -38,7 +38,8 @@ ms_status ms_check_not_null(const char *part, const char *key, const void *p);
  * ms_alloc: zeroed, 64-byte aligned memory (cache line, AVX-512 vector); n
  * in bytes. ms_alloc_array checks count*size for overflow. ms_malloc is
  * not zeroed; ms_realloc keeps p valid when it fails. NULL when out of
- * memory. ms_free(NULL) does nothing. */
+ * memory. ms_free(NULL) does nothing; ms_strdup(NULL) is NULL (an
+ * optional string stays absent). */
 void *ms_alloc(size_t n);
 void *ms_alloc_array(size_t count, size_t size);
 void *ms_malloc(size_t n);
