@@ -202,6 +202,8 @@ static int run_open(run_state *r)
         tool_error("%s: %s", o->scene, ms_last_error());
         return EXIT_USAGE;
     }
+    if (tool_check_frame_work(r->sc, r->sim, o->scene) != 0)
+        return EXIT_USAGE;
     /* The PNG directory first: a --png that cannot be used (a file, no
      * permission) must not leave an empty run file and sidecar behind. */
     if (o->png && png_begin(&r->png, o->png, r->sc, o->preview, o->quiet) != 0)
