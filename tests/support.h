@@ -22,6 +22,13 @@ void ms_test_skip(const char *file, int line, const char *why);
         return;                                                                        \
     } while (0)
 
+/* support_tools.c: a fresh directory $TMPDIR/<prefix>_XXXXXX (or /tmp)
+ * into buf (0, or -1); remove a directory and everything below it; a
+ * file's whole text (malloc'd, "" when it cannot be read; free() it). */
+int ms_test_tmp_dir(char *buf, size_t size, const char *prefix);
+void ms_test_remove_tree(const char *dir);
+char *ms_test_slurp(const char *path);
+
 /* h5dump (HDF5's own reader, independent of ours) reads the whole file:
  * 1 yes, 0 no, -1 when h5dump is not installed. MS_ASSERT_H5DUMP_READS
  * skips the case (MS_SKIP) rather than pass it when h5dump is absent. */

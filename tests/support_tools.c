@@ -1,8 +1,63 @@
-/* Helpers of the suites that check files with outside tools. */
+/* Helpers of the suites that run the tools and check the files they write
+ * (with outside tools such as h5dump): a scratch directory, reading a
+ * file whole. */
 #include "support.h"
 
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+int ms_test_tmp_dir(char *buf, size_t size, const char *prefix)
+{
+    const char *base = getenv("TMPDIR");
+    int n = snprintf(buf, size, "%s/%s_XXXXXX", base && base[0] ? base : "/tmp", prefix);
+    if (n < 0 || (size_t)n >= size)
+        return -1;
+    return mkdtemp(buf) ? 0 : -1;
+}
+
+void ms_test_remove_tree(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+            continue;
+        char p[1024];
+        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+        struct stat sb;
+        if (lstat(p, &sb) == 0 && S_ISDIR(sb.st_mode))
+            ms_test_remove_tree(p);
+        else
+            remove(p);
+    }
+    closedir(d);
+    rmdir(dir);
+}
+
+char *ms_test_slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return strdup("");
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *s = n >= 0 ? malloc((size_t)n + 1) : NULL;
+    if (!s) {
+        fclose(f);
+        return strdup("");
+    }
+    size_t got = fread(s, 1, (size_t)n, f);
+    s[got] = '\0';
+    fclose(f);
+    return s;
+}
 
 int ms_test_h5dump(const char *path)
 {

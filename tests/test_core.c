@@ -131,6 +131,28 @@ START_TEST(poisson_has_the_requested_mean)
 }
 END_TEST
 
+/* The "did you mean" of unknown keys: the closest name within 1 edit for
+ * short names, 2 for longer ones; swapped letters count as one edit. */
+START_TEST(closest_name_is_within_the_edit_bound)
+{
+    static const char *const names[] = {"rain", "boat", "floaters", "wave_speed", "nx", NULL};
+    ck_assert_str_eq(ms_closest_name("rian", names), "rain");      /* transposition: 1 */
+    ck_assert_str_eq(ms_closest_name("bot", names), "boat");       /* deletion: 1 */
+    ck_assert_str_eq(ms_closest_name("flaoter", names), "floaters"); /* 2 */
+    ck_assert_str_eq(ms_closest_name("wavespeed", names), "wave_speed");
+    ck_assert_str_eq(ms_closest_name("ny", names), "nx");
+    ck_assert_ptr_null(ms_closest_name("ab", names));   /* 2 edits from "nx": too far for 2 */
+    ck_assert_ptr_null(ms_closest_name("flotsam", names)); /* 4 edits from "floaters" */
+    ck_assert_ptr_null(ms_closest_name("rain", names)); /* a known name needs no guess */
+    ck_assert_ptr_null(ms_closest_name("", names));
+    ck_assert_ptr_null(ms_closest_name(NULL, names));
+    char longname[200];
+    memset(longname, 'a', sizeof longname - 1);
+    longname[sizeof longname - 1] = '\0';
+    ck_assert_ptr_null(ms_closest_name(longname, names)); /* past the 64-char rows */
+}
+END_TEST
+
 static Suite *core_suite(void)
 {
     Suite *s = suite_create("core");
@@ -143,6 +165,7 @@ static Suite *core_suite(void)
     tcase_add_test(tc, alloc_is_aligned_zeroed_and_overflow_safe);
     tcase_add_test(tc, rng_is_reproducible_and_uniform);
     tcase_add_test(tc, poisson_has_the_requested_mean);
+    tcase_add_test(tc, closest_name_is_within_the_edit_bound);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -298,6 +298,28 @@ START_TEST(positions_survive_escapes_nesting_and_utf8)
 }
 END_TEST
 
+/* A misspelt key or value names the one it is closest to (edit distance,
+ * lib/core/spell.c); a key far from every allowed one gets no guess. */
+START_TEST(misspelt_key_names_the_closest_allowed_one)
+{
+    ms_scene *sc = NULL;
+    REFUSED("{\"surface\": {}, \"effects\": {\"rian\": {}}}", MS_ERR_PARSE,
+            "effects.rian is an unknown key \"rian\" (did you mean \"rain\"?)");
+    REFUSED("{\"surface\": {\"wavespeed\": 2}}", MS_ERR_PARSE, "(did you mean \"wave_speed\"?)");
+    REFUSED("{\"surface\": {}, \"obstacels\": []}", MS_ERR_PARSE,
+            "(did you mean \"obstacles\"?)");
+    REFUSED("{\"surface\": {\"commnet\": \"x\"}}", MS_ERR_PARSE, "(did you mean \"comment\"?)");
+    /* an enum value too */
+    REFUSED("{\"surface\": {\"boundary\": \"absorbs\"}}", MS_ERR_INVALID_ARGUMENT,
+            "\"absorbs\" is unknown (did you mean \"absorb\"?)");
+    /* nothing close: the list of allowed keys only */
+    REFUSED("{\"surface\": {}, \"colour\": 1}", MS_ERR_PARSE, "colour");
+    ck_assert_ptr_null(strstr(ms_last_error(), "did you mean"));
+    REFUSED("{\"surface\": {\"boundary\": \"bounce\"}}", MS_ERR_INVALID_ARGUMENT, "bounce");
+    ck_assert_ptr_null(strstr(ms_last_error(), "did you mean"));
+}
+END_TEST
+
 START_TEST(output_section_sets_fields_and_every)
 {
     ms_scene *sc = parse_ok("{\"volume\": {}, \"surface\": {}, \"output\": {\"fields\": "
@@ -397,6 +419,7 @@ static Suite *scene_suite(void)
     tcase_add_test(tc, name_defaults_to_the_file_name);
     tcase_add_test(tc, syntax_error_names_line_and_column);
     tcase_add_test(tc, unknown_key_names_place_and_allowed_keys);
+    tcase_add_test(tc, misspelt_key_names_the_closest_allowed_one);
     tcase_add_test(tc, wrong_type_names_key_and_allowed_type);
     tcase_add_test(tc, out_of_range_names_value_and_range);
     tcase_add_test(tc, inconsistent_sections_are_refused);

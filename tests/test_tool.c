@@ -35,30 +35,7 @@ static char tmp_dir[256];
 
 static void make_tmp_dir(void)
 {
-    const char *base = getenv("TMPDIR");
-    snprintf(tmp_dir, sizeof tmp_dir, "%s/ms_tool_XXXXXX", base && base[0] ? base : "/tmp");
-    ck_assert_ptr_nonnull(mkdtemp(tmp_dir));
-}
-
-static void remove_tree(const char *dir)
-{
-    DIR *d = opendir(dir);
-    if (!d)
-        return;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
-            continue;
-        char p[1024];
-        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
-        struct stat sb;
-        if (lstat(p, &sb) == 0 && S_ISDIR(sb.st_mode))
-            remove_tree(p);
-        else
-            remove(p);
-    }
-    closedir(d);
-    rmdir(dir);
+    ck_assert_int_eq(ms_test_tmp_dir(tmp_dir, sizeof tmp_dir, "ms_tool"), 0);
 }
 
 /* A path in the test's directory; each call returns a fresh string, all
@@ -78,7 +55,7 @@ static char *tmp_path(const char *name)
 
 static void remove_tmp_dir(void)
 {
-    remove_tree(tmp_dir);
+    ms_test_remove_tree(tmp_dir);
     for (int i = 0; i < npaths; ++i)
         free(paths[i]);
     npaths = 0;
@@ -103,20 +80,6 @@ static const char *tool_dir(void)
     return d;
 }
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return strdup("");
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = '\0';
-    fclose(f);
-    return s;
-}
 
 static int count_lines(const char *s)
 {
@@ -165,8 +128,8 @@ static result run_tool(const char *const *args)
     snprintf(err, sizeof err, "%s/stderr.txt", tmp_dir);
     pid_t pid = spawn_tool(args, out, err);
     waitpid(pid, &r.status, 0);
-    r.out = slurp(out);
-    r.err = slurp(err);
+    r.out = ms_test_slurp(out);
+    r.err = ms_test_slurp(err);
     return r;
 }
 
@@ -424,7 +387,7 @@ START_TEST(run_writes_hdf5_xdmf_png_and_a_summary)
         snprintf(p, sizeof p, "%s/frame_%05d.png", png, i);
         ck_assert_msg(access(p, R_OK) == 0, "%s missing", p);
     }
-    char *x = slurp(tmp_path("demo.xmf"));
+    char *x = ms_test_slurp(tmp_path("demo.xmf"));
     ck_assert_ptr_nonnull(strstr(x, "demo.h5:/fields/combined"));
     free(x);
 
@@ -436,7 +399,7 @@ START_TEST(run_writes_hdf5_xdmf_png_and_a_summary)
     result_free(&r);
     r = run_tool((const char *[]){"info", "--scene", out, NULL});
     ASSERT_EXIT(r, 0);
-    char *scene = slurp(DEFAULT_SCENE);
+    char *scene = ms_test_slurp(DEFAULT_SCENE);
     ck_assert_str_eq(r.out, scene);
     free(scene);
     result_free(&r);
@@ -590,7 +553,7 @@ START_TEST(sigkill_mid_run_leaves_a_file_h5dump_and_info_read)
         ASSERT_EXIT(r, 0);
         ck_assert_ptr_nonnull(strstr(r.out, "frames"));
         result_free(&r);
-        char *x = slurp(tmp_path("killed.xmf"));
+        char *x = ms_test_slurp(tmp_path("killed.xmf"));
         ck_assert_ptr_nonnull(strstr(x, "</Xdmf>"));
         free(x);
     }
@@ -614,7 +577,7 @@ START_TEST(sigint_and_sigterm_finish_the_frame_and_close_the_file)
         waitpid(pid, &status, 0);
         /* ends by the signal, as shells expect, after closing the file */
         ck_assert_msg(WIFSIGNALED(status) && WTERMSIG(status) == sigs[i], "status %d", status);
-        char *o = slurp(tmp_path("o.txt"));
+        char *o = ms_test_slurp(tmp_path("o.txt"));
         ck_assert_msg(strstr(o, i == 0 ? "stopped by SIGINT" : "stopped by SIGTERM"), "%s", o);
         long in_file = frames_in(out);
         char want[64];
@@ -670,7 +633,7 @@ START_TEST(a_second_sigterm_cancels_a_long_frame_and_closes_the_file)
         kill(pid, SIGKILL), waitpid(pid, &status, 0);
     ck_assert_msg(waited < 30, "the run did not stop after the second SIGTERM");
     ck_assert_msg(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM, "status %d", status);
-    char *o = slurp(tmp_path("o.txt"));
+    char *o = ms_test_slurp(tmp_path("o.txt"));
     ck_assert_msg(strstr(o, "stopped by SIGTERM"), "the run did not close its file: %s", o);
     free(o);
     MS_ASSERT_H5DUMP_READS(out);
@@ -848,7 +811,7 @@ START_TEST(installed_tool_does_not_search_the_build_tree)
     snprintf(cmd, sizeof cmd, "env -u MODESPLIT_PLUGIN_PATH '%s' plugins > '%s' 2> '%s'", exe, out,
              err);
     ck_assert_int_eq(system(cmd), 0);
-    char *o = slurp(out);
+    char *o = ms_test_slurp(out);
     ck_assert_ptr_nonnull(strstr(o, "search path: "));
     /* <prefix>/lib/modesplit/plugins, spelled from the library or the tool */
     ck_assert_msg(strstr(o, "/prefix/") && strstr(o, "lib/modesplit/plugins"), "%s", o);

@@ -105,6 +105,8 @@ void *ms_realloc(void *p, size_t n)
 
 char *ms_strdup(const char *s)
 {
+    if (!s)
+        return NULL;
     size_t n = strlen(s) + 1;
     char *p = ms_malloc(n);
     if (p)

@@ -38,7 +38,8 @@ ms_status ms_check_not_null(const char *part, const char *key, const void *p);
  * ms_alloc: zeroed, 64-byte aligned memory (cache line, AVX-512 vector); n
  * in bytes. ms_alloc_array checks count*size for overflow. ms_malloc is
  * not zeroed; ms_realloc keeps p valid when it fails. NULL when out of
- * memory. ms_free(NULL) does nothing. */
+ * memory. ms_free(NULL) does nothing; ms_strdup(NULL) is NULL (an
+ * optional string stays absent). */
 void *ms_alloc(size_t n);
 void *ms_alloc_array(size_t count, size_t size);
 void *ms_malloc(size_t n);
@@ -98,6 +99,12 @@ void ms_struct_write(void *user, const void *full, size_t size);
 /* A NUL-terminated copy of the first n bytes of s (ms_free it); NULL when
  * out of memory. ms_strdup (above) copies a whole string. */
 char *ms_strndup(const char *s, size_t n);
+
+/* The name in the NULL-terminated list closest to s by edit distance
+ * (lib/core/spell.c), for a "did you mean" in the sentence of an unknown
+ * key or value: at most 1 edit for s of up to 4 characters, 2 beyond;
+ * NULL when none is that close (or s is in the list). */
+const char *ms_closest_name(const char *s, const char *const *names);
 
 /* Monotonic clock in seconds, for statistics only (never for results). */
 double ms_now(void);

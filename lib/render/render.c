@@ -206,16 +206,7 @@ static ms_status check_desc(const ms_renderer_desc *d)
 }
 
 #if MS_HAVE_GL
-static char *dup_or_null(const char *s)
-{
-    if (!s)
-        return NULL;
-    size_t n = strlen(s) + 1;
-    char *p = ms_alloc(n);
-    if (p)
-        memcpy(p, s, n);
-    return p;
-}
+#define dup_or_null ms_strdup /* lib/core: NULL stays NULL */
 #endif
 
 #if MS_HAVE_GL

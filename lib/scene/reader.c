@@ -118,10 +118,16 @@ ms_status ms_scene_check_keys(ms_scene_ctx *c, json_t *obj, const char *const *a
                 snprintf(list + used, sizeof list - used, "comment");
             /* the key may hold anything (even a NUL via \u0000 is refused by
              * jansson, so it is a C string); quote at most 60 bytes of it */
+            static const char *const comment[] = {"comment", NULL};
+            const char *near = ms_closest_name(key, allowed);
+            near = near ? near : ms_closest_name(key, comment);
+            char hint[96] = "";
+            if (near)
+                snprintf(hint, sizeof hint, " (did you mean \"%s\"?)", near);
             ms_scene_push_key(c, key);
-            ms_status st =
-                ms_scene_fail(c, MS_ERR_PARSE, "is an unknown key \"%.60s\"; allowed: %s", key,
-                              list);
+            ms_status st = ms_scene_fail(c, MS_ERR_PARSE,
+                                         "is an unknown key \"%.60s\"%s; allowed: %s", key, hint,
+                                         list);
             ms_scene_pop(c);
             return st;
         }
@@ -261,9 +267,14 @@ ms_status ms_scene_get_enum(ms_scene_ctx *c, json_t *obj, const char *key,
         for (int i = 0; names[i]; ++i)
             if (strcmp(s, names[i]) == 0)
                 found = i;
-        if (found < 0)
-            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "\"%.60s\" is unknown; allowed: one of %s",
-                               s, list);
+        if (found < 0) {
+            const char *near = ms_closest_name(s, names);
+            char hint[96] = "";
+            if (near)
+                snprintf(hint, sizeof hint, " (did you mean \"%s\"?)", near);
+            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                               "\"%.60s\" is unknown%s; allowed: one of %s", s, hint, list);
+        }
         else
             *out = found;
     }

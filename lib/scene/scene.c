@@ -1,6 +1,6 @@
 /* ms_scene: loading a scene file (JSON, parsed by jansson) into the values
  * of data/scenes/README.md, and the accessors the tool and the writer use.
- * The schema itself is in sections.c; the typed readers that name
+ * The schema itself is in sections.c and effects.c; the typed readers that name
  * file:line:col in reader.c and locate.c.
  */
 #include <errno.h>
@@ -16,12 +16,6 @@
 
 #define MAX_SCENE_BYTES (16u << 20)
 
-#define TRY(call)                        \
-    do {                                 \
-        ms_status try_st_ = (call);      \
-        if (try_st_ != MS_OK)            \
-            return try_st_;              \
-    } while (0)
 
 static void free_path(ms_scene_motion *p)
 {
@@ -58,7 +52,6 @@ void ms_scene_destroy(ms_scene *sc)
     ms_free(sc);
 }
 
-#define dup_n ms_strndup /* lib/core */
 
 static ms_status parse_one(const char *text, size_t len, const char *file, const char *path,
                            const char *dir, const char *default_name, int nset,
@@ -70,9 +63,9 @@ static ms_status parse_one(const char *text, size_t len, const char *file, const
     ms_scene *sc = ms_alloc(sizeof *sc);
     if (!sc)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory");
-    sc->text = dup_n(text, len);
+    sc->text = ms_strndup(text, len);
     sc->text_len = len;
-    sc->path = dup_n(path, strlen(path));
+    sc->path = ms_strndup(path, strlen(path));
     if (!sc->text || !sc->path) {
         ms_scene_destroy(sc);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for %zu bytes", len);
@@ -115,13 +108,13 @@ static ms_status parse(const char *text, size_t len, const char *file, const cha
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: %d overrides at %p; allowed: n >= 0 "
                        "and a list when n > 0", nset, (const void *)set);
     for (int i = 0; i < nset; ++i)
-        TRY(ms_scene_override_check(set[i]));
+        MS_TRY(ms_scene_override_check(set[i]));
     ms_scene *plain = NULL;
-    TRY(parse_one(text, len, file, path, dir, default_name, 0, NULL, &plain));
+    MS_TRY(parse_one(text, len, file, path, dir, default_name, 0, NULL, &plain));
     ms_scene_destroy(plain);
     char *merged = NULL;
     size_t mlen = 0;
-    TRY(ms_scene_apply_overrides(text, len, nset, set, &merged, &mlen));
+    MS_TRY(ms_scene_apply_overrides(text, len, nset, set, &merged, &mlen));
     size_t flen = strlen(file) + 16;
     char *where = ms_alloc(flen);
     ms_status st = MS_ERR_OUT_OF_MEMORY;
@@ -202,12 +195,12 @@ ms_status ms_scene_load_with_overrides(const char *path, int n, const char *cons
         /* directory with a trailing '/', for paths inside the scene */
         const char *slash = strrchr(path, '/');
         size_t dlen = slash ? (size_t)(slash - path) + 1 : 0;
-        char *dir = dup_n(path, dlen);
+        char *dir = ms_strndup(path, dlen);
         const char *base = slash ? slash + 1 : path;
         size_t blen = strlen(base);
         if (blen > 5 && strcmp(base + blen - 5, ".json") == 0)
             blen -= 5;
-        char *name = dup_n(base, blen);
+        char *name = ms_strndup(base, blen);
         if (!dir || !name)
             st = ms_fail(MS_ERR_OUT_OF_MEMORY, "%s: out of memory", path);
         else

@@ -17,20 +17,18 @@
 #include "scene/scene_internal.h"
 #include "scene/sections.h"
 
-#define BIG 1e4      /* m: coordinates of a scene lie in [-BIG, BIG] */
-#define MAX_SPEED 1e3 /* m/s */
+#define BIG MS_SCENE_BIG
+#define MAX_SPEED MS_SCENE_MAX_SPEED
 #define MAX_PARTICLES 10000000L
 
-#define dup_string ms_strdup /* lib/core */
-#define TRY MS_TRY
 
 /* {"points": [[x, y(, z)], ...], "speed", "loop", "start"} */
-static ms_status read_path(ms_scene_ctx *c, json_t *obj, const char *key, int dim,
-                           ms_scene_motion *p)
+ms_status ms_scene_read_path(ms_scene_ctx *c, json_t *obj, const char *key, int dim,
+                             ms_scene_motion *p)
 {
     static const char *const keys[] = {"points", "speed", "loop", "start", NULL};
     json_t *o, *pts;
-    TRY(ms_scene_get_object(c, obj, key, &o));
+    MS_TRY(ms_scene_get_object(c, obj, key, &o));
     if (!o)
         return MS_OK;
     ms_scene_push_key(c, key);
@@ -101,16 +99,16 @@ static ms_status check_shader(ms_scene_ctx *c, const char *name)
 }
 
 /* An obstacle or the container: a shape of a plugin, posed and maybe moving. */
-static ms_status read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
+ms_status ms_scene_read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
 {
     static const char *const keys[] = {"shape", "params", "position", "velocity",
                                        "orientation", "spin", "path", "surface_mask", NULL};
     static const float zero[3] = {0, 0, 0}, unturned[4] = {1, 0, 0, 0};
     const char *kind;
     json_t *params;
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_require(c, o, "shape", "a shape plugin name such as \"sphere\""));
-    TRY(ms_scene_get_string(c, o, "shape", NULL, &kind));
+    MS_TRY(ms_scene_check_keys(c, o, keys));
+    MS_TRY(ms_scene_require(c, o, "shape", "a shape plugin name such as \"sphere\""));
+    MS_TRY(ms_scene_get_string(c, o, "shape", NULL, &kind));
     if (!kind[0] || strlen(kind) > 64) {
         ms_scene_push_key(c, "shape");
         ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
@@ -119,10 +117,10 @@ static ms_status read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
         ms_scene_pop(c);
         return st;
     }
-    TRY(ms_scene_get_object(c, o, "params", &params));
-    TRY(ms_scene_get_vec(c, o, "position", 3, zero, -BIG, BIG, "m", s->position));
-    TRY(ms_scene_get_vec(c, o, "velocity", 3, zero, -MAX_SPEED, MAX_SPEED, "m/s", s->velocity));
-    TRY(ms_scene_get_vec(c, o, "orientation", 4, unturned, -1e3, 1e3, "", s->orientation));
+    MS_TRY(ms_scene_get_object(c, o, "params", &params));
+    MS_TRY(ms_scene_get_vec(c, o, "position", 3, zero, -BIG, BIG, "m", s->position));
+    MS_TRY(ms_scene_get_vec(c, o, "velocity", 3, zero, -MAX_SPEED, MAX_SPEED, "m/s", s->velocity));
+    MS_TRY(ms_scene_get_vec(c, o, "orientation", 4, unturned, -1e3, 1e3, "", s->orientation));
     double q2 = 0.0;
     for (int k = 0; k < 4; ++k)
         q2 += (double)s->orientation[k] * s->orientation[k];
@@ -134,10 +132,10 @@ static ms_status read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
         ms_scene_pop(c);
         return st;
     }
-    TRY(ms_scene_get_vec(c, o, "spin", 3, zero, -1e3, 1e3, "rad/s", s->spin));
-    TRY(read_path(c, o, "path", 3, &s->path));
-    TRY(ms_scene_get_bool(c, o, "surface_mask", 1, &s->surface_mask));
-    s->kind = dup_string(kind);
+    MS_TRY(ms_scene_get_vec(c, o, "spin", 3, zero, -1e3, 1e3, "rad/s", s->spin));
+    MS_TRY(ms_scene_read_path(c, o, "path", 3, &s->path));
+    MS_TRY(ms_scene_get_bool(c, o, "surface_mask", 1, &s->surface_mask));
+    s->kind = ms_strdup(kind);
     /* a file a shape reads (the terrain's "png") is relative to the scene
      * file's folder, as the cubemap is, not to the working directory */
     json_t *png = params ? json_object_get(params, "png") : NULL;
@@ -151,7 +149,7 @@ static ms_status read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
         ms_free(full);
     }
     char *text = params ? json_dumps(params, JSON_COMPACT) : NULL; /* malloc'ed by jansson */
-    s->params_json = dup_string(text ? text : "{}");
+    s->params_json = ms_strdup(text ? text : "{}");
     free(text);
     if (!s->kind || !s->params_json)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for a shape");
@@ -185,7 +183,7 @@ static ms_status read_domain(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     static const char *const keys[] = {"min", "max", NULL};
     static const float dmin[3] = {0, 0, 0}, dmax[3] = {1, 1, 0.5f};
     json_t *o;
-    TRY(ms_scene_get_object(c, root, "domain", &o));
+    MS_TRY(ms_scene_get_object(c, root, "domain", &o));
     memcpy(sc->domain_min, dmin, sizeof dmin);
     memcpy(sc->domain_max, dmax, sizeof dmax);
     if (!o)
@@ -216,6 +214,76 @@ static double fill_count(float lo, float hi, float h)
     return floor((double)(hi - lo) / h + 1e-6);
 }
 
+/* volume.fill[i]: a box {"min", "max"} inside the domain, max > min. */
+static ms_status read_fill_box(ms_scene_ctx *c, json_t *b, float lo[3], float hi[3],
+                               const ms_scene *sc)
+{
+    static const char *const box_keys[] = {"min", "max", NULL};
+    if (!json_is_object(b))
+        return ms_scene_fail(c, MS_ERR_PARSE,
+                             "is not an object; allowed: {\"min\": [x, y, z], "
+                             "\"max\": [x, y, z]} in m");
+    MS_TRY(ms_scene_check_keys(c, b, box_keys));
+    MS_TRY(ms_scene_require(c, b, "min", "[x, y, z] in m"));
+    MS_TRY(ms_scene_require(c, b, "max", "[x, y, z] in m"));
+    for (int k = 0; k < 2; ++k) {
+        const char *key = k ? "max" : "min";
+        ms_scene_push_key(c, key);
+        ms_status st = ms_scene_read_vec(c, json_object_get(b, key), 3, -BIG, BIG, "m",
+                                         k ? hi : lo);
+        for (int a = 0; st == MS_OK && a < 3; ++a) {
+            float v = (k ? hi : lo)[a];
+            if (v < sc->domain_min[a] || v > sc->domain_max[a])
+                st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                                   "[%d] = %g m lies outside the domain; allowed: [%g, "
+                                   "%g] m",
+                                   a, v, sc->domain_min[a], sc->domain_max[a]);
+        }
+        if (st == MS_OK && k == 1)
+            for (int a = 0; a < 3; ++a)
+                if (!(hi[a] > lo[a]))
+                    st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                                       "[%d] = %g m is not above min[%d] = %g m; allowed: "
+                                       "max > min on every axis",
+                                       a, hi[a], a, lo[a]);
+        ms_scene_pop(c);
+        MS_TRY(st);
+    }
+    return MS_OK;
+}
+
+/* volume.fill: the boxes the volume starts filled with; *count is the
+ * number of particles they make at volume.spacing (bounded here so a
+ * scene cannot ask for more memory than MAX_PARTICLES). */
+static ms_status read_fill(ms_scene_ctx *c, json_t *o, ms_scene *sc, double *count)
+{
+    json_t *fill;
+    MS_TRY(ms_scene_get_array(c, o, "fill", 1, MS_SCENE_MAX_FILLS, &fill));
+    if (!fill)
+        return MS_OK;
+    ms_scene_push_key(c, "fill");
+    for (size_t i = 0; i < json_array_size(fill); ++i) {
+        float *lo = sc->fill_lo[i], *hi = sc->fill_hi[i];
+        ms_scene_push_index(c, (long)i);
+        MS_TRY(read_fill_box(c, json_array_get(fill, i), lo, hi, sc));
+        *count += fill_count(lo[0], hi[0], sc->volume.spacing) *
+                  fill_count(lo[1], hi[1], sc->volume.spacing) *
+                  fill_count(lo[2], hi[2], sc->volume.spacing);
+        ms_scene_pop(c);
+    }
+    sc->nfill = (int)json_array_size(fill);
+    if (*count > MAX_PARTICLES) {
+        ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                                     "makes %.0f particles at spacing %g m; allowed: at most "
+                                     "%ld (raise volume.spacing)",
+                                     *count, sc->volume.spacing, MAX_PARTICLES);
+        ms_scene_pop(c);
+        return st;
+    }
+    ms_scene_pop(c);
+    return MS_OK;
+}
+
 static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
     static const char *const keys[] = {"spacing", "smoothing_length", "rest_density",
@@ -225,10 +293,10 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
                                        "smooth_energy", NULL};
     static const char *const pressures[] = {"ideal_gas", "tait", "dfsph", NULL};
     static const float g[3] = {0, 0, -9.81f};
-    json_t *o, *fill;
+    json_t *o;
     long maxp;
     int pressure, field[2] = {0, 0};
-    TRY(ms_scene_get_object(c, root, "volume", &o));
+    MS_TRY(ms_scene_get_object(c, root, "volume", &o));
     if (!o)
         return MS_OK;
     sc->has_volume = 1;
@@ -236,91 +304,38 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
                        MS_MIN(sc->domain_max[1] - sc->domain_min[1],
                               sc->domain_max[2] - sc->domain_min[2]));
     ms_scene_push_key(c, "volume");
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_get_float(c, o, "spacing", 0.04, 0, ext, 1, "m", &sc->volume.spacing));
+    MS_TRY(ms_scene_check_keys(c, o, keys));
+    MS_TRY(ms_scene_get_float(c, o, "spacing", 0.04, 0, ext, 1, "m", &sc->volume.spacing));
     /* NAN: the volume solver's default ratio h / spacing (see sim/create.c) */
-    TRY(ms_scene_get_float(c, o, "smoothing_length", NAN, sc->volume.spacing,
+    MS_TRY(ms_scene_get_float(c, o, "smoothing_length", NAN, sc->volume.spacing,
                            4 * sc->volume.spacing, 0, "m", &sc->volume.smoothing_length));
-    TRY(ms_scene_get_float(c, o, "rest_density", 1000, 0, 1e5, 1, "kg/m^3",
+    MS_TRY(ms_scene_get_float(c, o, "rest_density", 1000, 0, 1e5, 1, "kg/m^3",
                            &sc->volume.rest_density));
-    TRY(ms_scene_get_float(c, o, "gas_constant", NAN, 0, 1e7, 1, "m^2/s^2",
+    MS_TRY(ms_scene_get_float(c, o, "gas_constant", NAN, 0, 1e7, 1, "m^2/s^2",
                            &sc->volume.gas_constant));
-    TRY(ms_scene_get_float(c, o, "viscosity", NAN, 0, 1e4, 0, "Pa s", &sc->volume.viscosity));
-    TRY(ms_scene_get_vec(c, o, "gravity", 3, g, -1e3, 1e3, "m/s^2", sc->volume.gravity));
-    TRY(ms_scene_get_enum(c, o, "pressure", pressures, 0, &pressure));
+    MS_TRY(ms_scene_get_float(c, o, "viscosity", NAN, 0, 1e4, 0, "Pa s", &sc->volume.viscosity));
+    MS_TRY(ms_scene_get_vec(c, o, "gravity", 3, g, -1e3, 1e3, "m/s^2", sc->volume.gravity));
+    MS_TRY(ms_scene_get_enum(c, o, "pressure", pressures, 0, &pressure));
     sc->volume.pressure = (ms_pressure)pressure;
-    TRY(ms_scene_get_int(c, o, "max_particles", 0, 0, MAX_PARTICLES, &maxp));
+    MS_TRY(ms_scene_get_int(c, o, "max_particles", 0, 0, MAX_PARTICLES, &maxp));
     sc->volume.max_particles = (int)maxp;
     /* NAN / 0 / -1: the volume solver's default (see sim/create.c) */
     long maxsub, vthreads, smooth;
-    TRY(ms_scene_get_float(c, o, "sound_speed", NAN, 0, 1e4, 1, "m/s", &sc->volume.sound_speed));
-    TRY(ms_scene_get_float(c, o, "courant", NAN, 0, 0.5, 1, "", &sc->volume.courant));
-    TRY(ms_scene_get_int(c, o, "max_substeps", 0, 1, 10000000, &maxsub));
-    TRY(ms_scene_get_int(c, o, "threads", 0, 1, 64, &vthreads));
-    TRY(ms_scene_get_int(c, o, "smooth_steps", -1, 0, 64, &smooth));
-    TRY(ms_scene_get_float(c, o, "smooth_energy", NAN, 0, 1e6, 1, "J/kg",
+    MS_TRY(ms_scene_get_float(c, o, "sound_speed", NAN, 0, 1e4, 1, "m/s", &sc->volume.sound_speed));
+    MS_TRY(ms_scene_get_float(c, o, "courant", NAN, 0, 0.5, 1, "", &sc->volume.courant));
+    MS_TRY(ms_scene_get_int(c, o, "max_substeps", 0, 1, 10000000, &maxsub));
+    MS_TRY(ms_scene_get_int(c, o, "threads", 0, 1, 64, &vthreads));
+    MS_TRY(ms_scene_get_int(c, o, "smooth_steps", -1, 0, 64, &smooth));
+    MS_TRY(ms_scene_get_float(c, o, "smooth_energy", NAN, 0, 1e6, 1, "J/kg",
                            &sc->volume.smooth_energy));
     sc->volume.max_substeps = (int)maxsub;
     sc->volume.threads = (int)vthreads;
     sc->volume.smooth_steps = (int)smooth;
-    TRY(ms_scene_get_ivec(c, o, "field", 2, field, 2, 4096, field));
+    MS_TRY(ms_scene_get_ivec(c, o, "field", 2, field, 2, 4096, field));
     sc->field_nx = field[0];
     sc->field_ny = field[1];
-    TRY(ms_scene_get_array(c, o, "fill", 1, MS_SCENE_MAX_FILLS, &fill));
     double count = 0;
-    if (fill) {
-        ms_scene_push_key(c, "fill");
-        for (size_t i = 0; i < json_array_size(fill); ++i) {
-            static const char *const box_keys[] = {"min", "max", NULL};
-            json_t *b = json_array_get(fill, i);
-            ms_scene_push_index(c, (long)i);
-            if (!json_is_object(b))
-                return ms_scene_fail(c, MS_ERR_PARSE,
-                                     "is not an object; allowed: {\"min\": [x, y, z], "
-                                     "\"max\": [x, y, z]} in m");
-            TRY(ms_scene_check_keys(c, b, box_keys));
-            TRY(ms_scene_require(c, b, "min", "[x, y, z] in m"));
-            TRY(ms_scene_require(c, b, "max", "[x, y, z] in m"));
-            float *lo = sc->fill_lo[i], *hi = sc->fill_hi[i];
-            for (int k = 0; k < 2; ++k) {
-                const char *key = k ? "max" : "min";
-                ms_scene_push_key(c, key);
-                ms_status st = ms_scene_read_vec(c, json_object_get(b, key), 3, -BIG, BIG, "m",
-                                                 k ? hi : lo);
-                for (int a = 0; st == MS_OK && a < 3; ++a) {
-                    float v = (k ? hi : lo)[a];
-                    if (v < sc->domain_min[a] || v > sc->domain_max[a])
-                        st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                           "[%d] = %g m lies outside the domain; allowed: [%g, "
-                                           "%g] m",
-                                           a, v, sc->domain_min[a], sc->domain_max[a]);
-                }
-                if (st == MS_OK && k == 1)
-                    for (int a = 0; a < 3; ++a)
-                        if (!(hi[a] > lo[a]))
-                            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                               "[%d] = %g m is not above min[%d] = %g m; allowed: "
-                                               "max > min on every axis",
-                                               a, hi[a], a, lo[a]);
-                ms_scene_pop(c);
-                TRY(st);
-            }
-            count += fill_count(lo[0], hi[0], sc->volume.spacing) *
-                     fill_count(lo[1], hi[1], sc->volume.spacing) *
-                     fill_count(lo[2], hi[2], sc->volume.spacing);
-            ms_scene_pop(c);
-        }
-        sc->nfill = (int)json_array_size(fill);
-        if (count > MAX_PARTICLES) {
-            ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                         "makes %.0f particles at spacing %g m; allowed: at most "
-                                         "%ld (raise volume.spacing)",
-                                         count, sc->volume.spacing, MAX_PARTICLES);
-            ms_scene_pop(c);
-            return st;
-        }
-        ms_scene_pop(c);
-    }
+    MS_TRY(read_fill(c, o, sc, &count));
     if (sc->volume.max_particles != 0 && count > sc->volume.max_particles) {
         ms_scene_push_key(c, "max_particles");
         ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
@@ -356,19 +371,19 @@ static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
         level = MS_MIN(v / area, height);
     }
     sc->level = (float)level;
-    TRY(ms_scene_get_object(c, root, "surface", &o));
+    MS_TRY(ms_scene_get_object(c, root, "surface", &o));
     if (!o)
         return MS_OK;
     sc->has_surface = 1;
     ms_scene_push_key(c, "surface");
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_get_ivec(c, o, "cells", 2, cells_def, 2, 16384, cells));
-    TRY(ms_scene_get_float(c, o, "wave_speed", 0.5, 0, MAX_SPEED, 1, "m/s",
+    MS_TRY(ms_scene_check_keys(c, o, keys));
+    MS_TRY(ms_scene_get_ivec(c, o, "cells", 2, cells_def, 2, 16384, cells));
+    MS_TRY(ms_scene_get_float(c, o, "wave_speed", 0.5, 0, MAX_SPEED, 1, "m/s",
                            &sc->surface.wave_speed));
-    TRY(ms_scene_get_float(c, o, "damping", 0.9, 0, 1, 1, "", &sc->surface.damping));
-    TRY(ms_scene_get_enum(c, o, "boundary", boundaries, 0, &boundary));
-    TRY(ms_scene_get_int(c, o, "max_substeps", 100000, 1, 10000000, &maxsub));
-    TRY(ms_scene_get_float(c, o, "level", level, 0, height, 0, "m", &sc->level));
+    MS_TRY(ms_scene_get_float(c, o, "damping", 0.9, 0, 1, 1, "", &sc->surface.damping));
+    MS_TRY(ms_scene_get_enum(c, o, "boundary", boundaries, 0, &boundary));
+    MS_TRY(ms_scene_get_int(c, o, "max_substeps", 100000, 1, 10000000, &maxsub));
+    MS_TRY(ms_scene_get_float(c, o, "level", level, 0, height, 0, "m", &sc->level));
     sc->surface.nx = cells[0];
     sc->surface.ny = cells[1];
     sc->surface.boundary = (ms_boundary)boundary;
@@ -398,16 +413,16 @@ static ms_status read_coupling(ms_scene_ctx *c, json_t *root, ms_scene *sc)
                                        NULL};
     json_t *o;
     long n_time;
-    TRY(ms_scene_get_object(c, root, "coupling", &o));
+    MS_TRY(ms_scene_get_object(c, root, "coupling", &o));
     if (!o)
         return MS_OK;
     ms_scene_push_key(c, "coupling");
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_get_int(c, o, "n_time", 0, 0, 100000, &n_time));
+    MS_TRY(ms_scene_check_keys(c, o, keys));
+    MS_TRY(ms_scene_get_int(c, o, "n_time", 0, 0, 100000, &n_time));
     sc->n_time = (int)n_time;
-    TRY(ms_scene_get_float(c, o, "surface_from_volume", 0, 0, 0.25f, 0, "",
+    MS_TRY(ms_scene_get_float(c, o, "surface_from_volume", 0, 0, 0.25f, 0, "",
                            &sc->couple_surface_from_volume));
-    TRY(ms_scene_get_float(c, o, "volume_from_surface", 0, 0, 1, 0, "",
+    MS_TRY(ms_scene_get_float(c, o, "volume_from_surface", 0, 0, 1, 0, "",
                            &sc->couple_volume_from_surface));
     ms_scene_pop(c);
     return MS_OK;
@@ -416,7 +431,7 @@ static ms_status read_coupling(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 static ms_status read_obstacles(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
     json_t *a;
-    TRY(ms_scene_get_array(c, root, "obstacles", 0, MS_SCENE_MAX_OBSTACLES, &a));
+    MS_TRY(ms_scene_get_array(c, root, "obstacles", 0, MS_SCENE_MAX_OBSTACLES, &a));
     if (!a || json_array_size(a) == 0)
         return MS_OK;
     size_t n = json_array_size(a);
@@ -432,211 +447,8 @@ static ms_status read_obstacles(ms_scene_ctx *c, json_t *root, ms_scene *sc)
                                  "is not an object; allowed: {\"shape\": name, \"params\": {...}, "
                                  "\"position\": [x, y, z], ...}");
         sc->nobstacles = (int)i + 1; /* so destroy frees what read_shape made */
-        TRY(read_shape(c, o, &sc->obstacles[i]));
+        MS_TRY(ms_scene_read_shape(c, o, &sc->obstacles[i]));
         ms_scene_pop(c);
-    }
-    ms_scene_pop(c);
-    return MS_OK;
-}
-
-static ms_status read_rain(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
-{
-    static const char *const keys[] = {"rate", "radius", "amplitude", NULL};
-    json_t *o;
-    TRY(ms_scene_get_object(c, fx, "rain", &o));
-    if (!o)
-        return MS_OK;
-    sc->has_rain = 1;
-    ms_scene_push_key(c, "rain");
-    TRY(ms_scene_check_keys(c, o, keys));
-    sc->rain = ms_rain_default();
-    TRY(ms_scene_get_float(c, o, "rate", 20, 0, 1e6, 0, "drops/(m^2 s)", &sc->rain.rate));
-    TRY(ms_scene_get_float(c, o, "radius", 0.01, 0, 100, 1, "m", &sc->rain.radius));
-    TRY(ms_scene_get_float(c, o, "amplitude", -0.002, -10, 10, 0, "m", &sc->rain.amplitude));
-    ms_scene_pop(c);
-    if (sc->rain.rate == 0)
-        sc->has_rain = 0; /* rate 0: no rain, no random numbers drawn */
-    return MS_OK;
-}
-
-static ms_status read_boat(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
-{
-    static const char *const keys[] = {"path", "radius", "depth", NULL};
-    json_t *o;
-    TRY(ms_scene_get_object(c, fx, "boat", &o));
-    if (!o)
-        return MS_OK;
-    sc->has_boat = 1;
-    ms_scene_push_key(c, "boat");
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_require(c, o, "path", "{\"points\": [[x, y], ...], \"speed\": m/s}"));
-    TRY(read_path(c, o, "path", 2, &sc->boat_path));
-    TRY(ms_scene_get_float(c, o, "radius", 0.05, 0, 100, 1, "m", &sc->boat_radius));
-    TRY(ms_scene_get_float(c, o, "depth", 0.02, -10, 10, 0, "m", &sc->boat_depth));
-    ms_scene_pop(c);
-    return MS_OK;
-}
-
-static ms_status read_drops(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
-{
-    static const char *const keys[] = {"at", "time", "radius", "amplitude", NULL};
-    json_t *a;
-    TRY(ms_scene_get_array(c, fx, "drops", 0, MS_SCENE_MAX_DROPS, &a));
-    if (!a || json_array_size(a) == 0)
-        return MS_OK;
-    size_t n = json_array_size(a);
-    sc->drops = ms_alloc_array(n, sizeof *sc->drops);
-    if (!sc->drops)
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for %zu drops", n);
-    ms_scene_push_key(c, "drops");
-    for (size_t i = 0; i < n; ++i) {
-        json_t *o = json_array_get(a, i);
-        ms_scene_drop *d = &sc->drops[i];
-        float at[2];
-        ms_scene_push_index(c, (long)i);
-        if (!json_is_object(o))
-            return ms_scene_fail(c, MS_ERR_PARSE,
-                                 "is not an object; allowed: {\"at\": [x, y], \"time\": s, "
-                                 "\"radius\": m, \"amplitude\": m}");
-        TRY(ms_scene_check_keys(c, o, keys));
-        TRY(ms_scene_require(c, o, "at", "[x, y] in m"));
-        TRY(ms_scene_get_vec(c, o, "at", 2, NULL, -BIG, BIG, "m", at));
-        TRY(ms_scene_get_float(c, o, "time", 0, 0, 1e6, 0, "s", &d->time));
-        TRY(ms_scene_get_float(c, o, "radius", 0.03, 0, 100, 1, "m", &d->radius));
-        TRY(ms_scene_get_float(c, o, "amplitude", 0.01, -10, 10, 0, "m", &d->amplitude));
-        d->x = at[0];
-        d->y = at[1];
-        ms_scene_pop(c);
-    }
-    sc->ndrops = (int)n;
-    ms_scene_pop(c);
-    return MS_OK;
-}
-
-static ms_status read_floaters(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
-{
-    static const char *const keys[] = {"count", "region", "positions", "drag", "slope", NULL};
-    json_t *o, *region, *pos;
-    long count;
-    TRY(ms_scene_get_object(c, fx, "floaters", &o));
-    if (!o)
-        return MS_OK;
-    sc->has_floaters = 1;
-    ms_scene_push_key(c, "floaters");
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_get_int(c, o, "count", 16, 1, MS_SCENE_MAX_FLOATERS, &count));
-    TRY(ms_scene_get_float(c, o, "drag", 4, 0, 1e3, 1, "1/s", &sc->floater_drag));
-    TRY(ms_scene_get_float(c, o, "slope", 1, 0, 100, 0, "", &sc->floater_slope));
-    TRY(ms_scene_get_array(c, o, "positions", 1, MS_SCENE_MAX_FLOATERS, &pos));
-    float lo[2] = {sc->domain_min[0], sc->domain_min[1]};
-    float hi[2] = {sc->domain_max[0], sc->domain_max[1]};
-    TRY(ms_scene_get_object(c, o, "region", &region));
-    if (region) {
-        static const char *const rkeys[] = {"min", "max", NULL};
-        ms_scene_push_key(c, "region");
-        TRY(ms_scene_check_keys(c, region, rkeys));
-        TRY(ms_scene_get_vec(c, region, "min", 2, lo, -BIG, BIG, "m", lo));
-        TRY(ms_scene_get_vec(c, region, "max", 2, hi, -BIG, BIG, "m", hi));
-        for (int k = 0; k < 2; ++k)
-            if (lo[k] < sc->domain_min[k] || hi[k] > sc->domain_max[k] || !(hi[k] >= lo[k])) {
-                ms_scene_push_key(c, "max");
-                return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                     "and min give [%g, %g] m on axis %d; allowed: min <= max, "
-                                     "inside the domain [%g, %g] m",
-                                     lo[k], hi[k], k, sc->domain_min[k], sc->domain_max[k]);
-            }
-        ms_scene_pop(c);
-    }
-    if (pos)
-        count = (long)json_array_size(pos);
-    sc->floater_xy = ms_alloc_array((size_t)count * 2, sizeof *sc->floater_xy);
-    if (!sc->floater_xy)
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for %ld floaters", count);
-    if (pos) {
-        ms_scene_push_key(c, "positions");
-        for (long i = 0; i < count; ++i) {
-            float *xy = sc->floater_xy + 2 * i;
-            ms_scene_push_index(c, i);
-            TRY(ms_scene_read_vec(c, json_array_get(pos, (size_t)i), 2, -BIG, BIG, "m", xy));
-            for (int k = 0; k < 2; ++k)
-                if (xy[k] < sc->domain_min[k] || xy[k] > sc->domain_max[k])
-                    return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                         "[%d] = %g m lies outside the domain; allowed: [%g, %g] m",
-                                         k, xy[k], sc->domain_min[k], sc->domain_max[k]);
-            ms_scene_pop(c);
-        }
-        ms_scene_pop(c);
-    } else {
-        /* spread from the scene's seed, so the same scene gives the same start */
-        ms_rng r;
-        ms_rng_seed(&r, sc->seed ^ 0x666c6f6174657273ull); /* "floaters" */
-        for (long i = 0; i < count; ++i) {
-            sc->floater_xy[2 * i] = lo[0] + (hi[0] - lo[0]) * ms_rng_uniform(&r);
-            sc->floater_xy[2 * i + 1] = lo[1] + (hi[1] - lo[1]) * ms_rng_uniform(&r);
-        }
-    }
-    sc->nfloaters = (int)count;
-    ms_scene_pop(c);
-    return MS_OK;
-}
-
-static ms_status read_drag(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
-{
-    static const char *const keys[] = {"path", "radius", "depth", "strength", NULL};
-    json_t *o;
-    TRY(ms_scene_get_object(c, fx, "drag", &o));
-    if (!o)
-        return MS_OK;
-    sc->has_drag = 1;
-    ms_scene_push_key(c, "drag");
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_require(c, o, "path", "{\"points\": [[x, y], ...], \"speed\": m/s}"));
-    TRY(read_path(c, o, "path", 2, &sc->drag_path));
-    TRY(ms_scene_get_float(c, o, "radius", 0.1, 0, 100, 1, "m", &sc->drag_radius));
-    TRY(ms_scene_get_float(c, o, "depth", 0.05, 0, 100, 0, "m", &sc->drag_depth));
-    TRY(ms_scene_get_float(c, o, "strength", 10, 0, 1e4, 1, "1/s", &sc->drag_strength));
-    ms_scene_pop(c);
-    return MS_OK;
-}
-
-static ms_status read_container(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
-{
-    json_t *o;
-    TRY(ms_scene_get_object(c, fx, "container", &o));
-    if (!o)
-        return MS_OK;
-    sc->has_container = 1;
-    ms_scene_push_key(c, "container");
-    TRY(read_shape(c, o, &sc->container));
-    ms_scene_pop(c);
-    return MS_OK;
-}
-
-static ms_status read_effects(ms_scene_ctx *c, json_t *root, ms_scene *sc)
-{
-    static const char *const keys[] = {"rain", "boat", "drops", "floaters", "drag",
-                                       "container", NULL};
-    json_t *fx;
-    TRY(ms_scene_get_object(c, root, "effects", &fx));
-    if (!fx)
-        return MS_OK;
-    ms_scene_push_key(c, "effects");
-    TRY(ms_scene_check_keys(c, fx, keys));
-    TRY(read_rain(c, fx, sc));
-    TRY(read_boat(c, fx, sc));
-    TRY(read_drops(c, fx, sc));
-    TRY(read_floaters(c, fx, sc));
-    TRY(read_drag(c, fx, sc));
-    TRY(read_container(c, fx, sc));
-    /* effects that live on the wave field need one */
-    static const char *const surface_fx[] = {"rain", "boat", "drops", NULL};
-    for (const char *const *k = surface_fx; *k && !sc->has_surface; ++k) {
-        if (json_object_get(fx, *k)) {
-            ms_scene_push_key(c, *k);
-            return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                 "needs a \"surface\" section (it makes waves); allowed: "
-                                 "only in scenes with a surface");
-        }
     }
     ms_scene_pop(c);
     return MS_OK;
@@ -655,23 +467,23 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
     json_t *o, *caus, *cam;
     long w, h;
     const char *shader, *cubemap;
-    TRY(ms_scene_get_object(c, root, "render", &o));
+    MS_TRY(ms_scene_get_object(c, root, "render", &o));
     if (!o)
         return MS_OK;
     sc->has_render = 1;
     ms_scene_push_key(c, "render");
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_get_int(c, o, "width", 950, 16, 8192, &w));
-    TRY(ms_scene_get_int(c, o, "height", 950, 16, 8192, &h));
+    MS_TRY(ms_scene_check_keys(c, o, keys));
+    MS_TRY(ms_scene_get_int(c, o, "width", 950, 16, 8192, &w));
+    MS_TRY(ms_scene_get_int(c, o, "height", 950, 16, 8192, &h));
     r->width = (int)w;
     r->height = (int)h;
-    TRY(ms_scene_get_string(c, o, "shader", "water", &shader));
-    TRY(check_shader(c, shader));
-    TRY(ms_scene_get_string(c, o, "cubemap", "builtin", &cubemap));
-    TRY(ms_scene_get_enum(c, o, "backend", ms_scene_render_backends, 0, &r->backend));
-    r->shader = dup_string(shader);
+    MS_TRY(ms_scene_get_string(c, o, "shader", "water", &shader));
+    MS_TRY(check_shader(c, shader));
+    MS_TRY(ms_scene_get_string(c, o, "cubemap", "builtin", &cubemap));
+    MS_TRY(ms_scene_get_enum(c, o, "backend", ms_scene_render_backends, 0, &r->backend));
+    r->shader = ms_strdup(shader);
     if (strcmp(cubemap, "builtin") == 0) {
-        r->cubemap = dup_string(cubemap);
+        r->cubemap = ms_strdup(cubemap);
     } else {
         size_t n = strlen(dir) + strlen(cubemap) + 2;
         r->cubemap = ms_alloc(n);
@@ -689,7 +501,7 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
     }
     if (!r->shader || !r->cubemap)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for the render section");
-    TRY(ms_scene_get_object(c, o, "caustics", &caus));
+    MS_TRY(ms_scene_get_object(c, o, "caustics", &caus));
     r->has_caustics = caus != NULL;
     memcpy(r->light_dir, light, sizeof light);
     r->caustics_resolution = 512;
@@ -697,11 +509,11 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
     if (caus) {
         long res;
         ms_scene_push_key(c, "caustics");
-        TRY(ms_scene_check_keys(c, caus, ckeys));
-        TRY(ms_scene_get_int(c, caus, "resolution", 512, 16, 4096, &res));
+        MS_TRY(ms_scene_check_keys(c, caus, ckeys));
+        MS_TRY(ms_scene_get_int(c, caus, "resolution", 512, 16, 4096, &res));
         r->caustics_resolution = (int)res;
-        TRY(ms_scene_get_float(c, caus, "intensity", 1, 0, 100, 0, "", &r->caustics_intensity));
-        TRY(ms_scene_get_vec(c, caus, "light", 3, light, -1e3, 1e3, "", r->light_dir));
+        MS_TRY(ms_scene_get_float(c, caus, "intensity", 1, 0, 100, 0, "", &r->caustics_intensity));
+        MS_TRY(ms_scene_get_vec(c, caus, "light", 3, light, -1e3, 1e3, "", r->light_dir));
         ms_scene_pop(c);
     }
     double ln = sqrt((double)r->light_dir[0] * r->light_dir[0] +
@@ -726,14 +538,14 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
     memcpy(r->target, ctr, sizeof ctr);
     memcpy(r->up, up, sizeof up);
     r->fov = 45;
-    TRY(ms_scene_get_object(c, o, "camera", &cam));
+    MS_TRY(ms_scene_get_object(c, o, "camera", &cam));
     if (cam) {
         ms_scene_push_key(c, "camera");
-        TRY(ms_scene_check_keys(c, cam, camkeys));
-        TRY(ms_scene_get_vec(c, cam, "eye", 3, eye, -BIG, BIG, "m", r->eye));
-        TRY(ms_scene_get_vec(c, cam, "target", 3, ctr, -BIG, BIG, "m", r->target));
-        TRY(ms_scene_get_vec(c, cam, "up", 3, up, -1e3, 1e3, "", r->up));
-        TRY(ms_scene_get_float(c, cam, "fov", 45, 1, 179, 0, "degrees", &r->fov));
+        MS_TRY(ms_scene_check_keys(c, cam, camkeys));
+        MS_TRY(ms_scene_get_vec(c, cam, "eye", 3, eye, -BIG, BIG, "m", r->eye));
+        MS_TRY(ms_scene_get_vec(c, cam, "target", 3, ctr, -BIG, BIG, "m", r->target));
+        MS_TRY(ms_scene_get_vec(c, cam, "up", 3, up, -1e3, 1e3, "", r->up));
+        MS_TRY(ms_scene_get_float(c, cam, "fov", 45, 1, 179, 0, "degrees", &r->fov));
         double d = 0;
         for (int k = 0; k < 3; ++k)
             d += (double)(r->eye[k] - r->target[k]) * (r->eye[k] - r->target[k]);
@@ -757,16 +569,16 @@ static ms_status read_output(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     sc->output_fields = MS_FIELD_COMBINED;
     sc->output_every = 1;
     sc->output_deflate = 1;
-    TRY(ms_scene_get_object(c, root, "output", &o));
+    MS_TRY(ms_scene_get_object(c, root, "output", &o));
     if (!o)
         return MS_OK;
     ms_scene_push_key(c, "output");
-    TRY(ms_scene_check_keys(c, o, keys));
-    TRY(ms_scene_get_int(c, o, "every", 1, 1, 1000000, &every));
+    MS_TRY(ms_scene_check_keys(c, o, keys));
+    MS_TRY(ms_scene_get_int(c, o, "every", 1, 1, 1000000, &every));
     sc->output_every = (int)every;
-    TRY(ms_scene_get_int(c, o, "deflate", 1, 0, 9, &deflate));
+    MS_TRY(ms_scene_get_int(c, o, "deflate", 1, 0, 9, &deflate));
     sc->output_deflate = (int)deflate;
-    TRY(ms_scene_get_array(c, o, "fields", 0, 16, &fields));
+    MS_TRY(ms_scene_get_array(c, o, "fields", 0, 16, &fields));
     if (fields) {
         sc->output_fields = 0;
         ms_scene_push_key(c, "fields");
@@ -809,37 +621,37 @@ ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, co
     if (!json_is_object(root))
         return ms_scene_fail(c, MS_ERR_PARSE,
                              "is not a JSON object; allowed: a scene {\"name\": ..., ...}");
-    TRY(ms_scene_check_keys(c, root, keys));
-    TRY(ms_scene_get_string(c, root, "name", default_name, &name));
+    MS_TRY(ms_scene_check_keys(c, root, keys));
+    MS_TRY(ms_scene_get_string(c, root, "name", default_name, &name));
     if (strlen(name) > 256) {
         ms_scene_push_key(c, "name");
         return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
                              "is %zu bytes long; allowed: at most 256 bytes", strlen(name));
     }
-    sc->name = dup_string(name);
+    sc->name = ms_strdup(name);
     if (!sc->name)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory");
-    TRY(ms_scene_get_number(c, root, "duration", 5, 0, 1e6, 1, "s", &sc->duration));
-    TRY(ms_scene_get_float(c, root, "frame_dt", 1.0 / 60, 0, 1, 1, "s", &sc->frame_dt));
-    TRY(ms_scene_get_int(c, root, "seed", 1, 0, 9007199254740992L, &seed));
+    MS_TRY(ms_scene_get_number(c, root, "duration", 5, 0, 1e6, 1, "s", &sc->duration));
+    MS_TRY(ms_scene_get_float(c, root, "frame_dt", 1.0 / 60, 0, 1, 1, "s", &sc->frame_dt));
+    MS_TRY(ms_scene_get_int(c, root, "seed", 1, 0, 9007199254740992L, &seed));
     sc->seed = (uint64_t)seed;
-    TRY(ms_scene_get_int(c, root, "threads", 2, 1, 2, &threads));
+    MS_TRY(ms_scene_get_int(c, root, "threads", 2, 1, 2, &threads));
     sc->threads = (int)threads;
-    TRY(read_domain(c, root, sc));
-    TRY(read_volume(c, root, sc));
-    TRY(read_surface(c, root, sc));
+    MS_TRY(read_domain(c, root, sc));
+    MS_TRY(read_volume(c, root, sc));
+    MS_TRY(read_surface(c, root, sc));
     if (!sc->has_volume && !sc->has_surface)
         return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
                              "has neither a \"volume\" nor a \"surface\" section; allowed: a "
                              "scene with at least one of them");
-    TRY(read_coupling(c, root, sc));
-    TRY(read_obstacles(c, root, sc));
-    TRY(read_effects(c, root, sc));
-    TRY(read_render(c, root, sc, dir));
-    TRY(read_output(c, root, sc));
+    MS_TRY(read_coupling(c, root, sc));
+    MS_TRY(read_obstacles(c, root, sc));
+    MS_TRY(ms_scene_read_effects(c, root, sc));
+    MS_TRY(read_render(c, root, sc, dir));
+    MS_TRY(read_output(c, root, sc));
     /* the --set overrides a scene was made with: kept as information */
     json_t *ovr = NULL;
-    TRY(ms_scene_get_array(c, root, "overrides", 0, 4096, &ovr));
+    MS_TRY(ms_scene_get_array(c, root, "overrides", 0, 4096, &ovr));
     for (size_t i = 0; ovr && i < json_array_size(ovr); ++i)
         if (!json_is_string(json_array_get(ovr, i))) {
             ms_scene_push_key(c, "overrides");

@@ -1,4 +1,4 @@
-/* The scene schema (sections.c). Internal. */
+/* The scene schema (sections.c; the effects section in effects.c). Internal. */
 #ifndef MS_SCENE_SECTIONS_H
 #define MS_SCENE_SECTIONS_H
 
@@ -12,6 +12,20 @@
  * for relative paths; default_name: the name when the scene gives none. */
 ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir,
                                  const char *default_name);
+
+#define MS_SCENE_BIG 1e4       /* m: coordinates of a scene lie in [-BIG, BIG] */
+#define MS_SCENE_MAX_SPEED 1e3 /* m/s */
+
+/* The "effects" section (effects.c), read after domain, surface, volume and
+ * obstacles (floaters spread over the domain; surface effects need one). */
+ms_status ms_scene_read_effects(ms_scene_ctx *c, json_t *root, ms_scene *sc);
+
+/* Shared by the readers of sections.c and effects.c: the motion path at
+ * obj[key] ({"points", "speed", "loop", "start"}; dim 2 or 3), and a shape
+ * of a plugin (obstacle or container) in the object o. */
+ms_status ms_scene_read_path(ms_scene_ctx *c, json_t *obj, const char *key, int dim,
+                             ms_scene_motion *p);
+ms_status ms_scene_read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s);
 
 
 #endif

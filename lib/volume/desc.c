@@ -33,12 +33,7 @@ ms_volume_desc ms_volume_desc_default(void)
     return d;
 }
 
-#define CHECK(call)                    \
-    do {                               \
-        ms_status st_ = (call);        \
-        if (st_ != MS_OK)              \
-            return st_;                \
-    } while (0)
+#define CHECK MS_TRY /* lib/core */
 
 ms_status ms_volume_desc_check(const ms_volume_desc *d)
 {

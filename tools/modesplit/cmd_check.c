@@ -1,7 +1,10 @@
 /* modesplit check SCENE.json...: validate scenes without running them.
  * Each is parsed (unknown keys, wrong types, ranges: the error names
  * file:line:col and the key) and its sim is built (so a scene that cannot
- * be allocated or made stable is refused too); nothing is stepped. */
+ * be allocated or made stable is refused too), and the work of one frame
+ * is bounded (tool_check_frame_work, which `run` calls too); nothing is
+ * stepped. */
+#include <math.h>
 #include <string.h>
 
 #include "tool.h"
@@ -17,6 +20,31 @@ static const char *field_list(unsigned f, char *buf, size_t size)
             strncat(buf, names[i], size - strlen(buf) - 1);
         }
     return buf[0] ? buf : "none";
+}
+
+int tool_check_frame_work(const ms_scene *sc, ms_sim *sim, const char *path)
+{
+    /* The sim splits a frame into N_time wave steps (eq. 19), each within
+     * the surface's own sub-step cap, so a domain whose cells are tiny
+     * (dx ~ nm) runs ~1e6 sub-steps a frame for hours without an error:
+     * hold the frame's whole wave work to the cap the surface gives one
+     * step. */
+    ms_surface *s = ms_sim_surface(sim);
+    if (!s)
+        return 0;
+    ms_surface_info info = ms_surface_info_init();
+    ms_surface_get_info(s, &info);
+    ms_surface_desc d = ms_surface_get_desc(s);
+    double dt = ms_scene_frame_dt(sc);
+    double need = info.max_dt > 0 ? ceil(dt / info.max_dt) : INFINITY;
+    if (need <= d.max_substeps)
+        return 0;
+    tool_error("%s: a frame of %g s needs %.3g wave sub-steps of at most %g s (cells of %g m "
+               "at %g m/s); allowed: at most surface.max_substeps = %d a frame: the domain "
+               "is too small for %d x %d cells (enlarge the domain or lower surface.cells)",
+               path, dt, need, (double)info.max_dt, (double)d.dx, (double)info.max_speed,
+               d.max_substeps, d.nx, d.ny);
+    return -1;
 }
 
 int cmd_check(int argc, char **argv)
@@ -59,6 +87,12 @@ int cmd_check(int argc, char **argv)
         ms_sim *sim = NULL;
         if (ms_sim_create_from_scene(sc, 0, &sim) != MS_OK) {
             tool_error("%s: %s", argv[i], ms_last_error());
+            ms_scene_destroy(sc);
+            ++bad;
+            continue;
+        }
+        if (tool_check_frame_work(sc, sim, argv[i]) != 0) {
+            ms_sim_destroy(sim);
             ms_scene_destroy(sc);
             ++bad;
             continue;

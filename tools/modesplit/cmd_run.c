@@ -178,164 +178,202 @@ static void fill_stages(const ms_sim *sim, double write_s, double png_s, long fr
     s->png = 1e3 * png_s / n;
 }
 
-int cmd_run(int argc, char **argv)
-{
+/* Everything one run holds; run_open fills it, run_close frees it. */
+typedef struct run_state {
     run_opts o;
-    int rc = parse_args(argc, argv, &o);
-    if (rc < 0)
-        return EXIT_OK; /* --help */
-    if (rc != EXIT_OK)
-        return rc;
+    ms_scene *sc;
+    ms_sim *sim;
+    ms_writer *w;
+    char *out;           /* run file name, NULL with --no-out */
+    tool_png png;
+    ms_grid grid;
+    float dt;            /* s per frame */
+    long frames;         /* frames to step */
+    int every;           /* write every N-th published frame */
+    long done, written;  /* frames stepped, frames written */
+    double write_s, png_s, wall; /* s spent writing HDF5 / PNG, s of the loop */
+} run_state;
 
-    ms_scene *sc = NULL;
-    if (tool_load_scene(o.scene, &o.sets, &sc) != 0)
+/* Load the scene, build the sim, open the PNG folder and the run file.
+ * Returns EXIT_OK or the exit code; on failure nothing stays open. */
+static int run_open(run_state *r)
+{
+    run_opts *o = &r->o;
+    if (tool_load_scene(o->scene, &o->sets, &r->sc) != 0)
         return EXIT_USAGE;
-    float dt = ms_scene_frame_dt(sc);
-    long frames = o.frames;
-    if (frames < 0 && tool_scene_frames(sc, o.scene, o.duration, &frames) != 0) {
-        ms_scene_destroy(sc);
+    r->dt = ms_scene_frame_dt(r->sc);
+    r->frames = o->frames;
+    if (r->frames < 0 && tool_scene_frames(r->sc, o->scene, o->duration, &r->frames) != 0)
+        return EXIT_USAGE;
+    r->every = ms_scene_output_every(r->sc);
+
+    if (ms_sim_create_from_scene(r->sc, o->threads, &r->sim) != MS_OK) {
+        tool_error("%s: %s", o->scene, ms_last_error());
         return EXIT_USAGE;
     }
-    int every = ms_scene_output_every(sc);
-
-    ms_sim *sim = NULL;
-    if (ms_sim_create_from_scene(sc, o.threads, &sim) != MS_OK) {
-        tool_error("%s: %s", o.scene, ms_last_error());
-        ms_scene_destroy(sc);
+    if (tool_check_frame_work(r->sc, r->sim, o->scene) != 0)
         return EXIT_USAGE;
-    }
-
     /* The PNG directory first: a --png that cannot be used (a file, no
      * permission) must not leave an empty run file and sidecar behind. */
-    tool_png png = {0};
-    if (o.png && png_begin(&png, o.png, sc, o.preview, o.quiet) != 0) {
-        ms_sim_destroy(sim);
-        ms_scene_destroy(sc);
+    if (o->png && png_begin(&r->png, o->png, r->sc, o->preview, o->quiet) != 0)
         return EXIT_RUNTIME;
-    }
-    char *out = NULL;
-    ms_writer *w = NULL;
-    long done = 0, written = 0;
-    if (o.resume) {
-        out = strdup(o.resume);
-        rc = out ? resume_run(out, sim, dt, every, frames, o.quiet, &w, &done, &written)
-                 : EXIT_RUNTIME;
-        if (rc != EXIT_OK) {
-            free(out);
-            png_end(&png);
-            ms_sim_destroy(sim);
-            ms_scene_destroy(sc);
+    if (o->resume) {
+        r->out = strdup(o->resume);
+        int rc = r->out ? resume_run(r->out, r->sim, r->dt, r->every, r->frames, o->quiet, &r->w,
+                                     &r->done, &r->written)
+                        : EXIT_RUNTIME;
+        if (rc != EXIT_OK)
             return rc;
-        }
-    } else if (!o.no_out) {
-        out = o.out ? strdup(o.out) : default_out(o.scene);
-        if (!out || ms_writer_open(out, sim, 0, &w) != MS_OK) {
-            tool_error("%s", out ? ms_last_error() : "out of memory");
-            free(out);
-            png_end(&png);
-            ms_sim_destroy(sim);
-            ms_scene_destroy(sc);
+    } else if (!o->no_out) {
+        r->out = o->out ? strdup(o->out) : default_out(o->scene);
+        if (!r->out || ms_writer_open(r->out, r->sim, 0, &r->w) != MS_OK) {
+            tool_error("%s", r->out ? ms_last_error() : "out of memory");
             return EXIT_RUNTIME;
         }
     }
-    ms_grid grid;
-    ms_sim_field_grid(sim, MS_FIELD_COMBINED, &grid);
-    png.sim = sim; /* the renderer draws the sim's floaters and boat too (issue 14) */
+    ms_sim_field_grid(r->sim, MS_FIELD_COMBINED, &r->grid);
+    r->png.sim = r->sim; /* the renderer draws the sim's floaters and boat too (issue 14) */
+    return EXIT_OK;
+}
 
-    running_sim = sim;
+/* Write published frame `done - 1` to the run file and the PNG folder. */
+static int run_write_frame(run_state *r)
+{
+    double t0 = tool_now();
+    if (r->w && ms_writer_frame(r->w, r->sim) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        return EXIT_RUNTIME;
+    }
+    double t1 = tool_now();
+    if (r->o.png) {
+        int nx, ny;
+        const float *h = ms_sim_height(r->sim, &nx, &ny);
+        if (png_frame(&r->png, r->written, h, &r->grid, ms_sim_time(r->sim)) != 0)
+            return EXIT_RUNTIME;
+    }
+    r->write_s += t1 - t0;
+    r->png_s += tool_now() - t1;
+    ++r->written;
+    return EXIT_OK;
+}
+
+/* Step the frames, writing every `every`-th; stops early on a signal. */
+static int run_frames(run_state *r)
+{
+    running_sim = r->sim;
     catch_stop_signals();
     tool_progress prog;
-    progress_begin(&prog, frames, o.quiet);
-    double write_s = 0, png_s = 0;
-    rc = EXIT_OK;
-    while (done < frames && !stop_signal) {
-        ms_status step_st = ms_sim_step(sim, dt);
+    progress_begin(&prog, r->frames, r->o.quiet);
+    int rc = EXIT_OK;
+    while (r->done < r->frames && !stop_signal) {
+        ms_status step_st = ms_sim_step(r->sim, r->dt);
         if (step_st == MS_ERR_CANCELED && stop_signal)
             break; /* a second signal: the frame in hand is dropped */
         if (step_st != MS_OK) {
             progress_end(&prog);
-            tool_error("frame %ld: %s", done, ms_last_error());
+            tool_error("frame %ld: %s", r->done, ms_last_error());
             rc = EXIT_RUNTIME;
             break;
         }
-        ++done;
+        ++r->done;
         /* The sim publishes a frame one step behind (its first step
          * publishes the start): write published frames 0, every, 2 every... */
-        if ((done - 1) % every == 0) {
-            double t0 = tool_now();
-            if (w && ms_writer_frame(w, sim) != MS_OK) {
+        if ((r->done - 1) % r->every == 0) {
+            rc = run_write_frame(r);
+            if (rc != EXIT_OK) {
                 progress_end(&prog);
-                tool_error("%s", ms_last_error());
-                rc = EXIT_RUNTIME;
                 break;
             }
-            double t1 = tool_now();
-            if (o.png) {
-                int nx, ny;
-                const float *h = ms_sim_height(sim, &nx, &ny);
-                if (png_frame(&png, written, h, &grid, ms_sim_time(sim)) != 0) {
-                    progress_end(&prog);
-                    rc = EXIT_RUNTIME;
-                    break;
-                }
-            }
-            write_s += t1 - t0;
-            png_s += tool_now() - t1;
-            ++written;
         }
         tool_stages st;
-        fill_stages(sim, write_s, png_s, done, &st);
-        progress_update(&prog, done, &st);
+        fill_stages(r->sim, r->write_s, r->png_s, r->done, &st);
+        progress_update(&prog, r->done, &st);
     }
     progress_end(&prog);
-    double wall = tool_now() - prog.start;
+    r->wall = tool_now() - prog.start;
+    return rc;
+}
 
-    long in_file = w ? ms_writer_frames(w) : 0;
+static void print_summary(const run_state *r, long in_file, const char *xmf)
+{
+    tool_stages st;
+    fill_stages(r->sim, r->write_s, r->png_s, r->done, &st);
+    printf("modesplit: %s: %ld of %ld frames (%.4g s simulated) in %.3g s, %.1f frames/s%s\n",
+           ms_scene_name(r->sc), r->done, r->frames, ms_sim_time(r->sim), r->wall,
+           r->wall > 0 ? (double)r->done / r->wall : 0.0,
+           stop_signal ? (stop_signal == SIGINT ? ", stopped by SIGINT" : ", stopped by SIGTERM")
+                       : "");
+    printf("  per frame: volume %.3g ms, surface %.3g ms, extract %.3g ms, combine %.3g ms",
+           st.volume, st.surface, st.extract, st.combine);
+    if (r->out)
+        printf(", write %.3g ms", st.write);
+    if (r->o.png)
+        printf(", png %.3g ms", st.png);
+    printf("\n");
+    if (r->out) {
+        struct stat sb;
+        char buf[32];
+        printf("  wrote %s (%ld frames, %s) and %s\n", r->out, in_file,
+               stat(r->out, &sb) == 0 ? tool_bytes((double)sb.st_size, buf, sizeof buf) : "?",
+               xmf ? xmf : "");
+    }
+    if (r->o.png)
+        printf("  wrote %ld PNG frames to %s\n", r->png.written, r->o.png);
+    fflush(stdout);
+}
+
+/* Close the run file (its error turns rc into EXIT_RUNTIME) and print the
+ * summary, which names the sidecars the writer made. */
+static int run_finish(run_state *r, int rc)
+{
+    long in_file = r->w ? ms_writer_frames(r->w) : 0;
     char *xmf = NULL;
-    if (w) {
-        const char *a = ms_writer_xdmf_path(w), *b = ms_writer_xdmf_legacy_path(w);
+    if (r->w) {
+        const char *a = ms_writer_xdmf_path(r->w), *b = ms_writer_xdmf_legacy_path(r->w);
         size_t n = strlen(a) + strlen(b) + 64;
         xmf = malloc(n);
         if (xmf)
             snprintf(xmf, n, "%s (ParaView), %s (legacy XDMF reader, VisIt)", a, b);
     }
-    if (w && ms_writer_close(w) != MS_OK) {
+    if (r->w && ms_writer_close(r->w) != MS_OK) {
         tool_error("%s", ms_last_error());
         rc = EXIT_RUNTIME;
     }
-    if (!o.quiet) {
-        tool_stages st;
-        fill_stages(sim, write_s, png_s, done, &st);
-        printf("modesplit: %s: %ld of %ld frames (%.4g s simulated) in %.3g s, %.1f frames/s%s\n",
-               ms_scene_name(sc), done, frames, ms_sim_time(sim), wall,
-               wall > 0 ? (double)done / wall : 0.0,
-               stop_signal ? (stop_signal == SIGINT ? ", stopped by SIGINT"
-                                                    : ", stopped by SIGTERM")
-                           : "");
-        printf("  per frame: volume %.3g ms, surface %.3g ms, extract %.3g ms, combine %.3g ms",
-               st.volume, st.surface, st.extract, st.combine);
-        if (out)
-            printf(", write %.3g ms", st.write);
-        if (o.png)
-            printf(", png %.3g ms", st.png);
-        printf("\n");
-        if (out) {
-            struct stat sb;
-            char buf[32];
-            printf("  wrote %s (%ld frames, %s) and %s\n", out, in_file,
-                   stat(out, &sb) == 0 ? tool_bytes((double)sb.st_size, buf, sizeof buf) : "?",
-                   xmf ? xmf : "");
-        }
-        if (o.png)
-            printf("  wrote %ld PNG frames to %s\n", png.written, o.png);
-        fflush(stdout);
-    }
+    r->w = NULL;
+    if (!r->o.quiet)
+        print_summary(r, in_file, xmf);
     free(xmf);
-    free(out);
-    png_end(&png);
+    return rc;
+}
+
+/* Free what run_open made (the run file is already closed or never opened
+ * unless run_open failed half-way). */
+static void run_close(run_state *r)
+{
+    if (r->w)
+        ms_writer_close(r->w);
+    free(r->out);
+    png_end(&r->png);
     running_sim = NULL;
-    ms_sim_destroy(sim);
-    ms_scene_destroy(sc);
+    ms_sim_destroy(r->sim);
+    ms_scene_destroy(r->sc);
+}
+
+int cmd_run(int argc, char **argv)
+{
+    run_state r;
+    memset(&r, 0, sizeof r);
+    int rc = parse_args(argc, argv, &r.o);
+    if (rc < 0)
+        return EXIT_OK; /* --help */
+    if (rc != EXIT_OK)
+        return rc;
+    rc = run_open(&r);
+    if (rc == EXIT_OK) {
+        rc = run_frames(&r);
+        rc = run_finish(&r, rc);
+    }
+    run_close(&r);
     if (stop_signal) {
         /* end as the signal would have, so the shell sees it */
         signal((int)stop_signal, SIG_DFL);
