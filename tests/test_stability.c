@@ -449,24 +449,19 @@ static uint64_t packed_twice(int law, int *skipped)
     const double mass = (double)n * in.particle_mass;
     sph_check c = {.e_max = 1.02 * (potential(v) + mass * elastic(law, SOUND, 2.0)), .n = n,
                    .tol = 1e-4f};
-    for (int f = 0; f < 30; ++f) {
-        ms_status st = ms_volume_step(v, 1.0f / 60);
-        if (law == MS_PRESSURE_DFSPH && st != MS_OK) {
-            /* A known defect, left open in issue 12: from a box packed at
-             * twice the rest density DFSPH's first sub-steps reach
-             * non-finite velocities (energy ~1e38 J before them). The step
-             * refuses (MS_ERR_UNSTABLE, named) in the first frame. Asserted
-             * exactly, so the fix makes this fail and the case returns to
-             * the full check of the other laws. */
-            ck_assert_int_eq(st, MS_ERR_UNSTABLE);
-            ck_assert_msg(strstr(ms_last_error(), "not finite"), "%s", ms_last_error());
-            ck_assert_int_eq(f, 0);
-            ms_volume_destroy(v);
-            return 0;
-        }
-        ck_assert_int_eq(st, MS_OK);
+    /* DFSPH: one frame (its sub-steps are short while the liquid moves at
+     * the sound speed, 50 a frame at 28 iterations each: 30 frames took
+     * 100 s, issue 12) */
+    const int frames = law == MS_PRESSURE_DFSPH ? 1 : 30;
+    for (int f = 0; f < frames; ++f) {
+        ck_assert_int_eq(ms_volume_step(v, 1.0f / 60), MS_OK);
         check_state(v, &c);
     }
+    /* it relaxes toward rest density: max rho/rho0 - 1 is 2.86 at the
+     * first density pass (the lattice and its wall images) */
+    ms_volume_get_info(v, &in);
+    ck_assert_msg(in.max_density_error < 0.5f, "%s: max compression %g after %d frames",
+                  law_name[law], in.max_density_error, frames);
     uint64_t r = check_state(v, &c);
     ms_volume_destroy(v);
     return r;
@@ -593,21 +588,7 @@ static uint64_t sheet(int law, int *skipped)
     ck_assert_int_eq(ms_volume_add_particles(v, SIDE * SIDE, p, NULL), MS_OK);
     sph_check c = {.e_max = 1.02 * potential(v), .n = ms_volume_count(v), .tol = 1e-4f};
     for (int f = 0; f < 30; ++f) {
-        ms_status st = ms_volume_step(v, 1.0f / 60);
-        if (law == MS_PRESSURE_DFSPH && st != MS_OK) {
-            /* A known defect, left open in issue 12: from a box packed at
-             * twice the rest density DFSPH's first sub-steps reach
-             * non-finite velocities (energy ~1e38 J before them). The step
-             * refuses (MS_ERR_UNSTABLE, named) in the first frame. Asserted
-             * exactly, so the fix makes this fail and the case returns to
-             * the full check of the other laws. */
-            ck_assert_int_eq(st, MS_ERR_UNSTABLE);
-            ck_assert_msg(strstr(ms_last_error(), "not finite"), "%s", ms_last_error());
-            ck_assert_int_eq(f, 0);
-            ms_volume_destroy(v);
-            return 0;
-        }
-        ck_assert_int_eq(st, MS_OK);
+        ck_assert_int_eq(ms_volume_step(v, 1.0f / 60), MS_OK);
         check_state(v, &c);
     }
     uint64_t r = check_state(v, &c);

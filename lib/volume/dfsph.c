@@ -56,6 +56,16 @@
  * kept its kinetic energy; as mirrored particles it stopped it (26 -> 1 in
  * 20 iterations).
  *
+ * Far from rest (issue 12, round two): a coincident pair (r <= eps) has
+ * no gradient direction and takes forces.c's pair direction (coincident());
+ * a sub-step removes at most rho0 c0 dt / h of a particle's compression
+ * (F_DENSITY_ERROR), and the solves make no particle faster than
+ * max(c0, its speed) (apply_of), c0 the desc's sound speed. Measured: 300
+ * particles at one point took 83 s for 60 frames at the iteration cap
+ * every sub-step and never separated; now 1 s and they spread. A box at
+ * twice rest density reached non-finite velocities in its first frame;
+ * now it relaxes to max rho/rho0 - 1 = 0.09 within it, at most c0.
+ *
  * The pressure reported in prs: eq. 13's convention (volume.c), the
  * pressure the liquid exerts, p_i = M s_i rho_i^2 / dt^2 with M the
  * gradient's lattice moment, summed over the density solve's iterations.
@@ -126,14 +136,32 @@ static inline MS_DFSPH_INLINE void image_of(const ms_volume *v, int i, int g, co
 }
 
 /* grad W_ij = -G g (x_i - x_j), G = 45/(pi h^6), g = (h - r)^2 / r: the
- * factor g of an entry at r^2 (0 at and beyond h; a coincident pair has
- * no direction and gets 0). */
+ * factor g of an entry at r^2 (0 at and beyond h; a coincident pair,
+ * r <= eps, has no direction and gets 0 here: see coincident()). */
 static inline float grad_factor(float r2, float h, float eps)
 {
     float r = sqrtf(r2);
     float hr = h - r;
     hr = hr > 0.0f ? hr : 0.0f;
-    return hr * hr / (r > eps ? r : eps);
+    return r > eps ? hr * hr / r : 0.0f;
+}
+
+/* Coincident pairs (r <= eps, which density.c counts): the lanes give them
+ * no term, so particles at one point could never be pushed apart (300 at
+ * one point fell as one lump, each sub-step's density solve at its cap of
+ * 100 iterations over 90 000 pairs to no effect: 83 s for one second).
+ * They take the limit of g (x_i - x_j) as r -> 0, h^2, along the pair's
+ * direction from forces.c (as the weakly compressible laws' pressure
+ * does). Entry k of i's list is coincident when this returns 1, with
+ * w = h^2 dir(i, j). */
+static inline int coincident(const ms_volume *v, int i, int j, float r2, float w[3])
+{
+    if (!(r2 <= v->eps2) || j == i)
+        return 0;
+    ms_volume_pair_direction(v->id[i], v->id[j], w);
+    for (int a = 0; a < 3; ++a)
+        w[a] *= v->K.h2;
+    return 1;
 }
 
 static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
@@ -181,7 +209,17 @@ static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
         }
     /* in units of (m G)^2: grad W = -G g d */
     float gx = ms_lanes_sum(sx), gy = ms_lanes_sum(sy), gz = ms_lanes_sum(sz);
-    const float q = ms_lanes_sum(sq);
+    float q = ms_lanes_sum(sq);
+    if (v->coincident > 0)
+        for (int k = 0; k < v->nl_count[i]; ++k) {
+            float w[3];
+            if (coincident(v, i, idx[k], r2s[k], w)) {
+                gx += w[0];
+                gy += w[1];
+                gz += w[2];
+                q += h2 * h2;
+            }
+        }
     float qm = 0.0f; /* the images' mirror terms */
     const int gn = v->gl_count[i];
     if (gn) {
@@ -252,6 +290,13 @@ static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_
                            (ti - vz[j]) * (zi - z[j]));
         }
     float s = ms_lanes_sum(acc);
+    if (v->coincident > 0)
+        for (int k = 0; k < v->nl_count[i]; ++k) {
+            float w[3];
+            const int j = idx[k];
+            if (coincident(v, i, j, r2s[k], w))
+                s += (ui - vx[j]) * w[0] + (wi - vy[j]) * w[1] + (ti - vz[j]) * w[2];
+        }
     const int gn = v->gl_count[i];
     if (gn) {
         const int *gidx = gst->idx + v->gl_begin[i];
@@ -289,6 +334,16 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
             az[l] += f * (zi - z[j]);
         }
     float sx = ms_lanes_sum(ax), sy = ms_lanes_sum(ay), sz = ms_lanes_sum(az);
+    if (v->coincident > 0)
+        for (int k = 0; k < v->nl_count[i]; ++k) {
+            float w[3];
+            const int j = idx[k];
+            if (coincident(v, i, j, r2s[k], w)) {
+                sx += (si + s[j]) * w[0];
+                sy += (si + s[j]) * w[1];
+                sz += (si + s[j]) * w[2];
+            }
+        }
     const int gn = v->gl_count[i];
     if (gn) {
         const int *gidx = gst->idx + v->gl_begin[i];
@@ -307,9 +362,26 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
         }
     }
     const float c = scale * v->mass * v->K.spiky_grad;
-    v->vx[i] += c * sx;
-    v->vy[i] += c * sy;
-    v->vz[i] += c * sz;
+    const float ux = v->vx[i], uy = v->vy[i], uz = v->vz[i];
+    float nx = ux + c * sx, ny = uy + c * sy, nz = uz + c * sz;
+    /* The pressure makes no particle faster than the sound speed (or than
+     * it was): a liquid of sound speed c0 expands from a compression at
+     * about c0, never faster. Measured: without it a box packed at twice
+     * rest density (every particle's target out of reach in one sub-step)
+     * reached 150 m/s, then non-finite velocities; with it the kinetic
+     * energy stays below the elastic energy of the compression. Only
+     * binds far from any state the shipped scenes reach. */
+    const float n2 = nx * nx + ny * ny + nz * nz, o2 = ux * ux + uy * uy + uz * uz;
+    const float lim2 = o2 > v->c0 * v->c0 ? o2 : v->c0 * v->c0;
+    if (n2 > lim2) {
+        const float f = sqrtf(lim2 / n2);
+        nx *= f;
+        ny *= f;
+        nz *= f;
+    }
+    v->vx[i] = nx;
+    v->vy[i] = ny;
+    v->vz[i] = nz;
 }
 
 /* e / rho0 in units of 2^-32, clamped to [0, 64] (NaN counts as 64) so
@@ -339,15 +411,27 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
         for (int i = b; i < e; ++i)
             factors_of(v, lst, gst, i);
         break;
-    case F_DENSITY_ERROR:
+    case F_DENSITY_ERROR: {
+        /* The compression one sub-step may remove, rho0 c0 dt / h: a
+         * compressed liquid of sound speed c0 relaxes at about c0, one
+         * kernel radius in h / c0. Without it a sub-step tries to remove
+         * all of it at once, whatever dt: 300 particles at one point (179
+         * times rest density) left at 136 m/s with 3800 J; with it, at
+         * most 10 m/s and 65 J (the ideal-gas law: 39 m/s, 1278 J). It
+         * only binds when rho/rho0 - 1 > c0 dt / h, near 1 for the
+         * shipped scenes' sub-steps, so never in their flows. */
+        const float cap = rho0 * v->c0 * dt / v->K.h;
         for (int i = b; i < e; ++i) {
             /* rho*_i - rho0 = rho_i - rho0 + dt D rho_i/Dt */
-            float ei = v->rho[i] - rho0 - dt * mg * divergence_sum(v, lst, gst, i);
+            float ci = v->rho[i] - rho0;
+            ci = ci < cap ? ci : cap;
+            float ei = ci - dt * mg * divergence_sum(v, lst, gst, i);
             ei = ei > 0.0f ? ei : 0.0f;
             v->df_s[i] = ei * v->df_inv_diag[i];
             err += quantise(ei / rho0);
         }
         break;
+    }
     case F_DIVERGENCE_ERROR:
         for (int i = b; i < e; ++i) {
             float ei = 0.0f;

@@ -339,8 +339,9 @@ static uint64_t mix64(uint64_t z)
     return z ^ (z >> 31);
 }
 
-/* A unit vector for the pair (a, b), a != b: dir(a, b) = -dir(b, a). */
-static void pair_direction(int a, int b, float u[3])
+/* A unit vector for the pair (a, b), a != b: dir(a, b) = -dir(b, a).
+ * Shared with dfsph.c (volume_impl.h). */
+void ms_volume_pair_direction(int a, int b, float u[3])
 {
     uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
     uint64_t hsh = mix64(((uint64_t)lo << 32) | hi);
@@ -377,7 +378,7 @@ static void coincident_part(void *ctxp, int part, int b, int e)
             if (r2s[k] >= v->eps2 || j == i)
                 continue;
             float u[3];
-            pair_direction(v->id[i], v->id[j], u);
+            ms_volume_pair_direction(v->id[i], v->id[j], u);
             float fp = (v->prs[i] + v->prs[j]) * v->inv_rho[j] * h * h;
             for (int a = 0; a < 3; ++a)
                 s[a] += fp * u[a];

@@ -320,6 +320,9 @@ void ms_volume_dfsph_density(ms_volume *v, float dt);
 
 /* forces.c: ax, ay, az (pressure, viscosity, gravity) and visc_rate. */
 void ms_volume_forces(ms_volume *v);
+/* forces.c: the direction given to a coincident pair (r < eps) of ids
+ * a != b, a unit vector with dir(a, b) = -dir(b, a); dfsph.c uses it too. */
+void ms_volume_pair_direction(int a, int b, float u[3]);
 
 /* collide.c */
 /* The eq. 15 field b_a of the domain box and the colliders, and each
