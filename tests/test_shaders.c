@@ -38,7 +38,7 @@ static const char *const shaders[] = {"water", "milk", "oil", "honey"};
 /* The uniforms the renderer provides (plugin.h's contract). */
 static const char *const contract[] = {"ms_eye", "ms_light_dir", "ms_light_color", "ms_time",
                                        "ms_viewport", "ms_env", "ms_floor_z", "ms_pool",
-                                       "ms_caustics", NULL};
+                                       "ms_caustics", "ms_normal_map", "ms_field", NULL};
 
 /* Records the names set_uniforms sets. */
 typedef struct recorder {
@@ -273,7 +273,19 @@ static void draw(const char *name, float rgb[3])
     glTexImage2D(GL_TEXTURE_2D, 0, GL_LUMINANCE, 1, 1, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE, &one);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    /* a flat surface: a gradient of 0 everywhere (unit 2) */
+    GLuint flat;
+    glGenTextures(1, &flat);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, flat);
+    const float zero[2] = {0, 0};
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, 1, 1, 0, GL_RG, GL_FLOAT, zero);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glActiveTexture(GL_TEXTURE0);
     ms_shader_uniforms u = {sizeof u, &g, gl_float, gl_vec3, gl_int, gl_vec4};
+    u.set_int(&g, "ms_normal_map", 2);
+    u.set_vec4(&g, "ms_field", -1, -1, 0.5f, 0.5f);
     u.set_vec3(&g, "ms_eye", 0, 0, 2);
     u.set_vec3(&g, "ms_light_dir", 0.6f, 0, 0.8f);
     u.set_vec3(&g, "ms_light_color", 1, 1, 1);
@@ -302,6 +314,7 @@ static void draw(const char *name, float rgb[3])
     for (int c = 0; c < 3; ++c)
         rgb[c] = (float)(sum[c] / (W * H));
     glDeleteTextures(2, tex);
+    glDeleteTextures(1, &flat);
     glDeleteProgram(g.prog);
     glDeleteShader(vs);
     glDeleteShader(fs);

@@ -193,6 +193,14 @@ typedef struct ms_shader_uniforms {
  *     vec4  ms_pool         x0, y0, size x, size y of the pool (m)
  *     sampler2D ms_caustics caustics light map over ms_pool, texture unit 1,
  *                           1 = unfocused light (with _CAUSTICS)
+ *     sampler2D ms_normal_map the full height field's gradient (dh/dx,
+ *                           dh/dy) in .rg, texel (i, j) at cell (i, j)'s
+ *                           centre, bilinear, texture unit 2: per-pixel
+ *                           normals normalize(vec3(-g, 1)) while the mesh
+ *                           (gl_Normal) may be coarser than the field
+ *     vec4  ms_field        x0, y0, 1/size x, 1/size y of the field (m):
+ *                           ms_normal_map's coordinate is
+ *                           (pos.xy - ms_field.xy) * ms_field.zw
  *   the shader's own uniforms (colours, ...) it sets in set_uniforms.
  * The fragment shader writes gl_FragColor (linear RGB, alpha 1). */
 typedef struct ms_shader_vtable {

@@ -100,9 +100,9 @@ void ms_gl_delete_objects(ms_gl *gl)
 {
     if (!glGetString(GL_VERSION))
         return; /* the context is gone and its objects with it */
-    GLuint tex[4] = {gl->sky_tex, gl->env_tex != gl->sky_tex ? gl->env_tex : 0, gl->tiles_tex,
-                     gl->caustics_tex};
-    glDeleteTextures(4, tex);
+    GLuint tex[5] = {gl->sky_tex, gl->env_tex != gl->sky_tex ? gl->env_tex : 0, gl->tiles_tex,
+                     gl->caustics_tex, gl->normal_tex};
+    glDeleteTextures(5, tex);
     GLuint buf[4] = {gl->pool_vbo, gl->discs_vbo, gl->mesh_vbo, gl->mesh_ibo};
     glDeleteBuffers(4, buf);
     GLuint rb[2] = {gl->color_rb, gl->depth_rb};

@@ -78,6 +78,46 @@ static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *full
     return MS_OK;
 }
 
+/* The full field's gradient as the texture ms_normal_map (texel (i, j) at
+ * cell (i, j)'s centre, bilinear between them), so a shader's normals
+ * keep every cell's ripple whatever step the mesh has. */
+static ms_status upload_normals(ms_renderer *r, const float *h, const ms_grid *g)
+{
+    ms_gl *gl = r->gl;
+    const size_t floats = 2 * (size_t)g->nx * (size_t)g->ny;
+    if (gl->gradients_cap < floats) {
+        ms_free(gl->gradients);
+        gl->gradients = ms_alloc_array(floats, sizeof(float));
+        gl->gradients_cap = gl->gradients ? floats : 0;
+        if (!gl->gradients)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "render: out of memory for the normals of a %d x %d field", g->nx,
+                           g->ny);
+    }
+    ms_mesh_gradients(h, g, gl->gradients);
+    if (!gl->normal_tex) {
+        glGenTextures(1, &gl->normal_tex);
+        glBindTexture(GL_TEXTURE_2D, gl->normal_tex);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    glBindTexture(GL_TEXTURE_2D, gl->normal_tex);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    if (gl->normal_nx != g->nx || gl->normal_ny != g->ny) {
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, g->nx, g->ny, 0, GL_RG, GL_FLOAT,
+                     gl->gradients);
+        gl->normal_nx = g->nx;
+        gl->normal_ny = g->ny;
+    } else {
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, g->nx, g->ny, GL_RG, GL_FLOAT, gl->gradients);
+    }
+    glBindTexture(GL_TEXTURE_2D, 0);
+    gl->normal_field = *g;
+    return MS_OK;
+}
+
 static ms_status upload_caustics(ms_renderer *r, const float *h, const ms_grid *g)
 {
     ms_gl *gl = r->gl;
@@ -145,8 +185,10 @@ static void draw_liquid(ms_renderer *r, double time)
     if (want & MS_SHADER_NEEDS_CAUSTICS) {
         glActiveTexture(GL_TEXTURE1);
         glBindTexture(GL_TEXTURE_2D, gl->caustics_tex);
-        glActiveTexture(GL_TEXTURE0);
     }
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, gl->normal_tex);
+    glActiveTexture(GL_TEXTURE0);
     ms_shader_uniforms u = ms_gl_uniform_table(&gl->liquid);
     u.set_vec3(u.ctx, "ms_eye", d->eye[0], d->eye[1], d->eye[2]);
     u.set_vec3(u.ctx, "ms_light_dir", r->light_to[0], r->light_to[1], r->light_to[2]);
@@ -160,6 +202,12 @@ static void draw_liquid(ms_renderer *r, double time)
     u.set_vec4(u.ctx, "ms_pool", d->pool_min[0], d->pool_min[1], d->pool_max[0] - d->pool_min[0],
                d->pool_max[1] - d->pool_min[1]);
     u.set_int(u.ctx, "ms_caustics", 1);
+    {
+        const ms_grid *f = &gl->normal_field;
+        u.set_int(u.ctx, "ms_normal_map", 2);
+        u.set_vec4(u.ctx, "ms_field", f->origin[0], f->origin[1], 1.0f / ((float)f->nx * f->dx),
+                   1.0f / ((float)f->ny * f->dy));
+    }
     if (r->shader.vt->set_uniforms)
         r->shader.vt->set_uniforms(r->shader.self, &u);
 
@@ -256,7 +304,7 @@ static ms_status frame(ms_renderer *r, const float *h, const ms_grid *g, double 
 {
     double t0 = ms_now();
     ms_status st = upload_mesh(r, h, g);
-    if (st != MS_OK)
+    if (st != MS_OK || (st = upload_normals(r, h, g)) != MS_OK)
         return st;
     double t1 = ms_now();
     if (r->trace_caustics && (st = upload_caustics(r, h, g)) != MS_OK)

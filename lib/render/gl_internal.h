@@ -122,6 +122,11 @@ struct ms_gl {
     size_t vertices_cap;  /* floats */
     float *coarse;        /* the field averaged to the mesh's step */
     size_t coarse_cap;    /* floats */
+    GLuint normal_tex;    /* ms_normal_map: the full field's gradient (RG32F) */
+    int normal_nx, normal_ny; /* its size as uploaded */
+    ms_grid normal_field; /* the grid it covers (ms_field in the shaders) */
+    float *gradients;     /* its texels, CPU side */
+    size_t gradients_cap; /* floats */
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */

@@ -130,5 +130,6 @@ void ms_gl_destroy(ms_gl *gl)
     ms_gl_context_destroy(&gl->context);
     ms_free(gl->vertices);
     ms_free(gl->coarse);
+    ms_free(gl->gradients);
     ms_free(gl);
 }

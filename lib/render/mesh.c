@@ -1,7 +1,10 @@
 /* The height field as a triangle mesh: one vertex per cell centre, world
  * position and the unit normal (-dh/dx, -dh/dy, 1) / |.| from central
  * differences (one-sided at the edges). The outermost vertices are moved
- * out to the grid's edge so the surface meets the pool walls. */
+ * out to the grid's edge so the surface meets the pool walls. The same
+ * gradients of the full field, as a texture (ms_mesh_gradients), give the
+ * shaders per-pixel normals, so the mesh itself can be coarser than the
+ * field where the image does not need its vertices. */
 #include <math.h>
 
 #include "core/internal.h"
@@ -15,22 +18,31 @@ long ms_field_nonfinite(const float *h, size_t n)
     return -1;
 }
 
+/* The gradient (dh/dx, dh/dy) at cell (i, j): central differences inside,
+ * one-sided at the edges. */
+static inline void gradient(const float *h, const ms_grid *g, int i, int j, float *gx, float *gy)
+{
+    const int nx = g->nx, ny = g->ny;
+    const float *row = h + (size_t)j * (size_t)nx;
+    const float *below = h + (size_t)(j > 0 ? j - 1 : j) * (size_t)nx;
+    const float *above = h + (size_t)(j < ny - 1 ? j + 1 : j) * (size_t)nx;
+    const int il = i > 0 ? i - 1 : i, ir = i < nx - 1 ? i + 1 : i;
+    *gx = (row[ir] - row[il]) / ((float)(ir - il) * g->dx);
+    /* 1 / (2 dy) inside, 1 / dy at the edges */
+    *gy = (above[i] - below[i]) * ((j > 0 && j < ny - 1 ? 0.5f : 1.0f) / g->dy);
+}
+
 void ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restrict vertices)
 {
     const int nx = g->nx, ny = g->ny;
     const float x0 = g->origin[0], y0 = g->origin[1], dx = g->dx, dy = g->dy;
     for (int j = 0; j < ny; ++j) {
         const float *row = h + (size_t)j * (size_t)nx;
-        const float *below = h + (size_t)(j > 0 ? j - 1 : j) * (size_t)nx;
-        const float *above = h + (size_t)(j < ny - 1 ? j + 1 : j) * (size_t)nx;
-        /* 1 / (2 dy) inside, 1 / dy at the edges */
-        const float iy = (j > 0 && j < ny - 1 ? 0.5f : 1.0f) / dy;
         const float y = j == 0 ? y0 : j == ny - 1 ? y0 + (float)ny * dy : y0 + ((float)j + 0.5f) * dy;
         float *v = vertices + (size_t)j * (size_t)nx * 6;
         for (int i = 0; i < nx; ++i) {
-            int il = i > 0 ? i - 1 : i, ir = i < nx - 1 ? i + 1 : i;
-            float gx = (row[ir] - row[il]) / ((float)(ir - il) * dx);
-            float gy = (above[i] - below[i]) * iy;
+            float gx, gy;
+            gradient(h, g, i, j, &gx, &gy);
             float inv = 1.0f / sqrtf(gx * gx + gy * gy + 1.0f);
             float x = i == 0 ? x0 : i == nx - 1 ? x0 + (float)nx * dx : x0 + ((float)i + 0.5f) * dx;
             v[6 * i + 0] = x;
@@ -41,6 +53,15 @@ void ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restr
             v[6 * i + 5] = inv;
         }
     }
+}
+
+void ms_mesh_gradients(const float *h, const ms_grid *g, float *restrict out)
+{
+    for (int j = 0; j < g->ny; ++j)
+        for (int i = 0; i < g->nx; ++i) {
+            float *o = out + 2 * ((size_t)j * (size_t)g->nx + (size_t)i);
+            gradient(h, g, i, j, &o[0], &o[1]);
+        }
 }
 
 void ms_mesh_coarsen(const float *h, const ms_grid *g, int step, float *restrict out,
@@ -84,7 +105,7 @@ int ms_mesh_auto_step(const ms_renderer_desc *d, const ms_grid *g)
     /* metres per pixel there */
     double px = 2.0 * sqrt(dist2) * tan(0.5 * d->fov * 3.14159265358979 / 180.0) / d->height;
     double cell = MS_MIN(g->dx, g->dy);
-    int step = (int)floor(2.0 * px / cell);
+    int step = (int)floor(MS_MESH_AUTO_PIXELS * px / cell);
     return MS_CLAMP(step, 1, MS_MIN(64, MS_MIN(g->nx, g->ny) / 2));
 }
 

@@ -57,6 +57,15 @@ long ms_field_nonfinite(const float *h, size_t n);
  * except that the outermost row and column sit on the grid's edge, so the
  * mesh meets the walls. */
 void ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restrict vertices);
+/* The gradient (dh/dx, dh/dy) of every cell of h (as ms_mesh_build's
+ * normals), 2 floats per cell, row by row: the shaders' normal map. */
+void ms_mesh_gradients(const float *h, const ms_grid *g, float *restrict out);
+/* The automatic mesh step keeps vertices at most this many pixels apart
+ * where the water is nearest the eye. The shading normals come from the
+ * full field's gradient texture, so the vertices only carry the height:
+ * millimetre waves seen from above move the refracted point by less than a
+ * pixel between them. */
+#define MS_MESH_AUTO_PIXELS 8.0
 /* The field averaged over blocks of about step x step cells: out gets
  * (nx / step) x (ny / step) heights over the same extent (*out_g). */
 void ms_mesh_coarsen(const float *h, const ms_grid *g, int step, float *restrict out,

@@ -42,6 +42,22 @@
     "    return mix(x, s, step(vec3(knee), x));\n"                                              \
     "}\n"
 
+/* The surface normal at a fragment: the renderer hands every liquid program
+ * the full field's gradient (dh/dx, dh/dy) as the texture ms_normal_map
+ * (unit 2, bilinear between cell centres) and the field's rectangle as
+ * ms_field (origin x, y; 1 / width, 1 / height), so the normal keeps
+ * every cell's ripple while the mesh may have a vertex only every few
+ * cells (render.h, mesh_step). Put it after "#version"; it reads v_pos. */
+#define SHADER_NORMAL_SOURCE                                                                    \
+    "uniform sampler2D ms_normal_map;\n"                                                        \
+    "uniform vec4 ms_field;\n"                                                                  \
+    "varying vec3 v_pos;\n"                                                                     \
+    "vec3 ms_surface_normal()\n"                                                                \
+    "{\n"                                                                                       \
+    "    vec2 g = texture2D(ms_normal_map, (v_pos.xy - ms_field.xy) * ms_field.zw).rg;\n"       \
+    "    return normalize(vec3(-g, 1.0));\n"                                                    \
+    "}\n"
+
 /* A heap copy of the size bytes of parsed parameters at parsed, in *out
  * (the shader's self); MS_PLUGIN_ERR_OUT_OF_MEMORY with err set if none. */
 static inline int shader_keep(const void *parsed, size_t size, void **out, char *err,

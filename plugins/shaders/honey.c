@@ -16,7 +16,7 @@
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n" SHADER_TONEMAP_SOURCE
+    "#version 120\n" SHADER_TONEMAP_SOURCE SHADER_NORMAL_SOURCE
     "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
@@ -26,11 +26,9 @@ static const char fragment_source[] =
     "uniform float honey_ior;\n"
     "uniform float honey_density;\n"
     "uniform float honey_shininess;\n"
-    "varying vec3 v_pos;\n"
-    "varying vec3 v_normal;\n"
     "void main()\n"
     "{\n"
-    "    vec3 n = normalize(v_normal);\n"
+    "    vec3 n = ms_surface_normal();\n"
     "    vec3 v = normalize(v_pos - ms_eye);\n"
     "    if (dot(n, v) > 0.0)\n"
     "        n = -n;\n"

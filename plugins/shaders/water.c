@@ -18,7 +18,7 @@
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n" SHADER_TONEMAP_SOURCE
+    "#version 120\n" SHADER_TONEMAP_SOURCE SHADER_NORMAL_SOURCE
     "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
@@ -30,11 +30,9 @@ static const char fragment_source[] =
     "uniform float water_ior;\n"
     "uniform float water_caustics;\n"
     "uniform float water_clarity;\n"
-    "varying vec3 v_pos;\n"
-    "varying vec3 v_normal;\n"
     "void main()\n"
     "{\n"
-    "    vec3 n = normalize(v_normal);\n"
+    "    vec3 n = ms_surface_normal();\n"
     "    vec3 v = normalize(v_pos - ms_eye);\n"
     "    /* seen from below (the eye under the surface): light leaves the\n"
     "     * water, n1 = ior > n2 = 1; Snell's window, total internal\n"

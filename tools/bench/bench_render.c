@@ -42,8 +42,10 @@ static double loadavg(void)
  * sections at 950 x 950): per frame the simulation step (ms_sim_step), the
  * draw (ms_renderer_draw) and its stages, and the PNG encoding, medians
  * over the frames after a warm-up; the whole frame rate is 1000 / (sim +
- * draw) (PNG encoding can run off the render thread). Writes
- * render_scenes.csv. Returns 0, or 1 on an error. */
+ * draw) (PNG encoding can run off the render thread). Each frame is
+ * drawn a second time by a renderer with the full mesh (mesh_step 1),
+ * interleaved, so the automatic mesh's gain is a ratio within one run
+ * (the machine's load moves both alike). Writes render_scenes.csv. Returns 0, or 1 on an error. */
 static int bench_scenes(int reps, const char *csv_dir, const char *commit, const char *machine,
                         const char *lp)
 {
@@ -51,12 +53,15 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
     FILE *csv = bench_csv_open(csv_dir, "render_scenes.csv",
                                "commit,machine,lp_num_threads,scene,width,height,frames,"
                                "sim_ms,draw_ms_median,draw_ms_p10,draw_ms_p90,mesh_ms,"
-                               "caustics_ms,gl_ms,readback_ms,png_ms,frame_fps,loadavg");
+                               "caustics_ms,gl_ms,readback_ms,png_ms,frame_fps,loadavg,"
+                               "mesh_nx,full_mesh_draw_ms,full_over_auto");
     if (!csv)
         return 1;
     printf("\nscenes at their render size (950^2): ms per frame (median; draw p10-p90)\n");
-    printf("%-6s %7s %8s %13s %7s %9s %7s %9s %7s %9s\n", "scene", "sim", "draw", "(p10-p90)",
-           "mesh", "caustics", "GL", "readback", "png", "sim+draw");
+    printf("(full: the same frame drawn with the full mesh, mesh_step 1, interleaved)\n");
+    printf("%-6s %7s %8s %13s %7s %9s %7s %9s %7s %9s %9s %8s %6s\n", "scene", "sim", "draw",
+           "(p10-p90)", "mesh", "caustics", "GL", "readback", "png", "sim+draw", "mesh", "full",
+           "ratio");
     const int warm = 5;
     for (int k = 0; k < 4; ++k) {
         char path[64], png[96];
@@ -64,15 +69,19 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
         snprintf(png, sizeof png, "/tmp/bench_render_%d.png", (int)getpid());
         ms_scene *sc = NULL;
         ms_sim *sim = NULL;
-        ms_renderer *r = NULL;
+        ms_renderer *r = NULL, *full = NULL;
+        ms_renderer_desc fd = ms_renderer_desc_default();
         if (ms_scene_load(path, &sc) != MS_OK || ms_sim_create_from_scene(sc, 0, &sim) != MS_OK ||
-            ms_renderer_create_from_scene(sc, &r) != MS_OK) {
+            ms_renderer_create_from_scene(sc, &r) != MS_OK ||
+            ms_renderer_desc_from_scene(sc, &fd) != MS_OK ||
+            ((fd.mesh_step = 1), ms_renderer_create_desc(&fd, &full)) != MS_OK) {
             fprintf(stderr, "bench_render: %s: %s (run from the source tree)\n", path,
                     ms_last_error());
             return 1;
         }
         const float dt = ms_scene_frame_dt(sc);
-        double simv[64], drawv[64], mesh[64], caus[64], gl[64], rb[64], pngv[64];
+        double simv[64], drawv[64], mesh[64], caus[64], gl[64], rb[64], pngv[64], fullv[64];
+        int mesh_nx = 0;
         ms_render_stats st = ms_render_stats_init();
         for (int f = 0; f < warm + reps; ++f) {
             double t0 = bench_now();
@@ -92,6 +101,12 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
             }
             double t3 = bench_now();
             ms_renderer_get_stats(r, &st);
+            mesh_nx = st.mesh_nx;
+            if (ms_renderer_draw(full, sim) != MS_OK) {
+                fprintf(stderr, "bench_render: %s: %s\n", path, ms_last_error());
+                return 1;
+            }
+            double t4 = bench_now();
             if (f >= warm) {
                 int i = f - warm;
                 simv[i] = 1e3 * (t1 - t0);
@@ -101,6 +116,7 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
                 caus[i] = st.caustics_ms;
                 gl[i] = st.draw_ms;
                 rb[i] = st.readback_ms;
+                fullv[i] = 1e3 * (t4 - t3);
             }
         }
         remove(png);
@@ -109,13 +125,19 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
         double c = bench_summarise(caus, reps).median, g = bench_summarise(gl, reps).median;
         double b = bench_summarise(rb, reps).median, pn = bench_summarise(pngv, reps).median;
         double fps = 1e3 / (sm + d.median), load = loadavg();
-        printf("%-6s %7.1f %8.1f (%5.1f-%5.1f) %7.2f %9.2f %7.1f %9.2f %7.1f %5.1f fps\n",
-               names[k], sm, d.median, d.p10, d.p90, m, c, g, b, pn, fps);
-        fprintf(csv, "%s,%s,%s,%s,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f\n",
+        double fm = bench_summarise(fullv, reps).median;
+        printf("%-6s %7.1f %8.1f (%5.1f-%5.1f) %7.2f %9.2f %7.1f %9.2f %7.1f %5.1f fps %5d^2 %8.1f "
+               "%6.2f\n",
+               names[k], sm, d.median, d.p10, d.p90, m, c, g, b, pn, fps, mesh_nx, fm,
+               fm / d.median);
+        fprintf(csv,
+                "%s,%s,%s,%s,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f,%d,"
+                "%.3f,%.3f\n",
                 commit, machine, lp ? lp : "default", names[k], 950, 950, reps, sm, d.median,
-                d.p10, d.p90, m, c, g, b, pn, fps, load);
+                d.p10, d.p90, m, c, g, b, pn, fps, load, mesh_nx, fm, fm / d.median);
         fflush(stdout);
         ms_renderer_destroy(r);
+        ms_renderer_destroy(full);
         ms_sim_destroy(sim);
         ms_scene_destroy(sc);
     }
