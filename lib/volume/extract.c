@@ -460,6 +460,13 @@ ms_vpool *ms_volume_extract_pool(ms_volume *v)
     return v->pool;
 }
 
+ms_status ms_volume_share_loops(ms_volume *v)
+{
+    if (v->pool)
+        return MS_OK; /* threads of its own already */
+    return ms_vpool_create_shared(2, &v->pool);
+}
+
 void ms_extract_snap_free(ms_extract_snap *s)
 {
     ms_free(s->x);
