@@ -111,6 +111,8 @@ TESTS     := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 # (the rest is single-threaded and only gets 10-40x slower under TSan);
 # `make check SAN=tsan` names them when it starts.
 TSAN_SUITES ?= core plugin sim determinism api
+# issue 12 (work sharing): the shared pool's helper thread
+TSAN_SUITES += pool
 ifeq ($(SAN),tsan)
 TESTS     := $(filter $(TSAN_SUITES:%=$(BUILD)/tests/test_%),$(TESTS))
 endif

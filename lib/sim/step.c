@@ -54,6 +54,15 @@ static ms_status wave_steps(ms_sim *sim, float dt, int *n_time)
     return MS_OK;
 }
 
+/* The second thread's part of a frame: the surface task, then chunks of
+ * the volume's loops (ms_vpool_help) until the volume thread closes. */
+static void surface_then_help(void *arg)
+{
+    ms_sim_task *s = arg;
+    ms_sim_surface_task(s);
+    ms_vpool_help(ms_volume_extract_pool(s->sim->volume));
+}
+
 static void run_tasks(ms_sim *sim, ms_sim_task *v, ms_sim_task *s)
 {
     int split = sim->threads == 2 && v && s;
@@ -63,8 +72,14 @@ static void run_tasks(ms_sim *sim, ms_sim_task *v, ms_sim_task *s)
         if (h)
             sim->finish(h, sim->user_ctx);
     } else if (split && sim->have_worker) {
-        ms_sim_worker_run(sim, ms_sim_surface_task, s);
+        /* the second thread runs the surface task, then takes chunks of
+         * the volume's loops until the volume task is done (work sharing,
+         * a no-op when the volume has threads of its own) */
+        ms_vpool *pool = ms_volume_extract_pool(sim->volume);
+        ms_vpool_help_open(pool);
+        ms_sim_worker_run(sim, surface_then_help, s);
         ms_sim_volume_task(v);
+        ms_vpool_help_close(pool);
         ms_sim_worker_wait(sim);
     } else {
         if (v)

@@ -52,6 +52,11 @@ ms_status ms_sim_worker_start(ms_sim *sim)
                        "sim: cannot start the second thread (threads 2); use threads 1");
     }
     sim->have_worker = 1;
+    /* work sharing (issue 12): a volume of one thread splits its loops
+     * in two chunks that this thread helps with once its surface task is
+     * done (step.c); the same bytes */
+    if (sim->volume)
+        return ms_volume_share_loops(sim->volume);
     return MS_OK;
 }
 

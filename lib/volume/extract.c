@@ -136,15 +136,84 @@ typedef struct column_ctx {
     const float *bx, *by, *bz;
     float *cand;
     size_t cand_stride;
+    int *reach;        /* per thread, 2 ry + 1: the row reaches of row `reach_j` */
+    size_t reach_stride;
     float *raw; /* rw x rh, the rectangle's columns */
 } column_ctx;
+
+/* The bins of row jj = j + dj, dj in [-ry, ry], within R of a column of
+ * row j: how far (cells) either side of the column, or -1 if none. A
+ * function of j and jj alone, so computed once per row of columns (the
+ * same floats each column computed before: the same candidates). */
+static void row_reaches(const column_ctx *cc, int j, int *reach)
+{
+    const ms_extract_snap *s = cc->s;
+    const float *lo = s->lo;
+    const float dxe = cc->dxe, dye = cc->dye;
+    const float R = s->R, R2 = R * R;
+    const int rx = (int)ceilf(R / dxe), ry = (int)ceilf(R / dye);
+    const float py = lo[1] + ((float)j + 0.5f) * dye;
+    for (int jj = j - ry; jj <= j + ry; ++jj) {
+        float gy = fabsf(lo[1] + ((float)jj + 0.5f) * dye - py) - 0.5f * dye;
+        gy = gy > 0.0f ? gy : 0.0f;
+        int r = -1;
+        if (gy < R) {
+            r = (int)(sqrtf(R2 - gy * gy) / dxe) + 1; /* a ceiling (cells) */
+            r = r < rx ? r : rx;
+        }
+        reach[jj - j + ry] = r;
+    }
+}
+
+/* The start of the downward walk and the lowest sphere bottom of the
+ * candidates (cz, ca, mc > 0): the highest sphere top, but no higher than
+ * a spacing above the highest centre (a still lattice's phi there is
+ * ~0.6 T: the top crossing lies below). Maxima and minima in lanes: exact
+ * in any order, so vectorisable. */
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+static void column_span(const float *restrict cz, const float *restrict ca, int mc, float R,
+                        float spacing, float *zstart, float *zlow_out)
+{
+    enum { L = MS_VOLUME_LANES };
+    float top[L], cmax[L], low[L];
+    for (int l = 0; l < L; ++l) {
+        top[l] = -INFINITY;
+        cmax[l] = -INFINITY;
+        low[l] = INFINITY;
+    }
+    const int mv = mc / L * L;
+    for (int k = 0; k < mv; k += L)
+        for (int l = 0; l < L; ++l) {
+            const float z = cz[k + l], t = z + R * sqrtf(ca[k + l]), b = z - R;
+            top[l] = t > top[l] ? t : top[l];
+            cmax[l] = z > cmax[l] ? z : cmax[l];
+            low[l] = b < low[l] ? b : low[l];
+        }
+    for (int k = mv; k < mc; ++k) {
+        const float z = cz[k], t = z + R * sqrtf(ca[k]), b = z - R;
+        top[0] = t > top[0] ? t : top[0];
+        cmax[0] = z > cmax[0] ? z : cmax[0];
+        low[0] = b < low[0] ? b : low[0];
+    }
+    float zmax = -INFINITY, zc = -INFINITY, zlow = INFINITY;
+    for (int l = 0; l < L; ++l) {
+        zmax = top[l] > zmax ? top[l] : zmax;
+        zc = cmax[l] > zc ? cmax[l] : zc;
+        zlow = low[l] < zlow ? low[l] : zlow;
+    }
+    *zstart = zmax < zc + spacing ? zmax : zc + spacing;
+    *zlow_out = zlow;
+}
 
 /* Column (i, j)'s candidates: the spheres (and their images in the nearer
  * side walls) within R horizontally, as (z, a = 1 - horizontal r^2 / R^2)
  * in cz, ca, padded with weight-0 lanes; their count (padded), where the
- * downward walk starts (*zstart) and the lowest sphere bottom (*zlow). */
-static int column_candidates(const column_ctx *cc, int i, int j, float *cz, float *ca,
-                             float *zstart, float *zlow_out)
+ * downward walk starts (*zstart) and the lowest sphere bottom (*zlow).
+ * reach: row_reaches of row j. */
+static int column_candidates(const column_ctx *cc, int i, int j, const int *reach_row,
+                             float *cz, float *ca, float *zstart, float *zlow_out)
 {
     const ms_extract_snap *s = cc->s;
     const int nx = cc->nx, ny = cc->ny;
@@ -160,20 +229,16 @@ static int column_candidates(const column_ctx *cc, int i, int j, float *cz, floa
     const int nxm = fabsf(px - wx) < R ? 2 : 1, nym = fabsf(py - wy) < R ? 2 : 1;
     const int images = nxm * nym > 1;
     int mc = 0;
-    float zmax = -INFINITY, zlow = INFINITY;
     for (int jj = j - ry; jj <= j + ry; ++jj) {
         if (jj < 0 || jj >= ny)
             continue;
         /* the bins of row jj within R of the column are one run of the
          * binned particles (bins are ordered y-major) */
-        float gy = fabsf(lo[1] + ((float)jj + 0.5f) * dye - py) - 0.5f * dye;
-        gy = gy > 0.0f ? gy : 0.0f;
         int reach = rx;
         if (!images) {
-            if (gy >= R)
+            reach = reach_row[jj - j + ry];
+            if (reach < 0)
                 continue;
-            reach = (int)(sqrtf(R2 - gy * gy) / dxe) + 1; /* a ceiling (cells) */
-            reach = reach < rx ? reach : rx;
         }
         const int i0 = i - reach < 0 ? 0 : i - reach;
         const int i1 = i + reach > nx - 1 ? nx - 1 : i + reach;
@@ -201,19 +266,9 @@ static int column_candidates(const column_ctx *cc, int i, int j, float *cz, floa
                 }
         }
     }
-    /* where to start: the highest sphere top, but no higher than a
-     * spacing above the highest centre (a still lattice's phi there is
-     * ~0.6 T: the top crossing lies below) */
-    float zc = -INFINITY;
-    for (int k = 0; k < mc; ++k) {
-        if (cz[k] + R > zmax) {
-            float top = cz[k] + R * sqrtf(ca[k]);
-            zmax = top > zmax ? top : zmax;
-        }
-        zc = cz[k] > zc ? cz[k] : zc;
-        zlow = cz[k] - R < zlow ? cz[k] - R : zlow;
-    }
-    zmax = zmax < zc + s->spacing ? zmax : zc + s->spacing;
+    float zmax = -INFINITY, zlow = INFINITY;
+    if (mc > 0)
+        column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
     for (int pad = mc; pad % MS_VOLUME_LANES; ++pad) { /* weight-0 lanes */
         cz[pad] = 0.0f;
         ca[pad] = 0.0f;
@@ -335,10 +390,15 @@ static void columns_part(void *ctxp, int part, int b, int e)
 {
     const column_ctx *cc = ctxp;
     float *cz = cc->cand + (size_t)part * cc->cand_stride, *ca = cz + cc->cand_stride / 2;
+    int *reach = cc->reach + (size_t)part * cc->reach_stride, reach_j = -1;
     for (int col = b; col < e; ++col) {
         const int i = cc->i0 + col % cc->rw, j = cc->j0 + col / cc->rw;
+        if (j != reach_j) { /* columns go row by row: once a row */
+            row_reaches(cc, j, reach);
+            reach_j = j;
+        }
         float zmax, zlow;
-        const int mc = column_candidates(cc, i, j, cz, ca, &zmax, &zlow);
+        const int mc = column_candidates(cc, i, j, reach, cz, ca, &zmax, &zlow);
         cc->raw[col] = column_height(cc->s, cz, ca, mc, zmax, zlow);
     }
 }
@@ -400,6 +460,13 @@ ms_vpool *ms_volume_extract_pool(ms_volume *v)
     return v->pool;
 }
 
+ms_status ms_volume_share_loops(ms_volume *v)
+{
+    if (v->pool)
+        return MS_OK; /* threads of its own already */
+    return ms_vpool_create_shared(2, &v->pool);
+}
+
 void ms_extract_snap_free(ms_extract_snap *s)
 {
     ms_free(s->x);
@@ -454,12 +521,16 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
     const float dxe = (hi[0] - lo[0]) / (float)nx, dye = (hi[1] - lo[1]) / (float)ny;
 
     /* bin the marked particles by column (counting sort, stable) */
+    /* list: the bin keys, the bin fills and for each thread the row
+     * reaches (row_reaches) */
+    const int parts = ms_vpool_threads(pool);
+    const size_t reach_stride = 2 * (size_t)ceilf(s->R / dye) + 1;
     ms_status st = scratch((void **)&w->start, &w->start_cap, cells + 1, sizeof(int));
     if (st == MS_OK)
-        st = scratch((void **)&w->list, &w->list_cap, (size_t)m + cells + 1, sizeof(int));
+        st = scratch((void **)&w->list, &w->list_cap,
+                     (size_t)m + cells + 1 + (size_t)parts * reach_stride, sizeof(int));
     /* buf: 3m binned positions, 3 fields, and for each thread 2 x 4m
      * candidates (a particle and its images) */
-    const int parts = ms_vpool_threads(pool);
     const size_t cand_stride = 8 * ((size_t)m + MS_VOLUME_LANES);
     const size_t padded = (size_t)(rw + 2) * (rh + 2);
     if (st == MS_OK)
@@ -468,7 +539,7 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
                      sizeof(float));
     if (st != MS_OK)
         return st;
-    int *cstart = w->start, *ckey = w->list, *cfill = w->list + m;
+    int *cstart = w->start, *ckey = w->list, *cfill = w->list + m, *reach = cfill + cells + 1;
     float *bx = w->buf, *by = bx + m, *bz = by + m;
     float *raw = bz + m, *tmp = raw + rcells, *blend = tmp + padded;
     float *cand = blend + rcells;
@@ -497,7 +568,8 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
      * the threads (each column on its own: the same bytes for any split) */
     column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
                      .dye = dye, .cstart = cstart, .bx = bx, .by = by, .bz = bz, .cand = cand,
-                     .cand_stride = cand_stride, .raw = raw};
+                     .cand_stride = cand_stride, .reach = reach, .reach_stride = reach_stride,
+                     .raw = raw};
     ms_vpool_run(pool, columns_part, &cc, (int)rcells);
 
     /* eq. 18: the number of smoothing passes from E_kin / total mass */

@@ -6,9 +6,16 @@
  * When an engine gives its task interface (ms_volume_set_tasks), the pool
  * stops its own threads and runs chunks 1.. as the engine's tasks
  * (enqueue, then finish each), chunk 0 on the calling thread: the same
- * split, the same bytes. */
+ * split, the same bytes.
+ * A shared pool (ms_vpool_create_shared, issue 12's work sharing) has no
+ * threads of its own: each loop's chunks are claimed one at a time by the
+ * calling thread and by a helper that another part of the program lends
+ * while it has nothing to do (ms_vpool_help between help_open and
+ * help_close): lib/sim's surface thread once its task is done. Who runs a
+ * chunk changes nothing in it, so the bytes are the same. */
 #include <pthread.h>
 
+#include "volume/extract.h"
 #include "volume/volume_impl.h"
 
 typedef struct worker_arg {
@@ -35,6 +42,10 @@ struct ms_vpool {
     ms_finish_task_fn *finish;
     void *user;
     void *handle[MS_VOLUME_MAX_THREADS];
+    /* shared pool: chunks claimed by the caller and a helper */
+    int shared;
+    int next;     /* the next unclaimed chunk of the current loop */
+    int help_open; /* a helper may claim chunks */
 };
 
 static void chunk(int n, int parts, int part, int *b, int *e)
@@ -120,17 +131,85 @@ ms_status ms_vpool_create(int threads, ms_vpool **out)
     return MS_OK;
 }
 
+ms_status ms_vpool_create_shared(int parts, ms_vpool **out)
+{
+    *out = NULL;
+    ms_vpool *p = ms_alloc(sizeof *p);
+    if (!p)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for the thread pool");
+    p->threads = parts;
+    p->shared = 1;
+    p->next = parts; /* no loop yet */
+    pthread_mutex_init(&p->lock, NULL);
+    pthread_cond_init(&p->go, NULL);
+    pthread_cond_init(&p->done, NULL);
+    *out = p;
+    return MS_OK;
+}
+
+/* Runs claimed chunks of the current loop; the lock is held on entry and
+ * on return. */
+static void claim_chunks(ms_vpool *p)
+{
+    while (p->next < p->threads) {
+        const int part = p->next++;
+        ms_vpool_fn *fn = p->fn;
+        void *ctx = p->ctx;
+        const int n = p->n, parts = p->threads;
+        pthread_mutex_unlock(&p->lock);
+        int b, e;
+        chunk(n, parts, part, &b, &e);
+        if (e > b)
+            fn(ctx, part, b, e);
+        pthread_mutex_lock(&p->lock);
+        if (--p->pending == 0)
+            pthread_cond_broadcast(&p->done);
+    }
+}
+
+void ms_vpool_help_open(ms_vpool *p)
+{
+    if (!p || !p->shared)
+        return;
+    pthread_mutex_lock(&p->lock);
+    p->help_open = 1;
+    pthread_mutex_unlock(&p->lock);
+}
+
+void ms_vpool_help_close(ms_vpool *p)
+{
+    if (!p || !p->shared)
+        return;
+    pthread_mutex_lock(&p->lock);
+    p->help_open = 0;
+    pthread_cond_broadcast(&p->go);
+    pthread_mutex_unlock(&p->lock);
+}
+
+void ms_vpool_help(ms_vpool *p)
+{
+    if (!p || !p->shared)
+        return;
+    pthread_mutex_lock(&p->lock);
+    while (p->help_open) {
+        claim_chunks(p);
+        if (p->help_open)
+            pthread_cond_wait(&p->go, &p->lock);
+    }
+    pthread_mutex_unlock(&p->lock);
+}
+
 ms_status ms_vpool_set_tasks(ms_vpool *p, ms_enqueue_task_fn *enqueue, ms_finish_task_fn *finish,
                              void *user)
 {
-    if (!p)
-        return MS_OK; /* one thread: nothing runs in parallel */
+    if (!p || p->shared)
+        return MS_OK; /* one thread (a shared pool's helper is not the engine's) */
     if (enqueue && !p->enqueue)
         stop_workers(p);
     p->enqueue = enqueue;
     p->finish = finish;
     p->user = user;
-    if (!enqueue && !p->started)
+    if (!enqueue && !p->started && !p->shared)
         return start_workers(p);
     return MS_OK;
 }
@@ -193,6 +272,21 @@ void ms_vpool_run(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n)
     }
     if (p->enqueue) {
         run_on_tasks(p, fn, ctx, n);
+        return;
+    }
+    if (p->shared) {
+        pthread_mutex_lock(&p->lock);
+        p->fn = fn;
+        p->ctx = ctx;
+        p->n = n;
+        p->next = 0;
+        p->pending = p->threads;
+        if (p->help_open)
+            pthread_cond_broadcast(&p->go);
+        claim_chunks(p);
+        while (p->pending > 0) /* the helper's chunk */
+            pthread_cond_wait(&p->done, &p->lock);
+        pthread_mutex_unlock(&p->lock);
         return;
     }
     pthread_mutex_lock(&p->lock);

@@ -73,6 +73,9 @@ typedef struct ms_vpool ms_vpool;
 /* Work on items [begin, end) of a parallel loop; `part` is the chunk index. */
 typedef void ms_vpool_fn(void *ctx, int part, int begin, int end);
 ms_status ms_vpool_create(int threads, ms_vpool **out);
+/* A pool of `parts` chunks and no threads of its own (pool.c): the caller
+ * and a lent helper (ms_vpool_help, extract.h) claim them. */
+ms_status ms_vpool_create_shared(int parts, ms_vpool **out);
 void ms_vpool_destroy(ms_vpool *p);
 /* Run the chunks as the engine's tasks (both set), or on the pool's own
  * threads again (both NULL). Between loops only. */
