@@ -58,12 +58,14 @@ int study_waves_courant(acc_ctx *c);
 int study_waves_ring(acc_ctx *c);
 int study_water_dispersion(acc_ctx *c);
 int study_sph_particles(acc_ctx *c);
+int study_sph_particles_large(acc_ctx *c);
 int study_sph_laws(acc_ctx *c);
 int study_sph_sound(acc_ctx *c);
 int study_sph_courant(acc_ctx *c);
 int study_sph_rest(acc_ctx *c);
 int study_extract_flat(acc_ctx *c);
 int study_extract_tilted(acc_ctx *c);
+int study_extract_column(acc_ctx *c);
 int study_coupler(acc_ctx *c);
 
 /* The report from rows: DIR/accuracy.md, DIR/accuracy.gp (+ the .dat files

@@ -24,10 +24,12 @@ static const struct {
 } cases[] = {
     {"waves-cells", study_waves_cells},     {"waves-courant", study_waves_courant},
     {"waves-ring", study_waves_ring},       {"water-dispersion", study_water_dispersion},
-    {"sph-particles", study_sph_particles}, {"sph-laws", study_sph_laws},
+    {"sph-particles", study_sph_particles}, {"sph-particles-large", study_sph_particles_large},
+    {"sph-laws", study_sph_laws},
     {"sph-sound", study_sph_sound},         {"sph-courant", study_sph_courant},
     {"sph-rest", study_sph_rest},           {"extract-flat", study_extract_flat},
-    {"extract-tilted", study_extract_tilted}, {"coupler", study_coupler},
+    {"extract-tilted", study_extract_tilted}, {"extract-column", study_extract_column},
+    {"coupler", study_coupler},
 };
 #define NCASES ((int)(sizeof cases / sizeof cases[0]))
 
@@ -126,6 +128,21 @@ static void machine_text(char *buf, size_t size)
     for (char *p = buf; *p; ++p)
         if (*p == '"' || *p == ',')
             *p = *p == ',' ? ';' : '\'';
+}
+
+/* The 1-minute load average (NAN when unknown): the costs of a case are
+ * wall clock, which other work on the machine inflates; the report says
+ * how loaded the machine was while each case ran. */
+static double load_1min(void)
+{
+    double l = NAN;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf", &l) != 1)
+            l = NAN;
+        fclose(f);
+    }
+    return l;
 }
 
 static void commit_text(char *buf, size_t size)
@@ -277,12 +294,19 @@ static int run_case(int k, int quick, const char *parts)
     acc_ctx c;
     memset(&c, 0, sizeof c);
     c.quick = quick;
-    double t0 = tool_now();
+    double t0 = tool_now(), load0 = load_1min();
     fprintf(stderr, "accuracy: %s%s ...\n", cases[k].name, quick ? " (quick)" : "");
     int rc = cases[k].fn(&c);
     if (rc == 0) {
         char machine[256], commit[128], path[1200];
         machine_text(machine, sizeof machine);
+        double load1 = load_1min();
+        size_t used = strlen(machine);
+        snprintf(machine + used, sizeof machine - used, "; load %.2f to %.2f", load0, load1);
+        acc_note(&c,
+                 "- load: case %s ran %.0f s with a 1-minute load average of %.2f at its start "
+                 "and %.2f at its end on %ld cores.",
+                 cases[k].name, tool_now() - t0, load0, load1, sysconf(_SC_NPROCESSORS_ONLN));
         commit_text(commit, sizeof commit);
         snprintf(path, sizeof path, "%s/%s.csv", parts, cases[k].name);
         rc = write_rows(path, c.rows, c.nrows, machine, commit);
