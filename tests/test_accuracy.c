@@ -188,10 +188,15 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
     ck_assert_int_ge(m, 3);
     for (int i = 0; i < m; ++i)
         ck_assert_msg(sel[i]->error < 0.1, "settled column: %.3f spacings", sel[i]->error);
+    /* the tilted layer (slope 0.2), laid at rest in its shape: the error
+     * falls as the field resolves the slope (0.23, 0.10, 0.07 spacings
+     * measured at 8, 16, 32 cells) */
     m = select_rows(rows, n, "extract", "tilted_field_cells", "height", sel);
     ck_assert_int_ge(m, 3);
-    for (int i = 0; i < m; ++i)
-        ck_assert_msg(sel[i]->error < 0.5, "tilted layer: %.3f spacings", sel[i]->error);
+    for (int i = 0; i + 1 < m; ++i)
+        ck_assert_msg(sel[i + 1]->error < sel[i]->error, "tilted layer: %.3f then %.3f spacings",
+                      sel[i]->error, sel[i + 1]->error);
+    ck_assert_msg(sel[m - 1]->error < 0.15, "tilted layer: %.3f spacings", sel[m - 1]->error);
     /* the coupler: with N_surf = 1 the combined field holds nothing below
      * the SPH cell; with N_surf >= 2 the waves resolve most of the
      * reference run's detail (the flow is chaotic under two-way coupling,

@@ -29,6 +29,8 @@ typedef struct acc_row {
     double ms_per_step; /* ms per step (wave step, SPH frame, extraction) */
     double size;      /* cells or particles */
     int threads;
+    char machine[256]; /* as read from a part ("": this run's) */
+    char commit[128];  /* as read from a part ("": this run's) */
 } acc_row;
 
 typedef struct acc_ctx {

@@ -187,9 +187,9 @@ static int write_rows(const char *path, const acc_row *rows, int n, const char *
         csv_text(f, r->metric);
         fprintf(f, ",%.6g,%.9g,%.6g,%.6g,%.9g,%d,", r->error, r->reference, r->ms_per_s,
                 r->ms_per_step, r->size, r->threads);
-        csv_text(f, machine);
+        csv_text(f, r->machine[0] ? r->machine : machine);
         fputc(',', f);
-        csv_text(f, commit);
+        csv_text(f, r->commit[0] ? r->commit : commit);
         fputc('\n', f);
     }
     if (fclose(f) != 0) {
@@ -263,6 +263,8 @@ static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, 
         r.threads = atoi(fl[10]);
         snprintf(machine, size, "%s", fl[11]);
         snprintf(commit, size, "%s", fl[12]);
+        snprintf(r.machine, sizeof r.machine, "%s", fl[11]);
+        snprintf(r.commit, sizeof r.commit, "%s", fl[12]);
         if (acc_add(c, &r) != 0) {
             rc = -1;
             break;
@@ -328,14 +330,20 @@ static int merge(const char *parts, const char *out)
     acc_ctx c;
     memset(&c, 0, sizeof c);
     char machine[256] = "unknown", commit[128] = "unknown", path[1200];
-    int found = 0, rc = 0;
+    static char commits[NCASES][128]; /* each part's, "" when absent */
+    int found = 0, rc = 0, mixed = 0;
     for (int k = 0; k < NCASES && rc == 0; ++k) {
         snprintf(path, sizeof path, "%s/%s.csv", parts, cases[k].name);
         int r = read_part(path, &c, machine, commit, sizeof commit);
+        commits[k][0] = '\0';
         if (r < 0)
             rc = -1;
-        else if (r == 0)
+        else if (r == 0) {
+            snprintf(commits[k], sizeof commits[k], "%s", commit);
+            for (int j = 0; j < k; ++j)
+                mixed |= commits[j][0] && strcmp(commits[j], commits[k]) != 0;
             ++found;
+        }
         snprintf(path, sizeof path, "%s/%s.notes", parts, cases[k].name);
         FILE *f = fopen(path, "r");
         if (f) {
@@ -352,6 +360,15 @@ static int merge(const char *parts, const char *out)
     if (rc == 0 && found < NCASES)
         acc_note(&c, "- %d of %d cases in this report (the others were not run).", found,
                  NCASES);
+    /* parts from different commits (a case rerun after a change, the
+     * others kept): the report says which is which, not one commit for all */
+    if (rc == 0 && mixed) {
+        acc_note(&c, "- the cases come from more than one commit (each row's is in the CSV):");
+        for (int k = 0; k < NCASES; ++k)
+            if (commits[k][0])
+                acc_note(&c, "  - %s: %s", cases[k].name, commits[k]);
+        snprintf(commit, sizeof commit, "several (see the notes)");
+    }
     int plotted = 0;
     if (rc == 0)
         rc = make_dir(out);
