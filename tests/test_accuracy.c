@@ -48,7 +48,7 @@ static int tool(const char *args, char *out, size_t size)
 
 typedef struct row {
     char study[32], knob[48], metric[64];
-    double value, error, ms_per_s, ms_per_step;
+    double value, error, ms_per_s, ms_per_step, size;
 } row;
 
 static int read_rows(const char *path, row *rows, int max)
@@ -83,6 +83,7 @@ static int read_rows(const char *path, row *rows, int max)
         strtod(p + 1, &p); /* reference */
         r->ms_per_s = strtod(p + 1, &p);
         r->ms_per_step = strtod(p + 1, &p);
+        r->size = strtod(p + 1, &p); /* cells or particles */
         ++n;
     }
     fclose(f);
@@ -133,8 +134,12 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
         double order = log(sel[i]->error / sel[i + 1]->error) / log(sel[i + 1]->value / sel[i]->value);
         ck_assert_msg(order >= 1.9, "wave order %.3f between %.1f and %.1f cells per wavelength",
                       order, sel[i]->value, sel[i + 1]->value);
-        ck_assert_msg(sel[i + 1]->ms_per_s > sel[i]->ms_per_s && sel[i + 1]->ms_per_step > 0,
-                      "a finer grid must cost more");
+        /* the cost columns are wall clock, which a loaded machine makes
+         * noisy: a test asserts the work (cells) and that a cost was
+         * measured, never how long it took */
+        ck_assert_msg(sel[i + 1]->size > sel[i]->size && sel[i + 1]->ms_per_step > 0 &&
+                          sel[i + 1]->ms_per_s > 0,
+                      "a finer grid has more cells and a measured cost");
     }
     /* the ring front speed approaches c as the drop is resolved */
     m = select_rows(rows, n, "waves", "ring_cells_per_drop_radius", "front", sel);
