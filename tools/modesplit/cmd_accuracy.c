@@ -24,8 +24,8 @@ static const struct {
 } cases[] = {
     {"waves-cells", study_waves_cells},     {"waves-courant", study_waves_courant},
     {"waves-ring", study_waves_ring},       {"water-dispersion", study_water_dispersion},
-    {"sph-particles", study_sph_particles}, {"sph-particles-large", study_sph_particles_large},
-    {"sph-laws", study_sph_laws},
+    {"sph-particles", study_sph_particles}, {"sph-particles-51k", study_sph_particles_51k},
+    {"sph-particles-64k", study_sph_particles_64k}, {"sph-laws", study_sph_laws},
     {"sph-sound", study_sph_sound},         {"sph-courant", study_sph_courant},
     {"sph-rest", study_sph_rest},           {"extract-flat", study_extract_flat},
     {"extract-tilted", study_extract_tilted}, {"extract-column", study_extract_column},

@@ -173,21 +173,24 @@ int study_sph_particles(acc_ctx *c)
     return 0;
 }
 
-/* The same knob at ~51k and ~64k particles (4 * 0.02 m^2 / s^2 of them),
- * a case of its own: the two take about as long as every other case
+/* The same knob at ~51k and at ~64k particles (4 * 0.02 m^2 / s^2 of
+ * them), a case each: each takes about as long as every other case
  * together, so `--jobs` runs them beside the rest. --quick: one 800
- * particle run, so the case is exercised. */
-int study_sph_particles_large(acc_ctx *c)
+ * particle run, so the cases are exercised. */
+static int particles_at(acc_ctx *c, double spacing)
 {
-    static const double full[] = {0.00125, 0.001118}, quick[] = {0.01};
-    const double *sp = c->quick ? quick : full;
-    int n = c->quick ? 1 : 2;
-    for (int i = 0; i < n; ++i) {
-        dam_cfg cfg = {.spacing = sp[i], .law = 1, .sound = 20};
-        if (dam_break(c, "particles", -1, &cfg) < 0) /* value: the count */
-            return -1;
-    }
-    return 0;
+    dam_cfg cfg = {.spacing = c->quick ? 0.01 : spacing, .law = 1, .sound = 20};
+    return dam_break(c, "particles", -1, &cfg) < 0 ? -1 : 0; /* value: the count */
+}
+
+int study_sph_particles_51k(acc_ctx *c)
+{
+    return particles_at(c, 0.00125);
+}
+
+int study_sph_particles_64k(acc_ctx *c)
+{
+    return particles_at(c, 0.001118);
 }
 
 int study_sph_laws(acc_ctx *c)
