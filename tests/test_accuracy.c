@@ -48,7 +48,7 @@ static int tool(const char *args, char *out, size_t size)
 
 typedef struct row {
     char study[32], knob[48], metric[64];
-    double value, error, ms_per_s, ms_per_step;
+    double value, error, ms_per_s, ms_per_step, size;
 } row;
 
 static int read_rows(const char *path, row *rows, int max)
@@ -83,6 +83,7 @@ static int read_rows(const char *path, row *rows, int max)
         strtod(p + 1, &p); /* reference */
         r->ms_per_s = strtod(p + 1, &p);
         r->ms_per_step = strtod(p + 1, &p);
+        r->size = strtod(p + 1, &p); /* cells or particles */
         ++n;
     }
     fclose(f);
@@ -133,8 +134,12 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
         double order = log(sel[i]->error / sel[i + 1]->error) / log(sel[i + 1]->value / sel[i]->value);
         ck_assert_msg(order >= 1.9, "wave order %.3f between %.1f and %.1f cells per wavelength",
                       order, sel[i]->value, sel[i + 1]->value);
-        ck_assert_msg(sel[i + 1]->ms_per_s > sel[i]->ms_per_s && sel[i + 1]->ms_per_step > 0,
-                      "a finer grid must cost more");
+        /* the cost columns are wall clock, which a loaded machine makes
+         * noisy: a test asserts the work (cells) and that a cost was
+         * measured, never how long it took */
+        ck_assert_msg(sel[i + 1]->size > sel[i]->size && sel[i + 1]->ms_per_step > 0 &&
+                          sel[i + 1]->ms_per_s > 0,
+                      "a finer grid has more cells and a measured cost");
     }
     /* the ring front speed approaches c as the drop is resolved */
     m = select_rows(rows, n, "waves", "ring_cells_per_drop_radius", "front", sel);
@@ -166,6 +171,11 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
             continue;
         }
         ck_assert_msg(sel[0]->error < 0.15, "%s: front RMS %.3f", laws[k], sel[0]->error);
+        /* and the residual column at the wall, H(tau) of their Table 6,
+         * within 25 % RMS at 800 particles (0.07 to 0.15 measured) */
+        m = select_rows(rows, n, "sph", laws[k], "column H", sel);
+        ck_assert_int_eq(m, 1);
+        ck_assert_msg(sel[0]->error < 0.25, "%s: column H RMS %.3f", laws[k], sel[0]->error);
     }
     /* the hydrostatic pressure at rest is rho0 g d within 40 % RMS */
     m = select_rows(rows, n, "sph", "rest_particles_tait", "hydrostatic", sel);
@@ -177,10 +187,21 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
     ck_assert_int_ge(m, 3);
     for (int i = 0; i < m; ++i)
         ck_assert_msg(sel[i]->error < 0.1, "flat layer: %.3f spacings", sel[i]->error);
-    m = select_rows(rows, n, "extract", "tilted_field_cells", "height", sel);
+    /* a settled column 1.4 times as high as wide: within a tenth too,
+     * its hydrostatic compression included */
+    m = select_rows(rows, n, "extract", "column_field_cells", "height", sel);
     ck_assert_int_ge(m, 3);
     for (int i = 0; i < m; ++i)
-        ck_assert_msg(sel[i]->error < 0.5, "tilted layer: %.3f spacings", sel[i]->error);
+        ck_assert_msg(sel[i]->error < 0.1, "settled column: %.3f spacings", sel[i]->error);
+    /* the tilted layer (slope 0.2), laid at rest in its shape: the error
+     * falls as the field resolves the slope (0.23, 0.10, 0.07 spacings
+     * measured at 8, 16, 32 cells) */
+    m = select_rows(rows, n, "extract", "tilted_field_cells", "height", sel);
+    ck_assert_int_ge(m, 3);
+    for (int i = 0; i + 1 < m; ++i)
+        ck_assert_msg(sel[i + 1]->error < sel[i]->error, "tilted layer: %.3f then %.3f spacings",
+                      sel[i]->error, sel[i + 1]->error);
+    ck_assert_msg(sel[m - 1]->error < 0.15, "tilted layer: %.3f spacings", sel[m - 1]->error);
     /* the coupler: with N_surf = 1 the combined field holds nothing below
      * the SPH cell; with N_surf >= 2 the waves resolve most of the
      * reference run's detail (the flow is chaotic under two-way coupling,
@@ -219,7 +240,7 @@ START_TEST(jobs_case_and_merge_give_the_same_rows)
     int lines = 0;
     for (char *p = out; (p = strstr(p, "--case ")) != NULL; ++p)
         ++lines;
-    ck_assert_int_eq(lines, 12);
+    ck_assert_int_eq(lines, 15);
     ck_assert_ptr_nonnull(strstr(out, "--case water-dispersion --out"));
     ck_assert_ptr_nonnull(strstr(out, "/parts'"));
     /* two cheap cases by hand, as GNU parallel would run them, then merge */
@@ -240,7 +261,7 @@ START_TEST(jobs_case_and_merge_give_the_same_rows)
     size_t len = fread(text, 1, sizeof text - 1, f);
     text[len] = '\0';
     fclose(f);
-    ck_assert_ptr_nonnull(strstr(text, "2 of 12 cases"));
+    ck_assert_ptr_nonnull(strstr(text, "2 of 15 cases"));
     remove_dir();
 }
 END_TEST

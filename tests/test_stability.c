@@ -690,6 +690,8 @@ END_TEST
 
 START_TEST(refuse_an_n_time_below_the_cfl_bound)
 {
+    /* 256 cells over 1 m at 2 m/s: wave steps of at most 1.37 ms, so a
+     * 1/60 s frame needs n_time >= 13; 1 is refused at creation */
     static const char json[] =
         "{\"domain\": {\"min\": [0,0,0], \"max\": [1,1,0.5]},"
         " \"volume\": {\"spacing\": 0.1, \"fill\": [{\"min\": [0,0,0], \"max\": [1,1,0.2]}]},"
@@ -698,17 +700,41 @@ START_TEST(refuse_an_n_time_below_the_cfl_bound)
     ms_scene *sc = NULL;
     ck_assert_int_eq(ms_scene_parse(json, strlen(json), &sc), MS_OK);
     ms_sim *sim = NULL;
-    ms_status st = ms_sim_create_from_scene(sc, 1, &sim);
-    if (st == MS_OK) {
-        /* today the sim refuses it at the first frame that runs waves (the
-         * second: the one-frame pipeline), not at creation */
-        st = ms_sim_step(sim, 1.0f / 60);
-        if (st == MS_OK)
-            st = ms_sim_step(sim, 1.0f / 60);
-        MS_ASSERT_REFUSED(st, MS_ERR_UNSTABLE, "n_time 1");
-    } else
-        MS_ASSERT_REFUSED(st, MS_ERR_UNSTABLE, "n_time 1");
+    MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 1, &sim), MS_ERR_UNSTABLE, "n_time 1");
+    ck_assert_ptr_null(sim);
+    ck_assert_ptr_nonnull(strstr(ms_last_error(), "n_time >= 13"));
+    ms_scene_destroy(sc);
+
+    /* ms_sim_create knows no frame: the first step refuses it, before any
+     * state moves; a frame the bound allows then runs */
+    ms_surface_desc sd = ms_surface_desc_default();
+    sd.nx = sd.ny = 256;
+    sd.dx = 1.0f / 256;
+    sd.wave_speed = 2.0f;
+    ms_sim_desc d = ms_sim_desc_default();
+    d.surface = &sd;
+    d.surface_substeps = 1;
+    ck_assert_int_eq(ms_sim_create(&d, &sim), MS_OK);
+    MS_ASSERT_REFUSED(ms_sim_step(sim, 1.0f / 60), MS_ERR_UNSTABLE, "n_time 1");
+    ck_assert_int_eq(ms_sim_step(sim, 1e-3f), MS_OK);
     ms_sim_destroy(sim);
+}
+END_TEST
+
+START_TEST(refuse_an_sph_frame_over_max_substeps_at_creation)
+{
+    /* courant 0.4, h 0.2 m, c0 20 m/s: sub-steps of at most 4 ms even at
+     * rest, so a 1 s frame needs 250; max_substeps 100 cannot make it */
+    static const char json[] =
+        "{\"frame_dt\": 1.0, \"domain\": {\"min\": [0,0,0], \"max\": [1,1,1]},"
+        " \"volume\": {\"spacing\": 0.1, \"smoothing_length\": 0.2, \"max_substeps\": 100,"
+        "   \"fill\": [{\"min\": [0,0,0], \"max\": [1,1,0.3]}]}}";
+    ms_scene *sc = NULL;
+    ck_assert_int_eq(ms_scene_parse(json, strlen(json), &sc), MS_OK);
+    ms_sim *sim = NULL;
+    MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 1, &sim), MS_ERR_UNSTABLE, "max_substeps 100");
+    ck_assert_ptr_null(sim);
+    ck_assert_ptr_nonnull(strstr(ms_last_error(), "250"));
     ms_scene_destroy(sc);
 }
 END_TEST
@@ -858,6 +884,7 @@ static Suite *stability_suite(void)
     tcase_add_test(r, refuse_a_wave_step_over_max_substeps);
     tcase_add_test(r, refuse_an_sph_step_over_max_substeps);
     tcase_add_test(r, refuse_an_n_time_below_the_cfl_bound);
+    tcase_add_test(r, refuse_an_sph_frame_over_max_substeps_at_creation);
     suite_add_tcase(s, r);
     if (long_tests()) {
         /* two cases, which `make check-long` runs side by side on 2 cores */

@@ -1,4 +1,4 @@
-# gnuplot script written by `modesplit accuracy` (commit c8a907e); run it in this
+# gnuplot script written by `modesplit accuracy` (commit several (see the notes)); run it in this
 # directory: gnuplot accuracy.gp. Restyle freely.
 set terminal pngcairo noenhanced size 1000,650 font 'sans,11'
 set logscale xy
@@ -30,11 +30,13 @@ set ylabel 'error'
 plot 'sph.dat' index 0 using 1:2 with linespoints pt 7 title 'particles', \
      'sph.dat' index 1 using 1:2 with linespoints pt 7 title 'law_ideal_gas', \
      'sph.dat' index 2 using 1:2 with linespoints pt 7 title 'law_tait', \
-     'sph.dat' index 3 using 1:2 with linespoints pt 7 title 'sound_speed_ideal_gas', \
-     'sph.dat' index 4 using 1:2 with linespoints pt 7 title 'sound_speed_tait', \
-     'sph.dat' index 5 using 1:2 with linespoints pt 7 title 'courant', \
-     'sph.dat' index 6 using 1:2 with linespoints pt 7 title 'rest_particles_ideal_gas', \
-     'sph.dat' index 7 using 1:2 with linespoints pt 7 title 'rest_particles_tait'
+     'sph.dat' index 3 using 1:2 with linespoints pt 7 title 'law_dfsph', \
+     'sph.dat' index 4 using 1:2 with linespoints pt 7 title 'sound_speed_ideal_gas', \
+     'sph.dat' index 5 using 1:2 with linespoints pt 7 title 'sound_speed_tait', \
+     'sph.dat' index 6 using 1:2 with linespoints pt 7 title 'courant', \
+     'sph.dat' index 7 using 1:2 with linespoints pt 7 title 'rest_particles_ideal_gas', \
+     'sph.dat' index 8 using 1:2 with linespoints pt 7 title 'rest_particles_tait', \
+     'sph.dat' index 9 using 1:2 with linespoints pt 7 title 'rest_particles_dfsph'
 set output 'sph_pareto.png'
 set title 'sph: every configuration; the line joins those no other beats on both cost and error'
 plot 'sph_pareto.dat' index 0 using 1:2 with points pt 6 title 'configuration', \
@@ -47,7 +49,9 @@ set ylabel 'error'
 plot 'extract.dat' index 0 using 1:2 with linespoints pt 7 title 'flat_field_cells', \
      'extract.dat' index 1 using 1:2 with linespoints pt 7 title 'flat_smoothing_passes', \
      'extract.dat' index 2 using 1:2 with linespoints pt 7 title 'tilted_field_cells', \
-     'extract.dat' index 3 using 1:2 with linespoints pt 7 title 'tilted_smoothing_passes'
+     'extract.dat' index 3 using 1:2 with linespoints pt 7 title 'tilted_smoothing_passes', \
+     'extract.dat' index 4 using 1:2 with linespoints pt 7 title 'column_field_cells', \
+     'extract.dat' index 5 using 1:2 with linespoints pt 7 title 'column_smoothing_passes'
 set output 'extract_pareto.png'
 set title 'extract: every configuration; the line joins those no other beats on both cost and error'
 plot 'extract_pareto.dat' index 0 using 1:2 with points pt 6 title 'configuration', \

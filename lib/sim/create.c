@@ -290,6 +290,32 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
     return MS_OK;
 }
 
+/* The bounds a frame of frame_dt seconds cannot meet by sub-stepping:
+ * a fixed N_time (eq. 19) whose wave steps exceed the CFL bound of the
+ * wave grid, and an SPH frame needing more than max_substeps sub-steps
+ * even at rest (the bound ms_volume_step applies before any work: no
+ * state allows a sub-step over courant h / c0). ms_sim_create has no frame
+ * yet: there ms_sim_step refuses them on the first call. */
+static ms_status check_scene_frame(const ms_sim *sim, double frame_dt)
+{
+    TRY(ms_sim_check_n_time(sim, frame_dt));
+    if (sim->volume) {
+        ms_volume_desc vd = ms_volume_get_desc(sim->volume);
+        ms_volume_info in = ms_volume_info_init();
+        ms_volume_get_info(sim->volume, &in);
+        const double at_rest = (double)vd.courant * vd.smoothing_length / in.sound_speed;
+        const double least = ceil(frame_dt / at_rest);
+        if (in.sound_speed > 0 && least > vd.max_substeps)
+            return ms_fail(MS_ERR_UNSTABLE,
+                           "sim: a frame of %g s needs at least %.3g SPH sub-steps (courant %g, "
+                           "smoothing_length %g m, sound speed %g m/s: at most %.3g s each even "
+                           "at rest), more than max_substeps %d",
+                           frame_dt, least, (double)vd.courant, (double)vd.smoothing_length,
+                           (double)in.sound_speed, at_rest, vd.max_substeps);
+    }
+    return MS_OK;
+}
+
 ms_status ms_sim_create(const ms_sim_desc *d, ms_sim **out)
 {
     return create_common(d, NULL, 0, NULL, out);
@@ -369,6 +395,13 @@ ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out
                        sc->domain_max[2]};
     ms_sim *sim;
     TRY(create_common(&d, origin, sc->level, sc, &sim));
+    /* the scene knows its frame: what no sub-stepping can make stable at
+     * that frame is refused here, at creation (issue 11) */
+    ms_status bad = check_scene_frame(sim, sc->frame_dt);
+    if (bad != MS_OK) {
+        ms_sim_destroy(sim);
+        return bad;
+    }
     for (int i = 0; i < sc->nfill; ++i) {
         ms_status st = ms_volume_fill_box(sim->volume, sc->fill_lo[i], sc->fill_hi[i]);
         if (st != MS_OK) {

@@ -171,6 +171,9 @@ struct ms_sim {
     void *worker_arg;
 };
 
+/* step.c: MS_ERR_UNSTABLE when a fixed N_time (eq. 19) gives wave steps
+ * of a frame of dt seconds over the CFL bound of the wave grid. */
+ms_status ms_sim_check_n_time(const ms_sim *sim, double dt);
 /* create.c */
 ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc);
 

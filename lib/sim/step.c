@@ -28,19 +28,30 @@ static ms_status prime(ms_sim *sim)
 /* Eq. 19: N_time = dt_volume / dt_surface wave steps for a frame of dt:
  * the fewest that keep each step within the CFL bound, or the scene's,
  * which must keep within it. */
+ms_status ms_sim_check_n_time(const ms_sim *sim, double dt)
+{
+    if (!sim->surface || sim->n_time_fixed <= 0)
+        return MS_OK;
+    ms_surface_info info = ms_surface_info_init();
+    ms_surface_get_info(sim->surface, &info);
+    double max_dt = info.max_dt, step = dt / sim->n_time_fixed; /* s */
+    if (step > max_dt * (1 + 1e-6))
+        return ms_fail(MS_ERR_UNSTABLE,
+                       "sim: n_time %d gives wave steps of %.3g s for a frame of %g s; the "
+                       "CFL bound of the wave grid allows at most %.3g s (n_time >= %.0f)",
+                       sim->n_time_fixed, step, dt, max_dt, ceil(dt / max_dt));
+    return MS_OK;
+}
+
 static ms_status wave_steps(ms_sim *sim, float dt, int *n_time)
 {
     ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(sim->surface, &info);
     double max_dt = info.max_dt; /* s */
     if (sim->n_time_fixed > 0) {
-        double step = (double)dt / sim->n_time_fixed;
-        if (step > max_dt * (1 + 1e-6))
-            return ms_fail(MS_ERR_UNSTABLE,
-                           "sim: n_time %d gives wave steps of %.3g s for a frame of %g s; the "
-                           "CFL bound of the wave grid allows at most %.3g s (n_time >= %.0f)",
-                           sim->n_time_fixed, step, (double)dt, max_dt,
-                           ceil((double)dt / max_dt));
+        ms_status st = ms_sim_check_n_time(sim, dt);
+        if (st != MS_OK)
+            return st;
         *n_time = sim->n_time_fixed;
         return MS_OK;
     }
@@ -128,6 +139,11 @@ static ms_status step_frame(ms_sim *sim, float frame_dt)
     if (!isfinite(frame_dt) || !(frame_dt > 0) || frame_dt > 10)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: frame_dt %g s is outside (0, 10] s",
                        (double)frame_dt);
+    /* a fixed N_time too small for this frame: refused before anything
+     * runs (issue 11), not a frame later when the pipeline's waves take
+     * it up; a scene's sim was refused at creation already */
+    if ((st = ms_sim_check_n_time(sim, frame_dt)) != MS_OK)
+        return st;
     double c0 = ms_now();
     if (!sim->primed && (st = prime(sim)) != MS_OK)
         return st;

@@ -29,6 +29,8 @@ typedef struct acc_row {
     double ms_per_step; /* ms per step (wave step, SPH frame, extraction) */
     double size;      /* cells or particles */
     int threads;
+    char machine[256]; /* as read from a part ("": this run's) */
+    char commit[128];  /* as read from a part ("": this run's) */
 } acc_row;
 
 typedef struct acc_ctx {
@@ -58,12 +60,15 @@ int study_waves_courant(acc_ctx *c);
 int study_waves_ring(acc_ctx *c);
 int study_water_dispersion(acc_ctx *c);
 int study_sph_particles(acc_ctx *c);
+int study_sph_particles_51k(acc_ctx *c);
+int study_sph_particles_64k(acc_ctx *c);
 int study_sph_laws(acc_ctx *c);
 int study_sph_sound(acc_ctx *c);
 int study_sph_courant(acc_ctx *c);
 int study_sph_rest(acc_ctx *c);
 int study_extract_flat(acc_ctx *c);
 int study_extract_tilted(acc_ctx *c);
+int study_extract_column(acc_ctx *c);
 int study_coupler(acc_ctx *c);
 
 /* The report from rows: DIR/accuracy.md, DIR/accuracy.gp (+ the .dat files

@@ -133,8 +133,10 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
         tool_error("accuracy: cannot write %s", path);
         return -1;
     }
-    fprintf(f, "# modesplit accuracy\n\nMachine: %s. Commit: %s. Wall-clock costs are of one "
-               "thread on this machine (noisy when it is shared).\n\n",
+    fprintf(f, "# modesplit accuracy\n\nMachine: %s (the load of the last case merged; "
+               "every case's is in the notes and in the CSV's machine column). Commit: %s. "
+               "Wall-clock costs are of one thread on this machine: a load average above "
+               "the core count means other work shared the cores and inflated them.\n\n",
             machine, commit);
     if (notes && notes[0])
         fprintf(f, "Notes:\n%s\n", notes);

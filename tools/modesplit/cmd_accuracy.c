@@ -24,10 +24,12 @@ static const struct {
 } cases[] = {
     {"waves-cells", study_waves_cells},     {"waves-courant", study_waves_courant},
     {"waves-ring", study_waves_ring},       {"water-dispersion", study_water_dispersion},
-    {"sph-particles", study_sph_particles}, {"sph-laws", study_sph_laws},
+    {"sph-particles", study_sph_particles}, {"sph-particles-51k", study_sph_particles_51k},
+    {"sph-particles-64k", study_sph_particles_64k}, {"sph-laws", study_sph_laws},
     {"sph-sound", study_sph_sound},         {"sph-courant", study_sph_courant},
     {"sph-rest", study_sph_rest},           {"extract-flat", study_extract_flat},
-    {"extract-tilted", study_extract_tilted}, {"coupler", study_coupler},
+    {"extract-tilted", study_extract_tilted}, {"extract-column", study_extract_column},
+    {"coupler", study_coupler},
 };
 #define NCASES ((int)(sizeof cases / sizeof cases[0]))
 
@@ -128,6 +130,21 @@ static void machine_text(char *buf, size_t size)
             *p = *p == ',' ? ';' : '\'';
 }
 
+/* The 1-minute load average (NAN when unknown): the costs of a case are
+ * wall clock, which other work on the machine inflates; the report says
+ * how loaded the machine was while each case ran. */
+static double load_1min(void)
+{
+    double l = NAN;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf", &l) != 1)
+            l = NAN;
+        fclose(f);
+    }
+    return l;
+}
+
 static void commit_text(char *buf, size_t size)
 {
     snprintf(buf, size, "unknown");
@@ -170,9 +187,9 @@ static int write_rows(const char *path, const acc_row *rows, int n, const char *
         csv_text(f, r->metric);
         fprintf(f, ",%.6g,%.9g,%.6g,%.6g,%.9g,%d,", r->error, r->reference, r->ms_per_s,
                 r->ms_per_step, r->size, r->threads);
-        csv_text(f, machine);
+        csv_text(f, r->machine[0] ? r->machine : machine);
         fputc(',', f);
-        csv_text(f, commit);
+        csv_text(f, r->commit[0] ? r->commit : commit);
         fputc('\n', f);
     }
     if (fclose(f) != 0) {
@@ -246,6 +263,8 @@ static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, 
         r.threads = atoi(fl[10]);
         snprintf(machine, size, "%s", fl[11]);
         snprintf(commit, size, "%s", fl[12]);
+        snprintf(r.machine, sizeof r.machine, "%s", fl[11]);
+        snprintf(r.commit, sizeof r.commit, "%s", fl[12]);
         if (acc_add(c, &r) != 0) {
             rc = -1;
             break;
@@ -277,12 +296,19 @@ static int run_case(int k, int quick, const char *parts)
     acc_ctx c;
     memset(&c, 0, sizeof c);
     c.quick = quick;
-    double t0 = tool_now();
+    double t0 = tool_now(), load0 = load_1min();
     fprintf(stderr, "accuracy: %s%s ...\n", cases[k].name, quick ? " (quick)" : "");
     int rc = cases[k].fn(&c);
     if (rc == 0) {
         char machine[256], commit[128], path[1200];
         machine_text(machine, sizeof machine);
+        double load1 = load_1min();
+        size_t used = strlen(machine);
+        snprintf(machine + used, sizeof machine - used, "; load %.2f to %.2f", load0, load1);
+        acc_note(&c,
+                 "- load: case %s ran %.0f s with a 1-minute load average of %.2f at its start "
+                 "and %.2f at its end on %ld cores.",
+                 cases[k].name, tool_now() - t0, load0, load1, sysconf(_SC_NPROCESSORS_ONLN));
         commit_text(commit, sizeof commit);
         snprintf(path, sizeof path, "%s/%s.csv", parts, cases[k].name);
         rc = write_rows(path, c.rows, c.nrows, machine, commit);
@@ -304,14 +330,20 @@ static int merge(const char *parts, const char *out)
     acc_ctx c;
     memset(&c, 0, sizeof c);
     char machine[256] = "unknown", commit[128] = "unknown", path[1200];
-    int found = 0, rc = 0;
+    static char commits[NCASES][128]; /* each part's, "" when absent */
+    int found = 0, rc = 0, mixed = 0;
     for (int k = 0; k < NCASES && rc == 0; ++k) {
         snprintf(path, sizeof path, "%s/%s.csv", parts, cases[k].name);
         int r = read_part(path, &c, machine, commit, sizeof commit);
+        commits[k][0] = '\0';
         if (r < 0)
             rc = -1;
-        else if (r == 0)
+        else if (r == 0) {
+            snprintf(commits[k], sizeof commits[k], "%s", commit);
+            for (int j = 0; j < k; ++j)
+                mixed |= commits[j][0] && strcmp(commits[j], commits[k]) != 0;
             ++found;
+        }
         snprintf(path, sizeof path, "%s/%s.notes", parts, cases[k].name);
         FILE *f = fopen(path, "r");
         if (f) {
@@ -328,6 +360,15 @@ static int merge(const char *parts, const char *out)
     if (rc == 0 && found < NCASES)
         acc_note(&c, "- %d of %d cases in this report (the others were not run).", found,
                  NCASES);
+    /* parts from different commits (a case rerun after a change, the
+     * others kept): the report says which is which, not one commit for all */
+    if (rc == 0 && mixed) {
+        acc_note(&c, "- the cases come from more than one commit (each row's is in the CSV):");
+        for (int k = 0; k < NCASES; ++k)
+            if (commits[k][0])
+                acc_note(&c, "  - %s: %s", cases[k].name, commits[k]);
+        snprintf(commit, sizeof commit, "several (see the notes)");
+    }
     int plotted = 0;
     if (rc == 0)
         rc = make_dir(out);
