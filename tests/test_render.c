@@ -854,6 +854,79 @@ START_TEST(floating_discs_are_drawn_on_the_surface)
 END_TEST
 
 
+/* Mean over the window's pixels and channels of |a - b| (sRGB levels). */
+static double window_mean_abs_diff(const unsigned char *a, const unsigned char *b, int cx, int cy,
+                                   int half)
+{
+    double sum = 0;
+    int n = 0;
+    for (int y = cy - half; y <= cy + half; ++y)
+        for (int x = cx - half; x <= cx + half; ++x)
+            for (int k = 0; k < 3; ++k, ++n)
+                sum += abs((int)a[((size_t)y * W + x) * 4 + k] - (int)b[((size_t)y * W + x) * 4 + k]);
+    return sum / n;
+}
+
+/* The pixel column of world x at height z in top_down's view (centre row
+ * for y = 0.5): the eye 2 m up at x = 0.5, 30 degrees across. */
+static int top_down_column(float x, float z)
+{
+    const float half = (2.0f - z) * tanf(15.0f * 3.14159265f / 180.0f);
+    return (int)lroundf(0.5f * W * (1.0f + (x - 0.5f) / half));
+}
+
+START_TEST(obstacles_and_the_glass_are_drawn_with_their_shapes)
+{
+    REQUIRE_GL();
+    /* a box standing out of the water at x = 0.3 and a glass (the
+     * container) at x = 0.7, both on the pool's centre line, moved there
+     * by their paths at t = 1 s */
+    const char *text =
+        "{\"surface\": {\"cells\": [64, 64]},"
+        " \"obstacles\": [{\"shape\": \"box\", \"params\": {\"size\": [0.16, 0.16, 0.4]},"
+        "   \"path\": {\"points\": [[0.3, 0.2, 0.2], [0.3, 0.5, 0.2]], \"speed\": 0.3}}],"
+        " \"effects\": {\"container\": {\"shape\": \"glass\","
+        "   \"params\": {\"radius\": 0.1, \"height\": 0.4, \"wall\": 0.01, \"floor\": 0.01},"
+        "   \"path\": {\"points\": [[0.7, 0.8, 0.0], [0.7, 0.5, 0.0]], \"speed\": 0.3}}}}";
+    ms_scene *sc = NULL;
+    ms_status st = ms_scene_parse(text, strlen(text), &sc);
+    ck_assert_msg(st == MS_OK, "%s", ms_last_error());
+    ms_renderer_desc d = top_down("water");
+    /* 5 mm of water: the glass's floor (1 cm) is above it (objects under
+     * the surface are not drawn through it yet) */
+    float *h = field(N, 0.005f);
+    unsigned char *plain = render(&d, h, N);
+    ms_renderer *r = create_ok(&d);
+    ms_grid g = grid(N);
+    st = ms_renderer_draw_scene_field(r, sc, h, &g, 1.0);
+    ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
+    const unsigned char *px = ms_renderer_pixels(r, NULL, NULL);
+    /* the box's lid (z = 0.4) covers the water: it is opaque stone */
+    const int bx = top_down_column(0.3f, 0.4f), gx = top_down_column(0.7f, 0.4f), half = W / 32;
+    const double box = window_mean_abs_diff(px, plain, bx, W / 2, half);
+    ck_assert_msg(box > 40, "the box changes its footprint by %.1f levels only", box);
+    /* through the glass's floor the pool still shows, tinted: changed,
+     * less than by the opaque box */
+    const double glass = window_mean_abs_diff(px, plain, gx, W / 2, half);
+    ck_assert_msg(glass > 3 && glass < box, "the glass changes its footprint by %.1f levels "
+                  "(the box by %.1f)", glass, box);
+    /* where neither is (their paths' start at t = 0), nothing changed */
+    const double away = window_mean_abs_diff(px, plain, W / 2, W / 2, half);
+    ck_assert_msg(away < 1, "the pool's centre changed by %.1f levels", away);
+    /* at t = 0 the box is at y = 0.2 (lower in the image): its t = 1
+     * footprint shows the water again */
+    st = ms_renderer_draw_scene_field(r, sc, h, &g, 0.0);
+    ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
+    const double moved = window_mean_abs_diff(ms_renderer_pixels(r, NULL, NULL), plain, bx,
+                                              W / 2, half);
+    ck_assert_msg(moved < 1, "the box left its t = 1 place changed by %.1f levels", moved);
+    ms_renderer_destroy(r);
+    ms_scene_destroy(sc);
+    free(plain);
+    free(h);
+}
+END_TEST
+
 START_TEST(moving_the_camera_is_creating_with_it)
 {
     REQUIRE_GL();
@@ -1502,6 +1575,7 @@ static Suite *render_suite(void)
     tcase_add_test(tc, png_round_trips);
     tcase_add_test(tc, cubemaps_load_from_a_directory_or_a_strip);
     tcase_add_test(tc, bad_fields_and_shaders_are_refused);
+    tcase_add_test(tc, obstacles_and_the_glass_are_drawn_with_their_shapes);
     tcase_add_test(tc, a_shader_that_does_not_compile_is_refused_with_its_log);
     tcase_add_test(tc, a_coarser_mesh_keeps_the_fields_normals);
     tcase_add_test(tc, refracted_tile_edges_are_straight_lines);

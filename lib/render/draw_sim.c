@@ -218,7 +218,8 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
     const ms_scene *sc = ms_sim_scene(sim);
     const int steered = sc && sc->has_boat && ms_sim_boat(sim, boat_xy) == MS_OK;
     if ((st = scene_discs(r, sc, xyz, nf, ms_sim_time(sim), h, &g,
-                          steered ? boat_xy : NULL)) != MS_OK)
+                          steered ? boat_xy : NULL)) != MS_OK ||
+        (st = ms_render_objects_update(r, sc, sim, ms_sim_time(sim))) != MS_OK)
         return st;
     /* the SPH part smoothed for display, when it was up-sampled (eq. 20) */
     int vnx = 0, vny = 0;
@@ -244,7 +245,8 @@ ms_status ms_renderer_draw_scene_field(ms_renderer *r, const ms_scene *sc, const
         (st = ms_check_int_range(PART, "grid nx", g->nx, 2, 16384)) != MS_OK ||
         (st = ms_check_int_range(PART, "grid ny", g->ny, 2, 16384)) != MS_OK)
         return st;
-    if ((st = scene_discs(r, sc, NULL, 0, time, h, g, NULL)) != MS_OK)
+    if ((st = scene_discs(r, sc, NULL, 0, time, h, g, NULL)) != MS_OK ||
+        (st = ms_render_objects_update(r, sc, NULL, time)) != MS_OK)
         return st;
     return ms_renderer_draw_field(r, h, g, time);
 }

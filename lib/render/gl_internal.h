@@ -116,6 +116,7 @@ struct ms_gl {
     int pool_apron_count; /* the same with the apron under water (gl_pool.c) */
     GLuint discs_vbo;     /* the floating discs (ms_renderer_set_discs) */
     int discs_count;      /* their vertices */
+    int glass_first;      /* discs_vbo from here on: the container, blended (objects.c) */
     GLuint mesh_vbo, mesh_ibo;
     int mesh_nx, mesh_ny; /* the grid the index buffer is for */
     float *vertices;      /* mesh vertices, CPU side */

@@ -179,6 +179,9 @@ ms_status ms_gl_pool_create(ms_renderer *r)
     return ms_gl_check("making the pool");
 }
 
+/* How much of the glass's own lit colour covers what is behind it. */
+#define GLASS_ALPHA 0.3f
+
 /* Vertices of the boat's hull (gl_pool.c's triangles) */
 #define HULL_POINTS 7
 #define HULL_VERTICES (HULL_POINTS * 3 + HULL_POINTS * 6)
@@ -266,11 +269,13 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
     ms_gl *gl = r->gl;
     r->discs_changed = 0;
     gl->discs_count = 0;
-    if (r->ndiscs == 0 && !r->has_boat)
+    gl->glass_first = 0;
+    if (r->ndiscs == 0 && !r->has_boat && r->object_nverts == 0)
         return MS_OK;
     enum { SEGMENTS = 10 };
     const size_t per = 3 * (size_t)MS_MAX((int)SEGMENTS, LEAF_SEGMENTS);
-    const size_t verts = (size_t)r->ndiscs * per + (r->has_boat ? HULL_VERTICES : 0);
+    const size_t verts = (size_t)r->ndiscs * per + (r->has_boat ? HULL_VERTICES : 0) +
+                         (size_t)r->object_nverts;
     float *v = ms_alloc_array(verts, MS_POOL_STRIDE * sizeof(float));
     if (!v)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d discs", r->ndiscs);
@@ -298,6 +303,12 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
     }
     if (r->has_boat)
         hull(&b, r);
+    for (int i = 0; i < r->object_nverts; ++i) { /* the obstacles (objects.c) */
+        const float *o = r->object_verts + MS_RENDER_OBJECT_STRIDE * (size_t)i;
+        if (i == r->object_glass)
+            gl->glass_first = b.n;
+        vertex(&b, o, o + 3, o + 6);
+    }
     if (!gl->discs_vbo)
         glGenBuffers(1, &gl->discs_vbo);
     glBindBuffer(GL_ARRAY_BUFFER, gl->discs_vbo);
@@ -306,6 +317,8 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     ms_free(v);
     gl->discs_count = b.n;
+    if (r->object_glass >= r->object_nverts)
+        gl->glass_first = b.n;
     return MS_OK;
 }
 
@@ -347,8 +360,20 @@ void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(-1.0f, -4.0f);
         glDisable(GL_CULL_FACE);
-        glDrawArrays(GL_TRIANGLES, 0, gl->discs_count);
+        glDrawArrays(GL_TRIANGLES, 0, gl->glass_first);
         glDisable(GL_POLYGON_OFFSET_FILL);
+        if (gl->discs_count > gl->glass_first) {
+            /* the glass: a see-through tint over what is behind it (the
+             * water inside included, drawn before), writing no depth; its
+             * walls seen edge-on stack up and show its outline */
+            glEnable(GL_BLEND);
+            glBlendColor(0, 0, 0, GLASS_ALPHA);
+            glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+            glDepthMask(GL_FALSE);
+            glDrawArrays(GL_TRIANGLES, gl->glass_first, gl->discs_count - gl->glass_first);
+            glDepthMask(GL_TRUE);
+            glDisable(GL_BLEND);
+        }
     }
     glDisableClientState(GL_COLOR_ARRAY);
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);

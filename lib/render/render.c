@@ -329,6 +329,7 @@ void ms_renderer_destroy(ms_renderer *r)
 #endif
     ms_shader_instance_destroy(&r->shader);
     ms_caustics_free(&r->caustics);
+    ms_render_objects_free(r);
     ms_free(r->discs);
     ms_free(r->display);
     ms_free(r->pixels);

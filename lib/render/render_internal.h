@@ -121,6 +121,18 @@ ms_status ms_png_write_rgba(const char *path, const unsigned char *rgba, int w, 
 
 typedef struct ms_gl ms_gl; /* the GL side (gl_*.c) */
 
+/* An obstacle or the container drawn as a mesh (objects.c). */
+typedef struct ms_render_object {
+    const struct ms_scene_shape *spec; /* the scene's, not owned */
+    ms_shape *shape;        /* the renderer's own instance, placed each frame */
+    float *local;           /* nverts * 6: position, normal in the shape's frame */
+    int nverts;             /* 0: not drawn (unbounded) */
+    float color[3];         /* linear RGB */
+} ms_render_object;
+
+/* World vertices of the objects: position, normal, colour. */
+#define MS_RENDER_OBJECT_STRIDE 9
+
 struct ms_renderer {
     ms_renderer_desc desc;  /* checked; strings below are owned copies */
     char *shader_name, *shader_params, *cubemap_path, *backend_name;
@@ -139,6 +151,12 @@ struct ms_renderer {
     float boat_pos[3];      /* m, world: its centre at the water line */
     float boat_heading[2];  /* unit, x-y: where its bow points */
     float boat_radius;      /* m: half its length */
+    const struct ms_scene *object_scene; /* the scene objects were meshed for */
+    ms_render_object *objects;
+    int nobjects;
+    float *object_verts;    /* object_nverts * MS_RENDER_OBJECT_STRIDE, world */
+    int object_nverts;
+    int object_glass;       /* object_verts from here on are the container's: see-through */
     float *display;         /* the field drawn by ms_renderer_draw (draw_sim.c) and scratch */
     size_t display_cap;     /* floats */
     unsigned char *pixels;  /* width * height * 4, top row first */
@@ -147,6 +165,13 @@ struct ms_renderer {
     ms_gl *gl;
     int in_context;         /* 1: the caller's GL context (context_current.c) */
 };
+
+/* objects.c: the obstacles and container of scene sc (NULL: none) posed
+ * at time t as sim has them (NULL: as the scene has them) into
+ * object_verts; meshed when sc is new. */
+ms_status ms_render_objects_update(ms_renderer *r, const struct ms_scene *sc,
+                                   const ms_sim *sim, double t);
+void ms_render_objects_free(ms_renderer *r);
 
 #if MS_HAVE_GL
 /* gl_renderer.c: make the GL side for r (desc checked, shader and passes
