@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "core/struct_sizes.h"
 #include "render/render_internal.h"
 #include "scene/scene_internal.h"

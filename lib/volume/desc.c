@@ -2,7 +2,7 @@
  * refusal names the key, the value and the bound it broke. */
 #include <math.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 ms_volume_desc ms_volume_desc_default(void)
 {
