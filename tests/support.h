@@ -28,6 +28,9 @@ void ms_test_skip(const char *file, int line, const char *why);
 int ms_test_tmp_dir(char *buf, size_t size, const char *prefix);
 void ms_test_remove_tree(const char *dir);
 char *ms_test_slurp(const char *path);
+/* The `modesplit` tool of the build under test: $MS_TEST_BUILD/bin/modesplit
+ * (`make check` sets it), else build/bin/modesplit. */
+const char *ms_test_tool_path(void);
 
 /* h5dump (HDF5's own reader, independent of ours) reads the whole file:
  * 1 yes, 0 no, -1 when h5dump is not installed. MS_ASSERT_H5DUMP_READS

@@ -59,6 +59,14 @@ char *ms_test_slurp(const char *path)
     return s;
 }
 
+const char *ms_test_tool_path(void)
+{
+    static char p[512];
+    const char *b = getenv("MS_TEST_BUILD");
+    snprintf(p, sizeof p, "%s/bin/modesplit", b && b[0] ? b : "build");
+    return p;
+}
+
 int ms_test_h5dump(const char *path)
 {
     if (system("command -v h5dump > /dev/null 2>&1") != 0)

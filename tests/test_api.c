@@ -17,7 +17,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/modesplit.h"
 #include "modesplit/plugin.h"
 #include "render/render_internal.h"

@@ -7,37 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/modesplit.h"
 #include "render/render_internal.h"
 #include "support.h"
+#include "support_render.h"
 
 #define N 64 /* field cells per side */
-
-static float *field(int n, float level)
-{
-    float *h = malloc(sizeof *h * (size_t)n * (size_t)n);
-    ck_assert_ptr_nonnull(h);
-    for (int i = 0; i < n * n; ++i)
-        h[i] = level;
-    return h;
-}
-
-static ms_grid grid(int n)
-{
-    ms_grid g = {n, n, 1.0f / (float)n, 1.0f / (float)n, {0, 0}};
-    return g;
-}
-
-/* A Gaussian bump of amplitude a (m) and width sigma (m) at (x, y). */
-static void add_bump(float *h, int n, float x, float y, float a, float sigma)
-{
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            float dx = ((float)i + 0.5f) / (float)n - x, dy = ((float)j + 0.5f) / (float)n - y;
-            h[j * n + i] += a * expf(-(dx * dx + dy * dy) / (2 * sigma * sigma));
-        }
-}
 
 /* ---- the caustics light map (CPU: no GL needed) ------------------------- */
 

@@ -6,7 +6,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/modesplit.h"
 #include "support.h"
 

@@ -29,33 +29,13 @@ static char tmp_dir[256];
 
 static void make_tmp_dir(void)
 {
-    const char *base = getenv("TMPDIR");
-    snprintf(tmp_dir, sizeof tmp_dir, "%s/ms_io_XXXXXX", base && base[0] ? base : "/tmp");
-    ck_assert_ptr_nonnull(mkdtemp(tmp_dir));
+    ck_assert_int_eq(ms_test_tmp_dir(tmp_dir, sizeof tmp_dir, "ms_io"), 0);
 }
 
 /* The directory and what is in it (the legacy sidecar's run.xdmf2.d too). */
-static void remove_tree(const char *dir)
-{
-    DIR *d = opendir(dir);
-    if (!d)
-        return;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
-            continue;
-        char p[512];
-        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
-        if (remove(p) != 0)
-            remove_tree(p);
-    }
-    closedir(d);
-    rmdir(dir);
-}
-
 static void remove_tmp_dir(void)
 {
-    remove_tree(tmp_dir);
+    ms_test_remove_tree(tmp_dir);
 }
 
 static char *tmp_path(const char *name)
@@ -65,21 +45,6 @@ static char *tmp_path(const char *name)
     k = (k + 1) % 4;
     snprintf(p[k], sizeof p[k], "%s/%s", tmp_dir, name);
     return p[k];
-}
-
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = '\0';
-    fclose(f);
-    return s;
 }
 
 static int count_of(const char *hay, const char *needle)
@@ -321,8 +286,8 @@ START_TEST(only_the_fields_asked_for_are_written)
     MS_ASSERT_REFUSED(ms_reader_read_field(r, MS_FIELD_COMBINED, 0, buf, 64),
                       MS_ERR_INVALID_ARGUMENT, "no field combined");
     ms_reader_close(r);
-    char *x = slurp(tmp_path("v.xmf"));
-    ck_assert_ptr_nonnull(x);
+    char *x = ms_test_slurp(tmp_path("v.xmf"));
+    ck_assert_msg(x[0], "missing or empty");
     ck_assert_int_eq(count_of(x, "/fields/combined"), 0);
     ck_assert_int_eq(count_of(x, "Polyvertex"), 0);
     ck_assert_int_eq(count_of(x, "/fields/volume"), 3);
@@ -367,20 +332,20 @@ START_TEST(xdmf_lists_every_frame_with_z_y_x_axis_order)
     ck_assert_str_eq(ms_writer_xdmf_legacy_path(w), tmp_path("a b&c.xdmf2"));
     /* no frame yet: no empty temporal collection (it crashes the legacy
      * reader); the legacy file lists the grids without data */
-    char *x0 = slurp(tmp_path("a b&c.xmf"));
+    char *x0 = ms_test_slurp(tmp_path("a b&c.xmf"));
     ck_assert_ptr_nonnull(strstr(x0, "</Xdmf>\n"));
     ck_assert_int_eq(count_of(x0, "Temporal"), 0);
     free(x0);
-    x0 = slurp(tmp_path("a b&c.xdmf2"));
+    x0 = ms_test_slurp(tmp_path("a b&c.xdmf2"));
     ck_assert_int_eq(count_of(x0, "Temporal"), 0);
     ck_assert_int_eq(count_of(x0, "3DCoRectMesh"), 2);
     ck_assert_int_eq(count_of(x0, "<xi:include"), 0);
     free(x0);
     write_frames(w, &l, 0, 5);
     /* valid after every frame, before close */
-    char *x = slurp(tmp_path("a b&c.xmf"));
+    char *x = ms_test_slurp(tmp_path("a b&c.xmf"));
     ck_assert_int_eq(ms_writer_close(w), MS_OK);
-    char *y = slurp(tmp_path("a b&c.xmf"));
+    char *y = ms_test_slurp(tmp_path("a b&c.xmf"));
     ck_assert_str_eq(x, y);
     free(y);
     size_t len = strlen(x);
@@ -409,12 +374,12 @@ START_TEST(xdmf_lists_every_frame_with_z_y_x_axis_order)
     free(x);
 
     /* the legacy flavour: one temporal file per grid, included by run.xdmf2 */
-    x = slurp(tmp_path("a b&c.xdmf2"));
+    x = ms_test_slurp(tmp_path("a b&c.xdmf2"));
     ck_assert_int_eq(count_of(x, "<xi:include href=\"a b&amp;c.xdmf2.d/"), 3);
     ck_assert_int_eq(count_of(x, "3DCoRectMesh"), 0);
     free(x);
-    x = slurp(tmp_path("a b&c.xdmf2.d/combined.xml"));
-    ck_assert_ptr_nonnull(x);
+    x = ms_test_slurp(tmp_path("a b&c.xdmf2.d/combined.xml"));
+    ck_assert_msg(x[0], "missing or empty");
     ck_assert_int_eq(count_of(x, "CollectionType=\"Temporal\""), 1);
     ck_assert_int_eq(count_of(x, "<Time Value="), 5);
     ck_assert_int_eq(count_of(x, "ItemType=\"HyperSlab\" Dimensions=\"1 23 37\""), 2 * 5);
@@ -422,10 +387,10 @@ START_TEST(xdmf_lists_every_frame_with_z_y_x_axis_order)
     ck_assert_ptr_nonnull(strstr(x, "Dimensions=\"4 23 37\""));
     ck_assert_int_eq(count_of(x, "<Grid"), count_of(x, "</Grid>"));
     free(x);
-    x = slurp(tmp_path("a b&c.xdmf2.d/particles.xml"));
+    x = ms_test_slurp(tmp_path("a b&c.xdmf2.d/particles.xml"));
     ck_assert_int_eq(count_of(x, "<Time Value="), 4); /* frame 0 has none */
     free(x);
-    x = slurp(tmp_path("a b&c.xdmf2.d/volume.xml"));
+    x = ms_test_slurp(tmp_path("a b&c.xdmf2.d/volume.xml"));
     ck_assert_int_eq(count_of(x, "<Grid Name=\"volume\" GridType=\"Uniform\""), 5);
     free(x);
     remove_tmp_dir();
@@ -577,8 +542,8 @@ static void kill_mid_run(long after, int jitter_us)
     ck_assert_int_le(frames, done + 1);
     check_frames(r, &l, frames);
     ms_reader_close(r);
-    char *x = slurp(tmp_path("killed.xmf"));
-    ck_assert_ptr_nonnull(x);
+    char *x = ms_test_slurp(tmp_path("killed.xmf"));
+    ck_assert_msg(x[0], "missing or empty");
     ck_assert_ptr_nonnull(strstr(x, "</Xdmf>\n"));
     ck_assert_int_ge(count_of(x, "<Time Value="), done);
     free(x);
@@ -753,6 +718,7 @@ START_TEST(hdf5_errors_are_never_printed)
     fflush(stderr);
     int saved = dup(2);
     int fd = open(tmp_path("stderr.txt"), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ck_assert_int_ge(fd, 0);
     dup2(fd, 2);
     ms_writer_layout l = test_layout(MS_FIELD_COMBINED);
     ms_writer *w;
@@ -767,7 +733,7 @@ START_TEST(hdf5_errors_are_never_printed)
     dup2(saved, 2);
     close(saved);
     close(fd);
-    char *s = slurp(tmp_path("stderr.txt"));
+    char *s = ms_test_slurp(tmp_path("stderr.txt"));
     ck_assert_str_eq(s, "");
     free(s);
     /* and HDF5's own printing is back to what it was */
@@ -1137,8 +1103,8 @@ START_TEST(append_continues_after_the_last_complete_frame)
     ck_assert_int_eq(ms_reader_open(tmp_path("a.h5"), &r), MS_OK);
     check_frames(r, &l, 11);
     ms_reader_close(r);
-    char *x = slurp(tmp_path("a.xmf"));
-    ck_assert_ptr_nonnull(x);
+    char *x = ms_test_slurp(tmp_path("a.xmf"));
+    ck_assert_msg(x[0], "missing or empty");
     ck_assert_int_eq(count_of(x, "<Time Value="), 11);
     free(x);
     remove_tmp_dir();

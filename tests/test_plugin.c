@@ -10,10 +10,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/modesplit.h"
 #include "modesplit/plugin.h"
-#include "plugin/registry.h"
+#include "plugin/plugin_internal.h"
 #include "support.h"
 
 /* The test builds its broken plugins from tests/plugins/bad_plugin.c into

@@ -10,7 +10,7 @@
 
 #include "support.h"
 #include "volume/extract.h"
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 enum { N = 4096 };
 

@@ -19,12 +19,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/modesplit.h"
 #include "modesplit/plugin.h"
 #include "render/render_internal.h"
 #include "scene/scene_internal.h"
 #include "support.h"
+#include "support_render.h"
 
 /* A case that draws needs a GL context backend: in a build without OSMesa
  * and EGL it is recorded as skipped (MS_SKIP), not compiled out. */
@@ -38,31 +39,6 @@
 #define W 128  /* image side */
 
 /* ---- helpers ------------------------------------------------------------ */
-
-static float *field(int n, float level)
-{
-    float *h = malloc(sizeof *h * (size_t)n * (size_t)n);
-    ck_assert_ptr_nonnull(h);
-    for (int i = 0; i < n * n; ++i)
-        h[i] = level;
-    return h;
-}
-
-static ms_grid grid(int n)
-{
-    ms_grid g = {n, n, 1.0f / (float)n, 1.0f / (float)n, {0, 0}};
-    return g;
-}
-
-/* A Gaussian bump of amplitude a (m) and width sigma (m) at (x, y). */
-static void add_bump(float *h, int n, float x, float y, float a, float sigma)
-{
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            float dx = ((float)i + 0.5f) / (float)n - x, dy = ((float)j + 0.5f) / (float)n - y;
-            h[j * n + i] += a * expf(-(dx * dx + dy * dy) / (2 * sigma * sigma));
-        }
-}
 
 /* Looking straight down on the 1 m pool from 1.75 m above the water: the
  * water fills the image, +y up, +x right. */

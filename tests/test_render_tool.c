@@ -24,39 +24,12 @@ static char tmp_dir[256];
 
 static void make_tmp_dir(void)
 {
-    const char *base = getenv("TMPDIR");
-    snprintf(tmp_dir, sizeof tmp_dir, "%s/ms_rtool_XXXXXX", base && base[0] ? base : "/tmp");
-    ck_assert_ptr_nonnull(mkdtemp(tmp_dir));
+    ck_assert_int_eq(ms_test_tmp_dir(tmp_dir, sizeof tmp_dir, "ms_rtool"), 0);
 }
 
 static void remove_tmp_dir(void)
 {
-    char cmd[512];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp_dir);
-    ck_assert_int_eq(system(cmd), 0);
-}
-
-static const char *tool_path(void)
-{
-    static char p[512];
-    const char *b = getenv("MS_TEST_BUILD");
-    snprintf(p, sizeof p, "%s/bin/modesplit", b && b[0] ? b : "build");
-    return p;
-}
-
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return strdup("");
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = '\0';
-    fclose(f);
-    return s;
+    ms_test_remove_tree(tmp_dir);
 }
 
 typedef struct result {
@@ -69,7 +42,7 @@ static result run_tool(const char *const *args)
 {
     const char *argv[32];
     int n = 0;
-    argv[n++] = tool_path();
+    argv[n++] = ms_test_tool_path();
     for (int i = 0; args[i] && n < 31; ++i)
         argv[n++] = args[i];
     argv[n] = NULL;
@@ -87,7 +60,7 @@ static result run_tool(const char *const *args)
     }
     int status = 0;
     waitpid(pid, &status, 0);
-    result r = {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err)};
+    result r = {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ms_test_slurp(err)};
     return r;
 }
 

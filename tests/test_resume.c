@@ -31,27 +31,7 @@ static char tmp_dir[256];
 
 static void make_tmp_dir(void)
 {
-    const char *base = getenv("TMPDIR");
-    snprintf(tmp_dir, sizeof tmp_dir, "%s/ms_resume_XXXXXX", base && base[0] ? base : "/tmp");
-    ck_assert_ptr_nonnull(mkdtemp(tmp_dir));
-}
-
-static void remove_tree(const char *dir)
-{
-    DIR *d = opendir(dir);
-    if (!d)
-        return;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
-            continue;
-        char p[512];
-        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
-        if (remove(p) != 0)
-            remove_tree(p);
-    }
-    closedir(d);
-    rmdir(dir);
+    ck_assert_int_eq(ms_test_tmp_dir(tmp_dir, sizeof tmp_dir, "ms_resume"), 0);
 }
 
 static const char *tmp_path(const char *name)
@@ -67,9 +47,7 @@ static const char *tmp_path(const char *name)
  * output into tmp/log.txt; returns the pid. */
 static pid_t start_tool(const char *const *args)
 {
-    const char *b = getenv("MS_TEST_BUILD");
-    char prog[512];
-    snprintf(prog, sizeof prog, "%s/bin/modesplit", b && b[0] ? b : "build");
+    const char *prog = ms_test_tool_path();
     const char *argv[32];
     int n = 0;
     argv[n++] = prog;
@@ -258,7 +236,7 @@ static void kill_and_resume(const char *threads, const char *resume_threads)
         ++times;
     ck_assert_int_eq(times, FRAMES);
     free(x);
-    remove_tree(tmp_dir);
+    ms_test_remove_tree(tmp_dir);
 }
 
 START_TEST(sigkill_then_resume_is_the_unbroken_run_1_thread)
@@ -296,7 +274,7 @@ START_TEST(resume_twice_with_output_every_3)
                         "--quiet", "--resume", part, NULL};
     ck_assert_msg(run_tool(r2) == 0, "%s", log_text);
     assert_same_run(full, part, 8); /* frames 0, 3, ..., 21 */
-    remove_tree(tmp_dir);
+    ms_test_remove_tree(tmp_dir);
 }
 END_TEST
 
@@ -355,7 +333,7 @@ START_TEST(resume_drops_a_frame_cut_by_the_kill)
     const char *r[] = {"run", SCENE, "--frames", FRAMES_ARG, "--quiet", "--resume", part, NULL};
     ck_assert_msg(run_tool(r) == 0, "%s", log_text);
     assert_same_run(tmp_path("full.h5"), part, FRAMES);
-    remove_tree(tmp_dir);
+    ms_test_remove_tree(tmp_dir);
 }
 END_TEST
 
@@ -373,7 +351,7 @@ START_TEST(resume_a_run_of_no_frame)
     const char *r[] = {"run", SCENE, "--frames", "6", "--quiet", "--resume", part, NULL};
     ck_assert_msg(run_tool(r) == 0, "%s", log_text);
     assert_same_run(full, part, 6);
-    remove_tree(tmp_dir);
+    ms_test_remove_tree(tmp_dir);
 }
 END_TEST
 
@@ -410,7 +388,7 @@ START_TEST(resume_refuses_another_scene_and_leaves_the_file)
                   "a refused resume changed the file");
     free(before);
     free(after);
-    remove_tree(tmp_dir);
+    ms_test_remove_tree(tmp_dir);
 }
 END_TEST
 
@@ -438,7 +416,7 @@ START_TEST(resume_refuses_a_file_this_build_does_not_reproduce)
     ck_assert_int_eq(run_tool(r), 1);
     ck_assert_msg(strstr(log_text, "frame 3's volume field differs") != NULL, "%s", log_text);
     ck_assert_int_eq(frames_now(part), 4);
-    remove_tree(tmp_dir);
+    ms_test_remove_tree(tmp_dir);
 }
 END_TEST
 

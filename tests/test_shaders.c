@@ -9,9 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/plugin.h"
-#include "plugin/registry.h"
+#include "plugin/plugin_internal.h"
 #include "support.h"
 
 #if defined(__SANITIZE_ADDRESS__)

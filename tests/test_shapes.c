@@ -9,9 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/modesplit.h"
-#include "shape/shape.h"
+#include "shape/shape_internal.h"
 #include "support.h"
 
 #define PI 3.14159265358979323846

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/modesplit.h"
 #include "sim/sim_internal.h"
 #include "support.h"

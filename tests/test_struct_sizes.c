@@ -8,7 +8,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "core/struct_sizes.h"
 #include "modesplit/modesplit.h"
 #include "modesplit/plugin.h"

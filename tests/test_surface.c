@@ -10,7 +10,7 @@
 
 #include "modesplit/modesplit.h"
 #include "support.h"
-#include "surface/surface_impl.h"
+#include "surface/surface_internal.h"
 
 static const double PI = 3.14159265358979323846;
 

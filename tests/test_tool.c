@@ -61,19 +61,11 @@ static void remove_tmp_dir(void)
     npaths = 0;
 }
 
-static const char *tool_path(void)
-{
-    static char p[512];
-    const char *b = getenv("MS_TEST_BUILD");
-    snprintf(p, sizeof p, "%s/bin/modesplit", b && b[0] ? b : "build");
-    return p;
-}
-
 /* The directory of the tool (BUILD/bin). */
 static const char *tool_dir(void)
 {
     static char d[512];
-    snprintf(d, sizeof d, "%s", tool_path());
+    snprintf(d, sizeof d, "%s", ms_test_tool_path());
     char *slash = strrchr(d, '/');
     if (slash)
         *slash = '\0';
@@ -99,7 +91,7 @@ static pid_t spawn_tool(const char *const *args, const char *out, const char *er
 {
     const char *argv[32];
     int n = 0;
-    argv[n++] = tool_path();
+    argv[n++] = ms_test_tool_path();
     for (int i = 0; args[i] && n < 31; ++i)
         argv[n++] = args[i];
     argv[n] = NULL;
@@ -733,7 +725,7 @@ static char *run_on_terminal(int cols)
         dup2(s, 2);
         dup2(o, 1);
         unsetenv("COLUMNS");
-        execl(tool_path(), tool_path(), "run", SMALL_SCENE, "--frames", "8", "--no-out",
+        execl(ms_test_tool_path(), ms_test_tool_path(), "run", SMALL_SCENE, "--frames", "8", "--no-out",
               (char *)NULL);
         _exit(127);
     }
@@ -803,7 +795,7 @@ START_TEST(installed_tool_does_not_search_the_build_tree)
     /* the tool and the shared library it loads ($ORIGIN/../lib) */
     snprintf(cmd, sizeof cmd,
              "mkdir -p '%s' '%s/../lib' && cp '%s' '%s' && cp -L '%s/../lib/libmodesplit.so.0' "
-             "'%s/../lib/'", bin, bin, tool_path(), exe, tool_dir(), bin);
+             "'%s/../lib/'", bin, bin, ms_test_tool_path(), exe, tool_dir(), bin);
     ck_assert_int_eq(system(cmd), 0);
     char out[700], err[700];
     snprintf(out, sizeof out, "%s/out.txt", tmp_dir);

@@ -30,24 +30,12 @@ static char tmp_dir[256];
 
 static void make_tmp_dir(void)
 {
-    const char *base = getenv("TMPDIR");
-    snprintf(tmp_dir, sizeof tmp_dir, "%s/ms_view_XXXXXX", base && base[0] ? base : "/tmp");
-    ck_assert_ptr_nonnull(mkdtemp(tmp_dir));
+    ck_assert_int_eq(ms_test_tmp_dir(tmp_dir, sizeof tmp_dir, "ms_view"), 0);
 }
 
 static void remove_tmp_dir(void)
 {
-    char cmd[400];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmp_dir);
-    ck_assert_int_eq(system(cmd), 0);
-}
-
-static const char *tool_path(void)
-{
-    static char p[512];
-    const char *b = getenv("MS_TEST_BUILD");
-    snprintf(p, sizeof p, "%s/bin/modesplit", b && b[0] ? b : "build");
-    return p;
+    ms_test_remove_tree(tmp_dir);
 }
 
 static int have(const char *prog)
@@ -57,27 +45,12 @@ static int have(const char *prog)
     return system(cmd) == 0;
 }
 
-static char *slurp(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return strdup("");
-    fseek(f, 0, SEEK_END);
-    long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *s = malloc((size_t)n + 1);
-    size_t got = fread(s, 1, (size_t)n, f);
-    s[got] = '\0';
-    fclose(f);
-    return s;
-}
-
 /* Was the tool built with SDL2? (`view` without it says "without SDL2".) */
 static int built_with_sdl(void)
 {
     char cmd[800];
     snprintf(cmd, sizeof cmd, "DISPLAY= WAYLAND_DISPLAY= %s view %s 2>&1 | grep -q 'without SDL2'",
-             tool_path(), POOL);
+             ms_test_tool_path(), POOL);
     return system(cmd) != 0;
 }
 
@@ -88,7 +61,7 @@ static int run_view(const char *name, const char *args)
     char cmd[4096];
     snprintf(cmd, sizeof cmd,
              "xvfb-run -a -s '-screen 0 640x480x24' %s view %s > '%s/%s.out' 2> '%s/%s.err'",
-             tool_path(), args, tmp_dir, name, tmp_dir, name);
+             ms_test_tool_path(), args, tmp_dir, name, tmp_dir, name);
     int st = system(cmd);
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
@@ -474,12 +447,12 @@ START_TEST(without_a_display_it_says_so_and_exits_2)
     make_tmp_dir();
     char cmd[2048];
     snprintf(cmd, sizeof cmd, "env -u DISPLAY -u WAYLAND_DISPLAY %s view %s > %s/o 2> %s/e",
-             tool_path(), POOL, tmp_dir, tmp_dir);
+             ms_test_tool_path(), POOL, tmp_dir, tmp_dir);
     int st = system(cmd);
     ck_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2);
     char p[512];
     snprintf(p, sizeof p, "%s/e", tmp_dir);
-    char *err = slurp(p);
+    char *err = ms_test_slurp(p);
     ck_assert_msg(strstr(err, "no display") != NULL, "%s", err);
     ck_assert_int_eq((int)(strchr(err, '\n') - err + 1), (int)strlen(err)); /* one line */
     free(err);
@@ -643,7 +616,7 @@ START_TEST(keys_toggle_what_they_say_and_escape_exits_0)
     ck_assert_int_eq(run_view("keys", args), 0);
     char p[512];
     snprintf(p, sizeof p, "%s/keys.out", tmp_dir);
-    char *out = slurp(p);
+    char *out = ms_test_slurp(p);
     ck_assert_msg(strstr(out, "view: rain on"), "%s", out);
     ck_assert_msg(strstr(out, "view: caustics on"), "%s", out); /* the scene names none: off */
     ck_assert_msg(strstr(out, "view: shader milk"), "%s", out);
@@ -683,7 +656,7 @@ START_TEST(closing_resizing_and_a_lost_context_are_handled)
     ck_assert_int_eq(run_view("life", args), 0);
     char p[512];
     snprintf(p, sizeof p, "%s/life.out", tmp_dir);
-    char *out = slurp(p);
+    char *out = ms_test_slurp(p);
     ck_assert_msg(strstr(out, "context was lost"), "%s", out);
     ck_assert_msg(strstr(out, "view: 8 frames stepped"), "%s", out);
     free(out);
@@ -708,11 +681,11 @@ START_TEST(real_x_events_drag_the_water_in_a_screenshot_and_replay_exactly)
     char cmd[2048];
     snprintf(cmd, sizeof cmd, "xvfb-run -a -s '-screen 0 400x400x24' sh tests/view_x11.sh '%s' "
                               "'%s' > '%s/x11.log' 2>&1",
-             tool_path(), tmp_dir, tmp_dir);
+             ms_test_tool_path(), tmp_dir, tmp_dir);
     int st = system(cmd);
     char p[512];
     snprintf(p, sizeof p, "%s/x11.log", tmp_dir);
-    char *log = slurp(p);
+    char *log = ms_test_slurp(p);
     ck_assert_msg(WIFEXITED(st) && WEXITSTATUS(st) == 0, "tests/view_x11.sh: %s", log);
     double still = -1, dragged = -1;
     const char *s = strstr(log, "still ");

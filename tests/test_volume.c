@@ -22,7 +22,7 @@
 #include "modesplit/modesplit.h"
 #include "support.h"
 #include "support_volume.h"
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 /* Kinetic plus gravitational energy (J), potential from the domain floor. */
 static double mechanical_energy(const ms_volume *v, const ms_volume_desc *d)

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 
 #define HEADER 64
 #define ALIGN 64

@@ -1,7 +1,7 @@
 /* A monotonic clock for the per-stage statistics. Results never depend on it. */
 #include <time.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 
 double ms_now(void)
 {

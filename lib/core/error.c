@@ -3,7 +3,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 
 static _Thread_local char last_error[1024];
 

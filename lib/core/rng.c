@@ -1,7 +1,7 @@
 /* xoshiro128** (Blackman & Vigna), seeded through splitmix64. The state
  * lives in the handle that draws from it, so runs are reproducible and
  * handles never share a stream. */
-#include "core/internal.h"
+#include "core/core_internal.h"
 
 static uint64_t splitmix64(uint64_t *x)
 {

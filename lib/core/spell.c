@@ -3,7 +3,7 @@
  * alignment distance), for the sentences of unknown keys and values. */
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 
 /* Names longer than this are never suggested for (nor compared): keys and
  * enum values are short, and the rows below live on the stack. */

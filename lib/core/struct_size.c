@@ -9,7 +9,7 @@
  * ms_struct_out: only the caller's .size bytes. */
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 
 /* The sizes a caller's compiler can give a struct that ends at `end`: the
  * end itself plus up to 7 bytes of tail padding (alignment <= 8), in steps

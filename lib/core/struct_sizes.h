@@ -5,7 +5,7 @@
 #ifndef MS_CORE_STRUCT_SIZES_H
 #define MS_CORE_STRUCT_SIZES_H
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/modesplit.h"
 #include "modesplit/plugin.h"
 

@@ -1,5 +1,5 @@
 /* The library version, from the one definition in core.h. */
-#include "core/internal.h"
+#include "core/core_internal.h"
 
 const char *ms_version(void)
 {

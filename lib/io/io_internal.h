@@ -12,7 +12,7 @@
 #include <hdf5.h>
 #include <stdint.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/io.h"
 
 /* The three height fields, in MS_FIELD_* bit order (bit = 1 << slot). */

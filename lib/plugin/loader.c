@@ -11,8 +11,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/internal.h"
-#include "plugin/registry.h"
+#include "core/core_internal.h"
+#include "plugin/plugin_internal.h"
 
 /* The smallest structs a plugin of ABI 1.0 may hand over: everything up to
  * and including the last field of 1.0. */

@@ -12,9 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "core/struct_sizes.h"
-#include "plugin/registry.h"
+#include "plugin/plugin_internal.h"
 
 static pthread_once_t scan_once = PTHREAD_ONCE_INIT;
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;

@@ -10,8 +10,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/internal.h"
-#include "plugin/registry.h"
+#include "core/core_internal.h"
+#include "plugin/plugin_internal.h"
 
 typedef struct buf {
     char *s;

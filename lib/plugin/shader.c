@@ -4,8 +4,8 @@
  * caustics). */
 #include <string.h>
 
-#include "core/internal.h"
-#include "plugin/registry.h"
+#include "core/core_internal.h"
+#include "plugin/plugin_internal.h"
 
 ms_status ms_shader_instance_create(const char *name, const char *params_json,
                                     ms_shader_instance *out)

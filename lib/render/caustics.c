@@ -22,7 +22,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/render_internal.h"
 
 #define MAX_RAYS_PER_TEXEL 8 /* per axis */

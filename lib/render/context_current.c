@@ -18,7 +18,7 @@
  * it is not destroyed with it: ms_renderer_destroy deletes the GL objects
  * the renderer made, so call it with the context still current (after the
  * context is gone, e.g. lost, the deletions do nothing). */
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/render_internal.h"
 
 #if MS_HAVE_GL

@@ -10,7 +10,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/render_internal.h"
 
 #define MAX_FACE 4096 /* texels per side */

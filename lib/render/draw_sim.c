@@ -12,7 +12,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/sim.h"
 #include "render/render_internal.h"
 #include "scene/scene_internal.h"

@@ -16,7 +16,7 @@
 #include <pthread.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/gl_internal.h"
 
 typedef struct egl_impl {

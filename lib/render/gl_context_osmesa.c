@@ -9,7 +9,7 @@
 #include <GL/osmesa.h>
 #include <pthread.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/gl_internal.h"
 
 typedef struct osmesa_impl {

@@ -19,7 +19,7 @@
  * brings the sun through the caustics light map. */
 #include <math.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/gl_internal.h"
 
 /* Face f looks along F; texel (s, t) along F + s R + t U (OpenGL's cube

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/gl_internal.h"
 
 #ifndef BAND_VERTICES

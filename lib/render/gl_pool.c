@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/gl_internal.h"
 
 #define AMBIENT 0.4f      /* the sky's share of the light on the pool */

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/gl_internal.h"
 
 /* The log without its trailing newlines, at most n - 1 bytes. */

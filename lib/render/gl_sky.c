@@ -1,7 +1,7 @@
 /* The sky: the environment cubemap as a texture (sRGB, mipmapped,
  * seamless), and the background drawn from it behind everything, last,
  * where nothing else was drawn (so llvmpipe shades no hidden sky). */
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/gl_internal.h"
 
 static const char sky_vs[] =

@@ -7,7 +7,7 @@
  * field where the image does not need its vertices. */
 #include <math.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/render_internal.h"
 
 long ms_field_nonfinite(const float *h, size_t n)

@@ -15,9 +15,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/render_internal.h"
-#include "shape/shape.h"
+#include "shape/shape_internal.h"
 #include "sim/sim_internal.h"
 
 /* Vertices per side of the larger extent: a glass of 14 cm gets 2.3 mm

@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/render_internal.h"
 
 ms_status ms_png_write_rgba(const char *path, const unsigned char *rgba, int w, int h)

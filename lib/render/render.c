@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "core/struct_sizes.h"
 #include "render/render_internal.h"
 #include "scene/scene_internal.h"
@@ -206,10 +206,6 @@ static ms_status check_desc(const ms_renderer_desc *d)
 }
 
 #if MS_HAVE_GL
-#define dup_or_null ms_strdup /* lib/core: NULL stays NULL */
-#endif
-
-#if MS_HAVE_GL
 /* Texels per side of the builtin sky's faces: about half the image's
  * longer side (a face spans 90 degrees, the clouds are soft), a power of
  * two in [32, 512]. */
@@ -243,10 +239,10 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
     if (!r)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the renderer");
     r->desc = *d;
-    r->shader_name = dup_or_null(d->shader);
-    r->shader_params = dup_or_null(d->shader_params);
-    r->cubemap_path = dup_or_null(d->cubemap);
-    r->backend_name = dup_or_null(d->backend ? d->backend : "auto");
+    r->shader_name = ms_strdup(d->shader);
+    r->shader_params = ms_strdup(d->shader_params);
+    r->cubemap_path = ms_strdup(d->cubemap);
+    r->backend_name = ms_strdup(d->backend ? d->backend : "auto");
     r->pixels = ms_alloc_array((size_t)d->width * (size_t)d->height, 4);
     if (!r->shader_name || (d->shader_params && !r->shader_params) || !r->cubemap_path ||
         !r->backend_name || !r->pixels) {

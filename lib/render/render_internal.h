@@ -21,7 +21,7 @@
 
 #include "modesplit/plugin.h"
 #include "modesplit/render.h"
-#include "plugin/registry.h"
+#include "plugin/plugin_internal.h"
 
 /* ---- cubemaps (CPU) ---------------------------------------------------- */
 

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/render_internal.h"
 
 void ms_cubemap_free(ms_cubemap *c)

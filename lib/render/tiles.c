@@ -3,7 +3,7 @@
  * multiplied by the tile colour in the pool's shader. */
 #include <math.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "render/render_internal.h"
 
 void ms_tile_texture(int size, unsigned char *texels)

@@ -5,7 +5,7 @@
  */
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "scene/reader.h"
 #include "scene/scene_internal.h"
 #include "scene/sections.h"

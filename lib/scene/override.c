@@ -16,7 +16,7 @@
 
 #include <jansson.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "scene/override.h"
 
 #define MAX_KEY 256

@@ -2,7 +2,7 @@
  * the dragging pointer (Fig. 1), moving obstacles and the moved glass. */
 #include <string.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "scene/scene_internal.h"
 
 void ms_scene_motion_eval(const ms_scene_motion *p, double t, float *pos, float *vel)

@@ -5,7 +5,7 @@
 
 #include <jansson.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "scene/locate.h"
 
 #define MS_SCENE_MAX_DEPTH 16

@@ -10,7 +10,7 @@
 
 #include <jansson.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "scene/override.h"
 #include "scene/sections.h"
 

@@ -9,10 +9,10 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/plugin.h"
 #include "modesplit/shape.h"
-#include "plugin/registry.h"
+#include "plugin/plugin_internal.h"
 #include "scene/reader.h"
 #include "scene/scene_internal.h"
 #include "scene/sections.h"

@@ -3,8 +3,8 @@
  * above the shape (the speed map c = sqrt(g depth) over terrain). */
 #include <math.h>
 
-#include "core/internal.h"
-#include "shape/shape.h"
+#include "core/core_internal.h"
+#include "shape/shape_internal.h"
 
 static ms_status check_grid(const char *what, const ms_grid *g, float z, const void *arr)
 {

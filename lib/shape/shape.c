@@ -7,8 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/internal.h"
-#include "shape/shape.h"
+#include "core/core_internal.h"
+#include "shape/shape_internal.h"
 
 ms_status ms_shape_create(const char *kind, const char *params_json, ms_shape **out)
 {

@@ -7,8 +7,6 @@
 #include "sim/sim_internal.h"
 #include "core/struct_sizes.h"
 
-#define TRY MS_TRY /* lib/core */
-
 ms_sim_desc ms_sim_desc_default(void)
 {
     ms_sim_desc d;
@@ -42,8 +40,8 @@ static ms_status check_desc(const ms_sim_desc *d)
     if (!d->volume && !d->surface)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "sim: desc has neither a volume nor a surface; give at least one");
-    TRY(ms_check_int_range("sim", "field_nx", d->field_nx, 0, 4096));
-    TRY(ms_check_int_range("sim", "field_ny", d->field_ny, 0, 4096));
+    MS_TRY(ms_check_int_range("sim", "field_nx", d->field_nx, 0, 4096));
+    MS_TRY(ms_check_int_range("sim", "field_ny", d->field_ny, 0, 4096));
     if ((d->field_nx == 0) != (d->field_ny == 0))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "sim: field_nx %d and field_ny %d must both be 0 (derived) or both set",
@@ -51,7 +49,7 @@ static ms_status check_desc(const ms_sim_desc *d)
     if (d->field_nx == 1 || d->field_ny == 1)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: field %d x %d must be at least 2 x 2",
                        d->field_nx, d->field_ny);
-    TRY(ms_check_int_range("sim", "surface_substeps", d->surface_substeps, 0, 100000));
+    MS_TRY(ms_check_int_range("sim", "surface_substeps", d->surface_substeps, 0, 100000));
     /* [0, 1]: the waves are displaced by at most the SPH surface's own
      * change; a gain above 1 amplified it into waves of tens of metres in a
      * 0.5 m pool, and 1 (with volume_from_surface 1) still grew fig10's
@@ -60,11 +58,11 @@ static ms_status check_desc(const ms_sim_desc *d)
      * simulated seconds with volume_from_surface at 1 (measured), and
      * test_stability's check-long cases hold them within 0.5 m for 10
      * simulated minutes */
-    TRY(ms_check_range("sim", "couple_surface_from_volume", d->couple_surface_from_volume, 0,
-                       0.25, ""));
-    TRY(ms_check_range("sim", "couple_volume_from_surface", d->couple_volume_from_surface, 0, 1,
-                       ""));
-    TRY(ms_check_int_range("sim", "threads", d->threads, 1, 2));
+    MS_TRY(ms_check_range("sim", "couple_surface_from_volume", d->couple_surface_from_volume, 0,
+                          0.25, ""));
+    MS_TRY(ms_check_range("sim", "couple_volume_from_surface", d->couple_volume_from_surface, 0, 1,
+                          ""));
+    MS_TRY(ms_check_int_range("sim", "threads", d->threads, 1, 2));
     if ((d->enqueue_task == NULL) != (d->finish_task == NULL))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "sim: enqueue_task and finish_task must both be set or both be NULL");
@@ -122,7 +120,7 @@ static ms_status alloc_buffers(ms_sim *sim, int floaters)
                                    .dy = sim->sdx,
                                    .origin = {sim->domain_min[0], sim->domain_min[1]}};
         if (sim->volume) {
-            TRY(ms_sim_upsample_init(sim));
+            MS_TRY(ms_sim_upsample_init(sim));
             if (sim->gain_sv > 0) {
                 sim->hprev = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
                 sim->dh = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
@@ -178,19 +176,19 @@ typedef struct descs {
 static ms_status read_descs(const ms_sim_desc *user, descs *out)
 {
     out->sim = ms_sim_desc_default();
-    TRY(ms_struct_in(user, &out->sim,
-                     MS_SIZES_SIM_DESC,
-                     "sim"));
+    MS_TRY(ms_struct_in(user, &out->sim,
+                        MS_SIZES_SIM_DESC,
+                        "sim"));
     if (out->sim.volume) {
         out->volume = ms_volume_desc_default();
-        TRY(ms_struct_in(out->sim.volume, &out->volume,
-                         MS_SIZES_VOLUME_DESC, "volume"));
+        MS_TRY(ms_struct_in(out->sim.volume, &out->volume,
+                            MS_SIZES_VOLUME_DESC, "volume"));
         out->sim.volume = &out->volume;
     }
     if (out->sim.surface) {
         out->surface = ms_surface_desc_default();
-        TRY(ms_struct_in(out->sim.surface, &out->surface,
-                         MS_SIZES_SURFACE_DESC, "surface"));
+        MS_TRY(ms_struct_in(out->sim.surface, &out->surface,
+                            MS_SIZES_SURFACE_DESC, "surface"));
         out->sim.surface = &out->surface;
     }
     return MS_OK;
@@ -199,12 +197,12 @@ static ms_status read_descs(const ms_sim_desc *user, descs *out)
 static ms_status create_common(const ms_sim_desc *user, const float *origin, float level,
                                const ms_scene *sc, ms_sim **out)
 {
-    TRY(ms_check_not_null("sim", "out", out));
+    MS_TRY(ms_check_not_null("sim", "out", out));
     *out = NULL;
     descs ds;
-    TRY(read_descs(user, &ds));
+    MS_TRY(read_descs(user, &ds));
     const ms_sim_desc *d = &ds.sim;
-    TRY(check_desc(d));
+    MS_TRY(check_desc(d));
     ms_sim *sim = ms_alloc(sizeof *sim);
     if (!sim)
         return oom("the sim");
@@ -298,7 +296,7 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
  * yet: there ms_sim_step refuses them on the first call. */
 static ms_status check_scene_frame(const ms_sim *sim, double frame_dt)
 {
-    TRY(ms_sim_check_n_time(sim, frame_dt));
+    MS_TRY(ms_sim_check_n_time(sim, frame_dt));
     if (sim->volume) {
         ms_volume_desc vd = ms_volume_get_desc(sim->volume);
         ms_volume_info in = ms_volume_info_init();
@@ -323,10 +321,10 @@ ms_status ms_sim_create(const ms_sim_desc *d, ms_sim **out)
 
 ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out)
 {
-    TRY(ms_check_not_null("sim", "out", out));
+    MS_TRY(ms_check_not_null("sim", "out", out));
     *out = NULL;
-    TRY(ms_check_not_null("sim", "scene", sc));
-    TRY(ms_check_int_range("sim", "threads", threads, 0, 2));
+    MS_TRY(ms_check_not_null("sim", "scene", sc));
+    MS_TRY(ms_check_int_range("sim", "threads", threads, 0, 2));
     ms_sim_desc d = ms_sim_desc_default();
     ms_volume_desc vd;
     ms_surface_desc sd;
@@ -394,7 +392,7 @@ ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out
     float origin[4] = {sc->domain_min[0], sc->domain_min[1], sc->domain_min[2],
                        sc->domain_max[2]};
     ms_sim *sim;
-    TRY(create_common(&d, origin, sc->level, sc, &sim));
+    MS_TRY(create_common(&d, origin, sc->level, sc, &sim));
     /* the scene knows its frame: what no sub-stepping can make stable at
      * that frame is refused here, at creation (issue 11) */
     ms_status bad = check_scene_frame(sim, sc->frame_dt);

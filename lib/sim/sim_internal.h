@@ -42,7 +42,7 @@
 #include <pthread.h>
 #include <stdatomic.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/shape.h"
 #include "modesplit/sim.h"
 #include "scene/scene_internal.h"

@@ -5,7 +5,7 @@
 
 #include "modesplit/surface.h"
 #include "modesplit/volume.h"
-#include "shape/shape.h"
+#include "shape/shape_internal.h"
 #include "sim/sim_internal.h"
 #include "core/struct_sizes.h"
 

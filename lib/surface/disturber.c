@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "surface/surface_impl.h"
+#include "surface/surface_internal.h"
 #include "core/struct_sizes.h"
 
 #define PART "surface"

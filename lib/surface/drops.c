@@ -3,7 +3,7 @@
  * displacing f(x0, t0)". A drop is a smooth raised-cosine bump, never a
  * one-cell spike (which would excite the grid's shortest, most dispersive
  * waves and show as noise); rain draws drops from the handle's seeded RNG. */
-#include "surface/surface_impl.h"
+#include "surface/surface_internal.h"
 #include "core/struct_sizes.h"
 
 #define PART "surface"

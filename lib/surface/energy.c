@@ -6,7 +6,7 @@
  * the staggered form of 1/2 integral (f_t^2 + c^2 |grad f|^2) that leapfrog
  * conserves exactly (to round-off) on a closed, undamped grid. Summed in
  * double. */
-#include "surface/surface_impl.h"
+#include "surface/surface_internal.h"
 
 /* c_i c_j (f_i^{n+1} - f_j^{n+1}) (f_i^n - f_j^n), with f^n = h - v */
 static double face(const float *c, const float *h, const float *v, size_t i, size_t j)

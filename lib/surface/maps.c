@@ -5,7 +5,7 @@
  * coefficients of the leapfrog step that follow from them. */
 #include <string.h>
 
-#include "surface/surface_impl.h"
+#include "surface/surface_internal.h"
 
 #define PART "surface"
 
@@ -19,7 +19,7 @@ static int sponge_width(const ms_surface *s)
     return MS_CLAMP(n / 16, 3, 16);
 }
 
-/* Ghost speeds carry the boundary condition (see surface_impl.h). */
+/* Ghost speeds carry the boundary condition (see surface_internal.h). */
 static void set_ghost_speeds(ms_surface *s)
 {
     const int nx = s->nx, ny = s->ny;

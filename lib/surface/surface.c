@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "surface/surface_impl.h"
+#include "surface/surface_internal.h"
 #include "core/struct_sizes.h"
 
 #define PART "surface"
@@ -72,7 +72,7 @@ ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out)
     s->desc = *d;
     s->nx = d->nx;
     s->ny = d->ny;
-    /* whole cache lines per row, interior aligned (see surface_impl.h) */
+    /* whole cache lines per row, interior aligned (see surface_internal.h) */
     s->stride = (MS_SURFACE_ORIGIN + d->nx + 2 + 15) & ~15;
     s->plane = (size_t)s->stride * (size_t)(d->ny + 2);
     s->h = ms_alloc_array(s->plane, sizeof(float));

@@ -4,7 +4,7 @@
  *   f_i^{n+1} = f_i^n + delta_i (f_i^n - f_i^{n-1})
  *             + a_i * sum_{j in N(i)} a_j (f_j^n - f_i^n),   a = c dt / dx
  *
- * stored as h = f^n and v = f^n - f^{n-1} (see surface_impl.h):
+ * stored as h = f^n and v = f^n - f^{n-1} (see surface_internal.h):
  *
  *   v <- delta v + (1 + delta)/2 a_i sum_j a_j (h_j - h_i);   h <- h + v
  *
@@ -35,7 +35,7 @@
 #include <xmmintrin.h>
 #endif
 
-#include "surface/surface_impl.h"
+#include "surface/surface_internal.h"
 
 #define PART "surface"
 #define COURANT_MAX 0.7f /* < 1/sqrt(2) = 0.7071 */

@@ -34,8 +34,8 @@
  */
 #include <math.h>
 
-#include "shape/shape.h"
-#include "volume/volume_impl.h"
+#include "shape/shape_internal.h"
+#include "volume/volume_internal.h"
 
 /* eq. 15 field strength in units of A; q = d / r_c */
 static inline float field(float q)

@@ -35,7 +35,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 float ms_volume_pressure(const ms_volume *v, float rho)
 {

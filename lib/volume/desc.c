@@ -2,7 +2,7 @@
  * refusal names the key, the value and the bound it broke. */
 #include <math.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 ms_volume_desc ms_volume_desc_default(void)
 {
@@ -33,8 +33,6 @@ ms_volume_desc ms_volume_desc_default(void)
     return d;
 }
 
-#define CHECK MS_TRY /* lib/core */
-
 ms_status ms_volume_desc_check(const ms_volume_desc *d)
 {
     static const char *const axis[3] = {"x", "y", "z"};
@@ -53,8 +51,8 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
                            "volume: domain is empty: %s from %g to %g m needs max > min",
                            axis[k], d->domain_min[k], d->domain_max[k]);
     }
-    CHECK(ms_check_positive(P, "spacing", d->spacing, "m"));
-    CHECK(ms_check_positive(P, "smoothing_length", d->smoothing_length, "m"));
+    MS_TRY(ms_check_positive(P, "spacing", d->spacing, "m"));
+    MS_TRY(ms_check_positive(P, "smoothing_length", d->smoothing_length, "m"));
     if (d->smoothing_length < d->spacing)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "volume: smoothing_length %g m is below spacing %g m; h must be >= "
@@ -81,8 +79,8 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
                        "volume: the domain holds %.3g neighbour cells of h = %g m; at most %ld "
                        "(raise smoothing_length or shrink the domain)",
                        cells, d->smoothing_length, MS_VOLUME_MAX_CELLS);
-    CHECK(ms_check_range(P, "rest_density", d->rest_density, 1e-3, 1e5, "kg/m^3"));
-    CHECK(ms_check_range(P, "viscosity", d->viscosity, 0.0, 1e6, "Pa s"));
+    MS_TRY(ms_check_range(P, "rest_density", d->rest_density, 1e-3, 1e5, "kg/m^3"));
+    MS_TRY(ms_check_range(P, "viscosity", d->viscosity, 0.0, 1e6, "Pa s"));
     for (int k = 0; k < 3; ++k)
         if (!isfinite(d->gravity[k]) || fabsf(d->gravity[k]) > 1000.0f)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
@@ -90,18 +88,18 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
                            d->gravity[k]);
     switch (d->pressure) {
     case MS_PRESSURE_IDEAL_GAS:
-        CHECK(ms_check_positive(P, "gas_constant", d->gas_constant, "m^2/s^2"));
+        MS_TRY(ms_check_positive(P, "gas_constant", d->gas_constant, "m^2/s^2"));
         if (d->gas_constant > 1e8f)
             return ms_check_range(P, "gas_constant", d->gas_constant, 0, 1e8, "m^2/s^2");
         break;
     case MS_PRESSURE_TAIT:
-        CHECK(ms_check_positive(P, "sound_speed", d->sound_speed, "m/s"));
+        MS_TRY(ms_check_positive(P, "sound_speed", d->sound_speed, "m/s"));
         if (d->sound_speed > 1e4f)
             return ms_check_range(P, "sound_speed", d->sound_speed, 0, 1e4, "m/s");
         break;
     case MS_PRESSURE_DFSPH:
         /* sound_speed only sizes the coupling's cap and the info's c */
-        CHECK(ms_check_positive(P, "sound_speed", d->sound_speed, "m/s"));
+        MS_TRY(ms_check_positive(P, "sound_speed", d->sound_speed, "m/s"));
         if (d->density_kernel == MS_DENSITY_POLY6)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
                            "volume: density_kernel poly6 with pressure DFSPH; the DFSPH solve "
@@ -116,18 +114,18 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
     }
     /* each law checks its own constant's range; a non-finite value is
      * refused whichever law is chosen */
-    CHECK(ms_check_finite(P, "gas_constant", d->gas_constant));
-    CHECK(ms_check_finite(P, "sound_speed", d->sound_speed));
-    CHECK(ms_check_int_range(P, "max_particles", d->max_particles, 1, 1L << 24));
+    MS_TRY(ms_check_finite(P, "gas_constant", d->gas_constant));
+    MS_TRY(ms_check_finite(P, "sound_speed", d->sound_speed));
+    MS_TRY(ms_check_int_range(P, "max_particles", d->max_particles, 1, 1L << 24));
     if (!isfinite(d->courant) || !(d->courant > 0.0f) || d->courant > 0.5f)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "volume: courant %g is outside (0, 0.5]; 0.5 is the largest CFL number "
                        "this solver is tested stable at",
                        d->courant);
-    CHECK(ms_check_int_range(P, "max_substeps", d->max_substeps, 1, 10000000));
-    CHECK(ms_check_int_range(P, "threads", d->threads, 1, MS_VOLUME_MAX_THREADS));
-    CHECK(ms_check_int_range(P, "smooth_steps", d->smooth_steps, 0, 64));
-    CHECK(ms_check_positive(P, "smooth_energy", d->smooth_energy, "J/kg"));
+    MS_TRY(ms_check_int_range(P, "max_substeps", d->max_substeps, 1, 10000000));
+    MS_TRY(ms_check_int_range(P, "threads", d->threads, 1, MS_VOLUME_MAX_THREADS));
+    MS_TRY(ms_check_int_range(P, "smooth_steps", d->smooth_steps, 0, 64));
+    MS_TRY(ms_check_positive(P, "smooth_energy", d->smooth_energy, "J/kg"));
     if (d->density_kernel != MS_DENSITY_SPIKY && d->density_kernel != MS_DENSITY_POLY6)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "volume: density_kernel %d is not a ms_density_kernel value (0 spiky, "
@@ -145,8 +143,8 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
                        "volume: max_divergence_error %g is outside (0, 0.1]; it is the average "
                        "dt (D rho/Dt) / rho0 the DFSPH divergence solve stops at",
                        d->max_divergence_error);
-    CHECK(ms_check_int_range(P, "max_density_iterations", d->max_density_iterations, 1, 10000));
-    CHECK(ms_check_int_range(P, "max_divergence_iterations", d->max_divergence_iterations, 0,
-                             10000));
+    MS_TRY(ms_check_int_range(P, "max_density_iterations", d->max_density_iterations, 1, 10000));
+    MS_TRY(ms_check_int_range(P, "max_divergence_iterations", d->max_divergence_iterations, 0,
+                              10000));
     return MS_OK;
 }

@@ -73,7 +73,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 enum { LANES = MS_VOLUME_LANES };
 

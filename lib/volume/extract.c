@@ -41,7 +41,7 @@
 #include <string.h>
 
 #include "volume/extract.h"
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 /* Column phi of a still lattice at half a spacing above the top layer. */
 float ms_volume_iso_level(const ms_volume *v)

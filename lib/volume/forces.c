@@ -40,7 +40,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 #if MS_VOLUME_HAVE_AVX512
 #include <immintrin.h>
@@ -340,7 +340,7 @@ static uint64_t mix64(uint64_t z)
 }
 
 /* A unit vector for the pair (a, b), a != b: dir(a, b) = -dir(b, a).
- * Shared with dfsph.c (volume_impl.h). */
+ * Shared with dfsph.c (volume_internal.h). */
 void ms_volume_pair_direction(int a, int b, float u[3])
 {
     uint32_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);

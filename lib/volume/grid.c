@@ -6,7 +6,7 @@
  * row (x-1, x, x+1) are one contiguous run of particles. */
 #include <string.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 #define SWAP(T, a, b)  \
     do {               \

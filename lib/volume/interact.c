@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 static ms_status check_vec(const char *what, const float *p, const char *unit)
 {

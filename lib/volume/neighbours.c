@@ -8,7 +8,7 @@
  */
 #include <string.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -414,7 +414,7 @@ static void pad(ms_nlist *L, size_t begin, int index, float h2)
     L->len = end;
 }
 
-/* Particle i's runs (see volume_impl.h): its real neighbours from the rows
+/* Particle i's runs (see volume_internal.h): its real neighbours from the rows
  * of its cell (own, shared by the particles of a cell, recomputed when the
  * cell changes; *ncand the candidates copied for the AVX-512 path) and its
  * images; sets nl_begin, nl_count, gl_begin, gl_count. 0, or -1 if a list

@@ -16,7 +16,7 @@
 #include <pthread.h>
 
 #include "volume/extract.h"
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 typedef struct worker_arg {
     struct ms_vpool *pool;

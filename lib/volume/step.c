@@ -20,7 +20,7 @@
 
 #include <stdatomic.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 
 typedef struct bounds_ctx {
     ms_volume *v;

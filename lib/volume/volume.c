@@ -5,7 +5,7 @@
 
 #include <stdatomic.h>
 
-#include "volume/volume_impl.h"
+#include "volume/volume_internal.h"
 #include "core/struct_sizes.h"
 
 /* Mass per particle such that a cubic lattice of the desc's spacing has

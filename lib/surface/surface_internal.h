@@ -17,12 +17,12 @@
  * the south ghost row, y = ny + 1 the north one); interior cell (x, y),
  * 0-based, is at ms_surface_row(s, y + 1) + x + 1.
  */
-#ifndef MS_SURFACE_IMPL_H
-#define MS_SURFACE_IMPL_H
+#ifndef MS_SURFACE_INTERNAL_H
+#define MS_SURFACE_INTERNAL_H
 
 #include <stdatomic.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/surface.h"
 
 typedef struct disturber {
@@ -100,4 +100,4 @@ double ms_surface_energy_region(const ms_surface *s, int x0, int x1, int y0, int
 /* surface.c */
 void ms_surface_zero_solid(ms_surface *s, float *field);
 
-#endif /* MS_SURFACE_IMPL_H */
+#endif /* MS_SURFACE_INTERNAL_H */

@@ -15,7 +15,7 @@
 
 #include "modesplit/plugin.h"
 #include "modesplit/shape.h"
-#include "plugin/registry.h"
+#include "plugin/plugin_internal.h"
 
 struct ms_shape {
     const ms_plugin_rec *plugin;

@@ -11,8 +11,8 @@
  * Implements no equation of the paper: it is how collision objects (eq. 15)
  * and shaders (section 3.6) reach the library.
  */
-#ifndef MS_PLUGIN_REGISTRY_H
-#define MS_PLUGIN_REGISTRY_H
+#ifndef MS_PLUGIN_INTERNAL_H
+#define MS_PLUGIN_INTERNAL_H
 
 #include "modesplit/plugin.h"
 
@@ -73,4 +73,4 @@ ms_status ms_shader_instance_create(const char *name, const char *params_json,
                                     ms_shader_instance *out);
 void ms_shader_instance_destroy(ms_shader_instance *in);
 
-#endif /* MS_PLUGIN_REGISTRY_H */
+#endif /* MS_PLUGIN_INTERNAL_H */

@@ -23,12 +23,12 @@
  * order (9 rows of 3 cells, each contiguous in memory), so the bytes do not
  * depend on how particles are split among threads.
  */
-#ifndef MS_VOLUME_IMPL_H
-#define MS_VOLUME_IMPL_H
+#ifndef MS_VOLUME_INTERNAL_H
+#define MS_VOLUME_INTERNAL_H
 
 #include <stddef.h>
 
-#include "core/internal.h"
+#include "core/core_internal.h"
 #include "modesplit/shape.h"
 #include "modesplit/volume.h"
 #include "volume/kernels.h"
