@@ -191,6 +191,7 @@ typedef struct run_state {
     long frames;         /* frames to step */
     int every;           /* write every N-th published frame */
     long done, written;  /* frames stepped, frames written */
+    long base;           /* of done, the frames a --resume replayed before the loop */
     double write_s, png_s, wall; /* s spent writing HDF5 / PNG, s of the loop */
 } run_state;
 
@@ -264,6 +265,8 @@ static int run_frames(run_state *r)
     catch_stop_signals();
     tool_progress prog;
     progress_begin(&prog, r->frames, r->o.quiet);
+    prog.base = r->done; /* frames a --resume replayed: not stepped in this loop's time */
+    r->base = r->done;
     int rc = EXIT_OK;
     while (r->done < r->frames && !stop_signal) {
         ms_status step_st = ms_sim_step(r->sim, r->dt);
@@ -300,7 +303,7 @@ static void print_summary(const run_state *r, long in_file, const char *xmf)
     fill_stages(r->sim, r->write_s, r->png_s, r->done, &st);
     printf("modesplit: %s: %ld of %ld frames (%.4g s simulated) in %.3g s, %.1f frames/s%s\n",
            ms_scene_name(r->sc), r->done, r->frames, ms_sim_time(r->sim), r->wall,
-           r->wall > 0 ? (double)r->done / r->wall : 0.0,
+           r->wall > 0 ? (double)(r->done - r->base) / r->wall : 0.0,
            stop_signal ? (stop_signal == SIGINT ? ", stopped by SIGINT" : ", stopped by SIGTERM")
                        : "");
     printf("  per frame: volume %.3g ms, surface %.3g ms, extract %.3g ms, combine %.3g ms",

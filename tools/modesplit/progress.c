@@ -50,6 +50,7 @@ void progress_begin(tool_progress *p, long total, int quiet)
     p->tty = isatty(STDERR_FILENO);
     p->quiet = quiet;
     p->total = total;
+    p->base = 0;
     p->start = tool_now();
     p->last_draw = p->start;
     p->last_decile = 0;
@@ -70,7 +71,7 @@ void progress_update(tool_progress *p, long done, const tool_stages *s)
     if (p->quiet || p->total <= 0)
         return;
     double now = tool_now(), el = now - p->start;
-    double rate = el > 0 ? (double)done / el : 0.0;
+    double rate = el > 0 ? (double)(done - p->base) / el : 0.0;
     char eta[32];
     eta_text(rate > 0 ? (double)(p->total - done) / rate : -1, eta, sizeof eta);
     int pct = (int)(100.0 * (double)done / (double)p->total);

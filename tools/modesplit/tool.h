@@ -85,6 +85,8 @@ typedef struct tool_progress {
     int tty;             /* stderr is a terminal: one line redrawn */
     int quiet;
     long total;          /* frames to run */
+    long base;           /* frames done before this run started (replayed by
+                            --resume): not counted in frames/s */
     double start;        /* s, monotonic */
     double last_draw;    /* s */
     int last_decile;     /* plain lines: last 10 % step printed */
