@@ -385,11 +385,7 @@ START_TEST(a_hostile_run_file_is_printed_as_text_and_its_denormal_dx_refused)
         ck_assert_int_eq(st, MS_ERR_PARSE);
         ck_assert_ptr_nonnull(strstr(ms_last_error(), "dx"));
     }
-    unlink(out);
-    unlink(path);
-    snprintf(out, sizeof out, "%s/run.xmf", dir);
-    unlink(out);
-    rmdir(dir);
+    ms_test_remove_tree(dir); /* run.h5, both sidecars, info.txt */
 }
 END_TEST
 

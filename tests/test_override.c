@@ -168,9 +168,9 @@ END_TEST
 
 START_TEST(tool_run_stores_overrides_info_shows_them)
 {
-    char out[8192], args[1024], h5[256];
-    const char *tmp = getenv("TMPDIR");
-    snprintf(h5, sizeof h5, "%s/ms_override_%d.h5", tmp && tmp[0] ? tmp : "/tmp", (int)getpid());
+    char out[8192], args[1024], dir[200], h5[256];
+    ck_assert_int_eq(ms_test_tmp_dir(dir, sizeof dir, "ms_override"), 0);
+    snprintf(h5, sizeof h5, "%s/run.h5", dir);
     snprintf(args, sizeof args,
              "run data/scenes/fig3.json --frames 2 --quiet --set surface.cells=[48,48] --out %s",
              h5);
@@ -179,10 +179,7 @@ START_TEST(tool_run_stores_overrides_info_shows_them)
     ck_assert_int_eq(tool(args, out, sizeof out), 0);
     ck_assert_msg(strstr(out, "--set     surface.cells=[48,48]") != NULL, "%s", out);
     ck_assert_msg(strstr(out, "48 x 48 cells") != NULL, "%s", out);
-    remove(h5);
-    char xmf[260];
-    snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)strlen(h5) - 3, h5);
-    remove(xmf);
+    ms_test_remove_tree(dir); /* the run file and both sidecars */
 }
 END_TEST
 
