@@ -312,6 +312,8 @@ static ms_status frame(ms_renderer *r, const float *h, const ms_grid *g, double 
     if (r->discs_changed && (st = ms_gl_discs_upload(r)) != MS_OK)
         return st;
     double t2 = ms_now();
+    if ((st = ms_gl_env_objects(r)) != MS_OK) /* the objects refracted and reflected */
+        return st;
     draw_scene(r, time);
     glFinish();
     double t3 = ms_now();
