@@ -104,6 +104,7 @@ void ms_gl_delete_objects(ms_gl *gl)
                      gl->caustics_tex, gl->normal_tex};
     glDeleteTextures(5, tex);
     glDeleteTextures(1, &gl->env_live);
+    glDeleteTextures(1, &gl->walls_tex);
     glDeleteFramebuffers(1, &gl->env_fbo);
     glDeleteRenderbuffers(1, &gl->env_depth);
     GLuint buf[4] = {gl->pool_vbo, gl->discs_vbo, gl->mesh_vbo, gl->mesh_ibo};

@@ -139,6 +139,8 @@ struct ms_gl {
     unsigned long long env_objects_hash; /* what the objects in env_live were drawn from */
     int objects_first;              /* discs_vbo from here on: the boat, the obstacles, the glass */
     ms_gl_program glass;            /* gl_glass.c */
+    GLuint walls_tex;               /* ms_caustics_walls (gl_walls.c) */
+    int walls_n, walls_rows;        /* its size as uploaded: n x 4 rows */
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */
@@ -173,6 +175,10 @@ void ms_gl_objects_draw(const ms_renderer *r, const float eye[3], float sun_unde
  * the glass (discs_vbo from glass_first) drawn with it, seen from eye,
  * blended over what is drawn, writing no depth; keep as ms_gl_pool_draw. */
 ms_status ms_gl_glass_create(ms_renderer *r);
+/* gl_walls.c: the caustics on the pool's walls (r->caustics.walls) into
+ * their texture after a trace; bound with their uniforms for the liquid. */
+ms_status ms_gl_walls_upload(ms_renderer *r);
+void ms_gl_walls_bind(const ms_renderer *r, const ms_shader_uniforms *u);
 void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep);
 /* gl_renderer.c: after r->desc's camera changed: ms_env drawn again. */
 ms_status ms_gl_camera_moved(ms_renderer *r);
