@@ -367,6 +367,24 @@ ms_status ms_gl_env_objects(ms_renderer *r)
         gl->env_live_fresh = 0;
         return MS_OK;
     }
+    if (!gl->env_copy_checked) {
+        /* glCopyImageSubData is GL 4.3 (or ARB_copy_image): Mesa's
+         * llvmpipe has 4.5; without it the objects stay out of ms_env */
+        GLint major = 0, minor = 0;
+        glGetIntegerv(GL_MAJOR_VERSION, &major);
+        glGetIntegerv(GL_MINOR_VERSION, &minor);
+        int ok = major > 4 || (major == 4 && minor >= 3);
+        GLint n_ext = 0;
+        if (!ok)
+            glGetIntegerv(GL_NUM_EXTENSIONS, &n_ext);
+        for (GLint i = 0; !ok && i < n_ext; ++i)
+            ok = !strcmp((const char *)glGetStringi(GL_EXTENSIONS, (GLuint)i), "GL_ARB_copy_image");
+        gl->env_copy_checked = ok ? 1 : -1;
+    }
+    if (gl->env_copy_checked < 0) {
+        gl->env_tex = gl->env_static;
+        return MS_OK;
+    }
     const unsigned long long hash = objects_hash(r);
     if (gl->env_live_fresh && gl->env_tex == gl->env_live && hash == gl->env_objects_hash)
         return MS_OK; /* nothing moved */

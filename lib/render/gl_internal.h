@@ -136,6 +136,7 @@ struct ms_gl {
     GLuint env_fbo, env_depth;      /* the per-frame pass into env_live */
     int env_rect[2][6][4];          /* per half, face: the level-0 texels the objects cover */
     int env_live_fresh;             /* 0: env_live must be copied from env_static first */
+    int env_copy_checked;           /* 1: glCopyImageSubData exists, -1: not, 0: not asked */
     unsigned long long env_objects_hash; /* what the objects in env_live were drawn from */
     int objects_first;              /* discs_vbo from here on: the boat, the obstacles, the glass */
     ms_gl_program glass;            /* gl_glass.c */
