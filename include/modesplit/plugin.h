@@ -201,6 +201,15 @@ typedef struct ms_shader_uniforms {
  *     vec4  ms_field        x0, y0, 1/size x, 1/size y of the field (m):
  *                           ms_normal_map's coordinate is
  *                           (pos.xy - ms_field.xy) * ms_field.zw
+ *     sampler2D ms_caustics_walls  the caustics on the pool's four walls
+ *                           under the still water, texture unit 3: strips
+ *                           -x, +x, -y, +y stacked along t (strip k in
+ *                           [k/4, (k+1)/4], from the floor up); along s
+ *                           the x-walls run with y, the y-walls with x;
+ *                           in ms_caustics' unit (with _CAUSTICS)
+ *     float ms_pool_depth   still water depth over the floor the strips
+ *                           span (m); 0 when the walls were not traced
+ *     float ms_caustics_wall_rows  texel rows of one strip
  *   the shader's own uniforms (colours, ...) it sets in set_uniforms.
  * The fragment shader writes gl_FragColor (linear RGB, alpha 1). */
 typedef struct ms_shader_vtable {

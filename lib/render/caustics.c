@@ -31,6 +31,8 @@ void ms_caustics_free(ms_caustics *c)
 {
     if (!c)
         return;
+    ms_free(c->walls);
+    ms_free(c->walls_tmp);
     ms_free(c->map);
     ms_free(c->tmp);
     ms_free(c->gx);
@@ -185,6 +187,95 @@ static void trace_row(int rx, float y, const int *restrict col0, const float *re
     }
 }
 
+int ms_caustics_wall_rows(const ms_caustics_desc *d)
+{
+    if (!(d->depth > 0))
+        return 0;
+    /* rays start a texel apart; under flat water they meet a wall
+     * |t_z| / |t_h| texels apart in height (t the refracted sun, Snell):
+     * a row as tall as two of those keeps the strips free of ray lines */
+    const float *L = d->light_dir, eta = 1.0f / d->ior;
+    const float lh = sqrtf(L[0] * L[0] + L[1] * L[1]), th = eta * lh;
+    const float tz = sqrtf(MS_MAX(1.0f - th * th, 0.0f));
+    const float texel = MS_MAX(d->pool[2], d->pool[3]) / (float)d->resolution;
+    const float row = 2.0f * texel * tz / MS_MAX(MS_MAX(fabsf(L[0]), fabsf(L[1])) * eta, 1e-3f);
+    return MS_CLAMP((int)ceilf(d->depth / row), 4, d->resolution);
+}
+
+/* The walls' strips (issue 14; section 3.6 lights only the floor): a ray
+ * whose floor point (hx, hy) lies outside the floor's square crossed a
+ * wall first, at the fraction f of its way down from its start (x, y,
+ * z0 over the floor) where it reaches the wall's plane. Splat there in the
+ * floor map's unit: the ray's light per floor texel area over the wall
+ * texel's area. Nothing if it meets no wall under the still water. */
+static void splat_wall(ms_caustics *c, const ms_caustics_desc *d, float x, float y, float z0,
+                       float hx, float hy, float w)
+{
+    const int n = c->n, rows = c->wall_rows;
+    const float x0 = d->pool[0], y0 = d->pool[1], x1 = x0 + d->pool[2], y1 = y0 + d->pool[3];
+    /* the first wall plane the ray's way down crosses */
+    float f = 2, along = 0, span = 1, origin = 0;
+    int strip = -1;
+    if (hx < x0 || hx > x1) {
+        const float fx = ((hx < x0 ? x0 : x1) - x) / (hx - x);
+        if (fx < f)
+            f = fx, strip = hx < x0 ? 0 : 1, along = y + fx * (hy - y), origin = y0,
+            span = d->pool[3];
+    }
+    if (hy < y0 || hy > y1) {
+        const float fy = ((hy < y0 ? y0 : y1) - y) / (hy - y);
+        if (fy < f)
+            f = fy, strip = hy < y0 ? 2 : 3, along = x + fy * (hx - x), origin = x0,
+            span = d->pool[2];
+    }
+    if (strip < 0 || !(f >= 0 && f <= 1) || !(w > 0))
+        return;
+    const float z = z0 * (1 - f); /* height over the floor where it meets the wall */
+    const float u = (along - origin) / span * (float)n - 0.5f;
+    const float v = z / d->depth * (float)rows - 0.5f;
+    if (!(u >= -0.5f && u <= (float)n - 0.5f && v >= -0.5f && v <= (float)rows - 0.5f))
+        return; /* above the still water or past a corner */
+    const float texel_along = span / (float)n;
+    const float texel_floor = (d->pool[2] / (float)n) * (d->pool[3] / (float)n);
+    const float wk = w * texel_floor / (texel_along * (d->depth / (float)rows));
+    int iu = (int)floorf(u), iv = (int)floorf(v);
+    const float au = u - (float)iu, av = v - (float)iv;
+    const int iu1 = MS_MIN(iu + 1, n - 1), iv1 = MS_MIN(iv + 1, rows - 1);
+    iu = MS_MAX(iu, 0);
+    iv = MS_MAX(iv, 0);
+    float *m = c->walls + (size_t)strip * (size_t)rows * (size_t)n;
+    m[(size_t)iv * n + iu] += wk * (1 - au) * (1 - av);
+    m[(size_t)iv * n + iu1] += wk * au * (1 - av);
+    m[(size_t)iv1 * n + iu] += wk * (1 - au) * av;
+    m[(size_t)iv1 * n + iu1] += wk * au * av;
+}
+
+/* [1 2 1] / 4 along u of each wall strip row, and along v within each
+ * strip (edges clamped), as the floor's blur. */
+static void blur_walls(ms_caustics *c)
+{
+    const int n = c->n, rows = c->wall_rows;
+    float *a = c->walls, *b = c->walls_tmp;
+    for (int r = 0; r < 4 * rows; ++r) {
+        const float *s = a + (size_t)r * n;
+        float *o = b + (size_t)r * n;
+        o[0] = 0.25f * (3.0f * s[0] + s[1]);
+        for (int i = 1; i < n - 1; ++i)
+            o[i] = 0.25f * (s[i - 1] + 2.0f * s[i] + s[i + 1]);
+        o[n - 1] = 0.25f * (s[n - 2] + 3.0f * s[n - 1]);
+    }
+    for (int st = 0; st < 4; ++st)
+        for (int r = 0; r < rows; ++r) {
+            const size_t base = (size_t)st * rows;
+            const float *dn = b + (base + (size_t)(r > 0 ? r - 1 : r)) * n;
+            const float *s = b + (base + (size_t)r) * n;
+            const float *up = b + (base + (size_t)(r < rows - 1 ? r + 1 : r)) * n;
+            float *o = a + (base + (size_t)r) * n;
+            for (int i = 0; i < n; ++i)
+                o[i] = 0.25f * (dn[i] + 2.0f * s[i] + up[i]);
+        }
+}
+
 ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const float *h,
                             const ms_grid *g)
 {
@@ -198,6 +289,23 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
     ms_status st = reserve(c, n, (size_t)nx * (size_t)ny, (size_t)MS_MAX(rx, nx));
     if (st != MS_OK)
         return st;
+    const int rows = ms_caustics_wall_rows(d);
+    if (rows != c->wall_rows) {
+        ms_free(c->walls);
+        ms_free(c->walls_tmp);
+        c->walls = c->walls_tmp = NULL;
+        c->wall_rows = 0;
+        if (rows > 0) {
+            c->walls = ms_alloc_array(4 * (size_t)rows * (size_t)n, sizeof(float));
+            c->walls_tmp = ms_alloc_array(4 * (size_t)rows * (size_t)n, sizeof(float));
+            if (!c->walls || !c->walls_tmp)
+                return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                               "render: out of memory for the caustics on the pool's walls");
+            c->wall_rows = rows;
+        }
+    }
+    if (rows > 0)
+        memset(c->walls, 0, 4 * (size_t)rows * (size_t)n * sizeof *c->walls);
     float *map = c->map;
     memset(map, 0, (size_t)n * (size_t)n * sizeof *map);
     if (!(d->light_dir[2] < -1e-3f)) {
@@ -237,8 +345,15 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
         for (int k = 0; k < rx; ++k) {
             float u = (hx[k] - px0) * itx - 0.5f, v = (hy[k] - py0) * ity - 0.5f;
             if (!(w[k] > 0 && u >= -0.5f && u <= (float)n - 0.5f && v >= -0.5f &&
-                  v <= (float)n - 0.5f))
-                continue; /* no light, or into a wall */
+                  v <= (float)n - 0.5f)) {
+                if (rows > 0 && w[k] > 0) { /* into a wall: its start, again */
+                    const int i = c->col0[k];
+                    const float z0 = rh[i] + c->colf[k] * (rh[i + 1] - rh[i]);
+                    splat_wall(c, d, px0 + ((float)k + 0.5f) * stepx, y, MS_MAX(z0, 0.0f),
+                               hx[k], hy[k], w[k]);
+                }
+                continue;
+            }
             int iu = (int)floorf(u), iv = (int)floorf(v);
             float au = u - (float)iu, av = v - (float)iv, wk = w[k];
             int iu1 = MS_MIN(iu + 1, n - 1), iv1 = MS_MIN(iv + 1, n - 1);
@@ -256,5 +371,18 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
     const float k = d->intensity;
     for (size_t i = 0; i < (size_t)n * (size_t)n; ++i)
         map[i] = MS_MAX(1.0f + k * (map[i] - 1.0f), 0.0f);
+    if (rows > 0) {
+        blur_walls(c);
+        /* intensity scales each wall's contrast about its mean */
+        for (int wall = 0; wall < 4; ++wall) {
+            float *m = c->walls + (size_t)wall * rows * n;
+            double mean = 0;
+            for (size_t i = 0; i < (size_t)rows * n; ++i)
+                mean += m[i];
+            mean /= (double)rows * n;
+            for (size_t i = 0; i < (size_t)rows * n; ++i)
+                m[i] = MS_MAX((float)mean + k * (m[i] - (float)mean), 0.0f);
+        }
+    }
     return MS_OK;
 }

@@ -100,9 +100,13 @@ void ms_gl_delete_objects(ms_gl *gl)
 {
     if (!glGetString(GL_VERSION))
         return; /* the context is gone and its objects with it */
-    GLuint tex[5] = {gl->sky_tex, gl->env_tex != gl->sky_tex ? gl->env_tex : 0, gl->tiles_tex,
+    GLuint tex[5] = {gl->sky_tex, gl->env_static, gl->tiles_tex,
                      gl->caustics_tex, gl->normal_tex};
     glDeleteTextures(5, tex);
+    glDeleteTextures(1, &gl->env_live);
+    glDeleteTextures(1, &gl->walls_tex);
+    glDeleteFramebuffers(1, &gl->env_fbo);
+    glDeleteRenderbuffers(1, &gl->env_depth);
     GLuint buf[4] = {gl->pool_vbo, gl->discs_vbo, gl->mesh_vbo, gl->mesh_ibo};
     glDeleteBuffers(4, buf);
     GLuint rb[2] = {gl->color_rb, gl->depth_rb};
@@ -111,6 +115,7 @@ void ms_gl_delete_objects(ms_gl *gl)
     ms_gl_program_free(&gl->liquid);
     ms_gl_program_free(&gl->pool);
     ms_gl_program_free(&gl->sky);
+    ms_gl_program_free(&gl->glass);
 }
 
 ms_status ms_renderer_create_in_context(const ms_renderer_desc *d, ms_renderer **out)

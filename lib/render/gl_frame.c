@@ -130,6 +130,7 @@ static ms_status upload_caustics(ms_renderer *r, const float *h, const ms_grid *
         .ior = d->ior,
         .intensity = d->caustics_intensity,
         .resolution = d->caustics_resolution,
+        .depth = d->water_level - d->pool_min[2], /* the walls too (gl_walls.c) */
     };
     ms_status st = ms_caustics_trace(&r->caustics, &cd, h, g);
     if (st != MS_OK)
@@ -143,7 +144,7 @@ static ms_status upload_caustics(ms_renderer *r, const float *h, const ms_grid *
     } else {
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RED, GL_FLOAT, r->caustics.map);
     }
-    return MS_OK;
+    return ms_gl_walls_upload(r);
 }
 
 /* Near and far planes that hold the pool and its deck. */
@@ -208,6 +209,7 @@ static void draw_liquid(ms_renderer *r, double time)
         u.set_vec4(u.ctx, "ms_field", f->origin[0], f->origin[1], 1.0f / ((float)f->nx * f->dx),
                    1.0f / ((float)f->ny * f->dy));
     }
+    ms_gl_walls_bind(r, &u);
     if (r->shader.vt->set_uniforms)
         r->shader.vt->set_uniforms(r->shader.self, &u);
 
@@ -312,6 +314,8 @@ static ms_status frame(ms_renderer *r, const float *h, const ms_grid *g, double 
     if (r->discs_changed && (st = ms_gl_discs_upload(r)) != MS_OK)
         return st;
     double t2 = ms_now();
+    if ((st = ms_gl_env_objects(r)) != MS_OK) /* the objects refracted and reflected */
+        return st;
     draw_scene(r, time);
     glFinish();
     double t3 = ms_now();

@@ -128,6 +128,20 @@ struct ms_gl {
     ms_grid normal_field; /* the grid it covers (ms_field in the shaders) */
     float *gradients;     /* its texels, CPU side */
     size_t gradients_cap; /* floats */
+    /* issue 14, objects in the environment (gl_env.c): env_static is the
+     * pool and the sky as ms_gl_env_create draws them; env_live a copy
+     * with the boat and the obstacles drawn in each frame (ms_env is
+     * env_live while there are objects, else env_static) */
+    GLuint env_static, env_live;
+    GLuint env_fbo, env_depth;      /* the per-frame pass into env_live */
+    int env_rect[2][6][4];          /* per half, face: the level-0 texels the objects cover */
+    int env_live_fresh;             /* 0: env_live must be copied from env_static first */
+    int env_copy_checked;           /* 1: glCopyImageSubData exists, -1: not, 0: not asked */
+    unsigned long long env_objects_hash; /* what the objects in env_live were drawn from */
+    int objects_first;              /* discs_vbo from here on: the boat, the obstacles, the glass */
+    ms_gl_program glass;            /* gl_glass.c */
+    GLuint walls_tex;               /* ms_caustics_walls (gl_walls.c) */
+    int walls_n, walls_rows;        /* its size as uploaded: n x 4 rows */
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */
@@ -150,6 +164,23 @@ void ms_gl_sky_draw(const ms_renderer *r, const float forward[3], const float ri
  * and the pool, split by the water plane and seen from the eye's mirror
  * and refracted images. */
 ms_status ms_gl_env_create(ms_renderer *r);
+/* gl_env.c: the boat and the obstacles (from objects_first in discs_vbo)
+ * into ms_env: their parts above the water into the reflection half,
+ * under it into the refraction half, redrawn only where they were or are. */
+ms_status ms_gl_env_objects(ms_renderer *r);
+/* gl_pool.c: the boat and the obstacles (discs_vbo from objects_first),
+ * then the glass, lit and clipped as ms_gl_pool_draw's sun_under and keep
+ * say, seen from eye; for the environment's pass. */
+void ms_gl_objects_draw(const ms_renderer *r, const float eye[3], float sun_under, float keep);
+/* gl_glass.c: the glass program (made once, when a glass is drawn), and
+ * the glass (discs_vbo from glass_first) drawn with it, seen from eye,
+ * blended over what is drawn, writing no depth; keep as ms_gl_pool_draw. */
+ms_status ms_gl_glass_create(ms_renderer *r);
+/* gl_walls.c: the caustics on the pool's walls (r->caustics.walls) into
+ * their texture after a trace; bound with their uniforms for the liquid. */
+ms_status ms_gl_walls_upload(ms_renderer *r);
+void ms_gl_walls_bind(const ms_renderer *r, const ms_shader_uniforms *u);
+void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep);
 /* gl_renderer.c: after r->desc's camera changed: ms_env drawn again. */
 ms_status ms_gl_camera_moved(ms_renderer *r);
 

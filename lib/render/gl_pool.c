@@ -179,9 +179,6 @@ ms_status ms_gl_pool_create(ms_renderer *r)
     return ms_gl_check("making the pool");
 }
 
-/* How much of the glass's own lit colour covers what is behind it. */
-#define GLASS_ALPHA 0.3f
-
 /* Vertices of the boat's hull (gl_pool.c's triangles) */
 #define HULL_POINTS 7
 #define HULL_VERTICES (HULL_POINTS * 3 + HULL_POINTS * 6)
@@ -270,6 +267,7 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
     r->discs_changed = 0;
     gl->discs_count = 0;
     gl->glass_first = 0;
+    gl->objects_first = 0;
     if (r->ndiscs == 0 && !r->has_boat && r->object_nverts == 0)
         return MS_OK;
     enum { SEGMENTS = 10 };
@@ -301,6 +299,7 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
             vertex(&b, p1, up, c->color);
         }
     }
+    gl->objects_first = b.n; /* what the environment shows (gl_env.c) */
     if (r->has_boat)
         hull(&b, r);
     for (int i = 0; i < r->object_nverts; ++i) { /* the obstacles (objects.c) */
@@ -319,10 +318,15 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
     gl->discs_count = b.n;
     if (r->object_glass >= r->object_nverts)
         gl->glass_first = b.n;
+    if (gl->glass_first < b.n)
+        return ms_gl_glass_create(r); /* gl_glass.c */
     return MS_OK;
 }
 
-void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
+/* The pool program bound with its uniforms and the vertex arrays of vbo
+ * (MS_POOL_STRIDE layout) enabled. */
+static void pool_program(const ms_renderer *r, GLuint vbo, float sun_under, float keep,
+                         float textured)
 {
     const ms_gl *gl = r->gl;
     const GLsizei stride = MS_POOL_STRIDE * sizeof(float);
@@ -337,8 +341,8 @@ void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
     glUniform1f(glGetUniformLocation(p, "u_sun_under"), sun_under);
     glUniform1f(glGetUniformLocation(p, "u_ambient"), AMBIENT);
     glUniform1f(glGetUniformLocation(p, "u_keep"), keep);
-    glUniform1f(glGetUniformLocation(p, "u_textured"), 1.0f);
-    glBindBuffer(GL_ARRAY_BUFFER, gl->pool_vbo);
+    glUniform1f(glGetUniformLocation(p, "u_textured"), textured);
+    glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_NORMAL_ARRAY);
     glEnableClientState(GL_TEXTURE_COORD_ARRAY);
@@ -347,37 +351,45 @@ void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
     glNormalPointer(GL_FLOAT, stride, (const void *)(3 * sizeof(float)));
     glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(6 * sizeof(float)));
     glColorPointer(3, GL_FLOAT, stride, (const void *)(8 * sizeof(float)));
-    glDrawArrays(GL_TRIANGLES, 0, keep < 0 ? gl->pool_apron_count : gl->pool_count);
-    if (keep == 0 && gl->discs_count > 0) {
-        /* the floating discs: untextured, lifted off the water by the
-         * depth offset */
-        glUniform1f(glGetUniformLocation(p, "u_textured"), 0.0f);
-        glBindBuffer(GL_ARRAY_BUFFER, gl->discs_vbo);
-        glVertexPointer(3, GL_FLOAT, stride, (const void *)0);
-        glNormalPointer(GL_FLOAT, stride, (const void *)(3 * sizeof(float)));
-        glTexCoordPointer(2, GL_FLOAT, stride, (const void *)(6 * sizeof(float)));
-        glColorPointer(3, GL_FLOAT, stride, (const void *)(8 * sizeof(float)));
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(-1.0f, -4.0f);
-        glDisable(GL_CULL_FACE);
-        glDrawArrays(GL_TRIANGLES, 0, gl->glass_first);
-        glDisable(GL_POLYGON_OFFSET_FILL);
-        if (gl->discs_count > gl->glass_first) {
-            /* the glass: a see-through tint over what is behind it (the
-             * water inside included, drawn before), writing no depth; its
-             * walls seen edge-on stack up and show its outline */
-            glEnable(GL_BLEND);
-            glBlendColor(0, 0, 0, GLASS_ALPHA);
-            glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
-            glDepthMask(GL_FALSE);
-            glDrawArrays(GL_TRIANGLES, gl->glass_first, gl->discs_count - gl->glass_first);
-            glDepthMask(GL_TRUE);
-            glDisable(GL_BLEND);
-        }
-    }
+}
+
+static void pool_program_end(void)
+{
     glDisableClientState(GL_COLOR_ARRAY);
     glDisableClientState(GL_TEXTURE_COORD_ARRAY);
     glDisableClientState(GL_NORMAL_ARRAY);
     glDisableClientState(GL_VERTEX_ARRAY);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
+{
+    const ms_gl *gl = r->gl;
+    pool_program(r, gl->pool_vbo, sun_under, keep, 1.0f);
+    glDrawArrays(GL_TRIANGLES, 0, keep < 0 ? gl->pool_apron_count : gl->pool_count);
+    pool_program_end();
+    if (keep == 0 && gl->discs_count > 0) {
+        /* the floating discs: untextured, lifted off the water by the
+         * depth offset */
+        pool_program(r, gl->discs_vbo, sun_under, keep, 0.0f);
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(-1.0f, -4.0f);
+        glDisable(GL_CULL_FACE);
+        glDrawArrays(GL_TRIANGLES, 0, gl->glass_first);
+        glDisable(GL_POLYGON_OFFSET_FILL);
+        pool_program_end();
+        ms_gl_glass_draw(r, r->desc.eye, keep); /* gl_glass.c */
+    }
+}
+
+void ms_gl_objects_draw(const ms_renderer *r, const float eye[3], float sun_under, float keep)
+{
+    const ms_gl *gl = r->gl;
+    if (gl->discs_count <= gl->objects_first)
+        return;
+    pool_program(r, gl->discs_vbo, sun_under, keep, 0.0f);
+    glDisable(GL_CULL_FACE);
+    glDrawArrays(GL_TRIANGLES, gl->objects_first, gl->glass_first - gl->objects_first);
+    pool_program_end();
+    ms_gl_glass_draw(r, eye, keep);
 }

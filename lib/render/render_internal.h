@@ -85,6 +85,7 @@ typedef struct ms_caustics_desc {
     float ior;            /* refractive index of the liquid */
     float intensity;      /* 1 = physical contrast, 0 = flat */
     int resolution;       /* texels per side */
+    float depth;          /* m: still water over the floor; > 0 also traces the walls */
 } ms_caustics_desc;
 
 /* Scratch and result of the tracer (reused frame to frame). */
@@ -98,15 +99,26 @@ typedef struct ms_caustics {
     int *col0;            /* per ray column: the field node left of it */
     float *colf;          /* and the fraction towards the next */
     size_t row_cap;       /* floats row holds / 6; ints col0 holds */
+    /* the pool's walls under the water (issue 14): 4 strips of n x
+     * wall_rows texels, bottom row first, stacked -x, +x, -y, +y (along
+     * the x-walls u runs with y, along the y-walls with x; v from the
+     * floor up to the still water), in the floor map's unit: the light a
+     * floor texel gets under flat water, per area. 0 rows: not traced. */
+    int wall_rows;
+    float *walls, *walls_tmp;
 } ms_caustics;
 
+/* Rows of each wall strip for d (0 when d->depth is 0): as tall as
+ * flat water's refracted sun spreads the rays of two texels, at least 4. */
+int ms_caustics_wall_rows(const ms_caustics_desc *d);
 /* Traces light through the surface h (heights above floor_z over grid g)
  * to the floor by Snell's law: rays on a lattice over the pool, an integer
  * number per texel and axis, at least as fine as the field's cells, each
  * carrying the light of the patch of surface it starts from, times
  * Schlick's transmission over the flat water's; the rays' light is splat bilinearly onto the floor, blurred by
  * [1 2 1]/4, and scaled so flat water gives 1 everywhere. Rays that leave
- * the pool (into the walls) are lost. */
+ * the floor's square meet a wall (d->depth > 0): they are splat there, in
+ * c->walls, the same way. */
 ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const float *h,
                             const ms_grid *g);
 void ms_caustics_free(ms_caustics *c);
