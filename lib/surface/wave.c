@@ -28,6 +28,7 @@
  * stable for c dt / dx <= 1/sqrt(2). ms_surface_step splits dt into equal
  * sub-steps at Courant number <= COURANT_MAX just below that bound.
  */
+#include <assert.h>
 #include <float.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +41,7 @@
 #define PART "surface"
 #define COURANT_MAX 0.7f /* < 1/sqrt(2) = 0.7071 */
 #define MAX_STEP 10.0f   /* s: longer calls are refused as a unit error */
-#define MAX_LEVELS 8     /* sub-steps fused into one sweep (see block()) */
+#define MAX_LEVELS MS_SURFACE_MAX_LEVELS /* sub-steps fused into one sweep (block()) */
 
 float ms_surface_stable_dt(const ms_surface *s)
 {
@@ -165,14 +166,9 @@ static void block(ms_surface *s, int K, const float *level_xy)
  * can give early, so it runs one step a sweep. */
 static ms_status advance(ms_surface *s, float dt, int n)
 {
-    if (s->ndist > s->level_cap) { /* only after disturbers were added */
-        float *t = ms_malloc((size_t)MAX_LEVELS * 2 * s->cap_dist * sizeof *t);
-        if (!t)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for disturbers");
-        ms_free(s->level_xy);
-        s->level_xy = t;
-        s->level_cap = s->cap_dist;
-    }
+    /* ms_surface_add_disturber grows level_xy with the disturbers: a step
+     * allocates nothing (issue 15) */
+    assert(s->ndist <= s->level_cap);
     float *level_xy = s->level_xy;
     const int periodic = s->desc.boundary == MS_BOUNDARY_PERIODIC;
     while (n > 0) {
