@@ -58,12 +58,20 @@ static inline __attribute__((always_inline)) void
 velocity_row(float *restrict v, const float *restrict h, const float *restrict a,
              const float *restrict d, ptrdiff_t W, int nx)
 {
+    /* the rows above and below as pointers of their own and the cells
+     * counted from 0, so the loop is a plain count: clang's vectoriser
+     * gave up on the offsets i +- W from one pointer (-Wpass-failed) */
+    const float *restrict hn = h - W + 1, *restrict hs = h + W + 1;
+    const float *restrict an = a - W + 1, *restrict as = a + W + 1;
+    const float *restrict hw = h, *restrict he = h + 2, *restrict aw = a, *restrict ae = a + 2;
+    float *restrict vc = v + 1;
+    const float *restrict hc = h + 1, *restrict ac = a + 1, *restrict dc = d + 1;
 #pragma omp simd
-    for (int i = 1; i <= nx; ++i) {
-        const float hc = h[i];
-        const float flux = a[i + 1] * (h[i + 1] - hc) + a[i - 1] * (h[i - 1] - hc) +
-                           a[i + W] * (h[i + W] - hc) + a[i - W] * (h[i - W] - hc);
-        v[i] = d[i] * v[i] + (0.5f + 0.5f * d[i]) * a[i] * flux;
+    for (int i = 0; i < nx; ++i) {
+        const float c = hc[i];
+        const float flux =
+            ae[i] * (he[i] - c) + aw[i] * (hw[i] - c) + as[i] * (hs[i] - c) + an[i] * (hn[i] - c);
+        vc[i] = dc[i] * vc[i] + (0.5f + 0.5f * dc[i]) * ac[i] * flux;
     }
 }
 
