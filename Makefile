@@ -395,3 +395,11 @@ check-bench-figures:
 	$(Q)$(PYTHON) tools/bench/figures.py --check README.md
 bench-commit:
 	$(Q)$(PYTHON) tools/bench/figures.py --commit bench
+
+# ---- issue 15: the layout of changed lines (CI) ----
+# format-check: the C lines changed since a base (tools/format_check.sh says
+# which) follow .clang-format. It needs a CI-only tool (clang-format:
+# tools/deps.sh --ci), so it is not part of `make check`; .ci/run runs it.
+.PHONY: format-check
+format-check:
+	@tools/format_check.sh
