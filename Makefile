@@ -220,6 +220,7 @@ check: deps
 	@$(MAKE) --no-print-directory all tests
 	@$(MAKE) --no-print-directory check-headers check-exports check-readme
 	@$(MAKE) --no-print-directory check-abi
+	@$(MAKE) --no-print-directory check-bench-figures
 	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS))";) \
 	skips=$(abspath $(BUILD))/skipped.txt; rm -f $$skips; \
 	pass=0; fail=0; for t in $(TESTS); do \
@@ -370,3 +371,35 @@ check-long: all $(BUILD)/tests/test_stability
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
 # Plugins include plugins/common/*.h: their dependency files too.
 -include $(wildcard $(BUILD)/plugins/*.d)
+
+# ---- issue 15: the clang build (CI) ----
+# check-clang: the library, plugins, tools and tests compile with clang and
+# the same -Werror warnings (build-clang/); .ci/run runs it, so a warning
+# only clang gives fails CI. It needs a CI-only tool (clang: tools/deps.sh
+# --ci), so it is not part of `make check`.
+.PHONY: check-clang
+check-clang:
+	@command -v clang > /dev/null || { echo "check-clang: clang not found (tools/deps.sh --ci)"; exit 1; }
+	@$(MAKE) --no-print-directory CC=clang BUILD=build-clang all tests
+	@echo "check-clang: library, plugins, tools and tests build with clang -Werror (build-clang/)"
+
+# ---- issue 15: README speed figures against the committed bench CSVs ----
+# data/bench/*.csv: one `make bench` on a quiet machine (data/bench/README.md
+# names it). README.md links each figure it quotes to its CSV row, or
+# generates a table from them; check-bench-figures (in `make check`) fails
+# when one differs. After a deliberate `make bench` on a quiet machine:
+# `make bench-commit` copies bench/*.csv there and rewrites the figures.
+.PHONY: check-bench-figures bench-commit
+check-bench-figures:
+	$(Q)$(PYTHON) tools/bench/test_figures.py
+	$(Q)$(PYTHON) tools/bench/figures.py --check README.md
+bench-commit:
+	$(Q)$(PYTHON) tools/bench/figures.py --commit bench
+
+# ---- issue 15: the layout of changed lines (CI) ----
+# format-check: the C lines changed since a base (tools/format_check.sh says
+# which) follow .clang-format. It needs a CI-only tool (clang-format:
+# tools/deps.sh --ci), so it is not part of `make check`; .ci/run runs it.
+.PHONY: format-check
+format-check:
+	@tools/format_check.sh

@@ -4,6 +4,7 @@
 
 #include <check.h>
 #include <string.h>
+#include <sys/types.h>
 
 /* Run a suite in fork mode (each case in its own process, so a crash is a
  * failure, not the end of the run); returns the exit status for main. */
@@ -31,6 +32,13 @@ char *ms_test_slurp(const char *path);
 /* The `modesplit` tool of the build under test: $MS_TEST_BUILD/bin/modesplit
  * (`make check` sets it), else build/bin/modesplit. */
 const char *ms_test_tool_path(void);
+/* Start that tool with args (NULL-terminated, without the program; at most
+ * 30): stdin from /dev/null, stdout into the file `out` and stderr into
+ * `err` (created or truncated; NULL: /dev/null; the same path: one file
+ * holding both), SIGINT and SIGTERM at their defaults. Returns its pid.
+ * ms_test_run_tool also waits: the waitpid status. */
+pid_t ms_test_spawn_tool(const char *const *args, const char *out, const char *err);
+int ms_test_run_tool(const char *const *args, const char *out, const char *err);
 
 /* h5dump (HDF5's own reader, independent of ours) reads the whole file:
  * 1 yes, 0 no, -1 when h5dump is not installed. MS_ASSERT_H5DUMP_READS

@@ -4,10 +4,13 @@
 #include "support.h"
 
 #include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 int ms_test_tmp_dir(char *buf, size_t size, const char *prefix)
@@ -65,6 +68,53 @@ const char *ms_test_tool_path(void)
     const char *b = getenv("MS_TEST_BUILD");
     snprintf(p, sizeof p, "%s/bin/modesplit", b && b[0] ? b : "build");
     return p;
+}
+
+/* In the child: fd onto `to` (NULL: /dev/null) for writing. */
+static void redirect(int fd, const char *to)
+{
+    int f = open(to ? to : "/dev/null", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (f >= 0 && f != fd) {
+        dup2(f, fd);
+        close(f);
+    }
+}
+
+pid_t ms_test_spawn_tool(const char *const *args, const char *out, const char *err)
+{
+    const char *argv[32];
+    int n = 0;
+    argv[n++] = ms_test_tool_path();
+    for (int i = 0; args[i] && n < 31; ++i)
+        argv[n++] = args[i];
+    argv[n] = NULL;
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        int in = open("/dev/null", O_RDONLY);
+        if (in >= 0 && in != 0) {
+            dup2(in, 0);
+            close(in);
+        }
+        redirect(1, out);
+        if (out && err && strcmp(out, err) == 0)
+            dup2(1, 2); /* one file, in the order written */
+        else
+            redirect(2, err);
+        signal(SIGINT, SIG_DFL);
+        signal(SIGTERM, SIG_DFL);
+        execv(argv[0], (char *const *)argv);
+        _exit(127);
+    }
+    return pid;
+}
+
+int ms_test_run_tool(const char *const *args, const char *out, const char *err)
+{
+    pid_t pid = ms_test_spawn_tool(args, out, err);
+    int status = 0;
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+    return status;
 }
 
 int ms_test_h5dump(const char *path)

@@ -40,26 +40,9 @@ typedef struct result {
 /* Runs the tool with args (NULL-terminated), stderr kept. */
 static result run_tool(const char *const *args)
 {
-    const char *argv[32];
-    int n = 0;
-    argv[n++] = ms_test_tool_path();
-    for (int i = 0; args[i] && n < 31; ++i)
-        argv[n++] = args[i];
-    argv[n] = NULL;
     char err[512];
     snprintf(err, sizeof err, "%s/stderr.txt", tmp_dir);
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        int o = open("/dev/null", O_WRONLY);
-        int e = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        dup2(o, 1);
-        dup2(e, 2);
-        execv(argv[0], (char *const *)argv);
-        _exit(127);
-    }
-    int status = 0;
-    waitpid(pid, &status, 0);
+    int status = ms_test_run_tool(args, NULL, err);
     result r = {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ms_test_slurp(err)};
     return r;
 }

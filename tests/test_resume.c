@@ -47,28 +47,9 @@ static const char *tmp_path(const char *name)
  * output into tmp/log.txt; returns the pid. */
 static pid_t start_tool(const char *const *args)
 {
-    const char *prog = ms_test_tool_path();
-    const char *argv[32];
-    int n = 0;
-    argv[n++] = prog;
-    for (int i = 0; args[i] && n < 31; ++i)
-        argv[n++] = args[i];
-    argv[n] = NULL;
     char log[512];
     snprintf(log, sizeof log, "%s/log.txt", tmp_dir);
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        if (fd >= 0) {
-            dup2(fd, 1);
-            dup2(fd, 2);
-            close(fd);
-        }
-        execv(prog, (char *const *)argv);
-        _exit(127);
-    }
-    return pid;
+    return ms_test_spawn_tool(args, log, log);
 }
 
 static char log_text[8192];

@@ -86,40 +86,13 @@ typedef struct result {
     char *out, *err;
 } result;
 
-/* Start the tool with args (NULL-terminated), stdout/stderr to files. */
-static pid_t spawn_tool(const char *const *args, const char *out, const char *err)
-{
-    const char *argv[32];
-    int n = 0;
-    argv[n++] = ms_test_tool_path();
-    for (int i = 0; args[i] && n < 31; ++i)
-        argv[n++] = args[i];
-    argv[n] = NULL;
-    pid_t pid = fork();
-    ck_assert_int_ge(pid, 0);
-    if (pid == 0) {
-        int o = open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int e = open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int in = open("/dev/null", O_RDONLY);
-        dup2(o, 1);
-        dup2(e, 2);
-        dup2(in, 0);
-        signal(SIGINT, SIG_DFL);
-        signal(SIGTERM, SIG_DFL);
-        execv(argv[0], (char *const *)argv);
-        _exit(127);
-    }
-    return pid;
-}
-
 static result run_tool(const char *const *args)
 {
     result r;
     char out[512], err[512];
     snprintf(out, sizeof out, "%s/stdout.txt", tmp_dir);
     snprintf(err, sizeof err, "%s/stderr.txt", tmp_dir);
-    pid_t pid = spawn_tool(args, out, err);
-    waitpid(pid, &r.status, 0);
+    r.status = ms_test_run_tool(args, out, err);
     r.out = ms_test_slurp(out);
     r.err = ms_test_slurp(err);
     return r;
@@ -526,9 +499,9 @@ START_TEST(sigkill_mid_run_leaves_a_file_h5dump_and_info_read)
     const char *out = tmp_path("killed.h5");
     for (int round = 0; round < 3; ++round) {
         remove(out);
-        pid_t pid = spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
-                                                "--out", out, "--quiet", NULL},
-                               tmp_path("o.txt"), tmp_path("e.txt"));
+        pid_t pid = ms_test_spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
+                                                        "--out", out, "--quiet", NULL},
+                                       tmp_path("o.txt"), tmp_path("e.txt"));
         /* readable while the run goes on */
         int ok = wait_for_frames(out, 2 + round, 60);
         long seen = frames_via_info(out);
@@ -560,9 +533,9 @@ START_TEST(sigint_and_sigterm_finish_the_frame_and_close_the_file)
     for (int i = 0; i < 2; ++i) {
         const char *out = tmp_path("stopped.h5");
         remove(out);
-        pid_t pid = spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
-                                                "--out", out, NULL},
-                               tmp_path("o.txt"), tmp_path("e.txt"));
+        pid_t pid = ms_test_spawn_tool(
+            (const char *[]){"run", SMALL_SCENE, "--frames", "100000", "--out", out, NULL},
+            tmp_path("o.txt"), tmp_path("e.txt"));
         ck_assert(wait_for_frames(out, 2, 60));
         kill(pid, sigs[i]);
         int status;
@@ -607,7 +580,8 @@ START_TEST(a_second_sigterm_cancels_a_long_frame_and_closes_the_file)
     fclose(f);
     char out[600];
     snprintf(out, sizeof out, "%s", tmp_path("slow.h5"));
-    pid_t pid = spawn_tool((const char *[]){"run", scene, "--frames", "10", "--out", out, NULL},
+    pid_t pid =
+        ms_test_spawn_tool((const char *[]){"run", scene, "--frames", "10", "--out", out, NULL},
                            tmp_path("o.txt"), tmp_path("e.txt"));
     struct timespec ts = {1, 0};
     nanosleep(&ts, NULL);

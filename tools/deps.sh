@@ -26,6 +26,8 @@ paraview python3-paraview python3-h5py python3-venv"
 # .ci/fuzz): `make check` of a user without them must not fail for their
 # absence.
 CI_PACKAGES="$CI_PACKAGES valgrind clang libclang-rt-14-dev"
+# issue 15: `make format-check` (CI only: .clang-format, the changed lines)
+CI_PACKAGES="$CI_PACKAGES clang-format"
 
 if [ "${1:-}" = "--ci" ]; then
     PACKAGES="$PACKAGES $CI_PACKAGES"

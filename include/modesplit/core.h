@@ -137,11 +137,12 @@ typedef void ms_finish_task_fn(void *user_task, void *user_context);
  * library holds memory from the allocator in use, a change is refused
  * with MS_ERR_STATE. Process-wide, not thread-safe against other calls.
  * The libraries libmodesplit uses (HDF5, jansson, libpng, OSMesa) allocate
- * through their own allocators. ms_surface_step allocates nothing after
- * the first step; ms_sim_step makes the buffers sized on first use in its
- * first two frames and after that only grows a buffer (geometrically) when
- * the liquid reaches a new high-water mark, nothing once it has settled
- * (tests/test_alloc.c). */
+ * through their own allocators. ms_surface_step allocates nothing (adding
+ * a disturber makes its room); ms_sim_step allocates nothing after the
+ * first frame, which makes every buffer at its largest and gives the
+ * neighbour lists twice the room it needed; only particles added after it,
+ * or liquid squeezed past twice those neighbour counts, grow a buffer
+ * again (tests/test_alloc.c). */
 typedef void *ms_alloc_fn(size_t size, size_t alignment, void *user);
 typedef void ms_free_fn(void *p, void *user);
 MS_API ms_status ms_set_allocator(ms_alloc_fn *alloc_fn, ms_free_fn *free_fn, void *user);

@@ -1,6 +1,7 @@
 /* ms_scene: loading a scene file (JSON, parsed by jansson) into the values
  * of data/scenes/README.md, and the accessors the tool and the writer use.
- * The schema itself is in sections.c and effects.c; the typed readers that name
+ * The schema itself is in sections.c, effects.c, section_render.c and
+ * section_output.c; the typed readers that name
  * file:line:col in reader.c and locate.c.
  */
 #include <errno.h>

@@ -1,4 +1,5 @@
-/* The scene schema (sections.c; the effects section in effects.c). Internal. */
+/* The scene schema (sections.c; the effects, render and output sections in
+ * effects.c, section_render.c, section_output.c). Internal. */
 #ifndef MS_SCENE_SECTIONS_H
 #define MS_SCENE_SECTIONS_H
 
@@ -19,6 +20,11 @@ ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, co
 /* The "effects" section (effects.c), read after domain, surface, volume and
  * obstacles (floaters spread over the domain; surface effects need one). */
 ms_status ms_scene_read_effects(ms_scene_ctx *c, json_t *root, ms_scene *sc);
+
+/* The "render" section (section_render.c; dir as above, for the cubemap)
+ * and the "output" section (section_output.c), read last. */
+ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir);
+ms_status ms_scene_read_output(ms_scene_ctx *c, json_t *root, ms_scene *sc);
 
 /* Shared by the readers of sections.c and effects.c: the motion path at
  * obj[key] ({"points", "speed", "loop", "start"}; dim 2 or 3), and a shape

@@ -5,6 +5,7 @@
 
 #include "modesplit/volume.h"
 #include "sim/sim_internal.h"
+#include "volume/volume_internal.h"
 #include "core/struct_sizes.h"
 
 ms_sim_desc ms_sim_desc_default(void)
@@ -136,6 +137,8 @@ static ms_status alloc_buffers(ms_sim *sim, int floaters)
                     if (!sim->wave_snap[k])
                         return oom("the surface->volume coupling");
                 }
+                /* and the volume's record of them (i15: steps allocate nothing) */
+                MS_TRY(ms_volume_reserve_waves(sim->volume, nf));
                 sim->wave_colmap = sim_alloc(&sim->own_surface_bytes, (size_t)sim->snx,
                                              sizeof *sim->wave_colmap);
                 sim->wave_rowsum = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));

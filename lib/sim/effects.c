@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "modesplit/surface.h"
+#include "surface/surface_internal.h"
 #include "modesplit/volume.h"
 #include "sim/sim_internal.h"
 
@@ -105,7 +106,17 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
         d.radius = sc->boat_radius;
         d.depth = sc->boat_depth;
         st = ms_surface_add_disturber(sim->surface, &d, &sim->boat_id);
+        /* its path now, at speed 0 (it stays on the first point, as above),
+         * so the start sets it again in the same block: the frame the boat
+         * starts allocates nothing (i15) */
+        if (st == MS_OK && n > 1)
+            st = ms_surface_set_disturber_path(sim->surface, sim->boat_id, n, sim->boat_xy, 0.0f,
+                                               sc->boat_path.loop);
     }
+    /* the dent the pointer drags without a volume is added when the drag
+     * starts: its room now (i15) */
+    if (st == MS_OK && sim->surface && sc->has_drag && !sim->volume)
+        st = ms_surface_reserve_disturbers(sim->surface, sc->has_boat ? 2 : 1);
     if (st == MS_OK && sim->surface && sc->ndrops > 0) {
         /* drops in time order (stable: equal times keep the scene's order) */
         sim->drop_order = ms_alloc_array((size_t)sc->ndrops, sizeof *sim->drop_order);

@@ -12,11 +12,36 @@
  * start (t_0), which the surface task of the first call turns into the
  * field it shows. Done lazily so that an engine can fill the volume
  * between ms_sim_create and the first step. */
+/* Issue 15: no allocation in any step after the first. The first makes
+ * every block the frames use at its largest: the second snapshot slot and
+ * particle copy (the volume's particle count bounds both); the field
+ * extraction's scratch, at the most threads it runs on (into hfield[1],
+ * which frame 1 writes again); the one-cell extraction of the pointer's
+ * drag, at the most smoothing passes (kinetic energy 0: eq. 18) around a
+ * centre cell, the largest rectangle. Results are unchanged: these write
+ * only buffers that are written again before they are read. */
+static ms_status reserve_pipeline(ms_sim *sim)
+{
+    ms_status st = ms_sim_volume_snap(sim, 1);
+    if (st == MS_OK)
+        st = ms_sim_volume_field(sim, 1, 1);
+    if (st == MS_OK) {
+        ms_extract_snap most = sim->snap[0];
+        most.e = 0.0;
+        float h;
+        st = ms_extract_cell(&most, &sim->work_v, sim->fnx, sim->fny, sim->fnx / 2, sim->fny / 2,
+                             &h);
+    }
+    return st;
+}
+
 static ms_status prime(ms_sim *sim)
 {
     if (sim->volume) {
         double c0 = ms_now();
         ms_status st = ms_sim_volume_snap(sim, 0);
+        if (st == MS_OK)
+            st = reserve_pipeline(sim);
         if (st != MS_OK)
             return st;
         sim->stats.extract_ms += (ms_now() - c0) * 1e3;

@@ -51,6 +51,24 @@ static ms_status check_desc(const ms_surface *s, const ms_disturber_desc *d)
     return MS_OK;
 }
 
+ms_status ms_surface_reserve_disturbers(ms_surface *s, int cap)
+{
+    if (cap <= s->cap_dist)
+        return MS_OK;
+    disturber *nd = ms_realloc(s->dist, (size_t)cap * sizeof *nd);
+    if (!nd)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for a disturber");
+    s->dist = nd;
+    s->cap_dist = cap;
+    float *t = ms_malloc((size_t)MS_SURFACE_MAX_LEVELS * 2 * (size_t)cap * sizeof *t);
+    if (!t)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for a disturber");
+    ms_free(s->level_xy);
+    s->level_xy = t;
+    s->level_cap = cap;
+    return MS_OK;
+}
+
 ms_status ms_surface_add_disturber(ms_surface *s, const ms_disturber_desc *user, int *id)
 {
     ms_status st;
@@ -60,14 +78,9 @@ ms_status ms_surface_add_disturber(ms_surface *s, const ms_disturber_desc *user,
                            MS_SIZES_DISTURBER_DESC, PART)) ||
         (st = check_desc(s, d)))
         return st;
-    if (s->ndist == s->cap_dist) {
-        int cap = s->cap_dist ? 2 * s->cap_dist : 4;
-        disturber *nd = ms_realloc(s->dist, (size_t)cap * sizeof *nd);
-        if (!nd)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for a disturber");
-        s->dist = nd;
-        s->cap_dist = cap;
-    }
+    if (s->ndist == s->cap_dist &&
+        (st = ms_surface_reserve_disturbers(s, s->cap_dist ? 2 * s->cap_dist : 4)))
+        return st;
     disturber *b = &s->dist[s->ndist++];
     memset(b, 0, sizeof *b);
     b->id = s->next_id++;
@@ -104,7 +117,7 @@ ms_status ms_surface_move_disturber(ms_surface *s, int id, float x, float y, flo
     b->d = d;
     ms_free(b->path);
     b->path = NULL;
-    b->npath = 0;
+    b->npath = b->path_cap = 0;
     return MS_OK;
 }
 
@@ -154,12 +167,15 @@ ms_status ms_surface_set_disturber_path(ms_surface *s, int id, int npoints, cons
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
                            "surface: path point %d has a non-finite coordinate %g", k / 2,
                            (double)xy[k]);
-    float *copy = ms_malloc((size_t)npoints * 2 * sizeof *copy);
-    if (!copy)
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for a path");
-    memcpy(copy, xy, (size_t)npoints * 2 * sizeof *copy);
-    ms_free(b->path);
-    b->path = copy;
+    if (npoints > b->path_cap) { /* a path as long as the last reuses its block */
+        float *copy = ms_malloc((size_t)npoints * 2 * sizeof *copy);
+        if (!copy)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for a path");
+        ms_free(b->path);
+        b->path = copy;
+        b->path_cap = npoints;
+    }
+    memmove(b->path, xy, (size_t)npoints * 2 * sizeof *b->path);
     b->npath = npoints;
     b->loop = loop != 0;
     b->path_speed = speed;

@@ -30,6 +30,8 @@ typedef struct disturber {
     ms_disturber_desc d;  /* position and velocity now */
     float *path;          /* npath (x, y) pairs, or NULL */
     int npath, loop;
+    int path_cap;         /* pairs path has room for: a new path of up to
+                             that many points reuses it */
     float path_speed;     /* m/s along the path */
     double path_s;        /* m travelled along the path */
 } disturber;
@@ -74,6 +76,11 @@ struct ms_surface {
 };
 
 #define MS_SURFACE_ORIGIN 15
+#define MS_SURFACE_MAX_LEVELS 8 /* sub-steps wave.c fuses into one sweep */
+
+/* Room for cap disturbers (disturber.c): the array and wave.c's level_xy
+ * grow together, outside the steps. */
+ms_status ms_surface_reserve_disturbers(ms_surface *s, int cap);
 
 static inline size_t ms_surface_row(const ms_surface *s, int y)
 {

@@ -28,6 +28,7 @@
  * stable for c dt / dx <= 1/sqrt(2). ms_surface_step splits dt into equal
  * sub-steps at Courant number <= COURANT_MAX just below that bound.
  */
+#include <assert.h>
 #include <float.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +41,7 @@
 #define PART "surface"
 #define COURANT_MAX 0.7f /* < 1/sqrt(2) = 0.7071 */
 #define MAX_STEP 10.0f   /* s: longer calls are refused as a unit error */
-#define MAX_LEVELS 8     /* sub-steps fused into one sweep (see block()) */
+#define MAX_LEVELS MS_SURFACE_MAX_LEVELS /* sub-steps fused into one sweep (block()) */
 
 float ms_surface_stable_dt(const ms_surface *s)
 {
@@ -57,12 +58,20 @@ static inline __attribute__((always_inline)) void
 velocity_row(float *restrict v, const float *restrict h, const float *restrict a,
              const float *restrict d, ptrdiff_t W, int nx)
 {
+    /* the rows above and below as pointers of their own and the cells
+     * counted from 0, so the loop is a plain count: clang's vectoriser
+     * gave up on the offsets i +- W from one pointer (-Wpass-failed) */
+    const float *restrict hn = h - W + 1, *restrict hs = h + W + 1;
+    const float *restrict an = a - W + 1, *restrict as = a + W + 1;
+    const float *restrict hw = h, *restrict he = h + 2, *restrict aw = a, *restrict ae = a + 2;
+    float *restrict vc = v + 1;
+    const float *restrict hc = h + 1, *restrict ac = a + 1, *restrict dc = d + 1;
 #pragma omp simd
-    for (int i = 1; i <= nx; ++i) {
-        const float hc = h[i];
-        const float flux = a[i + 1] * (h[i + 1] - hc) + a[i - 1] * (h[i - 1] - hc) +
-                           a[i + W] * (h[i + W] - hc) + a[i - W] * (h[i - W] - hc);
-        v[i] = d[i] * v[i] + (0.5f + 0.5f * d[i]) * a[i] * flux;
+    for (int i = 0; i < nx; ++i) {
+        const float c = hc[i];
+        const float flux =
+            ae[i] * (he[i] - c) + aw[i] * (hw[i] - c) + as[i] * (hs[i] - c) + an[i] * (hn[i] - c);
+        vc[i] = dc[i] * vc[i] + (0.5f + 0.5f * dc[i]) * ac[i] * flux;
     }
 }
 
@@ -165,14 +174,9 @@ static void block(ms_surface *s, int K, const float *level_xy)
  * can give early, so it runs one step a sweep. */
 static ms_status advance(ms_surface *s, float dt, int n)
 {
-    if (s->ndist > s->level_cap) { /* only after disturbers were added */
-        float *t = ms_malloc((size_t)MAX_LEVELS * 2 * s->cap_dist * sizeof *t);
-        if (!t)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for disturbers");
-        ms_free(s->level_xy);
-        s->level_xy = t;
-        s->level_cap = s->cap_dist;
-    }
+    /* ms_surface_add_disturber grows level_xy with the disturbers: a step
+     * allocates nothing (issue 15) */
+    assert(s->ndist <= s->level_cap);
     float *level_xy = s->level_xy;
     const int periodic = s->desc.boundary == MS_BOUNDARY_PERIODIC;
     while (n > 0) {

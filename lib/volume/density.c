@@ -144,6 +144,10 @@ static void density_part(void *ctxp, int part, int b, int e)
         float err = rho / rho0 - 1.0f; /* compression */
         max_err = err > max_err ? err : max_err;
     }
+    if (!v->lists_reserved && !ms_volume_lists_headroom(v, part)) {
+        v->list_failed[part] = 1;
+        return;
+    }
     ctx->coincident[part] = coincident;
     ctx->surface[part] = surface;
     ctx->max_err[part] = max_err;
@@ -186,6 +190,7 @@ ms_status ms_volume_density(ms_volume *v)
     }
     if (failed)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for the neighbour lists");
+    v->lists_reserved = 1;
     v->surface_count = surface;
     v->pairs = pairs;
     v->counts_valid = 1;

@@ -431,7 +431,7 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
     for (int i = 0; i < v->n; ++i)
         m += v->mark[i] != 0;
     if (m > s->cap) {
-        int cap = m + m / 8 + 64;
+        int cap = v->n; /* m <= n: room for all (i15: steps do not allocate) */
         float *q = ms_alloc_array((size_t)cap * 3, sizeof(float));
         if (!q)
             return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for height extraction");
@@ -525,18 +525,19 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
      * reaches (row_reaches) */
     const int parts = ms_vpool_threads(pool);
     const size_t reach_stride = 2 * (size_t)ceilf(s->R / dye) + 1;
+    /* sized for the snapshot's capacity, not its m: no growth as m does (i15) */
+    const size_t mcap = (size_t)s->cap;
     ms_status st = scratch((void **)&w->start, &w->start_cap, cells + 1, sizeof(int));
     if (st == MS_OK)
         st = scratch((void **)&w->list, &w->list_cap,
-                     (size_t)m + cells + 1 + (size_t)parts * reach_stride, sizeof(int));
+                     mcap + cells + 1 + (size_t)parts * reach_stride, sizeof(int));
     /* buf: 3m binned positions, 3 fields, and for each thread 2 x 4m
      * candidates (a particle and its images) */
-    const size_t cand_stride = 8 * ((size_t)m + MS_VOLUME_LANES);
+    const size_t cand_stride = 8 * (mcap + MS_VOLUME_LANES);
     const size_t padded = (size_t)(rw + 2) * (rh + 2);
     if (st == MS_OK)
         st = scratch((void **)&w->buf, &w->buf_cap,
-                     3 * (size_t)m + 2 * rcells + padded + (size_t)parts * cand_stride,
-                     sizeof(float));
+                     3 * mcap + 2 * rcells + padded + (size_t)parts * cand_stride, sizeof(float));
     if (st != MS_OK)
         return st;
     int *cstart = w->start, *ckey = w->list, *cfill = w->list + m, *reach = cfill + cells + 1;

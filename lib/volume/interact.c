@@ -177,6 +177,21 @@ static float sample(const float *f, const ms_grid *g, float x, float y)
     return a * (1.0f - ty) + b * ty;
 }
 
+ms_status ms_volume_reserve_waves(ms_volume *v, size_t cells)
+{
+    if (cells <= v->wave_cap)
+        return MS_OK;
+    float *p = ms_alloc_array(cells, sizeof(float));
+    if (!p)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for a wave field of %zu cells",
+                       cells);
+    ms_free(v->wave_prev);
+    v->wave_prev = p;
+    v->wave_cap = cells;
+    v->wave_valid = 0; /* what it held is gone */
+    return MS_OK;
+}
+
 ms_status ms_volume_adapt_to_waves(ms_volume *v, const float *wave_height, const ms_grid *g,
                                    float gain)
 {
@@ -223,13 +238,9 @@ ms_status ms_volume_adapt_to_waves(ms_volume *v, const float *wave_height, const
         }
         ms_volume_publish(v);
     } else if (cells > v->wave_cap) {
-        float *p = ms_alloc_array(cells, sizeof(float));
-        if (!p)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for a %d x %d wave field",
-                           g->nx, g->ny);
-        ms_free(v->wave_prev);
-        v->wave_prev = p;
-        v->wave_cap = cells;
+        ms_status st = ms_volume_reserve_waves(v, cells);
+        if (st != MS_OK)
+            return st;
     }
     memcpy(v->wave_prev, wave_height, cells * sizeof(float));
     v->wave_grid = *g;

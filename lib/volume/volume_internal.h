@@ -200,6 +200,7 @@ struct ms_volume {
     ms_vpool *pool;
     ms_nlist lists[MS_VOLUME_MAX_THREADS], ghosts[MS_VOLUME_MAX_THREADS];
     int list_failed[MS_VOLUME_MAX_THREADS];
+    int lists_reserved; /* the first density pass gave the lists their headroom */
 
     /* statistics */
     double time;
@@ -299,6 +300,11 @@ typedef struct ms_rows {
     size_t cand;
 } ms_rows;
 int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *ncand);
+/* 1, or 0 if the lists could not get their headroom (neighbours.c) */
+int ms_volume_lists_headroom(ms_volume *v, int part);
+/* Room for a wave field of `cells` for ms_volume_adapt_to_waves (interact.c),
+ * so the sim's steps allocate nothing (i15). */
+ms_status ms_volume_reserve_waves(ms_volume *v, size_t cells);
 
 /* density.c: the neighbour lists, and rho, prs, inv_rho, nbr for every
  * particle; surface count and density error statistics. MS_ERR_OUT_OF_MEMORY

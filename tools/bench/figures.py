@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+"""The README's speed figures against the committed bench CSVs (issue 15).
+
+data/bench/*.csv are the CSVs of one `make bench` on a quiet machine
+(data/bench/README.md says which machine, commit and date). README.md
+quotes them in two ways, both checked here:
+
+  * a figure as a Markdown link to its CSV whose title picks the row and
+    the column:
+        [259](data/bench/scenes.csv "scene=fig1 threads=2 fps_median_per_s")
+    The row is the one whose columns equal every key=value; the last word
+    is the column. The figure is checked at the decimals it is written
+    with (259 against 258.881 passes, 260 fails).
+  * a generated table between <!-- bench-table NAME --> and
+    <!-- /bench-table --> (NAME from TABLES below): rebuilt from the CSVs
+    and compared line by line.
+
+Figures that are not linked are not checked: link a figure that comes from
+`make bench`; figures measured otherwise (a loaded machine, a one-off
+comparison) say so in their sentence.
+
+  figures.py --check [README.md]   exit 1 with one line per mismatch
+  figures.py --write [README.md]   rewrite every linked figure and table
+  figures.py --commit BENCH_DIR    copy BENCH_DIR/*.csv into data/bench,
+                                   write data/bench/README.md, then --write
+"""
+import csv
+import datetime
+import glob
+import os
+import re
+import shutil
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+DATA = os.path.join(ROOT, "data", "bench")
+LINK = re.compile(r'\[([-+]?[0-9]+(?:\.[0-9]+)?)\]\((data/bench/[A-Za-z0-9_.-]+\.csv) "([^"]*)"\)')
+TABLE = re.compile(r"<!-- bench-table ([a-z_]+) -->\n(.*?)<!-- /bench-table -->", re.S)
+
+
+class Mismatch(Exception):
+    pass
+
+
+def load(name, cache={}):
+    if name not in cache:
+        path = os.path.join(ROOT, name)
+        if not os.path.exists(path):
+            raise Mismatch(f"{name} does not exist")
+        with open(path, newline="") as f:
+            cache[name] = list(csv.DictReader(f))
+    return cache[name]
+
+
+def lookup(name, selector):
+    words = selector.split()
+    if not words or "=" in words[-1]:
+        raise Mismatch(f'"{selector}" names no column (key=value ... column)')
+    column, keys = words[-1], dict(w.split("=", 1) for w in words[:-1])
+    rows = [r for r in load(name) if all(r.get(k) == v for k, v in keys.items())]
+    if len(rows) != 1:
+        raise Mismatch(f'"{selector}" picks {len(rows)} rows of {name}, not one')
+    if column not in rows[0]:
+        raise Mismatch(f"{name} has no column {column}")
+    return float(rows[0][column])
+
+
+def decimals(text):
+    return len(text.split(".")[1]) if "." in text else 0
+
+
+def fmt(value, places):
+    return f"{value:.{places}f}"
+
+
+def num(row, key, places):
+    return fmt(float(row[key]), places)
+
+
+def table_scenes():
+    """Table 1 of the paper and the _x10 variants: frames/s."""
+    rows = load("data/bench/scenes.csv")
+    by = {(r["scene"], r["threads"]): r for r in rows}
+    scenes = []
+    for r in rows:
+        if r["scene"] not in scenes:
+            scenes.append(r["scene"])
+    out = ["| scene | particles | SPH field | wave grid | paper frames/s | frames/s, 1 thread "
+           "(p10–p90) | frames/s, 2 threads (p10–p90) | 2 over 1 |",
+           "|---|---|---|---|---|---|---|---|"]
+    for s in scenes:
+        one, two = by.get((s, "1")), by.get((s, "2"))
+        if not one or not two:
+            raise Mismatch(f"data/bench/scenes.csv lacks {s} with 1 or 2 threads")
+        side = lambda n: f"{int(n) ** 0.5:.0f}²" if int(n) else "–"
+        paper = one["paper_fps_per_s"] if one["paper_fps_per_s"] != "0" else "–"
+        cell = lambda r: (f"{num(r, 'fps_median_per_s', 0)} ({num(r, 'fps_p10_per_s', 0)}–"
+                          f"{num(r, 'fps_p90_per_s', 0)})")
+        out.append(f"| {s} | {one['particles'] if one['particles'] != '0' else '–'} | "
+                   f"{side(one['field_cells'])} | {side(one['wave_cells'])} | {paper} | "
+                   f"{cell(one)} | {cell(two)} | {num(two, 'speedup_vs_1_thread', 2)}× |")
+    return out
+
+
+def table_parts():
+    """One line per part bench: the solver costs behind the frames/s."""
+    out = ["| bench (CSV) | case | median |", "|---|---|---|"]
+    for r in load("data/bench/surface.csv"):
+        out.append(f"| surface (`surface.csv`) | {r['grid']}² grid, {r['threads']} thread | "
+                   f"{num(r, 'ns_per_cell_median', 3)} ns per cell-update, "
+                   f"{num(r, 'ms_per_substep_median', 3)} ms per sub-step |")
+    for r in load("data/bench/volume.csv"):
+        out.append(f"| volume (`volume.csv`) | {r['particles']} particles, {r['threads']} "
+                   f"thread{'s' if r['threads'] != '1' else ''} | "
+                   f"{num(r, 'ms_per_step_median', 2)} ms per sub-step, "
+                   f"{num(r, 'Mpairs_per_s', 0)} M pairs/s |")
+    for r in load("data/bench/extract.csv"):
+        out.append(f"| extraction (`extract.csv`) | {r['scene']}, {r['nx']}×{r['ny']}, "
+                   f"{r['threads']} thread{'s' if r['threads'] != '1' else ''} | "
+                   f"{num(r, 'ms_median', 2)} ms per call |")
+    for r in load("data/bench/dfsph.csv"):
+        out.append(f"| pressure law (`dfsph.csv`) | {r['particles']} particles, {r['law']} | "
+                   f"{num(r, 'ms_per_simulated_s', 0)} ms per simulated s |")
+    for r in load("data/bench/render_scenes.csv"):
+        out.append(f"| render (`render_scenes.csv`) | {r['scene']}, {r['width']}² | "
+                   f"{num(r, 'draw_ms_median', 1)} ms per draw, "
+                   f"{num(r, 'frame_fps', 1)} frames/s with the sim |")
+    return out
+
+
+TABLES = {"scenes": table_scenes, "parts": table_parts}
+
+
+def process(text, write):
+    """(new text, mismatches)."""
+    problems = []
+
+    def line_of(pos):
+        return text.count("\n", 0, pos) + 1
+
+    def figure(m):
+        quoted, name, selector = m.group(1), m.group(2), m.group(3)
+        try:
+            want = fmt(lookup(name, selector), decimals(quoted))
+        except Mismatch as e:
+            problems.append(f"README.md:{line_of(m.start())}: {e}")
+            return m.group(0)
+        if want != quoted:
+            if not write:
+                problems.append(f'README.md:{line_of(m.start())}: {quoted} is {want} in {name} '
+                                f'("{selector}")')
+            return f'[{want}]({name} "{selector}")'
+        return m.group(0)
+
+    def table(m):
+        name = m.group(1)
+        if name not in TABLES:
+            problems.append(f"README.md:{line_of(m.start())}: no bench table {name!r} "
+                            f"(known: {', '.join(TABLES)})")
+            return m.group(0)
+        try:
+            want = "\n".join(TABLES[name]()) + "\n"
+        except Mismatch as e:
+            problems.append(f"README.md:{line_of(m.start())}: {e}")
+            return m.group(0)
+        if want != m.group(2) and not write:
+            have = m.group(2).splitlines()
+            for k, line in enumerate(want.splitlines()):
+                if k >= len(have) or have[k] != line:
+                    problems.append(f"README.md:{line_of(m.start(2)) + k}: bench table {name}: "
+                                    f"the CSVs give\n    {line}")
+                    break
+            else:
+                problems.append(f"README.md:{line_of(m.start(2))}: bench table {name} has "
+                                f"extra lines")
+        return f"<!-- bench-table {name} -->\n{want}<!-- /bench-table -->"
+
+    new = LINK.sub(figure, text)
+    new = TABLE.sub(table, new)
+    return new, problems
+
+
+def commit(bench_dir):
+    csvs = sorted(glob.glob(os.path.join(bench_dir, "*.csv")))
+    if not csvs:
+        sys.exit(f"figures: no CSV in {bench_dir} (run `make bench` first)")
+    commits, machines = set(), set()
+    for path in csvs:
+        with open(path, newline="") as f:
+            for r in csv.DictReader(f):
+                commits.add(r.get("commit", "?"))
+                machines.add(r.get("machine", "?"))
+    os.makedirs(DATA, exist_ok=True)
+    for old in glob.glob(os.path.join(DATA, "*.csv")):
+        os.remove(old)
+    for path in csvs:
+        shutil.copy(path, DATA)
+    today = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d")
+    write_readme(sorted(commits), sorted(machines), today, [os.path.basename(p) for p in csvs])
+
+
+def write_readme(commits, machines, date, names):
+    with open(os.path.join(DATA, "README.md"), "w") as f:
+        f.write("# Committed bench results\n\n"
+                "The CSVs of one `make bench` on a quiet machine; README.md's speed\n"
+                "figures link to them and `make check` (`check-bench-figures`,\n"
+                "tools/bench/figures.py) fails when one differs.\n\n"
+                f"- commit: {', '.join(commits)}\n"
+                f"- machine: {', '.join(machines)} (as `make bench` names it in each row)\n"
+                f"- date: {date}\n"
+                f"- files: {', '.join(names)}\n\n"
+                "To refresh: on a quiet machine `make bench`, then `make bench-commit`\n"
+                "(copies bench/*.csv here, rewrites this file and every linked figure\n"
+                "and generated table of README.md); read the diff of README.md, whose\n"
+                "prose may need to follow the new figures, and commit both.\n")
+
+
+def main(argv):
+    if len(argv) >= 2 and argv[1] == "--commit":
+        commit(argv[2] if len(argv) > 2 else os.path.join(ROOT, "bench"))
+        argv = [argv[0], "--write"]
+    if len(argv) < 2 or argv[1] not in ("--check", "--write"):
+        sys.exit(__doc__)
+    readme = argv[2] if len(argv) > 2 else os.path.join(ROOT, "README.md")
+    with open(readme) as f:
+        text = f.read()
+    new, problems = process(text, argv[1] == "--write")
+    if argv[1] == "--write":
+        if problems:
+            print("\n".join(problems), file=sys.stderr)
+            return 1
+        if new != text:
+            with open(readme, "w") as f:
+                f.write(new)
+        print(f"bench figures: {readme} follows data/bench/*.csv")
+        return 0
+    if problems:
+        print("\n".join(problems), file=sys.stderr)
+        print(f"check-bench-figures: {len(problems)} figure(s) of README.md differ from "
+              "data/bench/*.csv (after a deliberate `make bench`: `make bench-commit`)",
+              file=sys.stderr)
+        return 1
+    figures = len(LINK.findall(text))
+    tables = len(TABLE.findall(text))
+    if figures + tables == 0:
+        print("check-bench-figures: README.md links no figure to data/bench/", file=sys.stderr)
+        return 1
+    print(f"bench figures: {figures} linked figures and {tables} tables of README.md match "
+          "data/bench/*.csv")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
