@@ -218,6 +218,14 @@ MS_API ms_status ms_sky_write_cubemap(const char *dir, int size, const float lig
  * from pool_min, 1 = unfocused light); NULL when it was not traced. */
 MS_API const float *ms_renderer_caustics(const ms_renderer *r, int *n);
 
+/* Writes w x h RGBA8 pixels (top row first, as ms_renderer_pixels gives
+ * them) to path as a PNG, through "<path>.tmp" and a rename: the bytes
+ * ms_renderer_write_png writes for the same pixels. Uses no renderer, so a
+ * program may encode a copy of one frame in another thread while the
+ * renderer draws the next (`modesplit run --png` does). Sides in
+ * [1, 16384]; MS_ERR_INVALID_ARGUMENT names a bad one, MS_ERR_IO the file. */
+MS_API ms_status ms_image_write_png(const char *path, const unsigned char *rgba, int w, int h);
+
 #ifdef __cplusplus
 }
 #endif
