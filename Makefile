@@ -113,6 +113,8 @@ TESTS     := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TSAN_SUITES ?= core plugin sim determinism api
 # issue 12 (work sharing): the shared pool's helper thread
 TSAN_SUITES += pool
+# issue 14 (speed): the tool's PNG writer thread (run / render --png)
+TSAN_SUITES += render_tool
 ifeq ($(SAN),tsan)
 TESTS     := $(filter $(TSAN_SUITES:%=$(BUILD)/tests/test_%),$(TESTS))
 endif

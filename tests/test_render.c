@@ -770,16 +770,40 @@ START_TEST(a_coarser_mesh_keeps_the_fields_normals)
                   to_full, to_averaged);
     free(full);
     free(averaged);
-    /* automatic: a small image of a fine field keeps a vertex every
-     * MS_MESH_AUTO_PIXELS (8) pixels at most */
+    /* automatic: a small image of a fine, flat field keeps a vertex every
+     * MS_MESH_AUTO_PIXELS (32) pixels at most */
     d.mesh_step = 0;
-    d.width = d.height = 32;
+    d.width = d.height = 128;
     r = create_ok(&d);
     float *fine = field(256, 0.25f);
     draw_ok(r, fine, 256);
     ms_renderer_get_stats(r, &st);
-    /* 0.94 m of water across 32 pixels: 8 pixels = 23.5 cm, 60 cells */
+    /* 0.94 m of water across 128 pixels: 32 pixels = 23.5 cm, 60 cells */
     ck_assert_int_eq(st.mesh_nx, 256 / 60);
+    /* waves 3 cm high, 20 cells long: the block averages of 60 cells would
+     * flatten them by far more than MS_MESH_AUTO_ERROR_PX (2) pixels, so
+     * the screen-space error lowers the step until the mesh's heights
+     * follow the waves */
+    for (int j = 0; j < 256; ++j)
+        for (int i = 0; i < 256; ++i)
+            fine[j * 256 + i] = 0.25f + 0.03f * sinf(0.314f * (float)i) * cosf(0.25f * (float)j);
+    draw_ok(r, fine, 256);
+    ms_renderer_get_stats(r, &st);
+    const ms_grid g256 = grid(256);
+    float *scratch = malloc(sizeof *scratch * 128 * 128);
+    const int auto_step = ms_mesh_auto_step(&d, fine, &g256, scratch);
+    ck_assert_msg(auto_step < 60 && st.mesh_nx == 256 / auto_step,
+                  "waves of 3 cm: step %d, mesh %d", auto_step, st.mesh_nx);
+    ck_assert_int_ge(auto_step, 2);
+    /* the eye straight above the pool: metres per pixel at the water */
+    const double px = 2.0 * (d.eye[2] - d.water_level) * tan(0.5 * d.fov * 3.14159265358979 / 180.0) /
+                      d.height;
+    const double flat_err = ms_mesh_height_error(fine, &g256, 60, scratch);
+    const double auto_err = ms_mesh_height_error(fine, &g256, auto_step, scratch);
+    ck_assert_msg(flat_err > MS_MESH_AUTO_ERROR_PX * px && auto_err <= MS_MESH_AUTO_ERROR_PX * px,
+                  "height error %.4f m at step 60, %.4f m at step %d; bound %.4f m", flat_err,
+                  auto_err, auto_step, MS_MESH_AUTO_ERROR_PX * px);
+    free(scratch);
     ms_renderer_destroy(r);
     free(fine);
     free(coarse);

@@ -13,6 +13,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "modesplit/modesplit.h"
@@ -204,6 +205,162 @@ START_TEST(cubemap_writes_six_faces_a_renderer_loads)
 }
 END_TEST
 
+/* The bytes of a file (*n of them); NULL if it cannot be read. */
+static unsigned char *file_bytes(const char *path, long *n)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    *n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    unsigned char *b = malloc((size_t)*n + 1);
+    if (b && fread(b, 1, (size_t)*n, f) != (size_t)*n) {
+        free(b);
+        b = NULL;
+    }
+    fclose(f);
+    return b;
+}
+
+static int same_file(const char *a, const char *b)
+{
+    long na = -1, nb = -2;
+    unsigned char *x = file_bytes(a, &na), *y = file_bytes(b, &nb);
+    int same = x && y && na == nb && memcmp(x, y, (size_t)na) == 0;
+    free(x);
+    free(y);
+    return same;
+}
+
+/* `render --png` encodes in a writer thread while it draws the next frame
+ * (issue 14): the frames of one call are, byte for byte and in order, the
+ * frames each drawn alone, and they are what ms_image_write_png (the
+ * encoder of ms_renderer_write_png) makes of their pixels. */
+START_TEST(png_frames_encoded_off_the_render_thread_keep_their_bytes_and_order)
+{
+    if (!MS_HAVE_GL)
+        MS_SKIP("built without OSMesa and EGL: nothing can draw");
+    make_tmp_dir();
+    char run[300], all[300], one[300], a[340], b[340];
+    snprintf(run, sizeof run, "%s/run.h5", tmp_dir);
+    snprintf(all, sizeof all, "%s/all", tmp_dir);
+    make_run(run);
+    const char *args[] = {"render", run, "--shader", "water", "--size", "80x60", "--png", all,
+                          NULL};
+    result r = run_tool(args);
+    ck_assert_msg(r.status == 0, "render failed: %s", r.err);
+    free(r.err);
+    for (int f = 0; f < 3; ++f) {
+        char frames[16];
+        snprintf(frames, sizeof frames, "%d:%d", f, f);
+        snprintf(one, sizeof one, "%s/one%d", tmp_dir, f);
+        const char *alone[] = {"render",   run,    "--shader", "water", "--size", "80x60",
+                               "--frames", frames, "--png",    one,     NULL};
+        r = run_tool(alone);
+        ck_assert_msg(r.status == 0, "render of frame %d failed: %s", f, r.err);
+        free(r.err);
+        snprintf(a, sizeof a, "%s/frame_%05d.png", all, f);
+        snprintf(b, sizeof b, "%s/frame_%05d.png", one, f);
+        ck_assert_msg(same_file(a, b), "%s and %s differ", a, b);
+    }
+    /* the frames differ, so a swap would show */
+    snprintf(a, sizeof a, "%s/frame_%05d.png", all, 0);
+    snprintf(b, sizeof b, "%s/frame_%05d.png", all, 2);
+    ck_assert_msg(!same_file(a, b), "frames 0 and 2 are the same picture");
+    /* decoded and encoded again by the library: the same file */
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    ck_assert(png_image_begin_read_from_file(&img, a));
+    img.format = PNG_FORMAT_RGBA;
+    unsigned char *px = malloc(PNG_IMAGE_SIZE(img));
+    ck_assert(png_image_finish_read(&img, NULL, px, 0, NULL));
+    snprintf(b, sizeof b, "%s/again.png", tmp_dir);
+    ck_assert_int_eq(ms_image_write_png(b, px, (int)img.width, (int)img.height), MS_OK);
+    ck_assert_msg(same_file(a, b), "ms_image_write_png made other bytes than %s", a);
+    free(px);
+    remove_tmp_dir();
+}
+END_TEST
+
+START_TEST(image_write_png_refuses_bad_arguments_naming_them)
+{
+    make_tmp_dir();
+    unsigned char px[16] = {0};
+    char path[300];
+    snprintf(path, sizeof path, "%s/x.png", tmp_dir);
+    MS_ASSERT_REFUSED(ms_image_write_png(NULL, px, 2, 2), MS_ERR_INVALID_ARGUMENT, "path");
+    MS_ASSERT_REFUSED(ms_image_write_png(path, NULL, 2, 2), MS_ERR_INVALID_ARGUMENT, "NULL");
+    MS_ASSERT_REFUSED(ms_image_write_png(path, px, 0, 2), MS_ERR_INVALID_ARGUMENT, "0 x 2");
+    MS_ASSERT_REFUSED(ms_image_write_png(path, px, 2, 20000), MS_ERR_INVALID_ARGUMENT,
+                      "[1, 16384]");
+    snprintf(path, sizeof path, "%s/no/such/dir/x.png", tmp_dir);
+    MS_ASSERT_REFUSED(ms_image_write_png(path, px, 2, 2), MS_ERR_IO, "cannot write");
+    ck_assert_int_ne(access(path, F_OK), 0);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* SIGINT during `run --png` of a scene with a render section: the run
+ * finishes the frame in hand and every frame in the run file has its PNG
+ * on disk (the writer thread's queue is written out before the exit). */
+START_TEST(sigint_during_run_png_loses_no_queued_frame)
+{
+    if (!MS_HAVE_GL)
+        MS_SKIP("built without OSMesa and EGL: nothing can draw");
+    make_tmp_dir();
+    char scene[300], out[300], dir[300], p[340];
+    snprintf(scene, sizeof scene, "%s/drawn.json", tmp_dir);
+    snprintf(out, sizeof out, "%s/drawn.h5", tmp_dir);
+    snprintf(dir, sizeof dir, "%s/png", tmp_dir);
+    char *text = ms_test_slurp(SMALL_SCENE);
+    ck_assert_ptr_nonnull(text);
+    char *brace = strrchr(text, '}');
+    ck_assert_ptr_nonnull(brace);
+    *brace = '\0';
+    FILE *f = fopen(scene, "w");
+    ck_assert_ptr_nonnull(f);
+    fprintf(f, "%s, \"render\": {\"width\": 160, \"height\": 120, \"shader\": \"water\"}}\n",
+            text);
+    fclose(f);
+    free(text);
+    const char *argv[] = {ms_test_tool_path(), "run", scene, "--frames", "100000", "--out", out,
+                          "--png", dir, "--quiet", NULL};
+    pid_t pid = fork();
+    ck_assert_int_ge(pid, 0);
+    if (pid == 0) {
+        int o = open("/dev/null", O_WRONLY);
+        dup2(o, 1);
+        dup2(o, 2);
+        execv(argv[0], (char *const *)argv);
+        _exit(127);
+    }
+    snprintf(p, sizeof p, "%s/frame_00003.png", dir);
+    for (int i = 0; i < 1200 && access(p, F_OK) != 0; ++i)
+        nanosleep(&(struct timespec){0, 50000000}, NULL);
+    ck_assert_msg(access(p, F_OK) == 0, "no 4th frame within 60 s");
+    kill(pid, SIGINT);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    ck_assert_msg(WIFSIGNALED(status) && WTERMSIG(status) == SIGINT, "status %d", status);
+    ms_reader *rd;
+    ck_assert_msg(ms_reader_open(out, &rd) == MS_OK, "%s", ms_last_error());
+    const long frames = ms_reader_frames(rd);
+    ms_reader_close(rd);
+    ck_assert_int_ge(frames, 4);
+    for (long k = 0; k < frames; ++k) {
+        int w = 0, h = 0;
+        snprintf(p, sizeof p, "%s/frame_%05ld.png", dir, k);
+        png_size(p, &w, &h); /* there, and a whole picture */
+        ck_assert_int_eq(w, 160);
+    }
+    snprintf(p, sizeof p, "%s/frame_%05ld.png", dir, frames);
+    ck_assert_msg(access(p, F_OK) != 0, "a PNG for frame %ld, which the file lacks", frames);
+    remove_tmp_dir();
+}
+END_TEST
+
 static Suite *render_tool_suite(void)
 {
     Suite *s = suite_create("render_tool");
@@ -213,6 +370,9 @@ static Suite *render_tool_suite(void)
     tcase_add_test(tc, render_pipes_a_video_to_ffmpeg_or_says_it_is_missing);
     tcase_add_test(tc, render_refuses_bad_arguments_naming_them);
     tcase_add_test(tc, cubemap_writes_six_faces_a_renderer_loads);
+    tcase_add_test(tc, png_frames_encoded_off_the_render_thread_keep_their_bytes_and_order);
+    tcase_add_test(tc, image_write_png_refuses_bad_arguments_naming_them);
+    tcase_add_test(tc, sigint_during_run_png_loses_no_queued_frame);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -87,10 +87,11 @@ typedef struct ms_renderer_desc {
     float tile_size;             /* m, edge of a floor tile, >= 0; 0 = 1/12 of the shorter side */
     float floor_color[3];        /* linear RGB of the tiles, each [0, 1]; [0.30, 0.52, 0.60] */
     /* The mesh has a vertex every mesh_step cells (heights averaged over
-     * the step x step block), [0, 64]. 0 = automatic: the largest step whose
-     * vertices lie at most 2 pixels apart where the water is nearest the
-     * eye (so 1 whenever a cell covers 2 pixels or more). The caustics
-     * always trace the full field. Default 0. */
+     * the step x step block), [0, 64]. 0 = automatic, a screen-space-error
+     * LOD: vertices at most 32 pixels apart where the water is nearest the
+     * eye, and a smaller step while the mesh's heights leave the field's by
+     * more than 2 pixels there (the shading normals always come from the
+     * full field). The caustics always trace the full field. Default 0. */
     int mesh_step;
     /* The GL context: "osmesa" (Mesa's off-screen library, gone from Mesa
      * 25.1 on), "egl" (an EGL context without a surface: surfaceless Mesa,
@@ -216,6 +217,14 @@ MS_API ms_status ms_sky_write_cubemap(const char *dir, int size, const float lig
 /* The caustics light map of the last draw (texels over the pool, row-major
  * from pool_min, 1 = unfocused light); NULL when it was not traced. */
 MS_API const float *ms_renderer_caustics(const ms_renderer *r, int *n);
+
+/* Writes w x h RGBA8 pixels (top row first, as ms_renderer_pixels gives
+ * them) to path as a PNG, through "<path>.tmp" and a rename: the bytes
+ * ms_renderer_write_png writes for the same pixels. Uses no renderer, so a
+ * program may encode a copy of one frame in another thread while the
+ * renderer draws the next (`modesplit run --png` does). Sides in
+ * [1, 16384]; MS_ERR_INVALID_ARGUMENT names a bad one, MS_ERR_IO the file. */
+MS_API ms_status ms_image_write_png(const char *path, const unsigned char *rgba, int w, int h);
 
 #ifdef __cplusplus
 }

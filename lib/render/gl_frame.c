@@ -20,21 +20,23 @@ static void normalize3(float v[3])
 static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *full)
 {
     ms_gl *gl = r->gl;
-    int step = r->desc.mesh_step > 0 ? r->desc.mesh_step : ms_mesh_auto_step(&r->desc, full);
+    /* room for the field averaged at any step >= 2 */
+    size_t cells = (size_t)MS_MAX(full->nx / 2, 2) * (size_t)MS_MAX(full->ny / 2, 2);
+    if (gl->coarse_cap < cells) {
+        ms_free(gl->coarse);
+        gl->coarse = ms_alloc_array(cells, sizeof(float));
+        gl->coarse_cap = gl->coarse ? cells : 0;
+        if (!gl->coarse)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "render: out of memory for the mesh of a %d x %d field", full->nx,
+                           full->ny);
+    }
+    int step = r->desc.mesh_step > 0 ? r->desc.mesh_step
+                                     : ms_mesh_auto_step(&r->desc, h, full, gl->coarse);
     step = MS_MIN(step, MS_MIN(full->nx, full->ny) / 2);
     ms_grid coarse;
     const ms_grid *g = full;
     if (step > 1) {
-        size_t cells = (size_t)(full->nx / step) * (size_t)(full->ny / step);
-        if (gl->coarse_cap < cells) {
-            ms_free(gl->coarse);
-            gl->coarse = ms_alloc_array(cells, sizeof(float));
-            gl->coarse_cap = gl->coarse ? cells : 0;
-            if (!gl->coarse)
-                return ms_fail(MS_ERR_OUT_OF_MEMORY,
-                               "render: out of memory for the mesh of a %d x %d field",
-                               full->nx, full->ny);
-        }
         ms_mesh_coarsen(h, full, step, gl->coarse, &coarse);
         h = gl->coarse;
         g = &coarse;

@@ -91,7 +91,42 @@ void ms_mesh_coarsen(const float *h, const ms_grid *g, int step, float *restrict
     }
 }
 
-int ms_mesh_auto_step(const ms_renderer_desc *d, const ms_grid *g)
+double ms_mesh_height_error(const float *h, const ms_grid *g, int step, float *coarse)
+{
+    ms_grid cg;
+    ms_mesh_coarsen(h, g, step, coarse, &cg);
+    const int nx = g->nx, ny = g->ny, cx = cg.nx, cy = cg.ny;
+    /* the coarse vertices' coordinates in fine cells (centres at i + 0.5) */
+    const double sx = (double)nx / cx, sy = (double)ny / cy;
+    double worst = 0;
+    for (int j = 0; j < ny; ++j) {
+        double y = (j + 0.5) / sy - 0.5; /* in coarse vertex units */
+        int J = y <= 0 ? 0 : y >= cy - 1 ? cy - 2 : (int)y;
+        double fy = MS_CLAMP(y - J, 0.0, 1.0);
+        if (J == 0 && j < sy / 2)
+            fy = 0; /* the outermost vertex row carries the edge cells */
+        if (J == cy - 2 && j >= ny - sy / 2)
+            fy = 1;
+        const float *r0 = coarse + (size_t)J * (size_t)cx, *r1 = r0 + cx;
+        const float *row = h + (size_t)j * (size_t)nx;
+        for (int i = 0; i < nx; ++i) {
+            double x = (i + 0.5) / sx - 0.5;
+            int I = x <= 0 ? 0 : x >= cx - 1 ? cx - 2 : (int)x;
+            double fx = MS_CLAMP(x - I, 0.0, 1.0);
+            if (I == 0 && i < sx / 2)
+                fx = 0;
+            if (I == cx - 2 && i >= nx - sx / 2)
+                fx = 1;
+            double a = r0[I] + fx * (r0[I + 1] - r0[I]), b = r1[I] + fx * (r1[I + 1] - r1[I]);
+            double e = fabs(row[i] - (a + fy * (b - a)));
+            worst = e > worst ? e : worst;
+        }
+    }
+    return worst;
+}
+
+int ms_mesh_auto_step(const ms_renderer_desc *d, const float *h, const ms_grid *g,
+                      float *scratch)
 {
     /* the nearest point of the field's rectangle, at the still water */
     const float lo[2] = {g->origin[0], g->origin[1]};
@@ -106,7 +141,12 @@ int ms_mesh_auto_step(const ms_renderer_desc *d, const ms_grid *g)
     double px = 2.0 * sqrt(dist2) * tan(0.5 * d->fov * 3.14159265358979 / 180.0) / d->height;
     double cell = MS_MIN(g->dx, g->dy);
     int step = (int)floor(MS_MESH_AUTO_PIXELS * px / cell);
-    return MS_CLAMP(step, 1, MS_MIN(64, MS_MIN(g->nx, g->ny) / 2));
+    step = MS_CLAMP(step, 1, MS_MIN(64, MS_MIN(g->nx, g->ny) / 2));
+    /* screen-space error: lower the step (by a quarter) while the drawn heights leave the
+     * field's by more than MS_MESH_AUTO_ERROR_PX pixels there */
+    while (step > 1 && ms_mesh_height_error(h, g, step, scratch) > MS_MESH_AUTO_ERROR_PX * px)
+        step = MS_MIN(step - 1, step * 3 / 4);
+    return step;
 }
 
 void ms_mesh_indices(int nx, int ny, unsigned *restrict idx)

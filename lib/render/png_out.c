@@ -9,6 +9,8 @@
 #include "core/core_internal.h"
 #include "render/render_internal.h"
 
+#define MS_IMAGE_MAX_SIDE 16384 /* pixels, ms_image_write_png */
+
 ms_status ms_png_write_rgba(const char *path, const unsigned char *rgba, int w, int h)
 {
     size_t n = strlen(path) + 5;
@@ -38,4 +40,17 @@ ms_status ms_png_write_rgba(const char *path, const unsigned char *rgba, int w, 
     png_image_free(&img);
     ms_free(tmp);
     return st;
+}
+
+ms_status ms_image_write_png(const char *path, const unsigned char *rgba, int w, int h)
+{
+    if (!path || !*path)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "image: the PNG path is NULL or empty");
+    if (!rgba)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "image: the pixels of \"%s\" are NULL", path);
+    if (w < 1 || w > MS_IMAGE_MAX_SIDE || h < 1 || h > MS_IMAGE_MAX_SIDE)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "image: %d x %d pixels for \"%s\": each side must be in [1, %d]", w, h,
+                       path, MS_IMAGE_MAX_SIDE);
+    return ms_png_write_rgba(path, rgba, w, h);
 }

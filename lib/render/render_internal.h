@@ -60,19 +60,32 @@ void ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restr
 /* The gradient (dh/dx, dh/dy) of every cell of h (as ms_mesh_build's
  * normals), 2 floats per cell, row by row: the shaders' normal map. */
 void ms_mesh_gradients(const float *h, const ms_grid *g, float *restrict out);
-/* The automatic mesh step keeps vertices at most this many pixels apart
- * where the water is nearest the eye. The shading normals come from the
- * full field's gradient texture, so the vertices only carry the height:
- * millimetre waves seen from above move the refracted point by less than a
- * pixel between them. */
-#define MS_MESH_AUTO_PIXELS 8.0
+/* The automatic mesh step (a screen-space-error LOD): vertices at most
+ * MS_MESH_AUTO_PIXELS apart where the water is nearest the eye, and the
+ * step lowered while the mesh's heights (block averages, interpolated)
+ * leave the field's by more than MS_MESH_AUTO_ERROR_PX pixels there. The
+ * shading normals come from the full field's gradient texture, so the
+ * vertices only carry the height. llvmpipe shades whole 4 x 4 pixel
+ * blocks along every triangle's edges, so small triangles cost far more
+ * than their pixels (fig1: a 50^2 mesh draws in 0.65 of the time of
+ * 133^2, the same picture to 0.1 %). */
+#define MS_MESH_AUTO_PIXELS 32.0
+#define MS_MESH_AUTO_ERROR_PX 2.0
 /* The field averaged over blocks of about step x step cells: out gets
  * (nx / step) x (ny / step) heights over the same extent (*out_g). */
 void ms_mesh_coarsen(const float *h, const ms_grid *g, int step, float *restrict out,
                      ms_grid *out_g);
-/* The automatic mesh step (render.h, mesh_step = 0) for grid g seen by a
- * camera of desc d. */
-int ms_mesh_auto_step(const ms_renderer_desc *d, const ms_grid *g);
+/* The automatic mesh step (render.h, mesh_step = 0) for field h on grid g
+ * seen by a camera of desc d; scratch holds g's cells (ms_mesh_coarsen's
+ * out for any step). */
+int ms_mesh_auto_step(const ms_renderer_desc *d, const float *h, const ms_grid *g,
+                      float *scratch);
+/* The largest height difference (m) between field h and the surface a
+ * mesh of `step` draws: at every cell centre, the field against the
+ * bilinear interpolation of the block averages at the coarse vertices
+ * (ms_mesh_build's positions: block centres, the outermost on the edge);
+ * coarse gets the block averages. */
+double ms_mesh_height_error(const float *h, const ms_grid *g, int step, float *coarse);
 /* Triangle indices of an nx x ny vertex grid: 6 (nx-1)(ny-1) of them. */
 void ms_mesh_indices(int nx, int ny, unsigned *restrict indices);
 

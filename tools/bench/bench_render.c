@@ -42,7 +42,11 @@ static double loadavg(void)
  * sections at 950 x 950): per frame the simulation step (ms_sim_step), the
  * draw (ms_renderer_draw) and its stages, and the PNG encoding, medians
  * over the frames after a warm-up; the whole frame rate is 1000 / (sim +
- * draw) (PNG encoding can run off the render thread). Each frame is
+ * draw): `modesplit run --png` and `render --png` encode in a writer
+ * thread (tools/modesplit/png_queue.c) while the next frame is simulated
+ * and drawn, so the PNG column is that thread's load, not the frame's. The
+ * GL column is llvmpipe's vertex and fragment work; the mesh column the
+ * CPU side of the screen-space-error LOD (mesh_nx^2 vertices). Each frame is
  * drawn a second time by a renderer with the full mesh (mesh_step 1),
  * interleaved, so the automatic mesh's gain is a ratio within one run
  * (the machine's load moves both alike). Writes render_scenes.csv. Returns 0, or 1 on an error. */
@@ -57,7 +61,8 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
                                "mesh_nx,full_mesh_draw_ms,full_over_auto");
     if (!csv)
         return 1;
-    printf("\nscenes at their render size (950^2): ms per frame (median; draw p10-p90)\n");
+    printf("\nscenes at their render size (950^2): ms per frame (median; draw p10-p90;\n"
+           "png: the writer thread's encoding, off the frame's path)\n");
     printf("(full: the same frame drawn with the full mesh, mesh_step 1, interleaved)\n");
     printf("%-6s %7s %8s %13s %7s %9s %7s %9s %7s %9s %9s %8s %6s\n", "scene", "sim", "draw",
            "(p10-p90)", "mesh", "caustics", "GL", "readback", "png", "sim+draw", "mesh", "full",

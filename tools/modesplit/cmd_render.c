@@ -179,6 +179,7 @@ int cmd_render(int argc, char **argv)
     ms_renderer *r = NULL;
     float *h = NULL;
     FILE *video = NULL;
+    png_queue *pngq = NULL;
     const char *json = ms_reader_scene(rd);
     if (!json || !json[0]) {
         tool_error("render: %s stores no scene, so its pool and camera are unknown", o.run);
@@ -242,6 +243,8 @@ int cmd_render(int argc, char **argv)
             tool_error("render: cannot create %s: %s", o.png, strerror(errno));
             goto done;
         }
+        if (png_queue_start(&pngq) != 0)
+            goto done;
     }
     if (o.video) {
         double dt = ms_reader_frame_dt(rd) * ms_reader_output_every(rd);
@@ -259,13 +262,13 @@ int cmd_render(int argc, char **argv)
             tool_error("render: frame %ld: %s", f, ms_last_error());
             goto done;
         }
-        if (o.png) {
+        if (o.png) { /* encoded by png_queue.c's thread while the next frame draws */
             char path[4096];
             snprintf(path, sizeof path, "%s/frame_%05ld.png", o.png, f);
-            if (ms_renderer_write_png(r, path) != MS_OK) {
-                tool_error("%s", ms_last_error());
+            int w = 0, hh = 0;
+            const unsigned char *px = ms_renderer_pixels(r, &w, &hh);
+            if (png_queue_push(pngq, path, px, w, hh) != 0)
                 goto done;
-            }
         }
         if (video) {
             int w = 0, hh = 0;
@@ -285,6 +288,10 @@ int cmd_render(int argc, char **argv)
             goto done;
         }
     }
+    int png_rc = png_queue_finish(pngq); /* every frame on disk before the summary */
+    pngq = NULL;
+    if (png_rc != 0)
+        goto done;
     printf("rendered %ld frames of %s (%dx%d, shader %s)", written, o.run, d.width, d.height,
            d.shader);
     if (o.png)
@@ -294,6 +301,7 @@ int cmd_render(int argc, char **argv)
     printf("\n");
     rc = EXIT_OK;
 done:
+    png_queue_finish(pngq);
     if (video)
         pclose(video);
     free(h);

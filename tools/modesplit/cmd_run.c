@@ -343,6 +343,8 @@ static int run_finish(run_state *r, int rc)
         rc = EXIT_RUNTIME;
     }
     r->w = NULL;
+    if (r->o.png && png_finish(&r->png) != 0) /* the PNG frames still queued */
+        rc = EXIT_RUNTIME;
     if (!r->o.quiet)
         print_summary(r, in_file, xmf);
     free(xmf);

@@ -1,9 +1,11 @@
 /* `modesplit run --png DIR`: one PNG per written frame, DIR/frame_NNNNN.png
  * (NNNNN = the frame's index in the HDF5 file). A scene with a `render`
  * section is drawn by the renderer (ms_renderer_draw_field of the combined
- * field: cubemap, Fresnel, caustics, the scene's shader); otherwise, with
- * --preview, or in a build without OSMesa, each frame is the shaded-relief
- * preview of the combined height field (ms_field_write_png).
+ * field: cubemap, Fresnel, caustics, the scene's shader), whose pixels a
+ * writer thread encodes (png_queue.c) while the next frame is simulated
+ * and drawn; otherwise, with --preview, or in a build without OSMesa, each
+ * frame is the shaded-relief preview of the combined height field
+ * (ms_field_write_png).
  *
  * The colour range is taken from the first frame (its span, padded by
  * half of it each side, at least +-2 mm) and only ever widened, and the
@@ -90,6 +92,10 @@ int png_begin(tool_png *p, const char *dir, const ms_scene *sc, int preview, int
             png_end(p);
             return -1;
         }
+        if (p->renderer && png_queue_start(&p->queue) != 0) {
+            png_end(p);
+            return -1;
+        }
     }
     return 0;
 }
@@ -105,13 +111,19 @@ int png_frame(tool_png *p, long index, const float *h, const ms_grid *g, double 
         /* with the sim: its floaters (leaves) and the scene's boat too */
         ms_status st = p->sim ? ms_renderer_draw(p->renderer, p->sim)
                               : ms_renderer_draw_field(p->renderer, h, g, t);
-        if (st == MS_OK)
-            st = ms_renderer_write_png(p->renderer, ppath);
-        free(ppath);
         if (st != MS_OK) {
+            free(ppath);
             tool_error("%s", ms_last_error());
             return -1;
         }
+        /* encoded by the writer thread while the next frame is simulated
+         * and drawn */
+        int w = 0, hh = 0;
+        const unsigned char *px = ms_renderer_pixels(p->renderer, &w, &hh);
+        int rc = png_queue_push(p->queue, ppath, px, w, hh);
+        free(ppath);
+        if (rc != 0)
+            return -1;
         ++p->written;
         return 0;
     }
@@ -164,8 +176,16 @@ int png_frame(tool_png *p, long index, const float *h, const ms_grid *g, double 
     return 0;
 }
 
+int png_finish(tool_png *p)
+{
+    int rc = png_queue_finish(p->queue);
+    p->queue = NULL;
+    return rc;
+}
+
 void png_end(tool_png *p)
 {
+    png_finish(p);
     ms_renderer_destroy(p->renderer);
     p->renderer = NULL;
     free(p->dir);

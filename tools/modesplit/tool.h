@@ -113,6 +113,7 @@ typedef struct tool_png {
     int have_range;
     long written;
     const ms_sim *sim;     /* set: the renderer draws its field with floaters and boat */
+    struct png_queue *queue; /* the renderer's frames are encoded off the render thread */
 } tool_png;
 
 /* Create DIR (and its parents) if missing and, when the scene has a
@@ -122,6 +123,20 @@ int png_begin(tool_png *p, const char *dir, const ms_scene *sc, int preview, int
 /* Write DIR/frame_NNNNN.png of a height field at time t (s); 0 on
  * success, else prints. */
 int png_frame(tool_png *p, long index, const float *h, const ms_grid *g, double t);
+/* Wait until every frame handed over is written; 0, or -1 (printed) if one
+ * could not be. */
+int png_finish(tool_png *p);
 void png_end(tool_png *p);
+
+/* ---- PNG encoding off the render thread (png_queue.c) ---- */
+/* One writer thread encodes the frames pushed, in order, with
+ * ms_image_write_png; push copies the pixels and blocks while 2 frames
+ * wait; finish writes what is queued, stops the thread and frees q.
+ * Each returns 0, or -1 after printing why (push: an earlier frame could
+ * not be written). */
+typedef struct png_queue png_queue;
+int png_queue_start(png_queue **q);
+int png_queue_push(png_queue *q, const char *path, const unsigned char *rgba, int w, int h);
+int png_queue_finish(png_queue *q);
 
 #endif /* MS_TOOL_H */
