@@ -264,7 +264,18 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
                         fprintf(f, "%s%s", first ? "" : ", ", kn[k]);
                         first = 0;
                     }
-                fprintf(f, ").\n");
+                fprintf(f, ")");
+                /* log axes cannot show a value <= 0 (DFSPH's mean
+                 * compression can be negative): say so, not drop it */
+                int hidden = 0;
+                for (int i = 0; i < n; ++i)
+                    hidden += !strcmp(rows[i].study, st[s]) && !strcmp(rows[i].metric, ms[m]) &&
+                              !(rows[i].error > 0 && cost(&rows[i], per_s) > 0);
+                if (hidden)
+                    fprintf(f, "; %d row%s with a value <= 0 cannot be drawn on log axes: see "
+                               "the table",
+                            hidden, hidden > 1 ? "s" : "");
+                fprintf(f, ".\n");
             }
             fprintf(f,
                     "- `%s_pareto.png`: %s of every configuration against its cost; the "
