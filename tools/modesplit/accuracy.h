@@ -72,11 +72,15 @@ int study_extract_column(acc_ctx *c);
 int study_coupler(acc_ctx *c);
 
 /* The report from rows: DIR/accuracy.md, DIR/accuracy.gp (+ the .dat files
- * it reads) and, when gnuplot runs, the PNG plots in DIR. 0 on success. */
+ * it reads) and, when gnuplot runs, the PNG plots in DIR: per study one
+ * cost plot per metric (STUDY_cost.png for the first, STUDY_cost_SLUG.png
+ * for the others) and the Pareto chart of the first. 0 on success. */
 int acc_report(const char *dir, const acc_row *rows, int n, const char *notes,
                const char *machine, const char *commit, int *plotted);
 /* Observed order: minus the least-squares slope of log(error) against
- * log(value) over the rows of (study, knob); NAN when < 2 points. */
+ * log(value) over the rows of (study, knob) with the knob's first metric
+ * (accuracy.md gives it per knob and metric, only where theory gives an
+ * order); NAN when < 2 points. */
 double acc_order(const acc_row *rows, int n, const char *study, const char *knob);
 
 #endif

@@ -13,22 +13,21 @@
 
 #define MAXK 64
 
-/* Knobs whose theory gives an order of convergence (the value is a
- * resolution: error ~ value^-p). */
-static double theory_order(const char *study, const char *knob)
+/* The (knob, metric) pairs whose theory gives an order of convergence
+ * (the value is a resolution: error ~ value^-p). Only the standing-mode
+ * frequency against cells per wavelength has one: the scheme is second
+ * order in space and in time at a fixed Courant number (its phase error is
+ * (k dx)^2 (1 - C^2) / 24). The other knobs have none: the Courant number
+ * changes that error by (1 - C^2), not as a power; the ring front is read
+ * from a drop of finite width; SPH at a fixed h / spacing is not a
+ * convergent discretisation of the dam break; extraction and coupling
+ * errors are set by the particles, not by the field. */
+static double theory_order(const char *study, const char *knob, const char *metric)
 {
-    if (!strcmp(study, "waves") && !strcmp(knob, "cells_per_wavelength"))
-        return 2; /* second-order central differences in space and time */
+    if (!strcmp(study, "waves") && !strcmp(knob, "cells_per_wavelength") &&
+        strstr(metric, "standing-mode frequency"))
+        return 2;
     return NAN;
-}
-
-/* The metric a (study, knob) curve plots: that of its first row. */
-static int is_primary(const acc_row *rows, int n, int i)
-{
-    for (int j = 0; j < n; ++j)
-        if (!strcmp(rows[j].study, rows[i].study) && !strcmp(rows[j].knob, rows[i].knob))
-            return !strcmp(rows[j].metric, rows[i].metric);
-    return 0;
 }
 
 /* Cost of a row on the study's cost axis: ms per simulated second when
@@ -47,13 +46,17 @@ static double cost(const acc_row *r, int per_s)
     return per_s ? r->ms_per_s : r->ms_per_step;
 }
 
-double acc_order(const acc_row *rows, int n, const char *study, const char *knob)
+/* Minus the least-squares slope of log(error) against log(value) over
+ * the rows of (study, knob, metric); the fitted range and point count
+ * when asked; NAN when < 2 points. */
+static double order_of(const acc_row *rows, int n, const char *study, const char *knob,
+                       const char *metric, double *lo, double *hi, int *points)
 {
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, vlo = INFINITY, vhi = -INFINITY;
     int m = 0;
     for (int i = 0; i < n; ++i) {
         const acc_row *r = &rows[i];
-        if (strcmp(r->study, study) || strcmp(r->knob, knob) || !is_primary(rows, n, i) ||
+        if (strcmp(r->study, study) || strcmp(r->knob, knob) || strcmp(r->metric, metric) ||
             !(r->value > 0) || !(r->error > 0))
             continue;
         double x = log(r->value), y = log(r->error);
@@ -61,23 +64,45 @@ double acc_order(const acc_row *rows, int n, const char *study, const char *knob
         sy += y;
         sxx += x * x;
         sxy += x * y;
+        vlo = fmin(vlo, r->value);
+        vhi = fmax(vhi, r->value);
         ++m;
     }
+    if (lo)
+        *lo = vlo;
+    if (hi)
+        *hi = vhi;
+    if (points)
+        *points = m;
     if (m < 2)
         return NAN;
     return -(m * sxy - sx * sy) / (m * sxx - sx * sx);
 }
 
-/* Row i is on the Pareto front of its study: no other configuration of
- * the study (primary metrics) is at most as costly and at most as wrong,
- * and better in one. */
+double acc_order(const acc_row *rows, int n, const char *study, const char *knob)
+{
+    for (int i = 0; i < n; ++i) /* the knob's first metric */
+        if (!strcmp(rows[i].study, study) && !strcmp(rows[i].knob, knob))
+            return order_of(rows, n, study, knob, rows[i].metric, NULL, NULL, NULL);
+    return NAN;
+}
+
+/* Row i is on the Pareto front of its study: its metric is the study's
+ * first, and no other configuration of the study with that metric is at
+ * most as costly and at most as wrong, and better in one. */
 static int on_front(const acc_row *rows, int n, int i, int per_s)
 {
     double ci = cost(&rows[i], per_s), ei = rows[i].error;
-    if (!isfinite(ci) || !is_primary(rows, n, i))
+    if (!isfinite(ci))
         return 0;
+    for (int j = 0; j < n; ++j) /* the study's first metric */
+        if (!strcmp(rows[j].study, rows[i].study)) {
+            if (strcmp(rows[j].metric, rows[i].metric))
+                return 0;
+            break;
+        }
     for (int j = 0; j < n; ++j) {
-        if (j == i || strcmp(rows[j].study, rows[i].study) || !is_primary(rows, n, j) ||
+        if (j == i || strcmp(rows[j].study, rows[i].study) ||
             strcmp(rows[j].metric, rows[i].metric))
             continue;
         double cj = cost(&rows[j], per_s), ej = rows[j].error;
@@ -123,6 +148,67 @@ static void fmt_num(char *buf, size_t size, double v)
         snprintf(buf, size, "–");
 }
 
+/* The metrics of a study, in the order their first rows come. */
+static int metrics(const acc_row *rows, int n, const char *study, const char **names)
+{
+    int k = 0;
+    for (int i = 0; i < n; ++i) {
+        if (strcmp(rows[i].study, study))
+            continue;
+        int seen = 0;
+        for (int j = 0; j < k; ++j)
+            seen |= !strcmp(names[j], rows[i].metric);
+        if (!seen && k < MAXK)
+            names[k++] = rows[i].metric;
+    }
+    return k;
+}
+
+/* Rows of (study, knob, metric): the points of one curve. */
+static int has_rows(const acc_row *rows, int n, const char *study, const char *knob,
+                    const char *metric)
+{
+    for (int i = 0; i < n; ++i)
+        if (!strcmp(rows[i].study, study) && !strcmp(rows[i].knob, knob) &&
+            !strcmp(rows[i].metric, metric))
+            return 1;
+    return 0;
+}
+
+/* The stem of the files of a study's metric m (0: the study's first,
+ * STUDY_cost.png / STUDY.dat; then STUDY_cost_SLUG.png / STUDY_SLUG.dat,
+ * the slug the metric in lower-case letters, digits and '_'). */
+static void metric_stem(char *buf, size_t size, const char *study, int m, const char *metric,
+                        const char *prefix)
+{
+    int used = snprintf(buf, size, "%s%s", study, prefix);
+    if (m == 0 || used < 0 || (size_t)used >= size)
+        return;
+    size_t k = (size_t)used;
+    int gap = 1;
+    for (const char *p = metric; *p && k + 2 < size; ++p) {
+        char ch = *p;
+        if (ch >= 'A' && ch <= 'Z')
+            ch = (char)(ch - 'A' + 'a');
+        if ((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9')) {
+            if (gap)
+                buf[k++] = '_';
+            buf[k++] = ch;
+            gap = 0;
+        } else
+            gap = 1;
+    }
+    buf[k] = '\0';
+}
+
+static const char *cost_label(const acc_row *rows, int n, const char *study)
+{
+    if (study_uses_per_s(rows, n, study))
+        return "cost: ms of wall clock per simulated second (1 thread)";
+    return !strcmp(study, "coupler") ? "cost: ms of wall clock per frame (1 thread)"
+                                     : "cost: ms of wall clock per extraction call (1 thread)";
+}
+
 static int write_md(const char *dir, const acc_row *rows, int n, const char *notes,
                     const char *machine, const char *commit, int plots)
 {
@@ -133,10 +219,18 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
         tool_error("accuracy: cannot write %s", path);
         return -1;
     }
-    fprintf(f, "# modesplit accuracy\n\nMachine: %s (the load of the last case merged; "
-               "every case's is in the notes and in the CSV's machine column). Commit: %s. "
-               "Wall-clock costs are of one thread on this machine: a load average above "
-               "the core count means other work shared the cores and inflated them.\n\n",
+    fprintf(f,
+            "# modesplit accuracy\n\nMachine: %s (the load of the last case merged; "
+            "every case's is in the notes and in the CSV's machine column). Commit: %s. "
+            "Wall-clock costs are of one thread on this machine: a load average above "
+            "the core count means other work shared the cores and inflated them, so "
+            "costs measured under load are noisy (compare them within a case, not across "
+            "cases); the errors do not depend on the load.\n\n"
+            "Orders of convergence are given only where theory gives one (the waves' "
+            "standing-mode frequency against cells per wavelength), fitted per knob and "
+            "metric over the range stated. The Pareto column marks, among the rows of a "
+            "study's first metric, those no other configuration beats on both cost and "
+            "error.\n\n",
             machine, commit);
     if (notes && notes[0])
         fprintf(f, "Notes:\n%s\n", notes);
@@ -145,10 +239,49 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
     for (int s = 0; s < ns; ++s) {
         int per_s = study_uses_per_s(rows, n, st[s]);
         int water = !strcmp(st[s], "water");
+        const char *ms[MAXK], *kn[MAXK];
+        int nm = metrics(rows, n, st[s], ms), nk = knobs(rows, n, st[s], kn);
         fprintf(f, "## %s\n\n", st[s]);
-        if (plots)
-            fprintf(f, water ? "![%s](%s_error.png)\n\n" : "![%s](%s_cost.png) ![%s pareto](%s_pareto.png)\n\n",
-                    st[s], st[s], st[s], st[s]);
+        if (plots && water)
+            fprintf(f,
+                    "![%s](%s_error.png)\n\n- `%s_error.png`: %s against wavelength, one "
+                    "curve per depth.\n\n",
+                    st[s], st[s], st[s], ms[0]);
+        else if (plots) {
+            char stem[256];
+            for (int m = 0; m < nm; ++m) {
+                metric_stem(stem, sizeof stem, st[s], m, ms[m], "_cost");
+                fprintf(f, "![%s: %s](%s.png) ", st[s], ms[m], stem);
+            }
+            fprintf(f, "![%s pareto](%s_pareto.png)\n\n", st[s], st[s]);
+            for (int m = 0; m < nm; ++m) {
+                metric_stem(stem, sizeof stem, st[s], m, ms[m], "_cost");
+                fprintf(f, "- `%s.png`: %s against %s; one curve per knob (", stem, ms[m],
+                        cost_label(rows, n, st[s]) + 6);
+                int first = 1;
+                for (int k = 0; k < nk; ++k)
+                    if (has_rows(rows, n, st[s], kn[k], ms[m])) {
+                        fprintf(f, "%s%s", first ? "" : ", ", kn[k]);
+                        first = 0;
+                    }
+                fprintf(f, ")");
+                /* log axes cannot show a value <= 0 (DFSPH's mean
+                 * compression can be negative): say so, not drop it */
+                int hidden = 0;
+                for (int i = 0; i < n; ++i)
+                    hidden += !strcmp(rows[i].study, st[s]) && !strcmp(rows[i].metric, ms[m]) &&
+                              !(rows[i].error > 0 && cost(&rows[i], per_s) > 0);
+                if (hidden)
+                    fprintf(f, "; %d row%s with a value <= 0 cannot be drawn on log axes: see "
+                               "the table",
+                            hidden, hidden > 1 ? "s" : "");
+                fprintf(f, ".\n");
+            }
+            fprintf(f,
+                    "- `%s_pareto.png`: %s of every configuration against its cost; the "
+                    "line joins the Pareto front.\n\n",
+                    st[s], ms[0]);
+        }
         fprintf(f, "| knob | value | configuration | metric | error | %s | ms per step | "
                    "cells/particles | Pareto |\n|---|---|---|---|---|---|---|---|---|\n",
                 per_s ? "ms per simulated s" : "ms per simulated s (n/a)");
@@ -165,16 +298,19 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
                     r->config, r->metric, a, b, c, d,
                     !water && on_front(rows, n, i, per_s) ? "**yes**" : "");
         }
-        const char *kn[MAXK];
-        int nk = knobs(rows, n, st[s], kn);
         fprintf(f, "\n");
-        for (int k = 0; k < nk; ++k) {
-            double p = acc_order(rows, n, st[s], kn[k]), want = theory_order(st[s], kn[k]);
-            if (isfinite(want))
-                fprintf(f, "- %s: observed order %.2f (theory: %.0f).\n", kn[k], p, want);
-            else if (isfinite(p) && !water)
-                fprintf(f, "- %s: error ~ value^%.2f (no theoretical order).\n", kn[k], -p);
-        }
+        for (int k = 0; k < nk; ++k)
+            for (int m = 0; m < nm; ++m) {
+                double want = theory_order(st[s], kn[k], ms[m]), lo, hi;
+                int pts;
+                if (!isfinite(want) || !has_rows(rows, n, st[s], kn[k], ms[m]))
+                    continue;
+                double p = order_of(rows, n, st[s], kn[k], ms[m], &lo, &hi, &pts);
+                fprintf(f,
+                        "- %s, %s: observed order %.2f (theory: %.0f), the least-squares "
+                        "slope of log error against log %s over %d points, %.4g to %.4g.\n",
+                        kn[k], ms[m], p, want, kn[k], pts, lo, hi);
+            }
         fprintf(f, "\n");
     }
     return fclose(f) == 0 ? 0 : -1;
@@ -182,88 +318,100 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
 
 static int write_plots(const char *dir, const acc_row *rows, int n, const char *commit)
 {
-    char path[1200];
+    char path[1200], stem[256], png[256];
     snprintf(path, sizeof path, "%s/accuracy.gp", dir);
     FILE *gp = fopen(path, "w");
     if (!gp) {
         tool_error("accuracy: cannot write %s", path);
         return -1;
     }
-    fprintf(gp, "# gnuplot script written by `modesplit accuracy` (commit %s); run it in this\n"
-                "# directory: gnuplot accuracy.gp. Restyle freely.\n"
-                "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\n"
-                "set logscale xy\nset grid\nset key outside right\n",
+    fprintf(gp,
+            "# gnuplot script written by `modesplit accuracy` (commit %s); run it in this\n"
+            "# directory: gnuplot accuracy.gp. Restyle freely.\n"
+            "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\n"
+            "set logscale xy\nset format xy '%%g'\nset grid\nset key outside right\n",
             commit);
     const char *st[MAXK];
     int ns = studies(rows, n, st);
     for (int s = 0; s < ns; ++s) {
         int per_s = study_uses_per_s(rows, n, st[s]);
         int water = !strcmp(st[s], "water");
-        const char *kn[MAXK];
-        int nk = knobs(rows, n, st[s], kn);
-        snprintf(path, sizeof path, "%s/%s.dat", dir, st[s]);
-        FILE *d = fopen(path, "w");
-        if (!d) {
-            fclose(gp);
-            return -1;
-        }
-        for (int k = 0; k < nk; ++k) {
-            fprintf(d, "# %s: cost error value\n", kn[k]);
-            for (int i = 0; i < n; ++i)
-                if (!strcmp(rows[i].study, st[s]) && !strcmp(rows[i].knob, kn[k]) &&
-                    is_primary(rows, n, i))
-                    fprintf(d, "%.6g %.6g %.6g\n", water ? rows[i].value : cost(&rows[i], per_s),
-                            rows[i].error, rows[i].value);
-            fprintf(d, "\n\n");
-        }
-        fclose(d);
-        const char *metric = "";
-        for (int i = 0; i < n; ++i)
-            if (!strcmp(rows[i].study, st[s])) {
-                metric = rows[i].metric;
-                break;
+        const char *kn[MAXK], *ms[MAXK];
+        int nk = knobs(rows, n, st[s], kn), nm = metrics(rows, n, st[s], ms);
+        /* one plot per metric: its rows against cost (water: against the
+         * wavelength), one curve per knob that has the metric */
+        for (int m = 0; m < nm; ++m) {
+            metric_stem(stem, sizeof stem, st[s], m, ms[m], "");
+            snprintf(path, sizeof path, "%s/%s.dat", dir, stem);
+            FILE *d = fopen(path, "w");
+            if (!d) {
+                tool_error("accuracy: cannot write %s", path);
+                fclose(gp);
+                return -1;
             }
-        if (water) {
-            fprintf(gp, "set output '%s_error.png'\nset title 'water: the paper''s non-dispersive "
-                        "model (eq. 2) against real capillary-gravity waves'\n"
-                        "set xlabel 'wavelength (m)'\nset ylabel 'phase speed rel. error'\n",
-                    st[s]);
-        } else {
-            fprintf(gp, "set output '%s_cost.png'\nset title '%s: %s against cost'\n"
-                        "set xlabel '%s'\nset ylabel 'error'\n",
-                    st[s], st[s], metric,
-                    per_s ? "cost (ms per simulated second)"
-                          : !strcmp(st[s], "coupler") ? "cost (ms per frame)"
-                                                       : "cost (ms per call)");
+            int idx = 0;
+            for (int k = 0; k < nk; ++k) {
+                if (!has_rows(rows, n, st[s], kn[k], ms[m]))
+                    continue;
+                fprintf(d, "# %s, %s: %s error value\n", kn[k], ms[m],
+                        water ? "wavelength" : "cost");
+                for (int i = 0; i < n; ++i)
+                    if (!strcmp(rows[i].study, st[s]) && !strcmp(rows[i].knob, kn[k]) &&
+                        !strcmp(rows[i].metric, ms[m]))
+                        fprintf(d, "%.6g %.6g %.6g\n",
+                                water ? rows[i].value : cost(&rows[i], per_s), rows[i].error,
+                                rows[i].value);
+                fprintf(d, "\n\n");
+                ++idx;
+            }
+            fclose(d);
+            if (water) {
+                fprintf(gp,
+                        "set output '%s_error.png'\nset title 'water: the paper''s "
+                        "non-dispersive eq. 2 against real capillary-gravity waves, one "
+                        "curve per depth'\nset xlabel 'wavelength (m)'\nset ylabel '%s'\n",
+                        st[s], ms[m]);
+            } else {
+                metric_stem(png, sizeof png, st[s], m, ms[m], "_cost");
+                fprintf(gp,
+                        "set output '%s.png'\nset title '%s: %s against cost, one "
+                        "curve per knob'\nset xlabel '%s'\nset ylabel '%s'\n",
+                        png, st[s], ms[m], cost_label(rows, n, st[s]), ms[m]);
+            }
+            fprintf(gp, "plot ");
+            idx = 0;
+            for (int k = 0; k < nk; ++k)
+                if (has_rows(rows, n, st[s], kn[k], ms[m])) {
+                    fprintf(gp, "%s'%s.dat' index %d using 1:2 with linespoints pt 7 title '%s'",
+                            idx ? ", \\\n     " : "", stem, idx, kn[k]);
+                    ++idx;
+                }
+            fprintf(gp, "\n");
         }
-        fprintf(gp, "plot ");
-        for (int k = 0; k < nk; ++k)
-            fprintf(gp, "%s'%s.dat' index %d using 1:2 with linespoints pt 7 title '%s'",
-                    k ? ", \\\n     " : "", st[s], k, kn[k]);
-        fprintf(gp, "\n");
         if (water)
             continue;
-        /* the Pareto chart: every configuration, the front joined */
+        /* the Pareto chart of the study's first metric: every
+         * configuration, the front joined */
+        const char *metric = ms[0];
         snprintf(path, sizeof path, "%s/%s_pareto.dat", dir, st[s]);
-        d = fopen(path, "w");
+        FILE *d = fopen(path, "w");
         if (!d) {
+            tool_error("accuracy: cannot write %s", path);
             fclose(gp);
             return -1;
         }
-        fprintf(d, "# every configuration: cost error label\n");
+        fprintf(d, "# every configuration (%s): cost error label\n", metric);
         for (int i = 0; i < n; ++i)
-            if (!strcmp(rows[i].study, st[s]) && is_primary(rows, n, i) &&
-                !strcmp(rows[i].metric, metric))
+            if (!strcmp(rows[i].study, st[s]) && !strcmp(rows[i].metric, metric))
                 fprintf(d, "%.6g %.6g \"%s=%g\"\n", cost(&rows[i], per_s), rows[i].error,
                         rows[i].knob, rows[i].value);
         fprintf(d, "\n\n# the front, by cost\n");
-        /* front points in increasing cost */
         double last = -1;
         for (;;) {
             int best = -1;
             for (int i = 0; i < n; ++i)
-                if (!strcmp(rows[i].study, st[s]) && !strcmp(rows[i].metric, metric) &&
-                    on_front(rows, n, i, per_s) && cost(&rows[i], per_s) > last &&
+                if (!strcmp(rows[i].study, st[s]) && on_front(rows, n, i, per_s) &&
+                    cost(&rows[i], per_s) > last &&
                     (best < 0 || cost(&rows[i], per_s) < cost(&rows[best], per_s)))
                     best = i;
             if (best < 0)
@@ -273,12 +421,17 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
                     rows[best].value);
         }
         fclose(d);
-        fprintf(gp, "set output '%s_pareto.png'\nset title '%s: every configuration; the "
-                    "line joins those no other beats on both cost and error'\n"
-                    "plot '%s_pareto.dat' index 0 using 1:2 with points pt 6 title 'configuration', \\\n"
-                    "     '%s_pareto.dat' index 1 using 1:2 with linespoints lw 2 pt 7 title 'Pareto front', \\\n"
-                    "     '%s_pareto.dat' index 1 using 1:2:3 with labels offset 1,0.7 left font ',8' notitle\n",
-                st[s], st[s], st[s], st[s], st[s]);
+        fprintf(
+            gp,
+            "set output '%s_pareto.png'\nset title \"%s: %s, every configuration;\\n"
+            "the line joins those no other beats on both cost and error\"\n"
+            "set xlabel '%s'\nset ylabel '%s'\n"
+            "plot '%s_pareto.dat' index 0 using 1:2 with points pt 6 title 'configuration', \\\n"
+            "     '%s_pareto.dat' index 1 using 1:2 with linespoints lw 2 pt 7 title 'Pareto "
+            "front', \\\n"
+            "     '%s_pareto.dat' index 1 using 1:2:3 with labels offset 1,0.7 left font ',8' "
+            "notitle\n",
+            st[s], st[s], metric, cost_label(rows, n, st[s]), metric, st[s], st[s], st[s]);
     }
     return fclose(gp) == 0 ? 0 : -1;
 }

@@ -6,8 +6,9 @@
  *    wall against tau = t sqrt(g / a) (Table 6), each as the RMS of the
  *    relative error; against the particle count,
  *    the pressure law / solver, the sound speed and the time-step factor;
- *  - a column at rest: the bottom pressure k * (max compression) against
- *    rho0 g H, and the compression itself.
+ *  - a column at rest: the pressure profile against rho0 g d (not for
+ *    DFSPH, see study_sph_rest), the maximum compression (all particles)
+ *    and the mean compression of the interior against g H / (2 c^2).
  * A solver that this build refuses (MS_ERR_UNSUPPORTED) is noted in the
  * report, not hidden.
  */
@@ -360,9 +361,18 @@ int study_sph_rest(acc_ctx *c)
              * from its density would only restate its compression */
             if (law != 2 && acc_add(c, &r) != 0)
                 return -1;
+            /* the references: hydrostatics of the law; DFSPH's is its
+             * target, no compression */
             r.error = in.max_density_error;
-            r.reference = g * H / (cs * cs);
+            r.reference = law == 2 ? 0 : g * H / (cs * cs);
             snprintf(r.metric, sizeof r.metric, "max compression at rest (all particles)");
+            if (acc_add(c, &r) != 0)
+                return -1;
+            /* the average (eq. 9's density, particles h from walls and
+             * surface): hydrostatics gives g H / (2 c^2) over the column */
+            r.error = rr.mean_c;
+            r.reference = law == 2 ? 0 : g * H / (2 * cs * cs);
+            snprintf(r.metric, sizeof r.metric, "mean compression at rest (interior)");
             if (acc_add(c, &r) != 0)
                 return -1;
         }
