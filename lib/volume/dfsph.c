@@ -25,22 +25,35 @@
  *
  * Convergence: the average of e_i / rho0 over all particles <= the desc's
  * max_density_error (and dt e_i / rho0 <= max_divergence_error), after at
- * least 2 iterations (SPlisHSPlasH's minimum), or the desc's iteration
- * cap. Measured: without the minimum, a splashing dam break in a closed
+ * least 2 density and 1 divergence iterations (SPlisHSPlasH's minima), or
+ * the desc's iteration cap. Measured: without the minimum, a splashing dam break in a closed
  * box met the average with 0 iterations while its front hit the wall
  * (the splash dilutes the average), took no pressure at all and blew up
  * at 0.5 s; with it, it settles (1.88 J at 0.1 s, 0.95 J at 1 s). The averages are summed as integers (units of
  * 2^-32), so the iteration counts, and the bytes, do not depend on how
  * the particles are split among threads.
  *
- * No warm start (a departure from the 2017 paper, section 4.4, measured):
- * starting each density solve from the last sub-step's pressure made a
- * 1400-particle tank at rest blow up within 0.3 s at factor 1 (0.9 and 0.8
- * held it; 0.5 still blew up the 800-particle dam break of the tests at
- * 0.07 s, and a halved divergence warm start likewise): the clamp at 0
- * never takes back a push that overshoots into expansion, so a stale
- * pressure pumps energy in. Without it the tank needs about 35 iterations
- * a sub-step, the dam break 1 to 6.
+ * Warm start (2017, section 4.4): the density solve starts from half the
+ * last sub-step's pressure (rescaled to this sub-step's dt) at particles
+ * inside the liquid; surface particles start from 0. SPlisHSPlasH gates
+ * its warm start (also at one half) on the predicted density exceeding
+ * rho0, which costs an error pass; the surface test is free. Round two
+ * measured a full warm start on every particle blowing up a tank at rest
+ * (the clamp at 0 never takes back a push that overshoots into
+ * expansion, so a stale pressure pumps energy in); measured again now on
+ * the bench's 2000-particle dam break (1 s, fastest particle at its end):
+ * no warm start 6.4 m/s; half everywhere 12.7 m/s; 0.8 and 1 everywhere
+ * the c0 cap of 20 m/s; half where predicted compressed 6.4 m/s; half
+ * inside 6.3 m/s, and the smallest largest compression (2.5 % against
+ * 6.2 %). On the 32 000-particle dam break (0.1-0.4 s) the iterations a
+ * sub-step (density and divergence) fall from 8.0 to 4.7 (gated on the
+ * prediction) and 3.9 (inside). The divergence solve is not warm-started:
+ * it stops after 1 iteration (SPlisHSPlasH's minimum) on the shipped flows.
+ *
+ * Each sub-step computes the pair terms g_ij (x_i - x_j) of every real
+ * neighbour once (the factors pass, which also takes the divergence
+ * solve's first error) and every iteration reads them: no square root,
+ * division or position gather per pair and iteration.
  *
  * The boundary: the walls and shapes take part as the images of density.c
  * (the liquid mirrored across each wall within h, and across the tangent
@@ -75,6 +88,10 @@
 
 #include "volume/volume_internal.h"
 
+#if MS_VOLUME_HAVE_AVX512
+#include <immintrin.h>
+#endif
+
 enum { LANES = MS_VOLUME_LANES };
 
 /* The pair loops are inlined into each clone of dfsph_part, so they are
@@ -84,15 +101,17 @@ enum { LANES = MS_VOLUME_LANES };
 #else
 #define MS_DFSPH_INLINE
 #endif
-enum { MIN_ITERATIONS = 2 };
+enum { MIN_DENSITY_ITERATIONS = 2, MIN_DIVERGENCE_ITERATIONS = 1 };
+#define WARM_FACTOR 0.5f
 
-typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSURE } pass_kind;
+typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSURE, F_WARM } pass_kind;
 
 typedef struct dfsph_ctx {
     ms_volume *v;
     pass_kind kind;
     float dt;       /* s, the sub-step (density) or the error's scale (divergence) */
-    float scale;    /* F_APPLY: 1/dt (density) or 1 (divergence), 1/s or 1 */
+    float scale;    /* F_APPLY: 1/dt (density) or 1 (divergence), 1/s or 1; F_WARM: the
+                       last solve's s rescaled to this dt, (dt / dt_last)^2 */
     int64_t err[MS_VOLUME_MAX_THREADS]; /* sum of e_i / rho0 (or dt e_i / rho0), 2^-32 units */
 } dfsph_ctx;
 
@@ -189,7 +208,9 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
  * answers to i's image in its own list at the same distance). Without
  * them a particle in a corner (seven images of itself) had its diagonal
  * underestimated several times over and a tank at rest blew up. */
-static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
+static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
+                                              float *restrict cgx, float *restrict cgy,
+                                              float *restrict cgz, int i)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const int *restrict idx = lst->idx + v->nl_begin[i];
@@ -197,14 +218,21 @@ static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
     const int n = padded(v->nl_count[i]);
     const float h = v->K.h, h2 = v->K.h2, eps = sqrtf(v->eps2);
     const float xi = x[i], yi = y[i], zi = z[i];
+    cgx += v->nl_begin[i];
+    cgy += v->nl_begin[i];
+    cgz += v->nl_begin[i];
     float sx[LANES] = {0}, sy[LANES] = {0}, sz[LANES] = {0}, sq[LANES] = {0};
     for (int k = 0; k < n; k += LANES)
         for (int l = 0; l < LANES; ++l) {
             const int j = idx[k + l];
             float g = grad_factor(r2s[k + l], h, eps);
-            sx[l] += g * (xi - x[j]);
-            sy[l] += g * (yi - y[j]);
-            sz[l] += g * (zi - z[j]);
+            const float dx = g * (xi - x[j]), dy = g * (yi - y[j]), dz = g * (zi - z[j]);
+            cgx[k + l] = dx;
+            cgy[k + l] = dy;
+            cgz[k + l] = dz;
+            sx[l] += dx;
+            sy[l] += dy;
+            sz[l] += dz;
             sq[l] += g * g * r2s[k + l];
         }
     /* in units of (m G)^2: grad W = -G g d */
@@ -214,6 +242,9 @@ static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
         for (int k = 0; k < v->nl_count[i]; ++k) {
             float w[3];
             if (coincident(v, i, idx[k], r2s[k], w)) {
+                cgx[k] = w[0]; /* the cached pair term of the solves' passes */
+                cgy[k] = w[1];
+                cgz[k] = w[2];
                 gx += w[0];
                 gy += w[1];
                 gz += w[2];
@@ -270,33 +301,79 @@ static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
     v->df_inv_diag[i] = den > 0.0f ? 1.0f / den : 0.0f;
 }
 
+#if MS_VOLUME_HAVE_AVX512
+/* The real-neighbour loops of divergence_sum and apply_of in AVX-512
+ * intrinsics (GCC's vectoriser emulates their gathers lane by lane): the
+ * same operations per lane in the same order, no fused multiply-adds, into
+ * the same lane accumulators, so the same bits as the C loops. */
+__attribute__((target("avx512f"))) static void
+divergence_real_avx512(const ms_volume *v, const int *idx, const float *gx, const float *gy,
+                       const float *gz, int n, float ui, float wi, float ti, float acc[LANES])
+{
+    const __m512 u = _mm512_set1_ps(ui), w = _mm512_set1_ps(wi), t = _mm512_set1_ps(ti);
+    __m512 a = _mm512_setzero_ps();
+    for (int k = 0; k < n; k += LANES) {
+        const __m512i j = _mm512_loadu_si512((const void *)(idx + k));
+        __m512 d = _mm512_mul_ps(_mm512_sub_ps(u, _mm512_i32gather_ps(j, v->vx, 4)),
+                                 _mm512_loadu_ps(gx + k));
+        d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(w, _mm512_i32gather_ps(j, v->vy, 4)),
+                                           _mm512_loadu_ps(gy + k)));
+        d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(t, _mm512_i32gather_ps(j, v->vz, 4)),
+                                           _mm512_loadu_ps(gz + k)));
+        a = _mm512_add_ps(a, d);
+    }
+    _mm512_storeu_ps(acc, a);
+}
+
+__attribute__((target("avx512f"))) static void
+apply_real_avx512(const float *s, const int *idx, const float *gx, const float *gy,
+                  const float *gz, int n, float si, float ax[LANES], float ay[LANES],
+                  float az[LANES])
+{
+    const __m512 sv = _mm512_set1_ps(si);
+    __m512 a = _mm512_setzero_ps(), b = a, c = a;
+    for (int k = 0; k < n; k += LANES) {
+        const __m512i j = _mm512_loadu_si512((const void *)(idx + k));
+        const __m512 f = _mm512_add_ps(sv, _mm512_i32gather_ps(j, s, 4));
+        a = _mm512_add_ps(a, _mm512_mul_ps(f, _mm512_loadu_ps(gx + k)));
+        b = _mm512_add_ps(b, _mm512_mul_ps(f, _mm512_loadu_ps(gy + k)));
+        c = _mm512_add_ps(c, _mm512_mul_ps(f, _mm512_loadu_ps(gz + k)));
+    }
+    _mm512_storeu_ps(ax, a);
+    _mm512_storeu_ps(ay, b);
+    _mm512_storeu_ps(az, c);
+}
+#endif
+
 /* sum_j (v_i - v_j) . (x_i - x_j) g_ij over real neighbours and images:
  * D rho_i/Dt = -m G times it. */
-static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
+static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
+                                                   const float *restrict cgx,
+                                                   const float *restrict cgy,
+                                                   const float *restrict cgz, int i)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const float *restrict vx = v->vx, *restrict vy = v->vy, *restrict vz = v->vz;
     const int *restrict idx = lst->idx + v->nl_begin[i];
-    const float *restrict r2s = lst->r2 + v->nl_begin[i];
     const int n = padded(v->nl_count[i]);
     const float h = v->K.h, eps = sqrtf(v->eps2);
     const float xi = x[i], yi = y[i], zi = z[i], ui = vx[i], wi = vy[i], ti = vz[i];
+    cgx += v->nl_begin[i];
+    cgy += v->nl_begin[i];
+    cgz += v->nl_begin[i];
     float acc[LANES] = {0};
-    for (int k = 0; k < n; k += LANES)
-        for (int l = 0; l < LANES; ++l) {
-            const int j = idx[k + l];
-            float g = grad_factor(r2s[k + l], h, eps);
-            acc[l] += g * ((ui - vx[j]) * (xi - x[j]) + (wi - vy[j]) * (yi - y[j]) +
-                           (ti - vz[j]) * (zi - z[j]));
-        }
+#if MS_VOLUME_HAVE_AVX512
+    if (v->isa == MS_VOLUME_ISA_AVX512)
+        divergence_real_avx512(v, idx, cgx, cgy, cgz, n, ui, wi, ti, acc);
+    else
+#endif
+        for (int k = 0; k < n; k += LANES)
+            for (int l = 0; l < LANES; ++l) {
+                const int j = idx[k + l];
+                acc[l] += (ui - vx[j]) * cgx[k + l] + (wi - vy[j]) * cgy[k + l] +
+                          (ti - vz[j]) * cgz[k + l];
+            }
     float s = ms_lanes_sum(acc);
-    if (v->coincident > 0)
-        for (int k = 0; k < v->nl_count[i]; ++k) {
-            float w[3];
-            const int j = idx[k];
-            if (coincident(v, i, j, r2s[k], w))
-                s += (ui - vx[j]) * w[0] + (wi - vy[j]) * w[1] + (ti - vz[j]) * w[2];
-        }
     const int gn = v->gl_count[i];
     if (gn) {
         const int *gidx = gst->idx + v->gl_begin[i];
@@ -315,35 +392,33 @@ static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_
 }
 
 /* v_i += scale m G sum_j (s_i + s_j) g_ij (x_i - x_j): the pressure term. */
-static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i, float scale)
+static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
+                                            const float *restrict cgx, const float *restrict cgy,
+                                            const float *restrict cgz, int i, float scale)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const float *restrict s = v->df_s;
     const int *restrict idx = lst->idx + v->nl_begin[i];
-    const float *restrict r2s = lst->r2 + v->nl_begin[i];
     const int n = padded(v->nl_count[i]);
     const float h = v->K.h, eps = sqrtf(v->eps2);
     const float xi = x[i], yi = y[i], zi = z[i], si = s[i];
+    cgx += v->nl_begin[i];
+    cgy += v->nl_begin[i];
+    cgz += v->nl_begin[i];
     float ax[LANES] = {0}, ay[LANES] = {0}, az[LANES] = {0};
-    for (int k = 0; k < n; k += LANES)
-        for (int l = 0; l < LANES; ++l) {
-            const int j = idx[k + l];
-            float f = (si + s[j]) * grad_factor(r2s[k + l], h, eps);
-            ax[l] += f * (xi - x[j]);
-            ay[l] += f * (yi - y[j]);
-            az[l] += f * (zi - z[j]);
-        }
-    float sx = ms_lanes_sum(ax), sy = ms_lanes_sum(ay), sz = ms_lanes_sum(az);
-    if (v->coincident > 0)
-        for (int k = 0; k < v->nl_count[i]; ++k) {
-            float w[3];
-            const int j = idx[k];
-            if (coincident(v, i, j, r2s[k], w)) {
-                sx += (si + s[j]) * w[0];
-                sy += (si + s[j]) * w[1];
-                sz += (si + s[j]) * w[2];
+#if MS_VOLUME_HAVE_AVX512
+    if (v->isa == MS_VOLUME_ISA_AVX512)
+        apply_real_avx512(s, idx, cgx, cgy, cgz, n, si, ax, ay, az);
+    else
+#endif
+        for (int k = 0; k < n; k += LANES)
+            for (int l = 0; l < LANES; ++l) {
+                const float f = si + s[idx[k + l]];
+                ax[l] += f * cgx[k + l];
+                ay[l] += f * cgy[k + l];
+                az[l] += f * cgz[k + l];
             }
-        }
+    float sx = ms_lanes_sum(ax), sy = ms_lanes_sum(ay), sz = ms_lanes_sum(az);
     const int gn = v->gl_count[i];
     if (gn) {
         const int *gidx = gst->idx + v->gl_begin[i];
@@ -393,6 +468,24 @@ static inline int64_t quantise(float e_rel)
     return (int64_t)((double)c * 4294967296.0);
 }
 
+/* The divergence error of particle i (D rho_i/Dt, 0 at the surface and
+ * where the liquid expands) into its iterate s_i; returns dt e_i / rho0
+ * quantised. */
+static inline MS_DFSPH_INLINE int64_t divergence_error_of(ms_volume *v, const ms_nlist *lst,
+                                                          const ms_nlist *gst, const float *cgx,
+                                                          const float *cgy, const float *cgz,
+                                                          int i, float dt)
+{
+    float ei = 0.0f;
+    if (!ms_volume_is_surface(v, i)) {
+        const float mg = v->mass * v->K.spiky_grad;
+        ei = -mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, i); /* D rho_i/Dt */
+        ei = ei > 0.0f ? ei : 0.0f;
+    }
+    v->df_s[i] = ei * v->df_inv_diag[i];
+    return quantise(dt * ei / v->desc.rest_density);
+}
+
 /* Built for AVX-512, AVX2 and the baseline as density.c's weight_sum: the
  * lanes loops vectorise (gathers), with no fused multiply-adds under
  * -std=c11 and IEEE sqrt and division, so every clone gives the same bits. */
@@ -404,12 +497,15 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
     dfsph_ctx *ctx = ctxp;
     ms_volume *v = ctx->v;
     const ms_nlist *lst = &v->lists[part], *gst = &v->ghosts[part];
+    float *cgx = v->df_grad[part], *cgy = cgx + v->df_grad_cap[part], *cgz = cgy + v->df_grad_cap[part];
     const float rho0 = v->desc.rest_density, mg = v->mass * v->K.spiky_grad, dt = ctx->dt;
     int64_t err = 0;
     switch (ctx->kind) {
-    case F_FACTORS:
-        for (int i = b; i < e; ++i)
-            factors_of(v, lst, gst, i);
+    case F_FACTORS: /* and the divergence solve's first error, while i's terms are hot */
+        for (int i = b; i < e; ++i) {
+            factors_of(v, lst, gst, cgx, cgy, cgz, i);
+            err += divergence_error_of(v, lst, gst, cgx, cgy, cgz, i, dt);
+        }
         break;
     case F_DENSITY_ERROR: {
         /* The compression one sub-step may remove, rho0 c0 dt / h: a
@@ -425,27 +521,20 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
             /* rho*_i - rho0 = rho_i - rho0 + dt D rho_i/Dt */
             float ci = v->rho[i] - rho0;
             ci = ci < cap ? ci : cap;
-            float ei = ci - dt * mg * divergence_sum(v, lst, gst, i);
+            float ei = ci - dt * mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, i);
             ei = ei > 0.0f ? ei : 0.0f;
             v->df_s[i] = ei * v->df_inv_diag[i];
-            err += quantise(ei / rho0);
+            err += quantise(ei / rho0); /* compression only: quantise clamps at 0 */
         }
         break;
     }
     case F_DIVERGENCE_ERROR:
-        for (int i = b; i < e; ++i) {
-            float ei = 0.0f;
-            if (!ms_volume_is_surface(v, i)) {
-                ei = -mg * divergence_sum(v, lst, gst, i); /* D rho_i/Dt */
-                ei = ei > 0.0f ? ei : 0.0f;
-            }
-            v->df_s[i] = ei * v->df_inv_diag[i];
-            err += quantise(dt * ei / rho0);
-        }
+        for (int i = b; i < e; ++i)
+            err += divergence_error_of(v, lst, gst, cgx, cgy, cgz, i, dt);
         break;
     case F_APPLY:
         for (int i = b; i < e; ++i)
-            apply_of(v, lst, gst, i, ctx->scale);
+            apply_of(v, lst, gst, cgx, cgy, cgz, i, ctx->scale);
         break;
     case F_PRESSURE: {
         /* the pressure the liquid exerts (eq. 13's convention) */
@@ -453,9 +542,14 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
         for (int i = b; i < e; ++i) {
             v->prs[i] = moment * v->df_sum[i] * inv_dt2 * v->rho[i] * v->rho[i];
             v->pk[8 * (size_t)i + 3] = v->prs[i];
+            v->df_warm[v->id[i]] = v->df_sum[i]; /* the next sub-step's start */
         }
         break;
     }
+    case F_WARM:
+        for (int i = b; i < e; ++i)
+            v->df_s[i] = ms_volume_is_surface(v, i) ? 0.0f : ctx->scale * v->df_warm[v->id[i]];
+        break;
     }
     ctx->err[part] = err;
 }
@@ -504,23 +598,37 @@ static void repack(void *ctxp, int part, int b, int e)
     }
 }
 
-void ms_volume_dfsph_factors(ms_volume *v)
+/* Room for the pair terms of every list the density pass filled. */
+static ms_status reserve_terms(ms_volume *v)
 {
-    dfsph_ctx ctx = {.v = v};
-    run(v, &ctx, F_FACTORS);
+    /* room for the pair terms of every list the density pass filled */
+    for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) {
+        const size_t need = v->lists[p].len;
+        if (need == 0 || need <= v->df_grad_cap[p])
+            continue;
+        const size_t cap = v->lists[p].cap > need ? v->lists[p].cap : need;
+        float *g = ms_alloc_array(3 * cap, sizeof(float));
+        if (!g)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "volume: no memory for the DFSPH pair terms (%zu pairs)", cap);
+        ms_free(v->df_grad[p]);
+        v->df_grad[p] = g;
+        v->df_grad_cap[p] = cap;
+    }
+    return MS_OK;
 }
 
 /* The Jacobi loop shared by both solves: error and update passes until
- * the average error is at most eta or the cap. */
-static int solve(ms_volume *v, dfsph_ctx *ctx, pass_kind error, float eta, int cap,
-                 float *reached)
+ * the average error is at most eta after at least least iterations, or
+ * the cap. first: the first error pass is done already (its average). */
+static int solve(ms_volume *v, dfsph_ctx *ctx, pass_kind error, float eta, int least, int cap,
+                 const float *first, float *reached)
 {
-    ms_vpool_run(v->pool, zero_sum, ctx, v->n);
     int it = 0;
     for (;;) {
-        float avg = run(v, ctx, error);
+        float avg = first && it == 0 ? *first : run(v, ctx, error);
         *reached = avg;
-        if ((avg <= eta && it >= MIN_ITERATIONS) || it >= cap)
+        if ((avg <= eta && it >= least) || it >= cap)
             break;
         run(v, ctx, F_APPLY);
         it++;
@@ -528,19 +636,26 @@ static int solve(ms_volume *v, dfsph_ctx *ctx, pass_kind error, float eta, int c
     return it;
 }
 
-void ms_volume_dfsph_divergence(ms_volume *v, float dt_scale)
+ms_status ms_volume_dfsph_divergence(ms_volume *v, float dt_scale)
 {
     v->df_divergence_iters = 0;
-    if (v->desc.max_divergence_iterations == 0 || v->n == 0)
-        return;
+    if (v->n == 0)
+        return MS_OK;
+    MS_TRY(reserve_terms(v));
     dfsph_ctx ctx = {.v = v, .dt = dt_scale, .scale = 1.0f};
+    const float first = run(v, &ctx, F_FACTORS);
+    if (v->desc.max_divergence_iterations == 0)
+        return MS_OK;
+    ms_vpool_run(v->pool, zero_sum, &ctx, v->n);
     float reached = 0.0f;
     int it = solve(v, &ctx, F_DIVERGENCE_ERROR, v->desc.max_divergence_error,
-                   v->desc.max_divergence_iterations, &reached);
+                   MIN_DIVERGENCE_ITERATIONS, v->desc.max_divergence_iterations, &first,
+                   &reached);
     ms_vpool_run(v->pool, repack, &ctx, v->n);
     v->df_divergence_iters = it;
     v->df_divergence_total += it;
     v->df_divergence_err = reached;
+    return MS_OK;
 }
 
 void ms_volume_dfsph_density(ms_volume *v, float dt)
@@ -549,10 +664,22 @@ void ms_volume_dfsph_density(ms_volume *v, float dt)
     if (v->n == 0 || !(dt > 0.0f))
         return;
     dfsph_ctx ctx = {.v = v, .dt = dt, .scale = 1.0f / dt};
+    ms_vpool_run(v->pool, zero_sum, &ctx, v->n);
+    if (v->df_warm_n == v->n && v->df_warm_dt > 0.0f) {
+        /* warm start (2017, section 4.4): the last sub-step's pressure,
+         * kappa_i = s_i rho_i / dt^2 kept, applied before the first error */
+        const float r = dt / v->df_warm_dt;
+        ctx.scale = WARM_FACTOR * r * r;
+        run(v, &ctx, F_WARM);
+        ctx.scale = 1.0f / dt;
+        run(v, &ctx, F_APPLY);
+    }
     float reached = 0.0f;
     int it = solve(v, &ctx, F_DENSITY_ERROR, v->desc.max_density_error,
-                   v->desc.max_density_iterations, &reached);
+                   MIN_DENSITY_ITERATIONS, v->desc.max_density_iterations, NULL, &reached);
     run(v, &ctx, F_PRESSURE);
+    v->df_warm_n = v->n;
+    v->df_warm_dt = dt;
     v->df_density_iters = it;
     v->df_density_total += it;
     v->df_density_err = reached;

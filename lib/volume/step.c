@@ -140,8 +140,9 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         if (st != MS_OK)
             break;
         if (dfsph) {
-            ms_volume_dfsph_factors(v);
-            ms_volume_dfsph_divergence(v, v->max_dt);
+            st = ms_volume_dfsph_divergence(v, v->max_dt);
+            if (st != MS_OK)
+                break;
         }
         ms_volume_forces(v);
         ms_volume_actions_accel(v);
@@ -170,11 +171,12 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         float dt_cfl = lambda * h / (c + vmax + vcol);
         float dt_force = amax > 0.0f ? lambda * sqrtf(h / amax) : INFINITY;
         if (dfsph) {
-            /* a particle moves at most lambda/2 spacings a sub-step by its
-             * velocity (SPlisHSPlasH's CFL: 0.2 at lambda = 0.4), and by
+            /* a particle moves at most lambda spacings a sub-step by its
+             * velocity (SPlisHSPlasH's CFL, 0.4 d / v_max, at lambda = 0.4:
+             * the peer's DamBreakModel steps 3.3 ms at d = 0.03 m), and by
              * its acceleration a dt^2 <= lambda^2/4 spacing */
             const float s = v->desc.spacing;
-            dt_cfl = 0.5f * lambda * s / (vmax + vcol);
+            dt_cfl = lambda * s / (vmax + vcol);
             dt_force = amax > 0.0f ? 0.5f * lambda * sqrtf(s / amax) : INFINITY;
         }
         float dt_visc = dm > 0.0f ? lambda / dm : INFINITY;

@@ -113,7 +113,8 @@ static void free_particles(ms_volume *v)
                    &v->y2, &v->z2,  &v->vx2,     &v->vy2, &v->vz2, &v->rho, &v->prs,
                    &v->inv_rho, &v->ax, &v->ay, &v->az, &v->visc_rate, &v->b_ax,
                    &v->b_ay, &v->b_az, &v->c_d, &v->c_w, &v->c_nx, &v->c_ny, &v->c_nz,
-                   &v->c_vx, &v->c_vy, &v->c_vz, &v->df_inv_diag, &v->df_s, &v->df_sum};
+                   &v->c_vx, &v->c_vy, &v->c_vz, &v->df_inv_diag, &v->df_s, &v->df_sum,
+                   &v->df_warm};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) {
         ms_free(*f[k]);
         *f[k] = NULL;
@@ -154,6 +155,7 @@ void ms_volume_destroy(ms_volume *v)
         ms_free(v->ghosts[p].r2);
         ms_free(v->cand[p]);
         ms_free(v->cand_idx[p]);
+        ms_free(v->df_grad[p]);
     }
     ms_free(v);
 }
@@ -177,7 +179,9 @@ ms_status ms_volume_reserve(ms_volume *v, int n)
     float **other[] = {&t.x2,  &t.y2, &t.z2, &t.vx2, &t.vy2, &t.vz2, &t.rho,
                        &t.prs, &t.inv_rho, &t.ax, &t.ay, &t.az, &t.visc_rate,
                        &t.b_ax, &t.b_ay, &t.b_az, &t.c_d, &t.c_w, &t.c_nx, &t.c_ny, &t.c_nz,
-                       &t.c_vx, &t.c_vy, &t.c_vz, &t.df_inv_diag, &t.df_s, &t.df_sum};
+                       &t.c_vx, &t.c_vy, &t.c_vz, &t.df_inv_diag, &t.df_s, &t.df_sum,
+                       &t.df_warm};
+    t.df_warm_n = -1; /* the warm start's values are not copied */
     int ok = 1;
     for (size_t k = 0; k < sizeof state / sizeof state[0]; ++k) {
         float *p = ms_alloc_array(alloc, sizeof(float));
@@ -450,14 +454,15 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
     out->count = v->n;
     out->surface_count = v->surface_count;
     out->pairs = v->pairs;
-    size_t per = 41 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
+    size_t per = 42 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
     out->bytes = sizeof *v + (size_t)v->cap * per +
                  ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
                  v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int);
     if (v->pub)
         out->bytes += (size_t)v->cap * 6 * sizeof(float);
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p)
-        out->bytes += (v->lists[p].cap + v->ghosts[p].cap) * (sizeof(int) + sizeof(float));
+        out->bytes += (v->lists[p].cap + v->ghosts[p].cap) * (sizeof(int) + sizeof(float)) +
+                      3 * v->df_grad_cap[p] * sizeof(float);
     out->threads = ms_vpool_threads(v->pool);
     out->density_iterations = v->df_density_iters;
     out->divergence_iterations = v->df_divergence_iters;

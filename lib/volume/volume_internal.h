@@ -226,9 +226,20 @@ struct ms_volume {
      * 1 / (|sum_j m grad W_ij|^2 + sum_j |m grad W_ij|^2) (the Jacobi
      * diagonal: alpha_i / rho_i of Bender & Koschier 2017), the current
      * iterate s_i (m^5/kg, kappa_i dt^2 / rho_i or its divergence twin) and
-     * its running total. Nothing is kept across sub-steps (no warm start:
-     * see dfsph.c). */
+     * its running total; the pair terms and the warm start below. */
     float *df_inv_diag, *df_s, *df_sum;
+    /* per part, the pair terms g_ij (x_i - x_j) of its real-neighbour list
+     * (same entries as lists[part]), computed once per sub-step by the
+     * factors pass and read by every iteration: gx | gy | gz blocks of
+     * df_grad_cap floats each */
+    float *df_grad[MS_VOLUME_MAX_THREADS];
+    /* the warm start: each particle's total s of the last density solve,
+     * by id (the sort moves particles), valid while n == df_warm_n; the
+     * sub-step it was solved for (s) */
+    float *df_warm;
+    int df_warm_n;
+    float df_warm_dt;
+    size_t df_grad_cap[MS_VOLUME_MAX_THREADS];
     int df_density_iters, df_divergence_iters;
     long df_density_total, df_divergence_total;
     float df_density_err, df_divergence_err;
@@ -323,8 +334,7 @@ ms_status ms_volume_count_neighbours(ms_volume *v);
  * step its error is measured over); the constant-density solve of the
  * velocities v* after the kick, for a sub-step of dt, which also leaves the
  * pressure (Pa) in prs. MS_ERR_UNSTABLE if a value is not finite. */
-void ms_volume_dfsph_factors(ms_volume *v);
-void ms_volume_dfsph_divergence(ms_volume *v, float dt_scale);
+ms_status ms_volume_dfsph_divergence(ms_volume *v, float dt_scale);
 void ms_volume_dfsph_density(ms_volume *v, float dt);
 
 /* forces.c: ax, ay, az (pressure, viscosity, gravity) and visc_rate. */

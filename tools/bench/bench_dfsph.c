@@ -1,7 +1,7 @@
 /* DFSPH against the weakly compressible laws, side by side in one run:
  * the same dam break (a column a x a x 2a released in a 4a x a x 2.2a
- * tank, h = 2 spacing, mu = 1 Pa s) with about 2k and 32k particles (and
- * 128k with --large), simulated for a fixed time after a warm-up, once per
+ * tank, h = 2 spacing, mu = 1 Pa s) with about 2k, 32k and 128k particles
+ * (--quick: 2k and 32k, 3 frames), simulated for a fixed time after a warm-up, once per
  * law: ideal gas (k = 400 m^2/s^2, c = 20 m/s), Tait (c0 = 20 m/s) and
  * DFSPH (0.1 % average compression). For each: wall time per simulated
  * second (ms/s), sub-steps and solver iterations per simulated second,
@@ -146,16 +146,14 @@ static void compression(const ms_volume *v, double *avg, float *mx)
 int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
-                   "usage: bench_dfsph [--csv-dir DIR] [--quick] [--large]\n"
+                   "usage: bench_dfsph [--csv-dir DIR] [--quick]\n"
                    "the same dam break with the ideal gas, Tait and DFSPH laws, interleaved, at\n"
-                   "~2k and 32k particles (--large: also 128k): ms per simulated second, sub-steps\n"
+                   "~2k, 32k and 128k particles (--quick: 2k and 32k, 3 frames): ms per simulated\n"
+                   "second, sub-steps\n"
                    "and iterations per simulated second, average and max compression, ratios;\n"
                    "writes DIR/dfsph.csv (default DIR: bench).\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
-    int large = 0;
-    for (int k = 1; k < argc; ++k)
-        large |= strcmp(argv[k], "--large") == 0;
     char machine[320], commit[64];
     bench_machine(machine, sizeof machine);
     bench_commit(commit, sizeof commit);
@@ -171,7 +169,7 @@ int main(int argc, char **argv)
     if (!csv)
         return 1;
     const int sizes[3] = {2000, 32000, 128000};
-    const int nsizes = large ? 3 : 2;
+    const int nsizes = quick ? 2 : 3;
     const float frame = 1.0f / 60;
     for (int k = 0; k < nsizes; ++k) {
         run r[LAWS];
