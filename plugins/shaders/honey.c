@@ -11,8 +11,7 @@
  *   density    1/m: how quickly light is absorbed (transmission color^(density len));
  *   shininess  Blinn-Phong exponent of the highlight.
  */
-#include "../common/params.h"
-#include "../common/shader.h"
+#include "../common/shader_params.h"
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
@@ -48,36 +47,23 @@ static const char fragment_source[] =
     "    gl_FragColor = vec4(ms_tonemap(mix(below, env, fresnel) + spec * fresnel * 2.0), 1.0);\n"
     "}\n";
 
-typedef struct honey {
-    float color[3];
-    float ior, density, shininess;
-} honey;
+/* The scene keys; uniform "honey_<key>" each (plugins/common/shader_params.h). */
+static const shader_param honey_params[] = {
+    {"color", 3, {1.0f, 0.62f, 0.12f}, 0.0, 1.0, ""},
+    {"ior", 1, {1.49f}, 1.0, 3.0, ""},
+    {"density", 1, {25.0f}, 0.0, 1e4, "1/m"},
+    {"shininess", 1, {300.0f}, 1.0, 1e5, ""},
+    {NULL, 0, {0}, 0, 0, NULL},
+};
 
 static int honey_create(const char *json, void **out, char *err, size_t err_size)
 {
-    static const char *const keys[] = {"color", "ior", "density", "shininess", NULL};
-    static const float dcolor[3] = {1.0f, 0.62f, 0.12f};
-    honey o = {{1.0f, 0.62f, 0.12f}, 1.49f, 25.0f, 300.0f};
-    params pm;
-    if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
-        params_vec(&pm, "color", 3, o.color, dcolor, 0.0, 1.0, "");
-        o.ior = params_number(&pm, "ior", o.ior, 1.0, 3.0, "");
-        o.density = params_number(&pm, "density", o.density, 0.0, 1e4, "1/m");
-        o.shininess = params_number(&pm, "shininess", o.shininess, 1.0, 1e5, "");
-    }
-    int rc = params_close(&pm);
-    if (rc != MS_PLUGIN_OK)
-        return rc;
-    return shader_keep(&o, sizeof o, out, err, err_size);
+    return shader_params_create(honey_params, json, out, err, err_size);
 }
 
 static void honey_set_uniforms(const void *self, const ms_shader_uniforms *u)
 {
-    const honey *o = self;
-    u->set_vec3(u->ctx, "honey_color", o->color[0], o->color[1], o->color[2]);
-    u->set_float(u->ctx, "honey_ior", o->ior);
-    u->set_float(u->ctx, "honey_density", o->density);
-    u->set_float(u->ctx, "honey_shininess", o->shininess);
+    shader_params_set("honey", honey_params, self, u);
 }
 
 static const ms_shader_vtable honey_vtable = {

@@ -12,8 +12,7 @@
  *             physical; the default 3 lets millimetre ripples show on an
  *             opaque liquid, as in the paper's Fig. 9b).
  */
-#include "../common/params.h"
-#include "../common/shader.h"
+#include "../common/shader_params.h"
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
@@ -50,36 +49,23 @@ static const char fragment_source[] =
     "    gl_FragColor = vec4(ms_tonemap(mix(ambient + diffuse, env, sheen) + spec), 1.0);\n"
     "}\n";
 
-typedef struct milk {
-    float color[3];
-    float softness, sheen, relief;
-} milk;
+/* The scene keys; uniform "milk_<key>" each (plugins/common/shader_params.h). */
+static const shader_param milk_params[] = {
+    {"color", 3, {0.93f, 0.92f, 0.88f}, 0.0, 1.0, ""},
+    {"softness", 1, {0.3f}, 0.0, 1.0, ""},
+    {"sheen", 1, {0.35f}, 0.0, 1.0, ""},
+    {"relief", 1, {3.0f}, 0.0, 20.0, ""},
+    {NULL, 0, {0}, 0, 0, NULL},
+};
 
 static int milk_create(const char *json, void **out, char *err, size_t err_size)
 {
-    static const char *const keys[] = {"color", "softness", "sheen", "relief", NULL};
-    static const float dcolor[3] = {0.93f, 0.92f, 0.88f};
-    milk m = {{0.93f, 0.92f, 0.88f}, 0.3f, 0.35f, 3.0f};
-    params pm;
-    if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
-        params_vec(&pm, "color", 3, m.color, dcolor, 0.0, 1.0, "");
-        m.softness = params_number(&pm, "softness", m.softness, 0.0, 1.0, "");
-        m.sheen = params_number(&pm, "sheen", m.sheen, 0.0, 1.0, "");
-        m.relief = params_number(&pm, "relief", m.relief, 0.0, 20.0, "");
-    }
-    int rc = params_close(&pm);
-    if (rc != MS_PLUGIN_OK)
-        return rc;
-    return shader_keep(&m, sizeof m, out, err, err_size);
+    return shader_params_create(milk_params, json, out, err, err_size);
 }
 
 static void milk_set_uniforms(const void *self, const ms_shader_uniforms *u)
 {
-    const milk *m = self;
-    u->set_vec3(u->ctx, "milk_color", m->color[0], m->color[1], m->color[2]);
-    u->set_float(u->ctx, "milk_softness", m->softness);
-    u->set_float(u->ctx, "milk_sheen", m->sheen);
-    u->set_float(u->ctx, "milk_relief", m->relief);
+    shader_params_set("milk", milk_params, self, u);
 }
 
 static const ms_shader_vtable milk_vtable = {

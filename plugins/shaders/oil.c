@@ -8,8 +8,7 @@
  *   ior        refractive index (sets the Fresnel reflectance);
  *   shininess  Blinn-Phong exponent of the highlight (higher = sharper).
  */
-#include "../common/params.h"
-#include "../common/shader.h"
+#include "../common/shader_params.h"
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
@@ -39,34 +38,22 @@ static const char fragment_source[] =
     "    gl_FragColor = vec4(ms_tonemap(mix(body, env, fresnel) + spec * fresnel * 2.0), 1.0);\n"
     "}\n";
 
-typedef struct oil {
-    float color[3];
-    float ior, shininess;
-} oil;
+/* The scene keys; uniform "oil_<key>" each (plugins/common/shader_params.h). */
+static const shader_param oil_params[] = {
+    {"color", 3, {0.03f, 0.025f, 0.015f}, 0.0, 1.0, ""},
+    {"ior", 1, {1.47f}, 1.0, 3.0, ""},
+    {"shininess", 1, {600.0f}, 1.0, 1e5, ""},
+    {NULL, 0, {0}, 0, 0, NULL},
+};
 
 static int oil_create(const char *json, void **out, char *err, size_t err_size)
 {
-    static const char *const keys[] = {"color", "ior", "shininess", NULL};
-    static const float dcolor[3] = {0.03f, 0.025f, 0.015f};
-    oil o = {{0.03f, 0.025f, 0.015f}, 1.47f, 600.0f};
-    params pm;
-    if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
-        params_vec(&pm, "color", 3, o.color, dcolor, 0.0, 1.0, "");
-        o.ior = params_number(&pm, "ior", o.ior, 1.0, 3.0, "");
-        o.shininess = params_number(&pm, "shininess", o.shininess, 1.0, 1e5, "");
-    }
-    int rc = params_close(&pm);
-    if (rc != MS_PLUGIN_OK)
-        return rc;
-    return shader_keep(&o, sizeof o, out, err, err_size);
+    return shader_params_create(oil_params, json, out, err, err_size);
 }
 
 static void oil_set_uniforms(const void *self, const ms_shader_uniforms *u)
 {
-    const oil *o = self;
-    u->set_vec3(u->ctx, "oil_color", o->color[0], o->color[1], o->color[2]);
-    u->set_float(u->ctx, "oil_ior", o->ior);
-    u->set_float(u->ctx, "oil_shininess", o->shininess);
+    shader_params_set("oil", oil_params, self, u);
 }
 
 static const ms_shader_vtable oil_vtable = {

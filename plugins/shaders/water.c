@@ -13,8 +13,7 @@
  *   caustics  strength of the caustics light map (0 = none);
  *   clarity   path length (m) over which light under water falls to 1/e.
  */
-#include "../common/params.h"
-#include "../common/shader.h"
+#include "../common/shader_params.h"
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
@@ -89,36 +88,23 @@ static const char fragment_source[] =
     "    gl_FragColor = vec4(ms_tonemap(under ? seen_under : seen_above), 1.0);\n"
     "}\n";
 
-typedef struct water {
-    float color[3];
-    float ior, caustics, clarity;
-} water;
+/* The scene keys; uniform "water_<key>" each (plugins/common/shader_params.h). */
+static const shader_param water_params[] = {
+    {"color", 3, {0.02f, 0.28f, 0.33f}, 0.0, 1.0, ""},
+    {"ior", 1, {1.333f}, 1.0, 3.0, ""},
+    {"caustics", 1, {1.2f}, 0.0, 10.0, ""},
+    {"clarity", 1, {1.5f}, 1e-3, 1e3, "m"},
+    {NULL, 0, {0}, 0, 0, NULL},
+};
 
 static int water_create(const char *json, void **out, char *err, size_t err_size)
 {
-    static const char *const keys[] = {"color", "ior", "caustics", "clarity", NULL};
-    static const float dcolor[3] = {0.02f, 0.28f, 0.33f};
-    water w = {{0.02f, 0.28f, 0.33f}, 1.333f, 1.2f, 1.5f};
-    params pm;
-    if (params_open(&pm, json, keys, err, err_size) == MS_PLUGIN_OK) {
-        params_vec(&pm, "color", 3, w.color, dcolor, 0.0, 1.0, "");
-        w.ior = params_number(&pm, "ior", w.ior, 1.0, 3.0, "");
-        w.caustics = params_number(&pm, "caustics", w.caustics, 0.0, 10.0, "");
-        w.clarity = params_number(&pm, "clarity", w.clarity, 1e-3, 1e3, "m");
-    }
-    int rc = params_close(&pm);
-    if (rc != MS_PLUGIN_OK)
-        return rc;
-    return shader_keep(&w, sizeof w, out, err, err_size);
+    return shader_params_create(water_params, json, out, err, err_size);
 }
 
 static void water_set_uniforms(const void *self, const ms_shader_uniforms *u)
 {
-    const water *w = self;
-    u->set_vec3(u->ctx, "water_color", w->color[0], w->color[1], w->color[2]);
-    u->set_float(u->ctx, "water_ior", w->ior);
-    u->set_float(u->ctx, "water_caustics", w->caustics);
-    u->set_float(u->ctx, "water_clarity", w->clarity);
+    shader_params_set("water", water_params, self, u);
 }
 
 static const ms_shader_vtable water_vtable = {
