@@ -298,6 +298,63 @@ START_TEST(a_sims_volume_loops_run_through_the_engines_tasks)
 }
 END_TEST
 
+/* The neighbour grid's sort runs in the pool's chunks from 4096 particles
+ * on (grid.c): each chunk counts, then places its particles after the
+ * chunks before it: the permutation of the sequential stable sort. Own
+ * threads, a shared pool with the engine's tasks, and a shared pool alone
+ * give the bytes of one thread, and the engine ran the sort's loops. */
+START_TEST(the_pooled_grid_sort_gives_the_bytes_of_one_thread)
+{
+    enum { VOLS = 4, FRAMES = 4, NX = 16 };
+    ms_volume *v[VOLS];
+    static engine e;
+    for (int k = 0; k < VOLS; ++k) {
+        ms_volume_desc d = ms_volume_desc_default();
+        d.threads = k == 1 ? 3 : 1;
+        ck_assert_int_eq(ms_volume_create(&d, &v[k]), MS_OK);
+        /* a tilted block: it flows */
+        ck_assert_int_eq(ms_volume_fill_box(v[k], (float[3]){0, 0, 0}, (float[3]){0.6f, 1, 0.48f}),
+                         MS_OK);
+        if (k >= 2)
+            ck_assert_int_eq(ms_volume_share_loops(v[k]), MS_OK);
+    }
+    ck_assert_int_eq(ms_vpool_parts(ms_volume_extract_pool(v[2])), MS_VPOOL_SHARED_PARTS);
+    ck_assert_int_eq(ms_volume_set_tasks(v[2], engine_enqueue, engine_finish, &e), MS_OK);
+    const int n = ms_volume_count(v[0]);
+    ck_assert_int_ge(n, 4096); /* the pooled sort's threshold */
+    float *p0 = malloc(sizeof(float) * 6 * (size_t)n), *pk = malloc(sizeof(float) * 6 * (size_t)n);
+    ck_assert_ptr_nonnull(p0);
+    ck_assert_ptr_nonnull(pk);
+    float h0[NX * NX], hk[NX * NX];
+    for (int f = 0; f < FRAMES; ++f) {
+        for (int k = 0; k < VOLS; ++k)
+            ck_assert_int_eq(ms_volume_step(v[k], 1.0f / 60), MS_OK);
+        ck_assert_int_eq(ms_volume_get_particles(v[0], p0, p0 + 3 * (size_t)n), MS_OK);
+        ck_assert_int_eq(ms_volume_extract_height(v[0], NX, NX, h0), MS_OK);
+        for (int k = 1; k < VOLS; ++k) {
+            ck_assert_int_eq(ms_volume_count(v[k]), n);
+            ck_assert_int_eq(ms_volume_get_particles(v[k], pk, pk + 3 * (size_t)n), MS_OK);
+            ck_assert_msg(memcmp(p0, pk, sizeof(float) * 6 * (size_t)n) == 0,
+                          "volume %d frame %d: particles differ", k, f);
+            ck_assert_int_eq(ms_volume_extract_height(v[k], NX, NX, hk), MS_OK);
+            ck_assert_msg(memcmp(h0, hk, sizeof h0) == 0, "volume %d frame %d: heights differ",
+                          k, f);
+        }
+    }
+    /* it moved, and the engine ran loops: the sort's two and the rest */
+    double ke = ms_volume_kinetic_energy(v[0]);
+    ck_assert(ke > 0.0);
+    /* each sub-step: the sort's two loops, boundary, pack, density,
+     * forces, bounds, kick, drift, ... */
+    ck_assert_int_gt(atomic_load(&e.enqueued), 8 * FRAMES);
+    ck_assert_int_eq(atomic_load(&e.finished), atomic_load(&e.enqueued));
+    free(p0);
+    free(pk);
+    for (int k = 0; k < VOLS; ++k)
+        ms_volume_destroy(v[k]);
+}
+END_TEST
+
 static Suite *pool_suite(void)
 {
     Suite *s = suite_create("pool");
@@ -306,6 +363,7 @@ static Suite *pool_suite(void)
     tcase_add_test(tc, a_lent_helper_runs_chunks_and_the_values_are_one_threads);
     tcase_add_test(tc, a_shared_pool_runs_its_loops_through_the_engines_tasks);
     tcase_add_test(tc, a_sims_volume_loops_run_through_the_engines_tasks);
+    tcase_add_test(tc, the_pooled_grid_sort_gives_the_bytes_of_one_thread);
     suite_add_tcase(s, tc);
     return s;
 }

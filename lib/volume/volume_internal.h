@@ -162,6 +162,8 @@ struct ms_volume {
     float inv_h;
     int *cell_start;     /* ncells + 1 */
     int *cell_fill;      /* ncells, scratch of the sort */
+    int *grid_hist;      /* parts x ncells, the parallel sort's counts (grid.c) */
+    size_t grid_hist_cap;
 
     ms_shape *colliders[MS_VOLUME_MAX_COLLIDERS];
     int ncolliders;
