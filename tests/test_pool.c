@@ -250,7 +250,7 @@ START_TEST(a_sims_volume_loops_run_through_the_engines_tasks)
         "{\"spacing\": 0.02, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.2, 0.4, 0.12]}], "
         "\"field\": [16, 16]}}",
     };
-    enum { FRAMES = 12 };
+    enum { FRAMES = 8 };
     for (int t = 0; t < 2; ++t) {
         ms_scene *sc = NULL;
         ck_assert_int_eq(ms_scene_parse(texts[t], strlen(texts[t]), &sc), MS_OK);
@@ -305,7 +305,7 @@ END_TEST
  * give the bytes of one thread, and the engine ran the sort's loops. */
 START_TEST(the_pooled_grid_sort_gives_the_bytes_of_one_thread)
 {
-    enum { VOLS = 4, FRAMES = 4, NX = 16 };
+    enum { VOLS = 4, FRAMES = 3, NX = 16 };
     ms_volume *v[VOLS];
     static engine e;
     for (int k = 0; k < VOLS; ++k) {
@@ -359,7 +359,7 @@ static Suite *pool_suite(void)
 {
     Suite *s = suite_create("pool");
     TCase *tc = tcase_create("pool");
-    tcase_set_timeout(tc, 60);
+    tcase_set_timeout(tc, 180); /* TSan: the sim and grid cases run ~20 s each */
     tcase_add_test(tc, a_lent_helper_runs_chunks_and_the_values_are_one_threads);
     tcase_add_test(tc, a_shared_pool_runs_its_loops_through_the_engines_tasks);
     tcase_add_test(tc, a_sims_volume_loops_run_through_the_engines_tasks);

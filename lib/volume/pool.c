@@ -293,8 +293,10 @@ void ms_vpool_run(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n)
     if (n <= 0)
         return;
     /* Small loops are not worth waking threads for; the chunks of the
-     * calling thread then cover everything, with the same arithmetic. */
-    if (!p || n < 256) {
+     * calling thread then cover everything, with the same arithmetic. A
+     * shared pool's hand-over (a helper's wake-up, an engine task) costs
+     * more than a worker's: only from MS_VPOOL_SHARED_MIN on. */
+    if (!p || n < 256 || (p->shared && n < MS_VPOOL_SHARED_MIN)) {
         fn(ctx, 0, 0, n);
         return;
     }
@@ -307,11 +309,14 @@ void ms_vpool_run(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n)
         p->pending = p->threads;
         if (p->help_open)
             pthread_cond_broadcast(&p->go);
-        pthread_mutex_unlock(&p->lock);
-        /* the engine's helper (it may run at once, inline: then it takes
-         * every chunk, and this thread none) */
-        void *task = p->enqueue ? p->enqueue(help_task, p, p->user) : NULL;
-        pthread_mutex_lock(&p->lock);
+        void *task = NULL;
+        if (p->enqueue) {
+            /* the engine's helper, outside the lock (it may run at once,
+             * inline: then it takes every chunk, and this thread none) */
+            pthread_mutex_unlock(&p->lock);
+            task = p->enqueue(help_task, p, p->user);
+            pthread_mutex_lock(&p->lock);
+        }
         claim_chunks(p);
         while (p->pending > 0) /* chunks a helper is still running */
             pthread_cond_wait(&p->done, &p->lock);
