@@ -1,13 +1,20 @@
 /* The volume's shared pool (lib/volume/pool.c, issue 12's work sharing):
  * the calling thread and a lent helper claim the chunks of each loop; the
  * helper really runs chunks, every chunk runs once, and a loop gives the
- * same values as a loop on one thread. */
+ * same values as a loop on one thread. Given an engine's task interface
+ * (issue 15), each loop runs through it: a test task system counts the
+ * tasks it ran, and the sim's volume loops go through it with the bytes
+ * of one thread. */
 #include <check.h>
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
+#include "modesplit/modesplit.h"
 #include "support.h"
 #include "volume/extract.h"
 #include "volume/volume_internal.h"
@@ -86,12 +93,277 @@ START_TEST(a_lent_helper_runs_chunks_and_the_values_are_one_threads)
 }
 END_TEST
 
+/* ---- the engine's task interface (issue 15) ---------------------------- */
+
+/* A test task system: each enqueued task on a thread of its own (or, with
+ * `inline_run`, run at once and NULL returned, as core.h allows); it
+ * counts the tasks it started and the ones finish_task waited for. */
+typedef struct engine {
+    atomic_int enqueued, finished, ran;
+    int inline_run;
+} engine;
+
+typedef struct engine_task {
+    pthread_t t;
+    ms_task_fn *fn;
+    void *ctx;
+    engine *e;
+} engine_task;
+
+static void *engine_thread(void *arg)
+{
+    engine_task *et = arg;
+    et->fn(et->ctx);
+    atomic_fetch_add(&et->e->ran, 1);
+    return NULL;
+}
+
+static void *engine_enqueue(ms_task_fn *fn, void *ctx, void *user)
+{
+    engine *e = user;
+    atomic_fetch_add(&e->enqueued, 1);
+    if (e->inline_run) {
+        fn(ctx);
+        atomic_fetch_add(&e->ran, 1);
+        return NULL;
+    }
+    engine_task *et = malloc(sizeof *et);
+    ck_assert_ptr_nonnull(et);
+    et->fn = fn;
+    et->ctx = ctx;
+    et->e = e;
+    ck_assert_int_eq(pthread_create(&et->t, NULL, engine_thread, et), 0);
+    return et;
+}
+
+static void engine_finish(void *task, void *user)
+{
+    engine *e = user;
+    engine_task *et = task;
+    ck_assert_int_eq(pthread_join(et->t, NULL), 0);
+    free(et);
+    atomic_fetch_add(&e->finished, 1);
+}
+
+typedef struct count_ctx {
+    float out[N];
+    atomic_int chunks[MS_VPOOL_SHARED_PARTS];
+    atomic_int by_engine; /* chunks run off the calling thread */
+} count_ctx;
+
+static void count_body(void *ctxp, int part, int b, int e)
+{
+    count_ctx *c = ctxp;
+    for (int i = b; i < e; ++i)
+        c->out[i] = sqrtf((float)i) * 0.5f;
+    atomic_fetch_add(&c->chunks[part], 1);
+    if (!pthread_equal(pthread_self(), caller))
+        atomic_fetch_add(&c->by_engine, 1);
+}
+
+/* A shared pool given the engine's tasks runs each loop through one
+ * engine task (enqueue, then finish): every chunk once, the values of one
+ * thread; an engine that runs the task inline runs every chunk. */
+START_TEST(a_shared_pool_runs_its_loops_through_the_engines_tasks)
+{
+    caller = pthread_self();
+    static loop_ctx one;
+    body(&one, 0, 0, N);
+    ms_vpool *p = NULL;
+    ck_assert_int_eq(ms_vpool_create_shared(MS_VPOOL_SHARED_PARTS, &p), MS_OK);
+    ck_assert_int_eq(ms_vpool_parts(p), MS_VPOOL_SHARED_PARTS);
+    ck_assert_int_eq(ms_vpool_threads(p), 2);
+    static engine e;
+    ck_assert_int_eq(ms_vpool_set_tasks(p, engine_enqueue, engine_finish, &e), MS_OK);
+    enum { LOOPS = 50 };
+    static count_ctx c;
+    for (int k = 0; k < LOOPS; ++k)
+        ms_vpool_run(p, count_body, &c, N);
+    ck_assert_int_eq(atomic_load(&e.enqueued), LOOPS);
+    ck_assert_int_eq(atomic_load(&e.ran), LOOPS);
+    ck_assert_int_eq(atomic_load(&e.finished), LOOPS); /* each one finished */
+    for (int q = 0; q < MS_VPOOL_SHARED_PARTS; ++q)
+        ck_assert_int_eq(atomic_load(&c.chunks[q]), LOOPS);
+    ck_assert_mem_eq(c.out, one.out, sizeof one.out);
+    /* too small to split: no task */
+    ms_vpool_run(p, count_body, &c, 100);
+    ck_assert_int_eq(atomic_load(&e.enqueued), LOOPS);
+
+    /* an engine that runs the task at once: its task claims every chunk */
+    static engine in;
+    in.inline_run = 1;
+    static count_ctx ci;
+    ck_assert_int_eq(ms_vpool_set_tasks(p, engine_enqueue, engine_finish, &in), MS_OK);
+    ms_vpool_run(p, count_body, &ci, N);
+    ck_assert_int_eq(atomic_load(&in.enqueued), 1);
+    ck_assert_int_eq(atomic_load(&in.finished), 0); /* NULL handle: nothing to finish */
+    for (int q = 0; q < MS_VPOOL_SHARED_PARTS; ++q)
+        ck_assert_int_eq(atomic_load(&ci.chunks[q]), 1);
+    ck_assert_mem_eq(ci.out, one.out, sizeof one.out);
+
+    /* back to no engine: the caller runs every chunk, no task */
+    ck_assert_int_eq(ms_vpool_set_tasks(p, NULL, NULL, NULL), MS_OK);
+    static count_ctx cn;
+    ms_vpool_run(p, count_body, &cn, N);
+    ck_assert_int_eq(atomic_load(&cn.by_engine), 0);
+    ck_assert_int_eq(atomic_load(&in.enqueued), 1);
+    ck_assert_mem_eq(cn.out, one.out, sizeof one.out);
+    ms_vpool_destroy(p);
+}
+END_TEST
+
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; ++i)
+        h = (h ^ b[i]) * 1099511628211ull;
+    return h;
+}
+
+static uint64_t sim_hash(const ms_sim *sim)
+{
+    uint64_t h = 1469598103934665603ull;
+    int nx, ny, n;
+    const float *f = ms_sim_height(sim, &nx, &ny);
+    h = fnv(h, f, sizeof *f * (size_t)nx * ny);
+    const float *pos[3], *vel[3];
+    ck_assert_int_eq(ms_sim_particles(sim, &n, pos, vel), MS_OK);
+    for (int a = 0; a < 3; ++a) {
+        h = fnv(h, pos[a], sizeof(float) * (size_t)n);
+        h = fnv(h, vel[a], sizeof(float) * (size_t)n);
+    }
+    return h;
+}
+
+/* A two-thread sim with the engine's tasks and a volume of one thread (the
+ * default): the surface task and the volume's parallel loops all run
+ * through the engine (far more tasks than frames), no thread of the
+ * library's own, and the bytes are those of one thread; the same for a
+ * volume-only sim, and for a sim given the engine after creation. */
+START_TEST(a_sims_volume_loops_run_through_the_engines_tasks)
+{
+    static const char *const texts[] = {
+        "{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]}, \"volume\": "
+        "{\"spacing\": 0.02, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.08]}], "
+        "\"field\": [16, 16]}, \"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3}}",
+        "{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]}, \"volume\": "
+        "{\"spacing\": 0.02, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.2, 0.4, 0.12]}], "
+        "\"field\": [16, 16]}}",
+    };
+    enum { FRAMES = 8 };
+    for (int t = 0; t < 2; ++t) {
+        ms_scene *sc = NULL;
+        ck_assert_int_eq(ms_scene_parse(texts[t], strlen(texts[t]), &sc), MS_OK);
+        ms_sim *one = NULL, *eng = NULL, *late = NULL, *two = NULL;
+        ck_assert_int_eq(ms_sim_create_from_scene(sc, 1, &one), MS_OK);
+        ck_assert_int_eq(ms_sim_create_from_scene(sc, 2, &two), MS_OK);
+        ck_assert_int_eq(ms_sim_create_from_scene(sc, 2, &late), MS_OK);
+        static engine e, el;
+        memset(&e, 0, sizeof e);
+        memset(&el, 0, sizeof el);
+        ck_assert_int_eq(ms_sim_create_from_scene(sc, 2, &eng), MS_OK);
+        ck_assert_int_eq(ms_sim_set_tasks(eng, engine_enqueue, engine_finish, &e), MS_OK);
+        ms_volume_info vi = ms_volume_info_init();
+        ms_volume_get_info(ms_sim_volume(eng), &vi);
+        ck_assert_int_eq(vi.threads, 2); /* the calling thread and the engine's */
+        for (int f = 0; f < FRAMES; ++f) {
+            if (f == FRAMES / 2) /* handed to the engine mid-run */
+                ck_assert_int_eq(ms_sim_set_tasks(late, engine_enqueue, engine_finish, &el),
+                                 MS_OK);
+            ck_assert_int_eq(ms_sim_step(one, 1.0f / 60), MS_OK);
+            ck_assert_int_eq(ms_sim_step(two, 1.0f / 60), MS_OK);
+            ck_assert_int_eq(ms_sim_step(eng, 1.0f / 60), MS_OK);
+            ck_assert_int_eq(ms_sim_step(late, 1.0f / 60), MS_OK);
+            const uint64_t h = sim_hash(one);
+            ck_assert_msg(sim_hash(two) == h, "scene %d frame %d: 2 threads differ", t, f);
+            ck_assert_msg(sim_hash(eng) == h, "scene %d frame %d: the engine's differ", t, f);
+            ck_assert_msg(sim_hash(late) == h, "scene %d frame %d: late engine differs", t, f);
+        }
+        ms_stats st = ms_stats_init();
+        ms_sim_get_stats(eng, &st);
+        /* a task per frame for the second side, and per parallel loop of
+         * each sub-step (a dozen loops: bounds, density, forces, kick,
+         * drift, ...) one for the volume */
+        ck_assert_int_ge(st.volume_steps, FRAMES);
+        ck_assert_int_gt(atomic_load(&e.enqueued), FRAMES + 5 * st.volume_steps);
+        ck_assert_int_eq(atomic_load(&e.finished), atomic_load(&e.enqueued));
+        ck_assert_int_eq(atomic_load(&e.ran), atomic_load(&e.enqueued));
+        ck_assert_int_gt(atomic_load(&el.enqueued), FRAMES / 2);
+        ms_sim_destroy(one);
+        ms_sim_destroy(two);
+        ms_sim_destroy(eng);
+        ms_sim_destroy(late);
+        ms_scene_destroy(sc);
+    }
+}
+END_TEST
+
+/* The neighbour grid's sort runs in the pool's chunks from 4096 particles
+ * on (grid.c): each chunk counts, then places its particles after the
+ * chunks before it: the permutation of the sequential stable sort. Own
+ * threads, a shared pool with the engine's tasks, and a shared pool alone
+ * give the bytes of one thread, and the engine ran the sort's loops. */
+START_TEST(the_pooled_grid_sort_gives_the_bytes_of_one_thread)
+{
+    enum { VOLS = 4, FRAMES = 3, NX = 16 };
+    ms_volume *v[VOLS];
+    static engine e;
+    for (int k = 0; k < VOLS; ++k) {
+        ms_volume_desc d = ms_volume_desc_default();
+        d.threads = k == 1 ? 3 : 1;
+        ck_assert_int_eq(ms_volume_create(&d, &v[k]), MS_OK);
+        /* a tilted block: it flows */
+        ck_assert_int_eq(ms_volume_fill_box(v[k], (float[3]){0, 0, 0}, (float[3]){0.6f, 1, 0.48f}),
+                         MS_OK);
+        if (k >= 2)
+            ck_assert_int_eq(ms_volume_share_loops(v[k]), MS_OK);
+    }
+    ck_assert_int_eq(ms_vpool_parts(ms_volume_extract_pool(v[2])), MS_VPOOL_SHARED_PARTS);
+    ck_assert_int_eq(ms_volume_set_tasks(v[2], engine_enqueue, engine_finish, &e), MS_OK);
+    const int n = ms_volume_count(v[0]);
+    ck_assert_int_ge(n, 4096); /* the pooled sort's threshold */
+    float *p0 = malloc(sizeof(float) * 6 * (size_t)n), *pk = malloc(sizeof(float) * 6 * (size_t)n);
+    ck_assert_ptr_nonnull(p0);
+    ck_assert_ptr_nonnull(pk);
+    float h0[NX * NX], hk[NX * NX];
+    for (int f = 0; f < FRAMES; ++f) {
+        for (int k = 0; k < VOLS; ++k)
+            ck_assert_int_eq(ms_volume_step(v[k], 1.0f / 60), MS_OK);
+        ck_assert_int_eq(ms_volume_get_particles(v[0], p0, p0 + 3 * (size_t)n), MS_OK);
+        ck_assert_int_eq(ms_volume_extract_height(v[0], NX, NX, h0), MS_OK);
+        for (int k = 1; k < VOLS; ++k) {
+            ck_assert_int_eq(ms_volume_count(v[k]), n);
+            ck_assert_int_eq(ms_volume_get_particles(v[k], pk, pk + 3 * (size_t)n), MS_OK);
+            ck_assert_msg(memcmp(p0, pk, sizeof(float) * 6 * (size_t)n) == 0,
+                          "volume %d frame %d: particles differ", k, f);
+            ck_assert_int_eq(ms_volume_extract_height(v[k], NX, NX, hk), MS_OK);
+            ck_assert_msg(memcmp(h0, hk, sizeof h0) == 0, "volume %d frame %d: heights differ",
+                          k, f);
+        }
+    }
+    /* it moved, and the engine ran loops: the sort's two and the rest */
+    double ke = ms_volume_kinetic_energy(v[0]);
+    ck_assert(ke > 0.0);
+    /* each sub-step: the sort's two loops, boundary, pack, density,
+     * forces, bounds, kick, drift, ... */
+    ck_assert_int_gt(atomic_load(&e.enqueued), 8 * FRAMES);
+    ck_assert_int_eq(atomic_load(&e.finished), atomic_load(&e.enqueued));
+    free(p0);
+    free(pk);
+    for (int k = 0; k < VOLS; ++k)
+        ms_volume_destroy(v[k]);
+}
+END_TEST
+
 static Suite *pool_suite(void)
 {
     Suite *s = suite_create("pool");
     TCase *tc = tcase_create("pool");
-    tcase_set_timeout(tc, 60);
+    tcase_set_timeout(tc, 180); /* TSan: the sim and grid cases run ~20 s each */
     tcase_add_test(tc, a_lent_helper_runs_chunks_and_the_values_are_one_threads);
+    tcase_add_test(tc, a_shared_pool_runs_its_loops_through_the_engines_tasks);
+    tcase_add_test(tc, a_sims_volume_loops_run_through_the_engines_tasks);
+    tcase_add_test(tc, the_pooled_grid_sort_gives_the_bytes_of_one_thread);
     suite_add_tcase(s, tc);
     return s;
 }

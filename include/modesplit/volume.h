@@ -252,7 +252,8 @@ MS_API ms_volume_desc ms_volume_get_desc(const ms_volume *v);
  * (core.h) instead of the volume's own worker threads, which are stopped;
  * both NULL starts them again. The same split, so the same bytes. Between
  * steps only; nothing to do with threads = 1. ms_sim hands its own task
- * interface on to its volume. */
+ * interface on to its volume (with threads 2 and a volume of one thread,
+ * each loop's chunks are shared with one engine task per loop). */
 /* Ask a step in progress (on another thread) to stop: it returns
  * MS_ERR_CANCELED at its next sub-step, the state valid at the time
  * reached. Safe from any thread; a request made between steps stops the

@@ -234,9 +234,6 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
         if (d->threads == 1)
             vd.threads = 1;
         st = ms_volume_create(&vd, &sim->volume);
-        if (st == MS_OK && d->enqueue_task) /* the engine's threads for its loops too */
-            st = ms_volume_set_tasks(sim->volume, d->enqueue_task, d->finish_task,
-                                     d->user_task_context);
         if (st == MS_OK) {
             memcpy(sim->domain_min, vd.domain_min, sizeof sim->domain_min);
             memcpy(sim->domain_max, vd.domain_max, sizeof sim->domain_max);
@@ -281,8 +278,8 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
         st = alloc_buffers(sim, floaters);
     if (st == MS_OK && sc)
         st = ms_sim_setup_effects(sim, sc);
-    if (st == MS_OK && sim->threads == 2 && sim->volume && sim->surface && !sim->enqueue)
-        st = ms_sim_worker_start(sim);
+    if (st == MS_OK) /* the second thread, or the engine's tasks for it and the loops */
+        st = ms_sim_setup_threads(sim);
     if (st != MS_OK) {
         ms_sim_destroy(sim);
         return st;

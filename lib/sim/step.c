@@ -210,15 +210,8 @@ ms_status ms_sim_set_tasks(ms_sim *sim, ms_enqueue_task_fn *enqueue_task,
     if ((enqueue_task == NULL) != (finish_task == NULL))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "sim: enqueue_task and finish_task must both be set or both be NULL");
-    if (enqueue_task)
-        ms_sim_worker_stop(sim);
-    if (sim->volume &&
-        (st = ms_volume_set_tasks(sim->volume, enqueue_task, finish_task, user_task_context)))
-        return st;
     sim->enqueue = enqueue_task;
     sim->finish = finish_task;
     sim->user_ctx = user_task_context;
-    if (!enqueue_task && !sim->have_worker && sim->threads == 2 && sim->volume && sim->surface)
-        return ms_sim_worker_start(sim);
-    return MS_OK;
+    return ms_sim_setup_threads(sim);
 }

@@ -52,11 +52,26 @@ ms_status ms_sim_worker_start(ms_sim *sim)
                        "sim: cannot start the second thread (threads 2); use threads 1");
     }
     sim->have_worker = 1;
-    /* work sharing (issue 12): a volume of one thread splits its loops
-     * in two chunks that this thread helps with once its surface task is
-     * done (step.c); the same bytes */
-    if (sim->volume)
-        return ms_volume_share_loops(sim->volume);
+    return MS_OK;
+}
+
+ms_status ms_sim_setup_threads(ms_sim *sim)
+{
+    if (sim->enqueue)
+        ms_sim_worker_stop(sim);
+    if (sim->threads != 2 || !sim->volume)
+        return MS_OK; /* nothing runs beside the volume */
+    /* work sharing (issue 12): a volume of one thread splits its loops in
+     * chunks that the other side claims while it has nothing to do: this
+     * sim's second thread once its surface task is done (step.c), or one
+     * engine task per loop (issue 15: no thread of the library's own when
+     * the engine gives its tasks). A volume-only sim too: its second side
+     * is the height field's column search, which leaves most of the frame
+     * free. The same bytes either way. */
+    MS_TRY(ms_volume_share_loops(sim->volume));
+    MS_TRY(ms_volume_set_tasks(sim->volume, sim->enqueue, sim->finish, sim->user_ctx));
+    if (!sim->enqueue && !sim->have_worker)
+        return ms_sim_worker_start(sim);
     return MS_OK;
 }
 

@@ -464,7 +464,10 @@ ms_status ms_volume_share_loops(ms_volume *v)
 {
     if (v->pool)
         return MS_OK; /* threads of its own already */
-    return ms_vpool_create_shared(2, &v->pool);
+    /* four chunks a loop for two threads: a helper that arrives while the
+     * volume thread runs its first chunk still takes half of the rest
+     * (any count gives the same bytes) */
+    return ms_vpool_create_shared(MS_VPOOL_SHARED_PARTS, &v->pool);
 }
 
 void ms_extract_snap_free(ms_extract_snap *s)
@@ -523,7 +526,7 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
     /* bin the marked particles by column (counting sort, stable) */
     /* list: the bin keys, the bin fills and for each thread the row
      * reaches (row_reaches) */
-    const int parts = ms_vpool_threads(pool);
+    const int parts = ms_vpool_parts(pool);
     const size_t reach_stride = 2 * (size_t)ceilf(s->R / dye) + 1;
     /* sized for the snapshot's capacity, not its m: no growth as m does (i15) */
     const size_t mcap = (size_t)s->cap;

@@ -9,10 +9,15 @@
  * split, the same bytes.
  * A shared pool (ms_vpool_create_shared, issue 12's work sharing) has no
  * threads of its own: each loop's chunks are claimed one at a time by the
- * calling thread and by a helper that another part of the program lends
- * while it has nothing to do (ms_vpool_help between help_open and
- * help_close): lib/sim's surface thread once its task is done. Who runs a
- * chunk changes nothing in it, so the bytes are the same. */
+ * calling thread and by whoever else has a moment: a helper that another
+ * part of the program lends while it has nothing to do (ms_vpool_help
+ * between help_open and help_close: lib/sim's second thread once its
+ * surface task is done), and, given the engine's task interface, one
+ * engine task per loop that claims chunks like the helper (issue 15: the
+ * volume's parallel-for through the engine's enqueue/finish, no thread of
+ * the library's own). Chunks are claimed as they come, so a helper that
+ * arrives late still takes its share; who runs a chunk changes nothing in
+ * it, so the bytes are the same. */
 #include <pthread.h>
 
 #include "volume/extract.h"
@@ -199,11 +204,27 @@ void ms_vpool_help(ms_vpool *p)
     pthread_mutex_unlock(&p->lock);
 }
 
+/* A shared pool's engine task: the chunks of the current loop still open
+ * (none if the loop was done before the engine ran it). */
+static void help_task(void *argp)
+{
+    ms_vpool *p = argp;
+    pthread_mutex_lock(&p->lock);
+    claim_chunks(p);
+    pthread_mutex_unlock(&p->lock);
+}
+
 ms_status ms_vpool_set_tasks(ms_vpool *p, ms_enqueue_task_fn *enqueue, ms_finish_task_fn *finish,
                              void *user)
 {
-    if (!p || p->shared)
-        return MS_OK; /* one thread (a shared pool's helper is not the engine's) */
+    if (!p)
+        return MS_OK; /* one thread: nothing to hand over */
+    if (p->shared) { /* no threads of its own: the engine's task helps */
+        p->enqueue = enqueue;
+        p->finish = finish;
+        p->user = user;
+        return MS_OK;
+    }
     if (enqueue && !p->enqueue)
         stop_workers(p);
     p->enqueue = enqueue;
@@ -257,6 +278,13 @@ static void run_on_tasks(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n)
 
 int ms_vpool_threads(const ms_vpool *p)
 {
+    /* a shared pool: the calling thread and one lent helper (or the
+     * engine's task) */
+    return p ? (p->shared ? 2 : p->threads) : 1;
+}
+
+int ms_vpool_parts(const ms_vpool *p)
+{
     return p ? p->threads : 1;
 }
 
@@ -265,13 +293,11 @@ void ms_vpool_run(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n)
     if (n <= 0)
         return;
     /* Small loops are not worth waking threads for; the chunks of the
-     * calling thread then cover everything, with the same arithmetic. */
-    if (!p || n < 256) {
+     * calling thread then cover everything, with the same arithmetic. A
+     * shared pool's hand-over (a helper's wake-up, an engine task) costs
+     * more than a worker's: only from MS_VPOOL_SHARED_MIN on. */
+    if (!p || n < 256 || (p->shared && n < MS_VPOOL_SHARED_MIN)) {
         fn(ctx, 0, 0, n);
-        return;
-    }
-    if (p->enqueue) {
-        run_on_tasks(p, fn, ctx, n);
         return;
     }
     if (p->shared) {
@@ -283,10 +309,24 @@ void ms_vpool_run(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n)
         p->pending = p->threads;
         if (p->help_open)
             pthread_cond_broadcast(&p->go);
+        void *task = NULL;
+        if (p->enqueue) {
+            /* the engine's helper, outside the lock (it may run at once,
+             * inline: then it takes every chunk, and this thread none) */
+            pthread_mutex_unlock(&p->lock);
+            task = p->enqueue(help_task, p, p->user);
+            pthread_mutex_lock(&p->lock);
+        }
         claim_chunks(p);
-        while (p->pending > 0) /* the helper's chunk */
+        while (p->pending > 0) /* chunks a helper is still running */
             pthread_cond_wait(&p->done, &p->lock);
         pthread_mutex_unlock(&p->lock);
+        if (task)
+            p->finish(task, p->user);
+        return;
+    }
+    if (p->enqueue) {
+        run_on_tasks(p, fn, ctx, n);
         return;
     }
     pthread_mutex_lock(&p->lock);

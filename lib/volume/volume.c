@@ -144,6 +144,7 @@ void ms_volume_destroy(ms_volume *v)
     free_particles(v);
     ms_free(v->cell_start);
     ms_free(v->cell_fill);
+    ms_free(v->grid_hist);
     ms_free(v->wave_prev);
     ms_free(v->ex_buf);
     ms_free(v->ex_start);
@@ -457,7 +458,8 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
     size_t per = 42 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
     out->bytes = sizeof *v + (size_t)v->cap * per +
                  ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
-                 v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int);
+                 v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int) +
+                 v->grid_hist_cap * sizeof(int);
     if (v->pub)
         out->bytes += (size_t)v->cap * 6 * sizeof(float);
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p)

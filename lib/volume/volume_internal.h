@@ -86,6 +86,8 @@ ms_status ms_vpool_set_tasks(ms_vpool *p, ms_enqueue_task_fn *enqueue, ms_finish
  * done. The chunk bounds depend only on n and parts. */
 void ms_vpool_run(ms_vpool *p, ms_vpool_fn *fn, void *ctx, int n);
 int ms_vpool_threads(const ms_vpool *p);
+/* The chunks of each loop: the threads, or a shared pool's parts. */
+int ms_vpool_parts(const ms_vpool *p);
 
 /* The neighbour lists of one chunk of particles (one per thread). Each
  * particle's real neighbours are one run of entries, padded up to a
@@ -160,6 +162,8 @@ struct ms_volume {
     float inv_h;
     int *cell_start;     /* ncells + 1 */
     int *cell_fill;      /* ncells, scratch of the sort */
+    int *grid_hist;      /* parts x ncells, the parallel sort's counts (grid.c) */
+    size_t grid_hist_cap;
 
     ms_shape *colliders[MS_VOLUME_MAX_COLLIDERS];
     int ncolliders;
