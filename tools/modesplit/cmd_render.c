@@ -158,155 +158,187 @@ static FILE *open_video(const render_opts *o, int w, int h, double fps)
     return f;
 }
 
+/* What a render holds open; render_close frees it all. */
+typedef struct render_state {
+    render_opts o;
+    ms_reader *rd;
+    ms_scene *sc;
+    ms_renderer_desc d;
+    ms_renderer *r;
+    ms_grid g;
+    float *h; /* one frame of the combined field */
+    size_t n;
+    long last; /* the last frame drawn */
+    FILE *video;
+    png_queue *pngq;
+} render_state;
+
+/* The run file, its stored scene and the renderer; EXIT_OK or the exit. */
+static int render_open(render_state *s)
+{
+    const render_opts *o = &s->o;
+    if (ms_reader_open(o->run, &s->rd) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        return EXIT_USAGE;
+    }
+    const char *json = ms_reader_scene(s->rd);
+    if (!json || !json[0]) {
+        tool_error("render: %s stores no scene, so its pool and camera are unknown", o->run);
+        return EXIT_USAGE;
+    }
+    if (ms_scene_parse(json, strlen(json), &s->sc) != MS_OK) {
+        tool_error("render: the scene stored in %s: %s", o->run, ms_last_error());
+        return EXIT_USAGE;
+    }
+    if (!(ms_reader_fields(s->rd) & MS_FIELD_COMBINED)) {
+        tool_error("render: %s holds no combined field (the scene's output.fields lacks "
+                   "\"combined\"); nothing to draw",
+                   o->run);
+        return EXIT_USAGE;
+    }
+    const long frames = ms_reader_frames(s->rd);
+    s->last = o->last < 0 ? frames - 1 : o->last;
+    if (frames <= 0 || o->first >= frames || s->last >= frames) {
+        tool_error("render: %s holds %ld frames; --frames asks for %ld:%ld", o->run, frames,
+                   o->first, s->last);
+        return EXIT_USAGE;
+    }
+    s->d = ms_renderer_desc_default();
+    if (ms_renderer_desc_from_scene(s->sc, &s->d) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        return EXIT_RUNTIME;
+    }
+    if (o->shader)
+        s->d.shader = o->shader;
+    if (o->width)
+        s->d.width = o->width, s->d.height = o->height;
+    if (o->have_camera) {
+        memcpy(s->d.eye, o->eye, sizeof s->d.eye);
+        memcpy(s->d.target, o->target, sizeof s->d.target);
+        if (o->fov > 0)
+            s->d.fov = o->fov;
+    }
+    ms_status st = ms_renderer_create_desc(&s->d, &s->r);
+    if (st != MS_OK) {
+        tool_error("%s", ms_last_error());
+        return st == MS_ERR_INVALID_ARGUMENT || st == MS_ERR_PLUGIN ? EXIT_USAGE : EXIT_RUNTIME;
+    }
+    if (ms_reader_field_grid(s->rd, MS_FIELD_COMBINED, &s->g) != MS_OK) {
+        tool_error("%s", ms_last_error());
+        return EXIT_RUNTIME;
+    }
+    s->n = (size_t)s->g.nx * (size_t)s->g.ny;
+    if (!(s->h = malloc(s->n * sizeof *s->h))) {
+        tool_error("render: out of memory for a %d x %d field", s->g.nx, s->g.ny);
+        return EXIT_RUNTIME;
+    }
+    return EXIT_OK;
+}
+
+/* The PNG folder and its writer thread, the ffmpeg pipe; 0 or -1. */
+static int render_outputs_open(render_state *s)
+{
+    const render_opts *o = &s->o;
+    if (o->png) {
+        if (mkdir(o->png, 0777) != 0 && errno != EEXIST) {
+            tool_error("render: cannot create %s: %s", o->png, strerror(errno));
+            return -1;
+        }
+        if (png_queue_start(&s->pngq) != 0)
+            return -1;
+    }
+    if (o->video) {
+        double dt = ms_reader_frame_dt(s->rd) * ms_reader_output_every(s->rd);
+        double fps = dt > 0 ? 1.0 / dt : 30.0;
+        signal(SIGPIPE, SIG_IGN);
+        if (!(s->video = open_video(o, s->d.width, s->d.height, fps)))
+            return -1;
+    }
+    return 0;
+}
+
+/* Draws one frame and hands its pixels to the PNG thread and ffmpeg. */
+static int render_frame(render_state *s, long f)
+{
+    double t = 0;
+    if (ms_reader_read_field(s->rd, MS_FIELD_COMBINED, f, s->h, s->n) != MS_OK ||
+        ms_reader_time(s->rd, f, &t) != MS_OK ||
+        ms_renderer_draw_scene_field(s->r, s->sc, s->h, &s->g, t) != MS_OK) {
+        tool_error("render: frame %ld: %s", f, ms_last_error());
+        return -1;
+    }
+    int w = 0, hh = 0;
+    const unsigned char *px = ms_renderer_pixels(s->r, &w, &hh);
+    if (s->o.png) { /* encoded by png_queue.c's thread while the next frame draws */
+        char path[4096];
+        snprintf(path, sizeof path, "%s/frame_%05ld.png", s->o.png, f);
+        if (png_queue_push(s->pngq, path, px, w, hh) != 0)
+            return -1;
+    }
+    if (s->video && fwrite(px, 4, (size_t)w * (size_t)hh, s->video) != (size_t)w * (size_t)hh) {
+        tool_error("render: ffmpeg stopped taking frames (frame %ld)", f);
+        return -1;
+    }
+    return 0;
+}
+
+/* ffmpeg and the PNG thread finish, then the summary; 0 or -1. */
+static int render_finish(render_state *s, long written)
+{
+    if (s->video) {
+        int vrc = pclose(s->video);
+        s->video = NULL;
+        if (vrc != 0) {
+            tool_error("render: ffmpeg failed writing %s (status %d)", s->o.video, vrc);
+            return -1;
+        }
+    }
+    int png_rc = png_queue_finish(s->pngq); /* every frame on disk before the summary */
+    s->pngq = NULL;
+    if (png_rc != 0)
+        return -1;
+    printf("rendered %ld frames of %s (%dx%d, shader %s)", written, s->o.run, s->d.width,
+           s->d.height, s->d.shader);
+    if (s->o.png)
+        printf(" to %s", s->o.png);
+    if (s->o.video)
+        printf("%s%s", s->o.png ? " and " : " to ", s->o.video);
+    printf("\n");
+    return 0;
+}
+
+static void render_close(render_state *s)
+{
+    png_queue_finish(s->pngq);
+    if (s->video)
+        pclose(s->video);
+    free(s->h);
+    ms_renderer_destroy(s->r);
+    ms_scene_destroy(s->sc);
+    ms_reader_close(s->rd);
+}
+
 int cmd_render(int argc, char **argv)
 {
-    render_opts o;
-    int rc = parse_args(argc, argv, &o);
+    render_state s;
+    memset(&s, 0, sizeof s);
+    int rc = parse_args(argc, argv, &s.o);
     if (rc != 0)
         return rc < 0 ? EXIT_OK : rc;
-    if (o.video && !have_ffmpeg()) {
+    if (s.o.video && !have_ffmpeg()) {
         tool_error("render: --video needs ffmpeg, which is not installed (Debian: apt-get "
                    "install ffmpeg); use --png DIR and encode the frames later");
         return EXIT_USAGE;
     }
-    ms_reader *rd = NULL;
-    if (ms_reader_open(o.run, &rd) != MS_OK) {
-        tool_error("%s", ms_last_error());
-        return EXIT_USAGE;
-    }
-    rc = EXIT_RUNTIME;
-    ms_scene *sc = NULL;
-    ms_renderer *r = NULL;
-    float *h = NULL;
-    FILE *video = NULL;
-    png_queue *pngq = NULL;
-    const char *json = ms_reader_scene(rd);
-    if (!json || !json[0]) {
-        tool_error("render: %s stores no scene, so its pool and camera are unknown", o.run);
-        rc = EXIT_USAGE;
-        goto done;
-    }
-    if (ms_scene_parse(json, strlen(json), &sc) != MS_OK) {
-        tool_error("render: the scene stored in %s: %s", o.run, ms_last_error());
-        rc = EXIT_USAGE;
-        goto done;
-    }
-    if (!(ms_reader_fields(rd) & MS_FIELD_COMBINED)) {
-        tool_error("render: %s holds no combined field (the scene's output.fields lacks "
-                   "\"combined\"); nothing to draw",
-                   o.run);
-        rc = EXIT_USAGE;
-        goto done;
-    }
-    const long frames = ms_reader_frames(rd);
-    long last = o.last < 0 ? frames - 1 : o.last;
-    if (frames <= 0 || o.first >= frames || last >= frames) {
-        tool_error("render: %s holds %ld frames; --frames asks for %ld:%ld", o.run, frames,
-                   o.first, last);
-        rc = EXIT_USAGE;
-        goto done;
-    }
-    ms_renderer_desc d = ms_renderer_desc_default();
-    if (ms_renderer_desc_from_scene(sc, &d) != MS_OK) {
-        tool_error("%s", ms_last_error());
-        goto done;
-    }
-    if (o.shader)
-        d.shader = o.shader;
-    if (o.width)
-        d.width = o.width, d.height = o.height;
-    if (o.have_camera) {
-        memcpy(d.eye, o.eye, sizeof d.eye);
-        memcpy(d.target, o.target, sizeof d.target);
-        if (o.fov > 0)
-            d.fov = o.fov;
-    }
-    ms_status st = ms_renderer_create_desc(&d, &r);
-    if (st != MS_OK) {
-        tool_error("%s", ms_last_error());
-        rc = st == MS_ERR_INVALID_ARGUMENT || st == MS_ERR_PLUGIN ? EXIT_USAGE : EXIT_RUNTIME;
-        goto done;
-    }
-    ms_grid g;
-    if (ms_reader_field_grid(rd, MS_FIELD_COMBINED, &g) != MS_OK) {
-        tool_error("%s", ms_last_error());
-        goto done;
-    }
-    const size_t n = (size_t)g.nx * (size_t)g.ny;
-    h = malloc(n * sizeof *h);
-    if (!h) {
-        tool_error("render: out of memory for a %d x %d field", g.nx, g.ny);
-        goto done;
-    }
-    if (o.png) {
-        if (mkdir(o.png, 0777) != 0 && errno != EEXIST) {
-            tool_error("render: cannot create %s: %s", o.png, strerror(errno));
-            goto done;
-        }
-        if (png_queue_start(&pngq) != 0)
-            goto done;
-    }
-    if (o.video) {
-        double dt = ms_reader_frame_dt(rd) * ms_reader_output_every(rd);
-        double fps = dt > 0 ? 1.0 / dt : 30.0;
-        signal(SIGPIPE, SIG_IGN);
-        if (!(video = open_video(&o, d.width, d.height, fps)))
-            goto done;
-    }
+    rc = render_open(&s);
+    if (rc == EXIT_OK && render_outputs_open(&s) != 0)
+        rc = EXIT_RUNTIME;
     long written = 0;
-    for (long f = o.first; f <= last; ++f) {
-        double t = 0;
-        if (ms_reader_read_field(rd, MS_FIELD_COMBINED, f, h, n) != MS_OK ||
-            ms_reader_time(rd, f, &t) != MS_OK ||
-            ms_renderer_draw_scene_field(r, sc, h, &g, t) != MS_OK) {
-            tool_error("render: frame %ld: %s", f, ms_last_error());
-            goto done;
-        }
-        if (o.png) { /* encoded by png_queue.c's thread while the next frame draws */
-            char path[4096];
-            snprintf(path, sizeof path, "%s/frame_%05ld.png", o.png, f);
-            int w = 0, hh = 0;
-            const unsigned char *px = ms_renderer_pixels(r, &w, &hh);
-            if (png_queue_push(pngq, path, px, w, hh) != 0)
-                goto done;
-        }
-        if (video) {
-            int w = 0, hh = 0;
-            const unsigned char *px = ms_renderer_pixels(r, &w, &hh);
-            if (fwrite(px, 4, (size_t)w * (size_t)hh, video) != (size_t)w * (size_t)hh) {
-                tool_error("render: ffmpeg stopped taking frames (frame %ld)", f);
-                goto done;
-            }
-        }
-        ++written;
-    }
-    if (video) {
-        int vrc = pclose(video);
-        video = NULL;
-        if (vrc != 0) {
-            tool_error("render: ffmpeg failed writing %s (status %d)", o.video, vrc);
-            goto done;
-        }
-    }
-    int png_rc = png_queue_finish(pngq); /* every frame on disk before the summary */
-    pngq = NULL;
-    if (png_rc != 0)
-        goto done;
-    printf("rendered %ld frames of %s (%dx%d, shader %s)", written, o.run, d.width, d.height,
-           d.shader);
-    if (o.png)
-        printf(" to %s", o.png);
-    if (o.video)
-        printf("%s%s", o.png ? " and " : " to ", o.video);
-    printf("\n");
-    rc = EXIT_OK;
-done:
-    png_queue_finish(pngq);
-    if (video)
-        pclose(video);
-    free(h);
-    ms_renderer_destroy(r);
-    ms_scene_destroy(sc);
-    ms_reader_close(rd);
+    for (long f = s.o.first; rc == EXIT_OK && f <= s.last; ++f, ++written)
+        if (render_frame(&s, f) != 0)
+            rc = EXIT_RUNTIME;
+    if (rc == EXIT_OK && render_finish(&s, written) != 0)
+        rc = EXIT_RUNTIME;
+    render_close(&s);
     return rc;
 }
