@@ -104,6 +104,61 @@ static float sound_speed_at(const ms_volume *v, float rho)
     return v->c0;
 }
 
+/* The longest sub-step the state allows now: the CFL, force and viscous
+ * bounds over all particles (the colliders' speed included), with the one
+ * that wins named in v->dt_limit; MS_ERR_UNSTABLE if a particle's velocity
+ * or acceleration is not finite. */
+static ms_status substep_bound(ms_volume *v, int dfsph, float *out)
+{
+    const float lambda = v->desc.courant, h = v->K.h;
+    float vcol = ms_volume_collider_speed(v);
+
+    bounds_ctx bc = {.v = v};
+    ms_vpool_run(v->pool, bounds_part, &bc, v->n);
+    float vm2 = 0.0f, am2 = 0.0f, dm = 0.0f, rm = 0.0f;
+    int bad = 0;
+    for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) {
+        vm2 = fmaxf(vm2, bc.vmax2[p]);
+        am2 = fmaxf(am2, bc.amax2[p]);
+        dm = fmaxf(dm, bc.dmax[p]);
+        rm = fmaxf(rm, bc.rhomax[p]);
+        bad |= bc.bad[p];
+    }
+    if (bad)
+        return ms_fail(MS_ERR_UNSTABLE,
+                       "volume: a particle's velocity or acceleration is not finite at "
+                       "t = %g s; the state cannot be advanced",
+                       v->time);
+    float vmax = sqrtf(vm2), amax = sqrtf(am2);
+    float c = sound_speed_at(v, rm);
+    float dt_cfl = lambda * h / (c + vmax + vcol);
+    float dt_force = amax > 0.0f ? lambda * sqrtf(h / amax) : INFINITY;
+    if (dfsph) {
+        /* a particle moves at most lambda spacings a sub-step by its
+         * velocity (SPlisHSPlasH's CFL, 0.4 d / v_max, at lambda = 0.4:
+         * the peer's DamBreakModel steps 3.3 ms at d = 0.03 m), and by
+         * its acceleration a dt^2 <= lambda^2/4 spacing */
+        const float s = v->desc.spacing;
+        dt_cfl = lambda * s / (vmax + vcol);
+        dt_force = amax > 0.0f ? 0.5f * lambda * sqrtf(s / amax) : INFINITY;
+    }
+    float dt_visc = dm > 0.0f ? lambda / dm : INFINITY;
+    float bound = dt_cfl;
+    v->dt_limit = "cfl";
+    if (dt_force < bound) {
+        bound = dt_force;
+        v->dt_limit = "force";
+    }
+    if (dt_visc < bound) {
+        bound = dt_visc;
+        v->dt_limit = "viscous";
+    }
+    v->max_dt = bound;
+    *out = bound;
+    v->max_speed = vmax;
+    return MS_OK;
+}
+
 ms_status ms_volume_step(ms_volume *v, float dt)
 {
     if (!v)
@@ -146,52 +201,11 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         }
         ms_volume_forces(v);
         ms_volume_actions_accel(v);
-        float vcol = ms_volume_collider_speed(v);
-
-        bounds_ctx bc = {.v = v};
-        ms_vpool_run(v->pool, bounds_part, &bc, v->n);
-        float vm2 = 0.0f, am2 = 0.0f, dm = 0.0f, rm = 0.0f;
-        int bad = 0;
-        for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) {
-            vm2 = fmaxf(vm2, bc.vmax2[p]);
-            am2 = fmaxf(am2, bc.amax2[p]);
-            dm = fmaxf(dm, bc.dmax[p]);
-            rm = fmaxf(rm, bc.rhomax[p]);
-            bad |= bc.bad[p];
-        }
-        if (bad) {
-            st = ms_fail(MS_ERR_UNSTABLE,
-                         "volume: a particle's velocity or acceleration is not finite at "
-                         "t = %g s; the state cannot be advanced",
-                         v->time);
+        float bound = 0.0f;
+        st = substep_bound(v, dfsph, &bound);
+        if (st != MS_OK)
             break;
-        }
-        float vmax = sqrtf(vm2), amax = sqrtf(am2);
-        float c = sound_speed_at(v, rm);
-        float dt_cfl = lambda * h / (c + vmax + vcol);
-        float dt_force = amax > 0.0f ? lambda * sqrtf(h / amax) : INFINITY;
-        if (dfsph) {
-            /* a particle moves at most lambda spacings a sub-step by its
-             * velocity (SPlisHSPlasH's CFL, 0.4 d / v_max, at lambda = 0.4:
-             * the peer's DamBreakModel steps 3.3 ms at d = 0.03 m), and by
-             * its acceleration a dt^2 <= lambda^2/4 spacing */
-            const float s = v->desc.spacing;
-            dt_cfl = lambda * s / (vmax + vcol);
-            dt_force = amax > 0.0f ? 0.5f * lambda * sqrtf(s / amax) : INFINITY;
-        }
-        float dt_visc = dm > 0.0f ? lambda / dm : INFINITY;
-        float bound = dt_cfl;
-        v->dt_limit = "cfl";
-        if (dt_force < bound) {
-            bound = dt_force;
-            v->dt_limit = "force";
-        }
-        if (dt_visc < bound) {
-            bound = dt_visc;
-            v->dt_limit = "viscous";
-        }
-        v->max_dt = bound;
-        v->max_speed = vmax;
+        const float vmax = v->max_speed;
         if (taken >= v->desc.max_substeps) {
             st = ms_fail(MS_ERR_UNSTABLE,
                          "volume: a step of %g s needs more than max_substeps %d sub-steps: "
