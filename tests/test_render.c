@@ -1557,6 +1557,55 @@ START_TEST(refracted_tile_edges_are_straight_lines)
 }
 END_TEST
 
+/* Issue 14: where the liquid is dry (depth under MS_RENDER_DRY_DEPTH)
+ * nothing of it is drawn, so the floor is seen directly. An all-dry field
+ * (half a dry depth everywhere) draws the same bytes with the clear water
+ * shader and the opaque white milk shader (any sheet of milk would whiten
+ * the floor: 128 levels before the fix); a field dry on its left half and
+ * 25 cm deep on its right draws the left half as the all-dry field does,
+ * and the right half as liquid. */
+START_TEST(a_dry_floor_is_seen_directly)
+{
+    REQUIRE_GL();
+    /* dry but not exactly 0: a sheet at the floor's own depth would hide
+     * behind the floor (drawn after it, GL_LEQUAL), one half a dry depth
+     * above it shows */
+    const float damp = 0.5f * MS_RENDER_DRY_DEPTH;
+    float *dry = field(N, damp), *half = field(N, damp);
+    for (int j = 0; j < N; ++j)
+        for (int i = N / 2; i < N; ++i)
+            half[j * N + i] = 0.25f;
+    const char *const shaders[2] = {"water", "milk"};
+    unsigned char *bare[2];
+    for (int s = 0; s < 2; ++s) {
+        ms_renderer_desc d = top_down(shaders[s]);
+        bare[s] = render(&d, dry, N);
+    }
+    int shader_diff = box_max_abs_diff(bare[0], bare[1], 0, 0, W, W);
+    ck_assert_msg(shader_diff == 0, "a dry pool's picture depends on the shader by %d levels",
+                  shader_diff);
+    /* the left half's floor (x < 0.45 m at the floor, clear of the step
+     * between the dry and the wet cell centres at x = 0.49, 0.51 m), the
+     * right half's water surface */
+    const int x_dry = W / 2 - 12, x_wet = W / 2 + 12;
+    for (int s = 0; s < 2; ++s) {
+        ms_renderer_desc d = top_down(shaders[s]);
+        unsigned char *px = render(&d, half, N);
+        int left = box_max_abs_diff(px, bare[s], 6, 6, x_dry, W - 6);
+        double right = box_mean_abs_diff(px, bare[s], x_wet, 6, W - 6, W - 6);
+        ck_assert_msg(left == 0, "%s: the dry half differs from the bare floor by %d levels",
+                      shaders[s], left);
+        ck_assert_msg(right > 5, "%s: the wet half looks like the bare floor (%g levels)",
+                      shaders[s], right);
+        free(px);
+    }
+    free(bare[0]);
+    free(bare[1]);
+    free(dry);
+    free(half);
+}
+END_TEST
+
 static Suite *render_suite(void)
 {
     Suite *s = suite_create("render");
@@ -1579,6 +1628,7 @@ static Suite *render_suite(void)
     tcase_add_test(tc, a_shader_that_does_not_compile_is_refused_with_its_log);
     tcase_add_test(tc, a_coarser_mesh_keeps_the_fields_normals);
     tcase_add_test(tc, refracted_tile_edges_are_straight_lines);
+    tcase_add_test(tc, a_dry_floor_is_seen_directly);
     tcase_add_test(tc, floating_discs_are_drawn_on_the_surface);
     tcase_add_test(tc, the_shipped_scenes_render_their_golden_pictures);
     tcase_add_test(tc, draw_renders_the_sims_field_with_its_floaters_and_boat);

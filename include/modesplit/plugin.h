@@ -211,7 +211,12 @@ typedef struct ms_shader_uniforms {
  *                           span (m); 0 when the walls were not traced
  *     float ms_caustics_wall_rows  texel rows of one strip
  *   the shader's own uniforms (colours, ...) it sets in set_uniforms.
- * The fragment shader writes gl_FragColor (linear RGB, alpha 1). */
+ * The fragment shader writes gl_FragColor (linear RGB, alpha 1).
+ * A vertex shader that writes gl_ClipVertex = gl_Vertex (the world
+ * position, as the shipped ones do) has the surface cut where the liquid
+ * is dry (less than 1 mm deep): nothing of it is
+ * drawn there and the floor is seen directly. One that does not is drawn
+ * everywhere, a zero-depth sheet over dry floor included. */
 typedef struct ms_shader_vtable {
     uint32_t size;               /* sizeof(ms_shader_vtable) */
     uint32_t passes;             /* MS_SHADER_NEEDS_* bits */

@@ -215,6 +215,20 @@ static void draw_liquid(ms_renderer *r, double time)
     if (r->shader.vt->set_uniforms)
         r->shader.vt->set_uniforms(r->shader.self, &u);
 
+    /* dry cells: the plane z = floor + MS_RENDER_DRY_DEPTH in world
+     * coordinates (given under the identity, so gl_ClipVertex = gl_Vertex
+     * is compared with it as is) cuts the surface along the contour of
+     * that depth; a plugin whose vertex program does not write
+     * gl_ClipVertex is drawn whole (plugin.h) */
+    const int clip = gl->liquid_clips;
+    if (clip) {
+        const GLdouble plane[4] = {0, 0, 1, -((double)d->pool_min[2] + MS_RENDER_DRY_DEPTH)};
+        glPushMatrix();
+        glLoadIdentity();
+        glClipPlane(GL_CLIP_PLANE0, plane);
+        glPopMatrix();
+        glEnable(GL_CLIP_PLANE0);
+    }
     glDisable(GL_CULL_FACE);
     glBindBuffer(GL_ARRAY_BUFFER, gl->mesh_vbo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl->mesh_ibo);
@@ -238,6 +252,8 @@ static void draw_liquid(ms_renderer *r, double time)
     glDisableClientState(GL_VERTEX_ARRAY);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+    if (clip)
+        glDisable(GL_CLIP_PLANE0);
 }
 
 static void draw_scene(ms_renderer *r, double time)

@@ -109,6 +109,7 @@ struct ms_gl {
     GLuint caustics_tex;  /* ms_caustics: the light map, or 1 x 1 of 1 */
     int caustics_n;       /* its size as uploaded */
     ms_gl_program liquid; /* the shader plugin's */
+    int liquid_clips;     /* 1: its vertex program writes gl_ClipVertex (dry cells cut) */
     ms_gl_program pool;   /* tiles: floor, walls, deck */
     ms_gl_program sky;    /* the background */
     GLuint pool_vbo;

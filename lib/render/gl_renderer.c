@@ -74,6 +74,7 @@ static ms_status build(ms_renderer *r, const ms_cubemap *sky)
             MS_OK ||
         (st = ms_gl_sky_create(r, sky)) != MS_OK || (st = ms_gl_pool_create(r)) != MS_OK)
         return st;
+    gl->liquid_clips = strstr(vt->vertex_source, "gl_ClipVertex") != NULL;
     if (r->passes & (MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION)) {
         gl->env_size = env_size_for(r->desc.width, r->desc.height);
         if ((st = ms_gl_env_create(r)) != MS_OK)

@@ -144,6 +144,13 @@ ms_status ms_png_write_rgba(const char *path, const unsigned char *rgba, int w, 
 
 /* ---- the renderer ------------------------------------------------------- */
 
+/* Depth (m) below which the liquid counts as dry: the surface is cut along
+ * this depth's contour (linear between the mesh's vertices) and nothing of
+ * it is drawn where it is shallower, so dry floor is seen directly instead
+ * of through a zero-depth sheet (issue 14). Above the wave field's residual
+ * ripples on a dry floor (0.6 mm in data/scenes/glass.json at frame 60). */
+#define MS_RENDER_DRY_DEPTH 1e-3f
+
 typedef struct ms_gl ms_gl; /* the GL side (gl_*.c) */
 
 /* An obstacle or the container drawn as a mesh (objects.c). */

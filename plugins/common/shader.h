@@ -13,7 +13,9 @@
 #include "modesplit/plugin.h"
 
 /* The renderer's surface mesh gives world positions and normals; every
- * shipped fragment program shades from the interpolated pair. */
+ * shipped fragment program shades from the interpolated pair. The world
+ * position as gl_ClipVertex lets the renderer cut the mesh where the
+ * liquid is dry (plugin.h), so a dry floor is seen directly. */
 #define SHADER_VERTEX_SOURCE                                                                    \
     "#version 120\n"                                                                            \
     "varying vec3 v_pos;\n"                                                                     \
@@ -23,6 +25,7 @@
     "    v_pos = gl_Vertex.xyz;\n"                                                              \
     "    v_normal = gl_Normal;\n"                                                               \
     "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"                             \
+    "    gl_ClipVertex = gl_Vertex;\n"                                                          \
     "}\n"
 
 /* The display transform every shipped fragment program ends with: the
