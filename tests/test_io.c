@@ -511,6 +511,7 @@ static unsigned char *ckpt_fill(unsigned char *buf, long k)
 static void kill_mid_run(long after, int jitter_us, int checkpoints)
 {
     ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    l.checkpoint_every = checkpoints; /* the slots made with the layout */
     int fds[2];
     ck_assert_int_eq(pipe(fds), 0);
     pid_t pid = fork();

@@ -100,13 +100,34 @@ static long frames_now(const char *path)
     return n;
 }
 
+/* Frames a running writer of `path` (run.h5) has committed, as its
+ * sidecar run.xmf lists them (appended after each commit): read without
+ * opening the HDF5 file mid-flush, where HDF5 1.10.8 leaks (io.h), which
+ * LeakSanitizer reports. */
+static long frames_listed(const char *path)
+{
+    char xmf[600];
+    snprintf(xmf, sizeof xmf, "%.*s.xmf", (int)strlen(path) - 3, path);
+    FILE *f = fopen(xmf, "rb");
+    if (!f)
+        return 0;
+    static char text[1 << 20];
+    size_t n = fread(text, 1, sizeof text - 1, f);
+    fclose(f);
+    text[n] = '\0';
+    long frames = 0;
+    for (const char *p = strstr(text, "<Time Value="); p; p = strstr(p + 1, "<Time Value="))
+        ++frames;
+    return frames;
+}
+
 /* Start args, wait until `path` holds at least `at` frames, SIGKILL. */
 static void kill_at(const char *const *args, const char *path, long at)
 {
     pid_t pid = start_tool(args);
     int status;
     for (;;) {
-        if (frames_now(path) >= at)
+        if (frames_listed(path) >= at)
             break;
         pid_t w = waitpid(pid, &status, WNOHANG);
         ck_assert_msg(w == 0, "the run ended before frame %ld", at);

@@ -153,8 +153,9 @@ MS_API const char *ms_writer_xdmf_legacy_path(const ms_writer *w);
  * every n-th written frame (frames 0, n, 2n, ...; the scene's
  * output.checkpoint_every, 1 for a sim made from descs; 0 = none). The
  * file keeps the two newest, in /checkpoint/0 and /checkpoint/1 (uint8,
- * attribute `frame`); a new one replaces the older, so a kill while one is
- * written leaves the other. */
+ * attributes `frame` and `bytes`, the blob's length: a slot only grows);
+ * a new one replaces the older, so a kill while one is written leaves the
+ * other. */
 MS_API ms_status ms_writer_set_checkpoint_every(ms_writer *w, int every);
 /* The checkpoints a reader may use: those of complete frames, newest
  * first, at most 2; frames[i] is the written frame each holds. Returns

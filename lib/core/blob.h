@@ -43,7 +43,9 @@ ms_status ms_blob_peek(const ms_blob *b, const char *name, size_t *bytes);
  * [0, max] with a sentence naming it. */
 ms_status ms_blob_count(ms_blob *b, const char *name, int *n, int max);
 
-/* FNV-1a 64 of bytes, continuing from h (start with MS_BLOB_HASH0). */
+/* A 64-bit hash of bytes (8 bytes a step; FNV-1a for the tail),
+ * continuing from h (start with MS_BLOB_HASH0). Not cryptographic: it
+ * finds torn and damaged blobs, not forged ones. */
 #define MS_BLOB_HASH0 1469598103934665603ull
 uint64_t ms_blob_hash(uint64_t h, const void *data, size_t bytes);
 

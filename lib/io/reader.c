@@ -163,9 +163,10 @@ static void read_checkpoints(ms_reader *r)
         snprintf(name, sizeof name, "checkpoint/%d", s);
         hsize_t dims[1];
         hid_t d = open_dataset(r->file, name, H5T_INTEGER, 1, dims);
-        int64_t at = -1;
+        int64_t at = -1, bytes = 0;
         int ok = d >= 0 && ms_h5_read_int64(d, "frame", &at) >= 0 && at >= 0 &&
-                 at < r->frames && dims[0] > 0 && dims[0] <= (hsize_t)1 << 40;
+                 at < r->frames && ms_h5_read_int64(d, "bytes", &bytes) >= 0 && bytes > 0 &&
+                 (hsize_t)bytes <= dims[0] && dims[0] <= (hsize_t)1 << 40;
         if (d >= 0)
             H5Dclose(d);
         if (!ok)
@@ -180,7 +181,7 @@ static void read_checkpoints(ms_reader *r)
         }
         r->ckpt_frame[i] = (long)at;
         r->ckpt_slot[i] = s;
-        r->ckpt_bytes[i] = (size_t)dims[0];
+        r->ckpt_bytes[i] = (size_t)bytes;
     }
     H5Eclear2(H5E_DEFAULT);
 }
@@ -608,12 +609,18 @@ ms_status ms_reader_read_checkpoint(const ms_reader *r, int i, void *buf, size_t
     snprintf(name, sizeof name, "checkpoint/%d", r->ckpt_slot[i]);
     ms_h5_quiet q;
     ms_h5_hush(&q);
-    hsize_t dims[1];
+    hsize_t dims[1], start[1] = {0}, count[1] = {(hsize_t)r->ckpt_bytes[i]};
     hid_t d = open_dataset(r->file, name, H5T_INTEGER, 1, dims);
-    if (d < 0 || dims[0] != (hsize_t)r->ckpt_bytes[i] ||
-        H5Dread(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) < 0)
+    hid_t fs = d >= 0 ? H5Dget_space(d) : -1, ms = H5Screate_simple(1, count, NULL);
+    if (d < 0 || dims[0] < count[0] || fs < 0 || ms < 0 ||
+        H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) < 0 ||
+        H5Dread(d, H5T_NATIVE_UCHAR, ms, fs, H5P_DEFAULT, buf) < 0)
         st = ms_h5_fail(MS_ERR_IO, "io: cannot read the checkpoint of frame %ld from %s",
                         r->ckpt_frame[i], r->path);
+    if (fs >= 0)
+        H5Sclose(fs);
+    if (ms >= 0)
+        H5Sclose(ms);
     if (d >= 0)
         H5Dclose(d);
     ms_h5_loud(&q);

@@ -231,17 +231,23 @@ static hid_t create_field(hid_t group, const char *name, const ms_grid *g, int d
     return d;
 }
 
-static hid_t create_time(hid_t file)
+/* An extendible dataset `name` below file of `rank` dimensions, the first
+ * (frames) growing from 0, chunked as chunk, with a `units` attribute and
+ * an optional fill value (of type `mtype`). */
+static hid_t create_extendible(hid_t file, const char *name, hid_t ftype, int rank,
+                               const hsize_t *chunk, const char *units, hid_t mtype,
+                               const void *fill)
 {
-    hsize_t dims[1] = {0}, maxdims[1] = {H5S_UNLIMITED}, chunk[1] = {TIME_CHUNK};
-    hid_t space = H5Screate_simple(1, dims, maxdims);
+    hsize_t dims[3] = {0, 0, 0}, maxdims[3] = {H5S_UNLIMITED, 0, 0};
+    for (int i = 1; i < rank; ++i)
+        dims[i] = maxdims[i] = chunk[i];
+    hid_t space = H5Screate_simple(rank, dims, maxdims);
     hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     hid_t d = -1;
-    double fill = NAN;
-    if (space >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, 1, chunk) >= 0 &&
-        H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &fill) >= 0) {
-        d = H5Dcreate2(file, "time", H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
-        if (d >= 0 && ms_h5_attr_string(d, "units", "s") < 0) {
+    if (space >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, rank, chunk) >= 0 &&
+        (!fill || H5Pset_fill_value(dcpl, mtype, fill) >= 0)) {
+        d = H5Dcreate2(file, name, ftype, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+        if (d >= 0 && ms_h5_attr_string(d, "units", units) < 0) {
             H5Dclose(d);
             d = -1;
         }
@@ -251,32 +257,27 @@ static hid_t create_time(hid_t file)
     if (dcpl >= 0)
         H5Pclose(dcpl);
     return d;
+}
+
+static hid_t create_time(hid_t file)
+{
+    const hsize_t chunk[1] = {TIME_CHUNK};
+    const double fill = NAN;
+    return create_extendible(file, "time", H5T_IEEE_F64LE, 1, chunk, "s", H5T_NATIVE_DOUBLE,
+                             &fill);
 }
 
 /* /floaters: float32 [frame][n][3] (m), the floating objects (fig10's
  * leaves) as the sim moved them, 16 frames a chunk, no filters. */
 static hid_t create_floaters(hid_t file, int n)
 {
-    hsize_t dims[3] = {0, (hsize_t)n, 3}, maxdims[3] = {H5S_UNLIMITED, (hsize_t)n, 3},
-            chunk[3] = {16, (hsize_t)n, 3};
-    hid_t space = H5Screate_simple(3, dims, maxdims);
-    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
-    hid_t d = -1;
-    if (space >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, 3, chunk) >= 0) {
-        d = H5Dcreate2(file, "floaters", H5T_IEEE_F32LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
-        if (d >= 0 && ms_h5_attr_string(d, "units", "m") < 0) {
-            H5Dclose(d);
-            d = -1;
-        }
-    }
-    if (space >= 0)
-        H5Sclose(space);
-    if (dcpl >= 0)
-        H5Pclose(dcpl);
-    return d;
+    const hsize_t chunk[3] = {16, (hsize_t)n, 3};
+    return create_extendible(file, "floaters", H5T_IEEE_F32LE, 3, chunk, "m", -1, NULL);
 }
 
 /* Root attributes, datasets and the `frames` attribute of a new file. */
+static int create_checkpoints(ms_writer *w);
+
 static int write_layout(ms_writer *w, const ms_writer_layout *l)
 {
     hid_t f = w->file;
@@ -315,6 +316,8 @@ static int write_layout(ms_writer *w, const ms_writer_layout *l)
     if (w->time_dset < 0)
         return -1;
     if (l->floaters > 0 && (w->floater_dset = create_floaters(f, l->floaters)) < 0)
+        return -1;
+    if (l->checkpoint_every > 0 && !create_checkpoints(w))
         return -1;
     w->frames_attr = H5Aopen(f, "frames", H5P_DEFAULT);
     if (w->frames_attr < 0)
@@ -552,42 +555,74 @@ static herr_t append_rows(hid_t d, long frame, const void *buf, hid_t mtype, int
 
 #define CKPT_CHUNK (256u * 1024u) /* bytes per chunk of a checkpoint blob */
 
-/* Write blob into the older checkpoint slot, marked as frame k; not yet
- * flushed (the frame's first commit takes it). 0 on an HDF5 error. */
-static int write_checkpoint(ms_writer *w, long k, const void *blob, size_t bytes)
+/* Create /checkpoint and its two empty slots (attribute frame = -1).
+ * Done with the layout when checkpoints are asked for, so that no frame's
+ * flush adds a link to the root group. 0 on an HDF5 error. */
+static int create_checkpoints(ms_writer *w)
 {
-    int s = w->ckpt_frame[0] <= w->ckpt_frame[1] ? 0 : 1;
     hid_t f = w->file;
-    char name[32];
-    snprintf(name, sizeof name, "checkpoint/%d", s);
-    if (w->ckpt[s] < 0) {
-        if (H5Lexists(f, "checkpoint", H5P_DEFAULT) <= 0) {
-            hid_t g = H5Gcreate2(f, "checkpoint", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-            if (g < 0 || H5Gclose(g) < 0)
-                return 0;
-        }
-        hsize_t dims[1] = {bytes}, maxd[1] = {H5S_UNLIMITED}, chunk[1] = {CKPT_CHUNK};
+    if (H5Lexists(f, "checkpoint", H5P_DEFAULT) <= 0) {
+        hid_t g = H5Gcreate2(f, "checkpoint", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        if (g < 0 || H5Gclose(g) < 0)
+            return 0;
+    }
+    for (int s = 0; s < MS_IO_CHECKPOINTS; ++s) {
+        if (w->ckpt[s] >= 0)
+            continue;
+        char name[32];
+        snprintf(name, sizeof name, "checkpoint/%d", s);
+        hsize_t dims[1] = {0}, maxd[1] = {H5S_UNLIMITED}, chunk[1] = {CKPT_CHUNK};
         hid_t sp = H5Screate_simple(1, dims, maxd), dcpl = H5Pcreate(H5P_DATASET_CREATE);
-        /* chunks without filters are rewritten in place, where freed space
-         * would never be reused: the file does not grow per checkpoint */
+        /* chunks without filters are rewritten in place, and the dataset
+         * only grows (attribute bytes says how much of it is the blob), so
+         * a checkpoint changes no chunk index once the slots are large
+         * enough, and the file does not grow per checkpoint */
         if (sp >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, 1, chunk) >= 0)
             w->ckpt[s] = H5Dcreate2(f, name, H5T_NATIVE_UCHAR, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
         if (sp >= 0)
             H5Sclose(sp);
         if (dcpl >= 0)
             H5Pclose(dcpl);
-        if (w->ckpt[s] < 0 || ms_h5_attr_int64(w->ckpt[s], "frame", -1) < 0)
+        if (w->ckpt[s] < 0 || ms_h5_attr_int64(w->ckpt[s], "frame", -1) < 0 ||
+            ms_h5_attr_int64(w->ckpt[s], "bytes", 0) < 0)
             return 0;
     }
-    hsize_t dims[1] = {bytes};
-    int64_t frame = k;
-    hid_t a = -1;
-    int ok = H5Dset_extent(w->ckpt[s], dims) >= 0 &&
-             H5Dwrite(w->ckpt[s], H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, blob) >= 0 &&
-             (a = H5Aopen(w->ckpt[s], "frame", H5P_DEFAULT)) >= 0 &&
-             H5Awrite(a, H5T_NATIVE_INT64, &frame) >= 0;
+    return 1;
+}
+
+static int set_int64(hid_t obj, const char *name, int64_t v)
+{
+    hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
+    int ok = a >= 0 && H5Awrite(a, H5T_NATIVE_INT64, &v) >= 0;
     if (a >= 0)
         H5Aclose(a);
+    return ok;
+}
+
+/* Write blob into the older checkpoint slot, marked as frame k; not yet
+ * flushed (the frame's first commit takes it). 0 on an HDF5 error. */
+static int write_checkpoint(ms_writer *w, long k, const void *blob, size_t bytes)
+{
+    int s = w->ckpt_frame[0] <= w->ckpt_frame[1] ? 0 : 1;
+    if (w->ckpt[s] < 0 && !create_checkpoints(w))
+        return 0;
+    hsize_t dims[1] = {bytes}, have = 0;
+    hid_t sp = H5Dget_space(w->ckpt[s]);
+    int ok = sp >= 0 && H5Sget_simple_extent_dims(sp, &have, NULL) == 1;
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (ok && have < bytes)
+        ok = H5Dset_extent(w->ckpt[s], dims) >= 0;
+    hid_t ms = ok ? H5Screate_simple(1, dims, NULL) : -1, fs = ok ? H5Dget_space(w->ckpt[s]) : -1;
+    hsize_t start[1] = {0};
+    ok = ok && ms >= 0 && fs >= 0 &&
+         H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, dims, NULL) >= 0 &&
+         H5Dwrite(w->ckpt[s], H5T_NATIVE_UCHAR, ms, fs, H5P_DEFAULT, blob) >= 0 &&
+         set_int64(w->ckpt[s], "bytes", (int64_t)bytes) && set_int64(w->ckpt[s], "frame", k);
+    if (ms >= 0)
+        H5Sclose(ms);
+    if (fs >= 0)
+        H5Sclose(fs);
     if (ok)
         w->ckpt_frame[s] = k;
     return ok;

@@ -192,6 +192,7 @@ static ms_status sim_io(ms_sim *sim, ms_blob *b)
     if (b->reading) {
         sim->next_drop = next_drop;
         sim->ndrags = ndrags;
+        sim->stats.frames = sim->calls; /* frames finished, as ms_sim_frame */
     }
     /* the parts */
     if (sim->surface && (st = ms_surface_snapshot_io(sim->surface, b)))
