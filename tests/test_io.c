@@ -494,9 +494,24 @@ END_TEST
 /* A child writes frames until killed, reporting each committed frame on a
  * pipe; the parent kills it with SIGKILL after `after` frames plus a
  * jitter, then reads the file. */
-static void kill_mid_run(long after, int jitter_us)
+/* A stand-in checkpoint blob of frame k: its size and bytes depend on k. */
+static size_t ckpt_bytes(long k)
+{
+    return 150000 + (size_t)(k % 5) * 40000;
+}
+
+static unsigned char *ckpt_fill(unsigned char *buf, long k)
+{
+    buf = realloc(buf, ckpt_bytes(k));
+    for (size_t i = 0; i < ckpt_bytes(k); ++i)
+        buf[i] = (unsigned char)mix((uint32_t)(k * 31 + (long)i));
+    return buf;
+}
+
+static void kill_mid_run(long after, int jitter_us, int checkpoints)
 {
     ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    l.checkpoint_every = checkpoints; /* the slots made with the layout */
     int fds[2];
     ck_assert_int_eq(pipe(fds), 0);
     pid_t pid = fork();
@@ -507,9 +522,14 @@ static void kill_mid_run(long after, int jitter_us)
         if (ms_writer_open_layout(tmp_path("killed.h5"), &l, &w) != MS_OK)
             _exit(3);
         frame_buf b = {0};
+        unsigned char *blob = NULL;
         for (long k = 0;; ++k) {
             frame_fill(&b, &l, k);
             ms_writer_data d = frame_data(&b);
+            if (checkpoints) {
+                d.checkpoint = blob = ckpt_fill(blob, k);
+                d.checkpoint_bytes = ckpt_bytes(k);
+            }
             if (ms_writer_write(w, &d) != MS_OK)
                 _exit(4);
             long done = k + 1;
@@ -541,6 +561,28 @@ static void kill_mid_run(long after, int jitter_us)
     ck_assert_int_ge(frames, done);
     ck_assert_int_le(frames, done + 1);
     check_frames(r, &l, frames);
+    if (checkpoints) {
+        /* the newest checkpoint of a committed frame is whole: the last
+         * frame's or, when the kill tore that one, the frame before */
+        long at[2];
+        int n = ms_reader_checkpoints(r, at);
+        ck_assert_int_ge(n, frames >= 2 ? 1 : 0);
+        for (int i = 0; i < n; ++i)
+            ck_assert_int_lt(at[i], frames);
+        ck_assert(n == 0 || at[0] >= frames - 2);
+        int whole = 0;
+        for (int i = 0; i < n; ++i) {
+            size_t bytes;
+            ck_assert_int_eq(ms_reader_checkpoint_size(r, i, &bytes), MS_OK);
+            unsigned char *got = malloc(bytes), *want = ckpt_fill(NULL, at[i]);
+            whole += bytes == ckpt_bytes(at[i]) &&
+                     ms_reader_read_checkpoint(r, i, got, bytes) == MS_OK &&
+                     memcmp(got, want, bytes) == 0;
+            free(got);
+            free(want);
+        }
+        ck_assert_msg(n == 0 || whole >= 1, "no whole checkpoint among %d", n);
+    }
     ms_reader_close(r);
     char *x = ms_test_slurp(tmp_path("killed.xmf"));
     ck_assert_msg(x[0], "missing or empty");
@@ -555,7 +597,18 @@ START_TEST(sigkill_mid_run_leaves_every_flushed_frame)
     /* kill at a spread of moments inside the frame being written */
     const int jitter[] = {0, 37, 150, 400, 1100, 2900};
     for (int i = 0; i < 6; ++i)
-        kill_mid_run(3 + 4 * i, jitter[i]);
+        kill_mid_run(3 + 4 * i, jitter[i], 0);
+    remove_tmp_dir();
+}
+END_TEST
+
+/* The same with a checkpoint blob in every frame (issue 17). */
+START_TEST(sigkill_mid_run_leaves_a_whole_checkpoint)
+{
+    make_tmp_dir();
+    const int jitter[] = {0, 60, 250, 700, 1500, 3100};
+    for (int i = 0; i < 6; ++i)
+        kill_mid_run(2 + 3 * i, jitter[i], 1);
     remove_tmp_dir();
 }
 END_TEST
@@ -1177,6 +1230,7 @@ static Suite *io_suite(void)
     tc = tcase_create("crash");
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, sigkill_mid_run_leaves_every_flushed_frame);
+    tcase_add_test(tc, sigkill_mid_run_leaves_a_whole_checkpoint);
     tcase_add_test(tc, file_size_limit_stops_before_a_frame_that_cannot_fit);
     tcase_add_test(tc, full_disk_is_an_error_and_leaves_a_readable_file);
     tcase_add_test(tc, unwritable_paths_are_refused_with_the_reason);

@@ -25,6 +25,10 @@
  *                         (the particle's insertion index, stable in time)
  *   /particles/<n>/position, velocity   the same particles as float32
  *                         [count][3] (what ParaView's Xdmf3 reader reads)
+ *   /floaters             float32 [frame][n][3], m: the scene's floating
+ *                         objects (leaves), when it has any
+ *   /checkpoint/0, /1     uint8 snapshots of the sim (ms_sim_snapshot),
+ *                         attribute frame (see checkpoints below)
  * Only the fields asked for are present. Frame n is the n-th written frame.
  *
  * Crash safety: each frame is written and flushed before ms_writer_frame
@@ -143,6 +147,34 @@ MS_API ms_status ms_reader_read_particles(const ms_reader *r, long frame, int ca
 
 /* The legacy (Xdmf2 / VisIt) sidecar's path, "run.xdmf2". */
 MS_API const char *ms_writer_xdmf_legacy_path(const ms_writer *w);
+
+/* ---- checkpoints (issue 17) ------------------------------------------- */
+/* ms_writer_frame stores a snapshot of the sim (ms_sim_snapshot) with
+ * every n-th written frame (frames 0, n, 2n, ...; the scene's
+ * output.checkpoint_every, 1 for a sim made from descs; 0 = none). The
+ * file keeps the two newest, in /checkpoint/0 and /checkpoint/1 (uint8,
+ * attributes `frame` and `bytes`, the blob's length: a slot only grows);
+ * a new one replaces the older, so a kill while one is written leaves the
+ * other. */
+MS_API ms_status ms_writer_set_checkpoint_every(ms_writer *w, int every);
+/* The checkpoints a reader may use: those of complete frames, newest
+ * first, at most 2; frames[i] is the written frame each holds. Returns
+ * how many. */
+MS_API int ms_reader_checkpoints(const ms_reader *r, long frames[2]);
+/* Bytes of checkpoint i (as ms_reader_checkpoints orders them), and a copy
+ * of it into buf (capacity bytes); then ms_sim_restore it into a sim of the
+ * file's scene. */
+MS_API ms_status ms_reader_checkpoint_size(const ms_reader *r, int i, size_t *bytes);
+MS_API ms_status ms_reader_read_checkpoint(const ms_reader *r, int i, void *buf,
+                                           size_t capacity);
+
+/* Floating objects (the scene's effects.floaters, fig10's leaves) per
+ * frame: /floaters, float32 [frame][n][3], m (what ms_sim_floaters showed
+ * when the frame was written). The count n (0 when the file has none), and
+ * frame's positions x, y, z into xyz (capacity >= n triples). */
+MS_API int ms_reader_floater_count(const ms_reader *r);
+MS_API ms_status ms_reader_read_floaters(const ms_reader *r, long frame, float *xyz,
+                                         int capacity);
 
 /* ---- shaded-relief preview (PNG) ---------------------------------------- */
 

@@ -197,6 +197,29 @@ MS_API ms_status ms_sim_boat(const ms_sim *sim, float pos[2]);
  * skip), to move or tilt it from there. MS_ERR_STATE without one. */
 MS_API ms_status ms_sim_container_pose(const ms_sim *sim, float pos[3], float orientation[4]);
 
+/* Snapshot and restore (issue 17): the whole state of the sim between two
+ * steps as one byte blob (particles in the solver's order, the wave field
+ * and its previous step, maps set at run time, the pipeline's hand-over
+ * buffers, RNG states, effect phases, floaters, time and frame counter),
+ * so that a sim restored from it steps to the same bytes as one never
+ * stopped, with 1 or 2 threads. The blob is versioned and size-led: a
+ * header with the format version, the library version, a hash of the
+ * scene or desc, a checksum; then named records. It is for the build that
+ * wrote it (machine byte order). Statistics are not restored: they count
+ * this handle's work. Between steps only.
+ * ms_sim_snapshot_size gives the bytes ms_sim_snapshot writes now (it
+ * changes as particles are added); ms_sim_snapshot refuses a smaller
+ * buffer and a failed sim. ms_sim_restore takes a blob of a sim made the
+ * same way (same scene text, or the same descs; the threads may differ)
+ * and refuses another format or library version (MS_ERR_UNSUPPORTED), a
+ * cut, corrupt or foreign blob and another scene (MS_ERR_INVALID_ARGUMENT,
+ * naming what differs) before it changes anything; a restore clears a
+ * failed sim. */
+MS_API ms_status ms_sim_snapshot_size(const ms_sim *sim, size_t *bytes);
+MS_API ms_status ms_sim_snapshot(const ms_sim *sim, void *buf, size_t capacity,
+                                 size_t *written);
+MS_API ms_status ms_sim_restore(ms_sim *sim, const void *buf, size_t bytes);
+
 #ifdef __cplusplus
 }
 #endif

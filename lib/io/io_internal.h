@@ -41,6 +41,8 @@ typedef struct ms_writer_layout {
     int output_every;             /* frames of the sim per written frame, >= 1 */
     int deflate;                  /* height fields: deflate level 1..9 after shuffle;
                                      0 = stored without filters (fastest, largest) */
+    int checkpoint_every;         /* written frames per sim snapshot, 0 = none (issue 17) */
+    int floaters;                 /* floating objects per frame (/floaters), 0 = none */
 } ms_writer_layout;
 
 typedef struct ms_writer_data {
@@ -48,6 +50,9 @@ typedef struct ms_writer_data {
     const float *field[MS_IO_NFIELDS];    /* nx*ny each, for the fields written */
     int particles;                        /* count, >= 0 */
     const float *pos[3], *vel[3];         /* particles views, may be NULL if count is 0 */
+    const void *checkpoint;               /* an ms_sim_snapshot blob of this frame, or NULL */
+    size_t checkpoint_bytes;
+    const float *floaters;                /* 3 * layout.floaters: x, y, z (m) */
 } ms_writer_data;
 
 ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out);
@@ -63,6 +68,14 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d);
 void ms_writer_skip_space_check(ms_writer *w);
 /* The layout the writer was opened with (its grids and fields). */
 const ms_writer_layout *ms_writer_get_layout(const ms_writer *w);
+/* The writer's scratch for a checkpoint blob of `bytes` (kept between
+ * frames), NULL when out of memory. */
+void *ms_writer_checkpoint_buffer(ms_writer *w, size_t bytes);
+/* Checkpoints (issue 17): /checkpoint/0 and /checkpoint/1, uint8 blobs of
+ * ms_sim_snapshot, each with an int64 attribute `frame` (the written frame
+ * whose sim state it holds); a new one overwrites the older, so a kill
+ * while one is written leaves the other. */
+#define MS_IO_CHECKPOINTS 2
 
 /* ---- scene texts compared key by key (scene_diff.c) ---- */
 /* Name up to three dotted key paths whose values differ between the two

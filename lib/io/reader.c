@@ -23,6 +23,8 @@ struct ms_reader {
     char *path;
     hid_t file;
     hid_t time_dset;
+    hid_t floater_dset; /* -1 without /floaters */
+    int nfloaters;
     hid_t dset[MS_IO_NFIELDS];
     ms_grid grid[MS_IO_NFIELDS];
     long frames;
@@ -31,6 +33,11 @@ struct ms_reader {
     int output_every;
     double frame_dt;
     char *library_version, *scene, *scene_name;
+    /* usable checkpoints, newest first (issue 17) */
+    int nckpt;
+    long ckpt_frame[MS_IO_CHECKPOINTS];
+    int ckpt_slot[MS_IO_CHECKPOINTS];
+    size_t ckpt_bytes[MS_IO_CHECKPOINTS];
 };
 
 static void reader_free(ms_reader *r)
@@ -42,6 +49,8 @@ static void reader_free(ms_reader *r)
             H5Dclose(r->dset[i]);
     if (r->time_dset >= 0)
         H5Dclose(r->time_dset);
+    if (r->floater_dset >= 0)
+        H5Dclose(r->floater_dset);
     if (r->file >= 0)
         H5Fclose(r->file);
     H5Eclear2(H5E_DEFAULT);
@@ -140,6 +149,43 @@ static ms_status open_field(ms_reader *r, int slot, hid_t fields)
     return MS_OK;
 }
 
+/* The checkpoints of complete frames (a slot marked with a frame the file
+ * does not count yet was cut by a kill), newest first. A slot that cannot
+ * be read is left out: a resume then falls back to an older one or to
+ * stepping from the start. */
+static void read_checkpoints(ms_reader *r)
+{
+    r->nckpt = 0;
+    if (H5Lexists(r->file, "checkpoint", H5P_DEFAULT) <= 0)
+        return;
+    for (int s = 0; s < MS_IO_CHECKPOINTS; ++s) {
+        char name[32];
+        snprintf(name, sizeof name, "checkpoint/%d", s);
+        hsize_t dims[1];
+        hid_t d = open_dataset(r->file, name, H5T_INTEGER, 1, dims);
+        int64_t at = -1, bytes = 0;
+        int ok = d >= 0 && ms_h5_read_int64(d, "frame", &at) >= 0 && at >= 0 &&
+                 at < r->frames && ms_h5_read_int64(d, "bytes", &bytes) >= 0 && bytes > 0 &&
+                 (hsize_t)bytes <= dims[0] && dims[0] <= (hsize_t)1 << 40;
+        if (d >= 0)
+            H5Dclose(d);
+        if (!ok)
+            continue;
+        int i = r->nckpt++;
+        /* insert, newest first */
+        while (i > 0 && r->ckpt_frame[i - 1] < at) {
+            r->ckpt_frame[i] = r->ckpt_frame[i - 1];
+            r->ckpt_slot[i] = r->ckpt_slot[i - 1];
+            r->ckpt_bytes[i] = r->ckpt_bytes[i - 1];
+            --i;
+        }
+        r->ckpt_frame[i] = (long)at;
+        r->ckpt_slot[i] = s;
+        r->ckpt_bytes[i] = (size_t)bytes;
+    }
+    H5Eclear2(H5E_DEFAULT);
+}
+
 static ms_status read_layout(ms_reader *r)
 {
     hid_t f = r->file;
@@ -183,6 +229,16 @@ static ms_status read_layout(ms_reader *r)
         return ms_fail(MS_ERR_PARSE, "io: %s lacks /time, a 1D float dataset", r->path);
     if (tdims[0] < (hsize_t)r->frames)
         r->frames = (long)tdims[0];
+    if (H5Lexists(f, "floaters", H5P_DEFAULT) > 0) {
+        hsize_t fd[3];
+        r->floater_dset = open_dataset(f, "floaters", H5T_FLOAT, 3, fd);
+        if (r->floater_dset < 0 || fd[1] < 1 || fd[1] > (1u << 20) || fd[2] != 3)
+            return ms_fail(MS_ERR_PARSE, "io: %s: /floaters is not a [frame][n][3] float dataset",
+                           r->path);
+        r->nfloaters = (int)fd[1];
+        if (fd[0] < (hsize_t)r->frames)
+            r->frames = (long)fd[0];
+    }
 
     if (H5Lexists(f, "fields", H5P_DEFAULT) > 0) {
         H5O_info_t info;
@@ -204,6 +260,7 @@ static ms_status read_layout(ms_reader *r)
     if (H5Lexists(f, step, H5P_DEFAULT) > 0)
         r->fields |= MS_FIELD_PARTICLES;
     H5Eclear2(H5E_DEFAULT);
+    read_checkpoints(r);
     return MS_OK;
 }
 
@@ -225,7 +282,7 @@ ms_status ms_reader_open(const char *path, ms_reader **out)
         ms_free(r);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the reader");
     }
-    r->file = r->time_dset = -1;
+    r->file = r->time_dset = r->floater_dset = -1;
     for (int i = 0; i < MS_IO_NFIELDS; ++i)
         r->dset[i] = -1;
     ms_h5_quiet q;
@@ -505,6 +562,100 @@ ms_status ms_reader_read_particles(const ms_reader *r, long frame, int capacity,
         if (d[k] >= 0)
             H5Dclose(d[k]);
     H5Eclear2(H5E_DEFAULT);
+    ms_h5_loud(&q);
+    return st;
+}
+
+int ms_reader_checkpoints(const ms_reader *r, long frames[2])
+{
+    if (!r)
+        return 0;
+    for (int i = 0; i < r->nckpt && frames; ++i)
+        frames[i] = r->ckpt_frame[i];
+    return r->nckpt;
+}
+
+static ms_status check_checkpoint(const ms_reader *r, int i)
+{
+    ms_status st = ms_check_not_null("io", "reader", r);
+    if (st == MS_OK && (i < 0 || i >= r->nckpt))
+        st = ms_fail(MS_ERR_INVALID_ARGUMENT, "io: checkpoint %d of %s does not exist (it has %d)",
+                     i, r->path, r->nckpt);
+    return st;
+}
+
+ms_status ms_reader_checkpoint_size(const ms_reader *r, int i, size_t *bytes)
+{
+    ms_status st = check_checkpoint(r, i);
+    if (st == MS_OK)
+        st = ms_check_not_null("io", "bytes", bytes);
+    if (st == MS_OK)
+        *bytes = r->ckpt_bytes[i];
+    return st;
+}
+
+ms_status ms_reader_read_checkpoint(const ms_reader *r, int i, void *buf, size_t capacity)
+{
+    ms_status st = check_checkpoint(r, i);
+    if (st == MS_OK)
+        st = ms_check_not_null("io", "buf", buf);
+    if (st != MS_OK)
+        return st;
+    if (capacity < r->ckpt_bytes[i])
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: checkpoint %d of %s holds %zu bytes, more than the buffer's %zu", i,
+                       r->path, r->ckpt_bytes[i], capacity);
+    char name[32];
+    snprintf(name, sizeof name, "checkpoint/%d", r->ckpt_slot[i]);
+    ms_h5_quiet q;
+    ms_h5_hush(&q);
+    hsize_t dims[1], start[1] = {0}, count[1] = {(hsize_t)r->ckpt_bytes[i]};
+    hid_t d = open_dataset(r->file, name, H5T_INTEGER, 1, dims);
+    hid_t fs = d >= 0 ? H5Dget_space(d) : -1, ms = H5Screate_simple(1, count, NULL);
+    if (d < 0 || dims[0] < count[0] || fs < 0 || ms < 0 ||
+        H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) < 0 ||
+        H5Dread(d, H5T_NATIVE_UCHAR, ms, fs, H5P_DEFAULT, buf) < 0)
+        st = ms_h5_fail(MS_ERR_IO, "io: cannot read the checkpoint of frame %ld from %s",
+                        r->ckpt_frame[i], r->path);
+    if (fs >= 0)
+        H5Sclose(fs);
+    if (ms >= 0)
+        H5Sclose(ms);
+    if (d >= 0)
+        H5Dclose(d);
+    ms_h5_loud(&q);
+    return st;
+}
+
+int ms_reader_floater_count(const ms_reader *r)
+{
+    return r ? r->nfloaters : 0;
+}
+
+ms_status ms_reader_read_floaters(const ms_reader *r, long frame, float *xyz, int capacity)
+{
+    ms_status st = check_frame(r, frame);
+    if (st == MS_OK)
+        st = ms_check_not_null("io", "xyz", xyz);
+    if (st != MS_OK)
+        return st;
+    if (r->nfloaters == 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %s holds no floaters", r->path);
+    if (capacity < r->nfloaters)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: %s holds %d floaters a frame, more than the capacity %d", r->path,
+                       r->nfloaters, capacity);
+    ms_h5_quiet q;
+    ms_h5_hush(&q);
+    hsize_t start[3] = {(hsize_t)frame, 0, 0}, count[3] = {1, (hsize_t)r->nfloaters, 3};
+    hid_t fs = H5Dget_space(r->floater_dset), ms = H5Screate_simple(3, count, NULL);
+    if (fs < 0 || ms < 0 || H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) < 0 ||
+        H5Dread(r->floater_dset, H5T_NATIVE_FLOAT, ms, fs, H5P_DEFAULT, xyz) < 0)
+        st = ms_h5_fail(MS_ERR_IO, "io: cannot read frame %ld's floaters from %s", frame, r->path);
+    if (fs >= 0)
+        H5Sclose(fs);
+    if (ms >= 0)
+        H5Sclose(ms);
     ms_h5_loud(&q);
     return st;
 }

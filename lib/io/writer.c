@@ -14,6 +14,11 @@
  *   4. link /Step#k and /particles/k, raise the root attribute `frames`, guard and flush
  *      again: the commit;
  *   5. append the frame to the XDMF sidecars (one pwrite each).
+ * A checkpoint (a sim snapshot, issue 17) goes with step 2 into the older
+ * of the two /checkpoint/<slot> datasets, its `frame` attribute set to the
+ * frame: a reader uses it only once `frames` counts that frame (so a kill
+ * before step 4 leaves it unused), and a blob torn by a kill fails its own
+ * checksum (ms_sim_restore), which sends the resume to the other slot.
  * Freed file space is never reused (H5F_FSPACE_STRATEGY_NONE), so nothing a
  * flushed state refers to is overwritten by a later frame's data; a kill
  * between two flushes leaves the last committed state readable. The reader
@@ -51,12 +56,18 @@ struct ms_writer {
     hid_t file;
     hid_t dset[MS_IO_NFIELDS];
     hid_t time_dset;
+    hid_t floater_dset;      /* /floaters [frame][n][3], -1 without floaters */
     hid_t frames_attr;
     ms_writer_layout layout; /* strings not kept */
     long frames;             /* committed */
     int failed;              /* a write failed: no more frames */
     int no_space_check;      /* tests: let the write meet the full disk */
     ms_xdmf *xdmf, *xdmf2;
+    hid_t ckpt[MS_IO_CHECKPOINTS];      /* /checkpoint/<slot>, -1 = not yet */
+    long ckpt_frame[MS_IO_CHECKPOINTS]; /* frame each holds, -1 = none or stale */
+    size_t ckpt_pending;     /* bytes of the checkpoint of the frame in hand */
+    void *ckpt_buf;          /* ms_writer_checkpoint_buffer */
+    size_t ckpt_cap;
 };
 
 static void close_handles(ms_writer *w)
@@ -70,10 +81,19 @@ static void close_handles(ms_writer *w)
         H5Dclose(w->time_dset);
         w->time_dset = -1;
     }
+    if (w->floater_dset >= 0) {
+        H5Dclose(w->floater_dset);
+        w->floater_dset = -1;
+    }
     if (w->frames_attr >= 0) {
         H5Aclose(w->frames_attr);
         w->frames_attr = -1;
     }
+    for (int i = 0; i < MS_IO_CHECKPOINTS; ++i)
+        if (w->ckpt[i] >= 0) {
+            H5Dclose(w->ckpt[i]);
+            w->ckpt[i] = -1;
+        }
 }
 
 static void free_writer(ms_writer *w)
@@ -83,6 +103,7 @@ static void free_writer(ms_writer *w)
     ms_free(w->path);
     ms_free(w->xmf_path);
     ms_free(w->xmf2_path);
+    ms_free(w->ckpt_buf);
     ms_free(w);
 }
 
@@ -154,6 +175,13 @@ static ms_status check_layout(const ms_writer_layout *l)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "io: deflate level %d is outside 0 .. 9 (0 = no compression)",
                        l->deflate);
+    if (l->checkpoint_every < 0 || l->checkpoint_every > 1000000)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: checkpoint_every %d is outside [0, 1000000] (0 = no checkpoints)",
+                       l->checkpoint_every);
+    if (l->floaters < 0 || l->floaters > 1 << 20)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %d floaters is outside [0, %d]",
+                       l->floaters, 1 << 20);
     return MS_OK;
 }
 
@@ -203,17 +231,23 @@ static hid_t create_field(hid_t group, const char *name, const ms_grid *g, int d
     return d;
 }
 
-static hid_t create_time(hid_t file)
+/* An extendible dataset `name` below file of `rank` dimensions, the first
+ * (frames) growing from 0, chunked as chunk, with a `units` attribute and
+ * an optional fill value (of type `mtype`). */
+static hid_t create_extendible(hid_t file, const char *name, hid_t ftype, int rank,
+                               const hsize_t *chunk, const char *units, hid_t mtype,
+                               const void *fill)
 {
-    hsize_t dims[1] = {0}, maxdims[1] = {H5S_UNLIMITED}, chunk[1] = {TIME_CHUNK};
-    hid_t space = H5Screate_simple(1, dims, maxdims);
+    hsize_t dims[3] = {0, 0, 0}, maxdims[3] = {H5S_UNLIMITED, 0, 0};
+    for (int i = 1; i < rank; ++i)
+        dims[i] = maxdims[i] = chunk[i];
+    hid_t space = H5Screate_simple(rank, dims, maxdims);
     hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
     hid_t d = -1;
-    double fill = NAN;
-    if (space >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, 1, chunk) >= 0 &&
-        H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &fill) >= 0) {
-        d = H5Dcreate2(file, "time", H5T_IEEE_F64LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
-        if (d >= 0 && ms_h5_attr_string(d, "units", "s") < 0) {
+    if (space >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, rank, chunk) >= 0 &&
+        (!fill || H5Pset_fill_value(dcpl, mtype, fill) >= 0)) {
+        d = H5Dcreate2(file, name, ftype, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+        if (d >= 0 && ms_h5_attr_string(d, "units", units) < 0) {
             H5Dclose(d);
             d = -1;
         }
@@ -225,7 +259,25 @@ static hid_t create_time(hid_t file)
     return d;
 }
 
+static hid_t create_time(hid_t file)
+{
+    const hsize_t chunk[1] = {TIME_CHUNK};
+    const double fill = NAN;
+    return create_extendible(file, "time", H5T_IEEE_F64LE, 1, chunk, "s", H5T_NATIVE_DOUBLE,
+                             &fill);
+}
+
+/* /floaters: float32 [frame][n][3] (m), the floating objects (fig10's
+ * leaves) as the sim moved them, 16 frames a chunk, no filters. */
+static hid_t create_floaters(hid_t file, int n)
+{
+    const hsize_t chunk[3] = {16, (hsize_t)n, 3};
+    return create_extendible(file, "floaters", H5T_IEEE_F32LE, 3, chunk, "m", -1, NULL);
+}
+
 /* Root attributes, datasets and the `frames` attribute of a new file. */
+static int create_checkpoints(ms_writer *w);
+
 static int write_layout(ms_writer *w, const ms_writer_layout *l)
 {
     hid_t f = w->file;
@@ -262,6 +314,10 @@ static int write_layout(ms_writer *w, const ms_writer_layout *l)
     }
     w->time_dset = create_time(f);
     if (w->time_dset < 0)
+        return -1;
+    if (l->floaters > 0 && (w->floater_dset = create_floaters(f, l->floaters)) < 0)
+        return -1;
+    if (l->checkpoint_every > 0 && !create_checkpoints(w))
         return -1;
     w->frames_attr = H5Aopen(f, "frames", H5P_DEFAULT);
     if (w->frames_attr < 0)
@@ -308,7 +364,11 @@ static ms_status probe_path(const char *path, const ms_writer_layout *l)
     return st;
 }
 
-ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out)
+/* The set-up both openers share: the arguments checked (*out = NULL) and
+ * a writer of layout l for path with no file open yet (strings of the
+ * layout not kept) in *wp. */
+static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writer **out,
+                            ms_writer **wp)
 {
     ms_status st;
     if ((st = ms_check_not_null("io", "out", out)) != MS_OK)
@@ -321,13 +381,16 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: the output path is empty");
     if ((st = check_layout(l)) != MS_OK)
         return st;
-
     ms_writer *w = ms_alloc_array(1, sizeof *w);
     if (!w)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
-    w->file = w->time_dset = w->frames_attr = -1;
+    w->file = w->time_dset = w->frames_attr = w->floater_dset = -1;
     for (int i = 0; i < MS_IO_NFIELDS; ++i)
         w->dset[i] = -1;
+    for (int i = 0; i < MS_IO_CHECKPOINTS; ++i) {
+        w->ckpt[i] = -1;
+        w->ckpt_frame[i] = -1;
+    }
     w->layout = *l;
     w->layout.scene_text = w->layout.scene_name = NULL;
     w->path = ms_strdup(path);
@@ -337,6 +400,16 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
         free_writer(w);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
     }
+    *wp = w;
+    return MS_OK;
+}
+
+ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out)
+{
+    ms_writer *w = NULL;
+    ms_status st = writer_new(path, l, out, &w);
+    if (st != MS_OK)
+        return st;
 
     if ((st = probe_path(path, l)) != MS_OK) {
         free_writer(w);
@@ -403,6 +476,7 @@ static uint64_t frame_bound_bytes(const ms_writer *w, int particles)
             raw += (uint64_t)w->layout.grid[i].nx * (uint64_t)w->layout.grid[i].ny * 4u;
     if (w->layout.fields & MS_FIELD_PARTICLES)
         raw += (uint64_t)particles * 13u * 4u; /* H5Part 6 + id + [n][3] twice */
+    raw += w->ckpt_pending + (uint64_t)w->layout.floaters * 12u;
     /* deflate can grow incompressible data a little */
     return raw + raw / 64 + META_SLACK_BYTES;
 }
@@ -479,6 +553,107 @@ static herr_t append_rows(hid_t d, long frame, const void *buf, hid_t mtype, int
     return st;
 }
 
+#define CKPT_CHUNK (256u * 1024u) /* bytes per chunk of a checkpoint blob */
+
+/* Create /checkpoint and its two empty slots (attribute frame = -1).
+ * Done with the layout when checkpoints are asked for, so that no frame's
+ * flush adds a link to the root group. 0 on an HDF5 error. */
+static int create_checkpoints(ms_writer *w)
+{
+    hid_t f = w->file;
+    if (H5Lexists(f, "checkpoint", H5P_DEFAULT) <= 0) {
+        hid_t g = H5Gcreate2(f, "checkpoint", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        if (g < 0 || H5Gclose(g) < 0)
+            return 0;
+    }
+    for (int s = 0; s < MS_IO_CHECKPOINTS; ++s) {
+        if (w->ckpt[s] >= 0)
+            continue;
+        char name[32];
+        snprintf(name, sizeof name, "checkpoint/%d", s);
+        hsize_t dims[1] = {0}, maxd[1] = {H5S_UNLIMITED}, chunk[1] = {CKPT_CHUNK};
+        hid_t sp = H5Screate_simple(1, dims, maxd), dcpl = H5Pcreate(H5P_DATASET_CREATE);
+        /* chunks without filters are rewritten in place, and the dataset
+         * only grows (attribute bytes says how much of it is the blob), so
+         * a checkpoint changes no chunk index once the slots are large
+         * enough, and the file does not grow per checkpoint */
+        if (sp >= 0 && dcpl >= 0 && H5Pset_chunk(dcpl, 1, chunk) >= 0)
+            w->ckpt[s] = H5Dcreate2(f, name, H5T_NATIVE_UCHAR, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+        if (sp >= 0)
+            H5Sclose(sp);
+        if (dcpl >= 0)
+            H5Pclose(dcpl);
+        if (w->ckpt[s] < 0 || ms_h5_attr_int64(w->ckpt[s], "frame", -1) < 0 ||
+            ms_h5_attr_int64(w->ckpt[s], "bytes", 0) < 0)
+            return 0;
+    }
+    return 1;
+}
+
+static int set_int64(hid_t obj, const char *name, int64_t v)
+{
+    hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
+    int ok = a >= 0 && H5Awrite(a, H5T_NATIVE_INT64, &v) >= 0;
+    if (a >= 0)
+        H5Aclose(a);
+    return ok;
+}
+
+/* Write blob into the older checkpoint slot, marked as frame k; not yet
+ * flushed (the frame's first commit takes it). 0 on an HDF5 error. */
+static int write_checkpoint(ms_writer *w, long k, const void *blob, size_t bytes)
+{
+    int s = w->ckpt_frame[0] <= w->ckpt_frame[1] ? 0 : 1;
+    if (w->ckpt[s] < 0 && !create_checkpoints(w))
+        return 0;
+    hsize_t dims[1] = {bytes}, have = 0;
+    hid_t sp = H5Dget_space(w->ckpt[s]);
+    int ok = sp >= 0 && H5Sget_simple_extent_dims(sp, &have, NULL) == 1;
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (ok && have < bytes)
+        ok = H5Dset_extent(w->ckpt[s], dims) >= 0;
+    hid_t ms = ok ? H5Screate_simple(1, dims, NULL) : -1, fs = ok ? H5Dget_space(w->ckpt[s]) : -1;
+    hsize_t start[1] = {0};
+    ok = ok && ms >= 0 && fs >= 0 &&
+         H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, dims, NULL) >= 0 &&
+         H5Dwrite(w->ckpt[s], H5T_NATIVE_UCHAR, ms, fs, H5P_DEFAULT, blob) >= 0 &&
+         set_int64(w->ckpt[s], "bytes", (int64_t)bytes) && set_int64(w->ckpt[s], "frame", k);
+    if (ms >= 0)
+        H5Sclose(ms);
+    if (fs >= 0)
+        H5Sclose(fs);
+    if (ok)
+        w->ckpt_frame[s] = k;
+    return ok;
+}
+
+ms_status ms_writer_set_checkpoint_every(ms_writer *w, int every)
+{
+    ms_status st = ms_check_not_null("io", "writer", w);
+    if (st != MS_OK)
+        return st;
+    if (every < 0 || every > 1000000)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: checkpoint_every %d is outside [0, 1000000] (0 = no checkpoints)",
+                       every);
+    w->layout.checkpoint_every = every;
+    return MS_OK;
+}
+
+void *ms_writer_checkpoint_buffer(ms_writer *w, size_t bytes)
+{
+    if (bytes > w->ckpt_cap) {
+        void *p = ms_malloc(bytes + bytes / 8);
+        if (!p)
+            return NULL;
+        ms_free(w->ckpt_buf);
+        w->ckpt_buf = p;
+        w->ckpt_cap = bytes + bytes / 8;
+    }
+    return w->ckpt_buf;
+}
+
 static ms_status check_data(const ms_writer *w, const ms_writer_data *d)
 {
     if (!isfinite(d->time))
@@ -498,6 +673,9 @@ static ms_status check_data(const ms_writer *w, const ms_writer_data *d)
                                "io: %d particles but a position or velocity array is NULL",
                                d->particles);
     }
+    if (w->layout.floaters > 0 && !d->floaters)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %d floaters but no positions for frame %ld",
+                       w->layout.floaters, w->frames);
     return MS_OK;
 }
 
@@ -515,6 +693,7 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
         return st;
     ms_h5_quiet q;
     ms_h5_hush(&q);
+    w->ckpt_pending = d->checkpoint ? d->checkpoint_bytes : 0;
     st = w->no_space_check ? MS_OK : check_space(w, d->particles);
     if (st != MS_OK) {
         ms_h5_loud(&q);
@@ -535,7 +714,13 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
              ms_h5part_write_xyz(w->file, particles, d->pos, d->vel, &xyz) == MS_OK;
     if (ok)
         ok = append_rows(w->time_dset, k, &d->time, H5T_NATIVE_DOUBLE, 1, NULL) >= 0;
-    /* 1: the frame's data and its (still unlinked) particle step */
+    if (ok && w->floater_dset >= 0) {
+        hsize_t row[2] = {(hsize_t)w->layout.floaters, 3};
+        ok = append_rows(w->floater_dset, k, d->floaters, H5T_NATIVE_FLOAT, 3, row) >= 0;
+    }
+    if (ok && d->checkpoint && d->checkpoint_bytes > 0)
+        ok = write_checkpoint(w, k, d->checkpoint, d->checkpoint_bytes);
+    /* 1: the frame's data, its checkpoint and its (still unlinked) particle step */
     if (ok)
         ok = commit(w);
     /* 2: link the step and raise `frames` */
@@ -770,10 +955,37 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
         return ms_fail(MS_ERR_PARSE, "io: %s has no readable /time", p);
     if (nt < k)
         k = nt;
+    htri_t has_floaters = H5Lexists(f, "floaters", H5P_DEFAULT);
+    if ((has_floaters > 0) != (l->floaters > 0))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: %s %s floaters and this run %s them: not the same output", p,
+                       has_floaters > 0 ? "holds" : "lacks", l->floaters > 0 ? "has" : "lacks");
+    if (l->floaters > 0) {
+        w->floater_dset = H5Dopen2(f, "floaters", H5P_DEFAULT);
+        long nf = w->floater_dset >= 0 ? first_dim(w->floater_dset) : -1;
+        if (nf < 0)
+            return ms_fail(MS_ERR_PARSE, "io: %s has no readable /floaters", p);
+        if (nf < k)
+            k = nf;
+    }
     w->frames_attr = H5Aopen(f, "frames", H5P_DEFAULT);
     if (w->frames_attr < 0)
         return ms_fail(MS_ERR_PARSE, "io: %s has no frames attribute", p);
     w->frames = k;
+    /* the checkpoints: one of a frame past those kept (cut by the kill) is
+     * stale and overwritten first */
+    for (int i = 0; i < MS_IO_CHECKPOINTS; ++i) {
+        char name[32];
+        snprintf(name, sizeof name, "checkpoint/%d", i);
+        if (H5Lexists(f, "checkpoint", H5P_DEFAULT) <= 0 || H5Lexists(f, name, H5P_DEFAULT) <= 0)
+            continue;
+        int64_t at = -1;
+        w->ckpt[i] = H5Dopen2(f, name, H5P_DEFAULT);
+        if (w->ckpt[i] < 0 || ms_h5_read_int64(w->ckpt[i], "frame", &at) < 0)
+            return ms_fail(MS_ERR_PARSE, "io: %s has an unreadable /%s", p, name);
+        w->ckpt_frame[i] = at >= 0 && at < k ? (long)at : -1;
+    }
+    H5Eclear2(H5E_DEFAULT);
     return MS_OK;
 }
 
@@ -808,6 +1020,9 @@ static ms_status trim_and_relist(ms_writer *w)
     hsize_t tdims[1] = {(hsize_t)k};
     if (H5Dset_extent(w->time_dset, tdims) < 0)
         return MS_ERR_IO;
+    hsize_t fdims[3] = {(hsize_t)k, (hsize_t)w->layout.floaters, 3};
+    if (w->floater_dset >= 0 && H5Dset_extent(w->floater_dset, fdims) < 0)
+        return MS_ERR_IO;
     if (w->layout.fields & MS_FIELD_PARTICLES) {
         /* links of later frames, if the kill came between link and `frames` */
         for (long j = k;; ++j) {
@@ -821,6 +1036,18 @@ static ms_status trim_and_relist(ms_writer *w)
                 (hb && H5Ldelete(f, b, H5P_DEFAULT) < 0))
                 return MS_ERR_IO;
         }
+    }
+    /* a checkpoint of a dropped frame must not count once frames pass it */
+    for (int i = 0; i < MS_IO_CHECKPOINTS; ++i) {
+        int64_t none = -1;
+        hid_t a = w->ckpt[i] >= 0 && w->ckpt_frame[i] < 0
+                      ? H5Aopen(w->ckpt[i], "frame", H5P_DEFAULT)
+                      : -1;
+        herr_t e = a >= 0 ? H5Awrite(a, H5T_NATIVE_INT64, &none) : 0;
+        if (a >= 0)
+            H5Aclose(a);
+        if ((w->ckpt[i] >= 0 && w->ckpt_frame[i] < 0 && a < 0) || e < 0)
+            return MS_ERR_IO;
     }
     int64_t committed = k;
     if (H5Awrite(w->frames_attr, H5T_NATIVE_INT64, &committed) < 0 || !commit(w))
@@ -863,30 +1090,10 @@ static ms_status relist_sidecars(ms_writer *w)
 ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout *l,
                                        ms_writer **out)
 {
-    ms_status st;
-    if ((st = ms_check_not_null("io", "out", out)) != MS_OK)
+    ms_writer *w = NULL;
+    ms_status st = writer_new(path, l, out, &w);
+    if (st != MS_OK)
         return st;
-    *out = NULL;
-    if ((st = ms_check_not_null("io", "path", path)) != MS_OK ||
-        (st = ms_check_not_null("io", "layout", l)) != MS_OK)
-        return st;
-    if ((st = check_layout(l)) != MS_OK)
-        return st;
-    ms_writer *w = ms_alloc_array(1, sizeof *w);
-    if (!w)
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
-    w->file = w->time_dset = w->frames_attr = -1;
-    for (int i = 0; i < MS_IO_NFIELDS; ++i)
-        w->dset[i] = -1;
-    w->layout = *l;
-    w->layout.scene_text = w->layout.scene_name = NULL;
-    w->path = ms_strdup(path);
-    w->xmf_path = ms_xdmf_path_for(path);
-    w->xmf2_path = ms_xdmf_legacy_path_for(path);
-    if (!w->path || !w->xmf_path || !w->xmf2_path) {
-        free_writer(w);
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
-    }
     if (access(path, R_OK | W_OK) != 0) {
         st = ms_fail(MS_ERR_IO, "io: cannot resume %s: %s", path, strerror(errno));
         free_writer(w);

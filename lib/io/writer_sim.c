@@ -48,6 +48,10 @@ static ms_status sim_layout(const ms_sim *sim, unsigned fields, ms_writer_layout
     l.frame_dt = sc ? ms_scene_frame_dt(sc) : 0.0;
     l.output_every = sc ? ms_scene_output_every(sc) : 1;
     l.deflate = sc ? ms_scene_output_deflate(sc) : 1;
+    l.checkpoint_every = sc ? ms_scene_output_checkpoint_every(sc) : 1;
+    ms_sim_info info = ms_sim_info_init();
+    ms_sim_get_info(sim, &info);
+    l.floaters = info.floaters; /* fig10's leaves, every frame (issue 17) */
     *out = l;
     return MS_OK;
 }
@@ -108,6 +112,26 @@ ms_status ms_writer_frame(ms_writer *w, const ms_sim *sim)
         if ((st = ms_sim_particles(sim, &n, d.pos, d.vel)) != MS_OK)
             return st;
         d.particles = n;
+    }
+    if (l->floaters > 0) {
+        int n = 0;
+        d.floaters = ms_sim_floaters(sim, &n);
+        if (!d.floaters || n != l->floaters)
+            return ms_fail(MS_ERR_STATE, "io: the sim shows %d floaters, the file holds %d", n,
+                           l->floaters);
+    }
+    /* issue 17: the sim's whole state with every checkpoint_every-th frame */
+    if (l->checkpoint_every > 0 && ms_writer_frames(w) % l->checkpoint_every == 0) {
+        size_t bytes = 0;
+        void *buf = NULL;
+        if ((st = ms_sim_snapshot_size(sim, &bytes)) != MS_OK)
+            return st;
+        if (!(buf = ms_writer_checkpoint_buffer(w, bytes)))
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "io: out of memory for a checkpoint of %zu bytes", bytes);
+        if ((st = ms_sim_snapshot(sim, buf, bytes, &d.checkpoint_bytes)) != MS_OK)
+            return st;
+        d.checkpoint = buf;
     }
     return ms_writer_write(w, &d);
 }

@@ -248,6 +248,11 @@ int ms_scene_output_every(const ms_scene *sc)
     return sc ? sc->output_every : 1;
 }
 
+int ms_scene_output_checkpoint_every(const ms_scene *sc)
+{
+    return sc ? sc->output_checkpoint_every : 1;
+}
+
 int ms_scene_output_deflate(const ms_scene *sc)
 {
     return sc ? sc->output_deflate : 1;

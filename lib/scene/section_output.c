@@ -11,13 +11,14 @@
 
 ms_status ms_scene_read_output(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
-    static const char *const keys[] = {"fields", "every", "deflate", NULL};
+    static const char *const keys[] = {"fields", "every", "deflate", "checkpoint_every", NULL};
     static const char *const names[] = {"combined", "surface", "volume", "particles", NULL};
     json_t *o, *fields;
-    long every, deflate;
+    long every, deflate, checkpoint_every;
     sc->output_fields = MS_FIELD_COMBINED;
     sc->output_every = 1;
     sc->output_deflate = 1;
+    sc->output_checkpoint_every = 1;
     MS_TRY(ms_scene_get_object(c, root, "output", &o));
     if (!o)
         return MS_OK;
@@ -27,6 +28,9 @@ ms_status ms_scene_read_output(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     sc->output_every = (int)every;
     MS_TRY(ms_scene_get_int(c, o, "deflate", 1, 0, 9, &deflate));
     sc->output_deflate = (int)deflate;
+    /* issue 17: a snapshot of the sim every n-th written frame, 0 = none */
+    MS_TRY(ms_scene_get_int(c, o, "checkpoint_every", 1, 0, 1000000, &checkpoint_every));
+    sc->output_checkpoint_every = (int)checkpoint_every;
     MS_TRY(ms_scene_get_array(c, o, "fields", 0, 16, &fields));
     if (fields) {
         sc->output_fields = 0;

@@ -9,6 +9,7 @@
  * RGBA to ffmpeg (libx264, yuv420p) when ffmpeg is on PATH, and says so
  * when it is not. */
 #include <errno.h>
+#include <math.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <string.h>
@@ -158,6 +159,34 @@ static FILE *open_video(const render_opts *o, int w, int h, double fps)
     return f;
 }
 
+/* The file's floaters of frame f (issue 17: /floaters) as leaves, drawn
+ * as a run draws them (lib/render/draw_sim.c: 3 cm across in a 1 m pool,
+ * brown); nothing when the file has none. 0 or -1 (ms_last_error). */
+static int floater_discs(const ms_reader *rd, long f, ms_renderer *r, const ms_renderer_desc *d)
+{
+    int nf = ms_reader_floater_count(rd);
+    if (nf <= 0)
+        return 0;
+    nf = nf < MS_RENDER_MAX_DISCS ? nf : MS_RENDER_MAX_DISCS;
+    float *xyz = malloc((size_t)ms_reader_floater_count(rd) * 3 * sizeof *xyz);
+    ms_render_disc *discs = malloc((size_t)nf * sizeof *discs);
+    int rc = xyz && discs &&
+                     ms_reader_read_floaters(rd, f, xyz, ms_reader_floater_count(rd)) == MS_OK
+                 ? 0
+                 : -1;
+    const float side = fminf(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
+    for (int k = 0; rc == 0 && k < nf; ++k) {
+        memcpy(discs[k].pos, xyz + 3 * k, sizeof discs[k].pos);
+        discs[k].radius = 0.015f * side;
+        discs[k].color[0] = 0.45f, discs[k].color[1] = 0.30f, discs[k].color[2] = 0.08f;
+    }
+    if (rc == 0 && ms_renderer_set_discs(r, discs, nf) != MS_OK)
+        rc = -1;
+    free(xyz);
+    free(discs);
+    return rc;
+}
+
 /* What a render holds open; render_close frees it all. */
 typedef struct render_state {
     render_opts o;
@@ -262,7 +291,7 @@ static int render_frame(render_state *s, long f)
 {
     double t = 0;
     if (ms_reader_read_field(s->rd, MS_FIELD_COMBINED, f, s->h, s->n) != MS_OK ||
-        ms_reader_time(s->rd, f, &t) != MS_OK ||
+        ms_reader_time(s->rd, f, &t) != MS_OK || floater_discs(s->rd, f, s->r, &s->d) != 0 ||
         ms_renderer_draw_scene_field(s->r, s->sc, s->h, &s->g, t) != MS_OK) {
         tool_error("render: frame %ld: %s", f, ms_last_error());
         return -1;

@@ -1,17 +1,20 @@
 /* modesplit run SCENE --resume RUN.h5 (issue 17): continue a run that was
  * killed or stopped, appending to its file.
  *
- * How: the sim is deterministic (same scene, same build -> same bytes, with
- * 1 or 2 threads), so the state of the file's last complete frame is
- * rebuilt by stepping the scene again to that frame without writing (a
- * replay), and that frame's fields, time and particles are compared bit for
- * bit with what the file holds before anything is appended. The file must
- * come from the same scene text and library version (ms_writer_open_append
- * refuses others, naming what differs); a replay that does not give the
- * file's bytes (another platform or compiler) is refused too. A frame cut
- * by the kill is dropped and written again. Departure from the issue: the
- * file holds no state snapshot, so resuming costs the simulation time of
- * the frames already done (not their writing).
+ * How: the file holds the sim's whole state (ms_sim_snapshot) with every
+ * output.checkpoint_every-th written frame, the two newest kept. The
+ * newest checkpoint of a complete frame is restored (ms_sim_restore; a torn
+ * or refused one sends it to the older, then to the start) and only the
+ * steps from there to the file's last complete frame are taken again
+ * without writing (none with checkpoint_every 1). The sim is deterministic
+ * (same scene, same build -> same bytes, with 1 or 2 threads), so that
+ * frame's fields, time and particles are then compared bit for bit with
+ * what the file holds before anything is appended. The file must come from
+ * the same scene text and library version (ms_writer_open_append refuses
+ * others, naming what differs); a state that does not give the file's
+ * bytes (another platform or compiler) is refused too. A frame cut by the
+ * kill is dropped and written again. Without checkpoints
+ * (checkpoint_every 0) the whole run is stepped again (a replay).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -104,6 +107,42 @@ static int verify_frame(const char *path, ms_reader *r, long k, const ms_sim *si
     return 0;
 }
 
+/* Restore the newest usable checkpoint of r into sim: the steps it stands
+ * for (frame c is published by step c * every + 1), 0 with none, -1 when a
+ * checkpoint broke the sim (a blob that passed its header's checks but not
+ * its records: forged, never torn). */
+static long restore_checkpoint(const char *path, ms_reader *r, ms_sim *sim, int every, int quiet)
+{
+    long at[2];
+    int n = ms_reader_checkpoints(r, at);
+    for (int i = 0; i < n; ++i) {
+        size_t bytes = 0;
+        void *blob = NULL;
+        ms_status st = ms_reader_checkpoint_size(r, i, &bytes);
+        if (st == MS_OK && !(blob = malloc(bytes)))
+            st = MS_ERR_OUT_OF_MEMORY;
+        if (st == MS_OK)
+            st = ms_reader_read_checkpoint(r, i, blob, bytes);
+        if (st == MS_OK)
+            st = ms_sim_restore(sim, blob, bytes);
+        free(blob);
+        if (st == MS_OK) {
+            if (!quiet)
+                printf("modesplit: %s: restored the checkpoint of frame %ld\n", path, at[i]);
+            return at[i] * (long)every + 1;
+        }
+        if (ms_sim_frame(sim) != 0 || ms_sim_time(sim) != 0.0) {
+            tool_error("--resume: %s: the checkpoint of frame %ld: %s", path, at[i],
+                       ms_last_error());
+            return -1;
+        }
+        if (!quiet)
+            printf("modesplit: %s: cannot use the checkpoint of frame %ld (%s)\n", path, at[i],
+                   ms_last_error());
+    }
+    return 0;
+}
+
 int resume_run(const char *path, ms_sim *sim, float dt, int every, long frames, int quiet,
                ms_writer **w, long *done, long *written)
 {
@@ -134,12 +173,17 @@ int resume_run(const char *path, ms_sim *sim, float dt, int every, long frames, 
         ms_reader_close(r);
         return EXIT_USAGE;
     }
+    long from = restore_checkpoint(path, r, sim, every, quiet);
+    if (from < 0) {
+        ms_reader_close(r);
+        return EXIT_RUNTIME;
+    }
     if (!quiet && kept > 0) {
         printf("modesplit: resuming %s after its frame %ld: replaying %ld steps\n", path,
-               kept - 1, steps);
+               kept - 1, steps - from);
         fflush(stdout);
     }
-    for (long s = 0; s < steps; ++s)
+    for (long s = from; s < steps; ++s)
         if (ms_sim_step(sim, dt) != MS_OK) {
             tool_error("--resume: replaying step %ld: %s", s, ms_last_error());
             ms_reader_close(r);

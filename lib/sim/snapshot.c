@@ -1,0 +1,346 @@
+/* ms_sim_snapshot / ms_sim_restore (issue 17): the whole state of a sim
+ * between two steps as one byte blob, so that a run continues from it
+ * with the same bytes as a run never stopped (the one-frame pipeline of
+ * Fig. 8 included: both slots of the hand-over buffers).
+ *
+ * The blob: a 72-byte header (magic "MSSNAP", header size, format version,
+ * total size, a hash of what the sim was made from, a checksum of the
+ * rest, the library version that wrote it), then named, size-led records
+ * (core/blob.h): the sim's own state (clock, pipeline buffers, effects:
+ * drops done, boat, pointer, engine's moves and turns, drags, floaters),
+ * then the surface's (lib/surface/snapshot.c) and the volume's
+ * (lib/volume/snapshot.c). Statistics are not state: they count what this
+ * handle did.
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "core/blob.h"
+#include "sim/sim_internal.h"
+#include "surface/snapshot.h"
+#include "volume/snapshot.h"
+
+#define MAGIC "MSSNAP\0\0"
+#define SNAP_VERSION 1u
+#define VERSION_LEN 32
+/* header offsets */
+enum {
+    H_MAGIC = 0,
+    H_HEADER = 8,   /* uint32 header bytes */
+    H_FORMAT = 12,  /* uint32 format version */
+    H_TOTAL = 16,   /* uint64 blob bytes */
+    H_HASH = 24,    /* uint64 what the sim was made from */
+    H_SUM = 32,     /* uint64 checksum of the records */
+    H_LIBVER = 40,  /* char[32] library version */
+    H_SIZE = 72
+};
+
+static uint64_t sim_hash(const ms_sim *sim)
+{
+    uint64_t h = MS_BLOB_HASH0;
+    if (sim->scene) {
+        const char *t = ms_scene_text(sim->scene);
+        h = ms_blob_hash(h, t, strlen(t));
+    }
+    const int ints[] = {sim->volume != NULL, sim->surface != NULL, sim->fnx, sim->fny, sim->snx,
+                        sim->sny, sim->n_time_fixed, sim->nshapes, sim->nfloaters};
+    const float floats[] = {sim->sdx,           sim->gain_sv,       sim->gain_vs,
+                            sim->level,         sim->domain_min[0], sim->domain_min[1],
+                            sim->domain_min[2], sim->domain_max[0], sim->domain_max[1],
+                            sim->domain_max[2]};
+    h = ms_blob_hash(h, ints, sizeof ints);
+    h = ms_blob_hash(h, floats, sizeof floats);
+    if (sim->surface)
+        h = ms_surface_snapshot_hash(sim->surface, h);
+    if (sim->volume)
+        h = ms_volume_snapshot_hash(sim->volume, h);
+    return h;
+}
+
+/* A float buffer the sim may not have (NULL): 0 bytes. Both sides hold
+ * it or neither: the sims were made alike (the header's hash). */
+static ms_status buf_io(ms_blob *b, const char *name, float *p, size_t count)
+{
+    return ms_blob_io(b, name, p, p ? count * sizeof(float) : 0);
+}
+
+/* The extraction snapshot of a slot (phase A, volume/extract.h). */
+static ms_status extract_io(ms_blob *b, ms_extract_snap *s, int max)
+{
+    int m = s->m;
+    ms_status st;
+    if ((st = MS_BLOB_IO(b, "sim.x.empty", s->empty)) ||
+        (st = ms_blob_count(b, "sim.x.m", &m, max)))
+        return st;
+    if (b->reading && m > s->cap) {
+        float *q = ms_alloc_array((size_t)m * 3, sizeof(float));
+        if (!q)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory restoring %d particles", m);
+        ms_free(s->x);
+        s->x = q;
+        s->y = q + m;
+        s->z = q + 2 * (size_t)m;
+        s->cap = m;
+    }
+    if (b->reading)
+        s->m = m;
+    const size_t fb = (size_t)m * sizeof(float);
+    if ((st = ms_blob_io(b, "sim.x.x", s->x, fb)) || (st = ms_blob_io(b, "sim.x.y", s->y, fb)) ||
+        (st = ms_blob_io(b, "sim.x.z", s->z, fb)) || (st = MS_BLOB_IO(b, "sim.x.e", s->e)) ||
+        (st = MS_BLOB_IO(b, "sim.x.iso", s->iso)) || (st = MS_BLOB_IO(b, "sim.x.R", s->R)) ||
+        (st = MS_BLOB_IO(b, "sim.x.spacing", s->spacing)) ||
+        (st = MS_BLOB_IO(b, "sim.x.lo", s->lo)) || (st = MS_BLOB_IO(b, "sim.x.hi", s->hi)) ||
+        (st = MS_BLOB_IO(b, "sim.x.smooth", s->smooth_steps)) ||
+        (st = MS_BLOB_IO(b, "sim.x.smooth_e", s->smooth_energy)))
+        return st;
+    return MS_OK;
+}
+
+/* The particle copy of a slot, in the layout volume_task.c makes
+ * (x, y, z one block, cap floats apart: sim.h's views). */
+static ms_status particles_io(ms_blob *b, ms_sim *sim, int slot, int max)
+{
+    int n = sim->pcount[slot];
+    ms_status st = ms_blob_count(b, "sim.p.n", &n, max);
+    if (st != MS_OK)
+        return st;
+    if (b->reading && n > sim->pcap[slot]) {
+        float *pos = ms_alloc_array((size_t)n * 3, sizeof(float));
+        float *vel = ms_alloc_array((size_t)n * 3, sizeof(float));
+        if (!pos || !vel) {
+            ms_free(pos);
+            ms_free(vel);
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory restoring %d particles", n);
+        }
+        ms_free(sim->ppos[slot][0]);
+        ms_free(sim->pvel[slot][0]);
+        for (int a = 0; a < 3; ++a) {
+            sim->ppos[slot][a] = pos + (size_t)a * (size_t)n;
+            sim->pvel[slot][a] = vel + (size_t)a * (size_t)n;
+        }
+        sim->pcap[slot] = n;
+    }
+    if (b->reading)
+        sim->pcount[slot] = n;
+    static const char *const pn[3] = {"sim.p.x", "sim.p.y", "sim.p.z"};
+    static const char *const vn[3] = {"sim.p.vx", "sim.p.vy", "sim.p.vz"};
+    for (int a = 0; st == MS_OK && a < 3; ++a)
+        if ((st = ms_blob_io(b, pn[a], sim->ppos[slot][a], (size_t)n * sizeof(float))) == MS_OK)
+            st = ms_blob_io(b, vn[a], sim->pvel[slot][a], (size_t)n * sizeof(float));
+    return st;
+}
+
+static ms_status shapes_io(ms_blob *b, ms_sim *sim)
+{
+    ms_status st = MS_OK;
+    for (int i = 0; st == MS_OK && i < sim->nshapes; ++i) {
+        ms_sim_shape *sh = &sim->shapes[i];
+        if ((st = MS_BLOB_IO(b, "sim.sh.moving", sh->moving)) ||
+            (st = MS_BLOB_IO(b, "sim.sh.api_set", sh->api_set)) ||
+            (st = MS_BLOB_IO(b, "sim.sh.api_pos", sh->api_pos)) ||
+            (st = MS_BLOB_IO(b, "sim.sh.api_vel", sh->api_vel)) ||
+            (st = MS_BLOB_IO(b, "sim.sh.api_turn", sh->api_turn)) ||
+            (st = MS_BLOB_IO(b, "sim.sh.quat", sh->api_quat)) ||
+            (st = MS_BLOB_IO(b, "sim.sh.omega", sh->api_omega)))
+            break;
+    }
+    return st;
+}
+
+/* Every record of the sim, either way. */
+static ms_status sim_io(ms_sim *sim, ms_blob *b)
+{
+    const size_t nf = (size_t)sim->fnx * sim->fny, ns = (size_t)sim->snx * sim->sny;
+    const int maxp = sim->volume ? ms_volume_snapshot_max_particles(sim->volume) : 0;
+    const int ndrops = sim->scene ? sim->scene->ndrops : 0;
+    ms_status st;
+    /* clock and pipeline */
+    if ((st = MS_BLOB_IO(b, "sim.calls", sim->calls)) ||
+        (st = MS_BLOB_IO(b, "sim.t_volume", sim->t_volume)) ||
+        (st = MS_BLOB_IO(b, "sim.t_fields", sim->t_fields)) ||
+        (st = MS_BLOB_IO(b, "sim.dt_prev", sim->dt_prev)) ||
+        (st = MS_BLOB_IO(b, "sim.dt_cur", sim->dt_cur)) ||
+        (st = MS_BLOB_IO(b, "sim.primed", sim->primed)) ||
+        (st = MS_BLOB_IO(b, "sim.n_time_last", sim->n_time_last)) ||
+        (st = MS_BLOB_IO(b, "sim.wave_dt", sim->wave_dt_last)))
+        return st;
+    if (b->reading && sim->calls < 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "snapshot: %ld frames done", sim->calls);
+    for (int k = 0; st == MS_OK && k < 2; ++k) {
+        if (sim->volume && (st = extract_io(b, &sim->snap[k], maxp)) == MS_OK &&
+            (st = particles_io(b, sim, k, maxp)) == MS_OK)
+            st = buf_io(b, "sim.hfield", sim->hfield[k], nf);
+        if (st == MS_OK && (st = buf_io(b, "sim.flow", sim->flow[k], 2 * nf)) == MS_OK)
+            st = buf_io(b, "sim.wave_snap", sim->wave_snap[k], nf);
+    }
+    if (st != MS_OK || (st = buf_io(b, "sim.hprev", sim->hprev, nf)) ||
+        (st = buf_io(b, "sim.u_prev", sim->u_prev, nf)) ||
+        (st = buf_io(b, "sim.combined", sim->combined, ns)) ||
+        (st = ms_blob_io(b, "sim.mask", sim->mask, sim->mask ? ns : 0)))
+        return st;
+    /* effects */
+    int next_drop = sim->next_drop, ndrags = sim->ndrags;
+    if ((st = MS_BLOB_IO(b, "sim.boat_go", sim->boat_started)) ||
+        (st = MS_BLOB_IO(b, "sim.drag_id", sim->drag_id)) ||
+        (st = ms_blob_count(b, "sim.next_drop", &next_drop, ndrops)) ||
+        (st = ms_blob_count(b, "sim.ndrags", &ndrags, MS_SIM_MAX_DRAGS)) ||
+        (st = ms_blob_io(b, "sim.drags", sim->drags, (size_t)ndrags * sizeof sim->drags[0])) ||
+        (st = shapes_io(b, sim)) ||
+        (st = buf_io(b, "sim.floater_xyz", sim->floater_xyz, 3 * (size_t)sim->nfloaters)) ||
+        (st = buf_io(b, "sim.floater_vel", sim->floater_vel, 2 * (size_t)sim->nfloaters)))
+        return st;
+    if (b->reading) {
+        sim->next_drop = next_drop;
+        sim->ndrags = ndrags;
+        sim->stats.frames = sim->calls; /* frames finished, as ms_sim_frame */
+    }
+    /* the parts */
+    if (sim->surface && (st = ms_surface_snapshot_io(sim->surface, b)))
+        return st;
+    int recount = 0;
+    if (sim->volume && (st = ms_volume_snapshot_io(sim->volume, b, &recount)))
+        return st;
+    if (b->reading && b->pos != b->len)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "snapshot: %zu bytes left over after the last record", b->len - b->pos);
+    if (b->reading && sim->volume && sim->calls >= 1) {
+        /* the colliders where the last volume task put them (its t0 is now
+         * t_fields), as the snapshot's neighbour counts saw them */
+        for (int i = 0; st == MS_OK && i < sim->nshapes; ++i)
+            if (sim->shapes[i].vol && ms_sim_shape_dynamic(&sim->shapes[i]))
+                st = ms_sim_shape_place(&sim->shapes[i], sim->shapes[i].vol, sim->t_fields);
+    }
+    if (st == MS_OK && recount)
+        st = ms_volume_snapshot_recount(sim->volume);
+    return st;
+}
+
+static ms_status between_steps(const ms_sim *sim, const char *what)
+{
+    ms_status st = ms_check_not_null("sim", "sim", sim);
+    if (st == MS_OK && atomic_load(&((ms_sim *)sim)->busy))
+        st = ms_fail(MS_ERR_STATE, "sim: %s while a step is running; call it between steps",
+                     what);
+    return st;
+}
+
+ms_status ms_sim_snapshot_size(const ms_sim *sim, size_t *bytes)
+{
+    ms_status st = between_steps(sim, "ms_sim_snapshot_size");
+    if (st == MS_OK)
+        st = ms_check_not_null("sim", "bytes", bytes);
+    if (st != MS_OK)
+        return st;
+    ms_blob b = {0};
+    st = sim_io((ms_sim *)sim, &b); /* writing with no buffer: counts only */
+    *bytes = H_SIZE + b.len;
+    return st;
+}
+
+ms_status ms_sim_snapshot(const ms_sim *sim, void *buf, size_t capacity, size_t *written)
+{
+    ms_status st = between_steps(sim, "ms_sim_snapshot");
+    if (st == MS_OK)
+        st = ms_check_not_null("sim", "buf", buf);
+    if (st != MS_OK)
+        return st;
+    if (written)
+        *written = 0;
+    if (sim->failed)
+        return ms_fail(MS_ERR_STATE, "sim: no snapshot of a failed sim (%s)", sim->fail_msg);
+    size_t need = 0;
+    if ((st = ms_sim_snapshot_size(sim, &need)) != MS_OK)
+        return st;
+    if (capacity < need)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: a snapshot buffer of %zu bytes; this sim's snapshot needs %zu "
+                       "(ms_sim_snapshot_size)",
+                       capacity, need);
+    unsigned char *p = buf;
+    ms_blob b = {.out = p + H_SIZE, .cap = need - H_SIZE};
+    if ((st = sim_io((ms_sim *)sim, &b)) != MS_OK)
+        return st;
+    memset(p, 0, H_SIZE);
+    memcpy(p + H_MAGIC, MAGIC, 8);
+    const uint32_t hsize = H_SIZE, version = SNAP_VERSION;
+    const uint64_t total = need, hash = sim_hash(sim),
+                   sum = ms_blob_hash(MS_BLOB_HASH0, p + H_SIZE, need - H_SIZE);
+    memcpy(p + H_HEADER, &hsize, sizeof hsize);
+    memcpy(p + H_FORMAT, &version, sizeof version);
+    memcpy(p + H_TOTAL, &total, sizeof total);
+    memcpy(p + H_HASH, &hash, sizeof hash);
+    memcpy(p + H_SUM, &sum, sizeof sum);
+    strncpy((char *)p + H_LIBVER, ms_version(), VERSION_LEN - 1);
+    if (written)
+        *written = need;
+    return MS_OK;
+}
+
+/* The header: everything that must match before a record is read. */
+static ms_status check_header(const ms_sim *sim, const unsigned char *p, size_t bytes)
+{
+    if (bytes < H_SIZE || memcmp(p + H_MAGIC, MAGIC, 6) != 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: %zu bytes that are not a snapshot (no \"MSSNAP\" header of %d "
+                       "bytes)",
+                       bytes, H_SIZE);
+    uint32_t hsize, version;
+    uint64_t total, hash, sum;
+    memcpy(&hsize, p + H_HEADER, sizeof hsize);
+    memcpy(&version, p + H_FORMAT, sizeof version);
+    memcpy(&total, p + H_TOTAL, sizeof total);
+    memcpy(&hash, p + H_HASH, sizeof hash);
+    memcpy(&sum, p + H_SUM, sizeof sum);
+    char lib[VERSION_LEN];
+    memcpy(lib, p + H_LIBVER, VERSION_LEN);
+    lib[VERSION_LEN - 1] = '\0';
+    if (version != SNAP_VERSION || hsize != H_SIZE)
+        return ms_fail(MS_ERR_UNSUPPORTED,
+                       "sim: snapshot format version %u (header %u bytes); this library reads "
+                       "version %u",
+                       version, hsize, SNAP_VERSION);
+    if (strcmp(lib, ms_version()) != 0)
+        return ms_fail(MS_ERR_UNSUPPORTED,
+                       "sim: the snapshot was taken by library version %s, this is %s (another "
+                       "build may step differently)",
+                       lib, ms_version());
+    if (total != bytes)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: %zu snapshot bytes given, its header says %llu (cut or padded)",
+                       bytes, (unsigned long long)total);
+    if (ms_blob_hash(MS_BLOB_HASH0, p + H_SIZE, bytes - H_SIZE) != sum)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: the snapshot's checksum does not match its %zu bytes (corrupt)",
+                       bytes);
+    if (hash != sim_hash(sim))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: the snapshot is of another scene or desc (hash %016llx, this sim "
+                       "%016llx): restore it into a sim made the same way",
+                       (unsigned long long)hash, (unsigned long long)sim_hash(sim));
+    return MS_OK;
+}
+
+ms_status ms_sim_restore(ms_sim *sim, const void *buf, size_t bytes)
+{
+    ms_status st = between_steps(sim, "ms_sim_restore");
+    if (st == MS_OK)
+        st = ms_check_not_null("sim", "buf", buf);
+    if (st == MS_OK)
+        st = check_header(sim, buf, bytes);
+    if (st != MS_OK)
+        return st;
+    ms_blob b = {.reading = 1, .in = (const unsigned char *)buf + H_SIZE, .len = bytes - H_SIZE};
+    st = sim_io(sim, &b);
+    if (st != MS_OK) {
+        /* the header matched, so only a forged or damaged blob gets here:
+         * part of the state is overwritten, the sim cannot go on */
+        sim->failed = 1;
+        sim->fail_status = st;
+        snprintf(sim->fail_msg, sizeof sim->fail_msg, "restore failed: %s", ms_last_error());
+        return st;
+    }
+    sim->failed = 0;
+    sim->fail_msg[0] = '\0';
+    sim->fail_status = MS_OK;
+    return MS_OK;
+}
