@@ -666,10 +666,36 @@ static void assert_same_sims(const ms_sim *a, const ms_sim *b)
 /* Step sim a (1 thread) `frames` frames, taking a snapshot after `at`;
  * restore it into a fresh sim of `threads` threads, step that to the end:
  * the same fields, particles, floaters and time, and the same snapshot. */
+/* The scene at path with the text `from` replaced by `to` (a variant). */
+static ms_sim *variant_sim(const char *path, const char *from, const char *to, ms_scene **sc)
+{
+    char *text = ms_test_slurp(path);
+    char *at = strstr(text, from);
+    ck_assert_ptr_nonnull(at);
+    size_t len = strlen(text) + strlen(to) + 1;
+    char *v = malloc(len);
+    ck_assert_ptr_nonnull(v);
+    snprintf(v, len, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
+    free(text);
+    ck_assert_msg(ms_scene_parse(v, strlen(v), sc) == MS_OK, "%s", ms_last_error());
+    free(v);
+    ms_sim *sim = NULL;
+    ck_assert_msg(ms_sim_create_from_scene(*sc, 1, &sim) == MS_OK, "%s", ms_last_error());
+    return sim;
+}
+
+static void snapshot_continues_sim(ms_sim *a, ms_scene *sc, int at, int frames, int threads);
+
 static void snapshot_continues(const char *scene, int at, int frames, int threads)
 {
     ms_scene *sc;
     ms_sim *a = scene_sim(scene, 1, &sc);
+    snapshot_continues_sim(a, sc, at, frames, threads);
+}
+
+/* As snapshot_continues, from sim a (1 thread) of scene sc (both freed). */
+static void snapshot_continues_sim(ms_sim *a, ms_scene *sc, int at, int frames, int threads)
+{
     ms_sim *b = NULL;
     ck_assert_int_eq(ms_sim_create_from_scene(sc, threads, &b), MS_OK);
     float dt = ms_scene_frame_dt(sc);
@@ -714,6 +740,11 @@ START_TEST(snapshot_restore_continues_bit_for_bit)
     /* before the first step (not primed) and after it */
     snapshot_continues("data/scenes/fig10.json", 0, 4, 2);
     snapshot_continues("data/scenes/fig10.json", 1, 4, 1);
+    /* DFSPH: its warm start (the last density solve's pressure) is state */
+    ms_scene *sc;
+    ms_sim *a = variant_sim("data/scenes/fig10.json", "\"spacing\": 0.05,",
+                            "\"spacing\": 0.05, \"pressure\": \"dfsph\",", &sc);
+    snapshot_continues_sim(a, sc, 5, 10, 2);
 }
 END_TEST
 

@@ -76,6 +76,12 @@ ms_status ms_volume_snapshot_io(ms_volume *v, ms_blob *b, int *recount)
         if ((st = ms_blob_io(b, per_particle[k].name, array_at(v, per_particle[k].offset),
                              (size_t)n * per_particle[k].elem)))
             return st;
+    /* DFSPH's warm start (dfsph.c): the last density solve's totals by
+     * particle id (ids are 0 .. n-1) and the sub-step they were solved for */
+    if ((st = MS_BLOB_IO(b, "vol.df_warm_n", v->df_warm_n)) ||
+        (st = MS_BLOB_IO(b, "vol.df_warm_dt", v->df_warm_dt)) ||
+        (st = ms_blob_io(b, "vol.df_warm", v->df_warm, (size_t)n * sizeof(float))))
+        return st;
     if ((st = MS_BLOB_IO(b, "vol.time", v->time)) || (st = MS_BLOB_IO(b, "vol.steps", v->steps)) ||
         (st = MS_BLOB_IO(b, "vol.substeps", v->substeps)) ||
         (st = MS_BLOB_IO(b, "vol.last_dt", v->last_dt)) ||
