@@ -3,6 +3,7 @@
 a linked figure off by one in its last written decimal, a row selector
 that picks no row or several, an unknown column, an edited generated
 table; it accepts the figure at any decimals that round the CSV value."""
+import csv
 import os
 import subprocess
 import sys
@@ -10,7 +11,21 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 TOOL = os.path.join(HERE, "figures.py")
-ROW = 'data/bench/scenes.csv "scene=fig1 threads=2 fps_median_per_s"'  # 258.881
+ROW = 'data/bench/scenes.csv "scene=fig1 threads=2 fps_median_per_s"'
+
+
+def committed_value():
+    """The row's value in the committed CSV: the cases follow whatever
+    `make bench-commit` last wrote, so they never pin a measurement."""
+    with open(os.path.join(HERE, "..", "..", "data", "bench", "scenes.csv"), newline="") as f:
+        for r in csv.DictReader(f):
+            if r["scene"] == "fig1" and r["threads"] == "2":
+                return float(r["fps_median_per_s"])
+    sys.exit("test_figures: data/bench/scenes.csv has no fig1 row with 2 threads")
+
+
+V = committed_value()
+V0, V1, V2 = f"{V:.0f}", f"{V:.1f}", f"{V:.2f}"
 
 
 def run(text, mode="--check"):
@@ -30,16 +45,16 @@ def expect(ok, text, word=None):
                  f"{' and ' + repr(word) if word else ''}; said:\n{out}")
 
 
-expect(True, f"[259]({ROW}) and [258.9]({ROW}) and [258.88]({ROW})\n")
-expect(False, f"[260]({ROW})\n", "259")
-expect(False, f"[258.8]({ROW})\n", "258.9")
+expect(True, f"[{V0}]({ROW}) and [{V1}]({ROW}) and [{V2}]({ROW})\n")
+expect(False, f"[{float(V0) + 1:.0f}]({ROW})\n", V0)
+expect(False, f"[{float(V1) - 0.1:.1f}]({ROW})\n", V1)
 expect(False, '[1](data/bench/scenes.csv "scene=fig1 fps_median_per_s")\n', "2 rows")
 expect(False, '[1](data/bench/scenes.csv "scene=nope threads=1 fps_median_per_s")\n', "0 rows")
 expect(False, '[1](data/bench/scenes.csv "scene=fig1 threads=1 fps")\n', "no column")
 expect(False, '[1](data/bench/nope.csv "scene=fig1 threads=1 fps")\n', "does not exist")
 expect(False, "no figure at all\n", "links no figure")
-code, _, fixed = run(f"[260]({ROW})\n", "--write")
-if code != 0 or not fixed.startswith("[259]("):
+code, _, fixed = run(f"[{float(V0) + 1:.0f}]({ROW})\n", "--write")
+if code != 0 or not fixed.startswith(f"[{V0}]("):
     sys.exit(f"test_figures: --write left {fixed!r}")
 # a generated table: --write fills it, --check then passes, an edit fails
 _, _, table = run("<!-- bench-table scenes -->\n<!-- /bench-table -->\n", "--write")
