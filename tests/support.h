@@ -29,6 +29,10 @@ void ms_test_skip(const char *file, int line, const char *why);
 int ms_test_tmp_dir(char *buf, size_t size, const char *prefix);
 void ms_test_remove_tree(const char *dir);
 char *ms_test_slurp(const char *path);
+/* The text of the scene file at path with its first `from` replaced by
+ * `to` (a variant of a shipped scene; from NULL: the text as it is);
+ * malloc'd, NULL when `from` is not in it. */
+char *ms_test_scene_variant(const char *path, const char *from, const char *to);
 /* The `modesplit` tool of the build under test: $MS_TEST_BUILD/bin/modesplit
  * (`make check` sets it), else build/bin/modesplit. */
 const char *ms_test_tool_path(void);

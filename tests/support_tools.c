@@ -62,6 +62,20 @@ char *ms_test_slurp(const char *path)
     return s;
 }
 
+char *ms_test_scene_variant(const char *path, const char *from, const char *to)
+{
+    char *text = ms_test_slurp(path);
+    if (!from)
+        return text;
+    char *at = strstr(text, from);
+    size_t len = strlen(text) + strlen(to) + 1;
+    char *v = at ? malloc(len) : NULL;
+    if (v)
+        snprintf(v, len, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
+    free(text);
+    return v;
+}
+
 const char *ms_test_tool_path(void)
 {
     static char p[512];

@@ -119,18 +119,8 @@ END_TEST
 static void frames_allocate_nothing(const char *path, const char *from, const char *to, int threads)
 {
     install();
-    char *text = ms_test_slurp(path);
+    char *text = ms_test_scene_variant(path, from, to); /* from: one key changed */
     ck_assert_ptr_nonnull(text);
-    if (from) { /* a variant: one key changed in the scene's text */
-        char *at = strstr(text, from);
-        ck_assert_ptr_nonnull(at);
-        size_t len = strlen(text) + strlen(to) + 1;
-        char *v = malloc(len);
-        ck_assert_ptr_nonnull(v);
-        snprintf(v, len, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
-        free(text);
-        text = v;
-    }
     ms_scene *sc = NULL;
     ms_status st = ms_scene_parse(text, strlen(text), &sc);
     free(text);

@@ -669,14 +669,8 @@ static void assert_same_sims(const ms_sim *a, const ms_sim *b)
 /* The scene at path with the text `from` replaced by `to` (a variant). */
 static ms_sim *variant_sim(const char *path, const char *from, const char *to, ms_scene **sc)
 {
-    char *text = ms_test_slurp(path);
-    char *at = strstr(text, from);
-    ck_assert_ptr_nonnull(at);
-    size_t len = strlen(text) + strlen(to) + 1;
-    char *v = malloc(len);
+    char *v = ms_test_scene_variant(path, from, to);
     ck_assert_ptr_nonnull(v);
-    snprintf(v, len, "%.*s%s%s", (int)(at - text), text, to, at + strlen(from));
-    free(text);
     ck_assert_msg(ms_scene_parse(v, strlen(v), sc) == MS_OK, "%s", ms_last_error());
     free(v);
     ms_sim *sim = NULL;
