@@ -120,6 +120,8 @@ TESTS     := $(filter $(TSAN_SUITES:%=$(BUILD)/tests/test_%),$(TESTS))
 endif
 # Helpers shared by several test suites (tests/support_*.c).
 TEST_SUPPORT := $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/support_*.c))
+# The tool's ThreadSanitizer suppressions for Mesa (one list for tool and tests).
+TEST_SUPPORT += $(BUILD)/obj/tools/modesplit/tsan_mesa.o
 
 .SECONDARY:
 # V=1 shows the full commands.

@@ -32,18 +32,3 @@ void ms_test_skip(const char *file, int line, const char *why)
     fclose(f);
 }
 
-/* Under ThreadSanitizer: Mesa and LLVM are not instrumented and their own
- * pthread calls look like races among themselves (their threads meet on
- * futexes TSan cannot see); ignore the interceptors they call, keep
- * checking ours. The tool has the same list (tools/modesplit/tsan_mesa.c). */
-#if defined(__SANITIZE_THREAD__)
-const char *__tsan_default_suppressions(void);
-__attribute__((visibility("default"))) const char *__tsan_default_suppressions(void)
-{
-    return "called_from_lib:libOSMesa.so\n"
-           "called_from_lib:libgallium\n"
-           "called_from_lib:swrast_dri.so\n"
-           "called_from_lib:libEGL_mesa.so\n"
-           "called_from_lib:libLLVM\n";
-}
-#endif

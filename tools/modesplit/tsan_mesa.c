@@ -4,8 +4,8 @@
  * makes look like races among themselves. TSan reads these suppressions at
  * start-up: it ignores the interceptors Mesa and LLVM call, and keeps
  * checking every access of libmodesplit and the tool (the PNG writer
- * thread, png_queue.c). tests/support_run.c holds the same list for the
- * test programs. */
+ * thread, png_queue.c). The test programs link this file too
+ * (TEST_SUPPORT in the Makefile). */
 #if defined(__SANITIZE_THREAD__)
 const char *__tsan_default_suppressions(void);
 __attribute__((visibility("default"))) const char *__tsan_default_suppressions(void)
