@@ -215,10 +215,10 @@ static const char *cost_label(const acc_row *rows, int n, const char *study)
  * knob, metric) below that has rows, its points in the CSV's order. */
 static const struct quote {
     const char *study, *knob, *metric;
-    const char *what;  /* the line's lead */
-    const char *unit;  /* after the knob's value, or after the size when by_size */
-    int by_size;       /* "at N particles" from the size, not the knob's value */
-    int percent;       /* the error as a percentage; else as it is, with err_unit */
+    const char *what; /* the line's lead */
+    const char *unit; /* after the knob's value, or after the size when by_size */
+    int by_size;      /* "at N particles" from the size, not the knob's value */
+    int percent;      /* the error as a percentage; else as it is, with err_unit */
     const char *err_unit;
     const char *ref_word; /* non-NULL: the row's reference follows, after this word */
 } quotes[] = {
@@ -234,18 +234,19 @@ static const struct quote {
     {"sph", "particles", "dam-break front Z best time shift T0",
      "that shift (the simulated front is ahead by T0)", "particles", 1, 0, " T units", NULL},
     {"sph", "particles", "dam-break late front dZ/dT / Ritter speed",
-     "late front speed dZ/dT (T >= 2.5) over Ritter's inviscid 2 sqrt(g 2a)", "particles", 1, 0,
-     "", "the experiment's"},
+     "late front speed dZ/dT (T >= 2.5) over Ritter's inviscid 2 sqrt(g 2a)", "particles", 1, 0, "",
+     "the experiment's"},
     {"sph", "particles", "dam-break column H rel. RMS error",
      "SPH dam break, residual column H(tau) RMS error", "particles", 1, 1, "", NULL},
     {"sph", "law_ideal_gas", "dam-break front Z rel. RMS error", "front Z error, ideal gas",
      "particles", 1, 1, "", NULL},
     {"sph", "law_tait", "dam-break front Z rel. RMS error", "front Z error, Tait", "particles", 1,
      1, "", NULL},
-    {"sph", "law_dfsph", "dam-break front Z rel. RMS error", "front Z error, DFSPH", "particles",
-     1, 1, "", NULL},
+    {"sph", "law_dfsph", "dam-break front Z rel. RMS error", "front Z error, DFSPH", "particles", 1,
+     1, "", NULL},
     {"sph", "rest_particles_ideal_gas", "hydrostatic pressure RMS / (rho0 g H)",
-     "SPH at rest, pressure profile RMS error over rho0 g H, ideal gas", "particles", 1, 1, "", NULL},
+     "SPH at rest, pressure profile RMS error over rho0 g H, ideal gas", "particles", 1, 1, "",
+     NULL},
     {"sph", "rest_particles_tait", "hydrostatic pressure RMS / (rho0 g H)",
      "SPH at rest, pressure profile RMS error over rho0 g H, Tait", "particles", 1, 1, "", NULL},
     {"sph", "rest_particles_dfsph", "mean compression at rest (interior)",
@@ -346,29 +347,28 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
         const char *ms[MAXK], *kn[MAXK];
         int nm = metrics(rows, n, st[s], ms), nk = knobs(rows, n, st[s], kn);
         fprintf(f, "## %s\n\n", st[s]);
-        if (!strcmp(st[s], "sph") && has_rows(rows, n, "sph", "particles",
-                                              "dam-break front Z best time shift T0"))
-            fprintf(f,
-                    "How to read the dam break: the front Z(T) error is mostly a lag. The "
-                    "simulated front runs ahead of Martin & Moyce's from T ~ 0.8 on (the "
-                    "signed errors per point are in the notes), most at T ~ 1.2-1.4; its "
-                    "late speed (T >= 2.5) is close to the experiment's, and both stay under "
-                    "Ritter's inviscid shallow-water front 2 sqrt(g 2a) (the `Ritter speed` "
-                    "rows). Shifted by one time T0 the curves agree within the `after time "
-                    "shift` rows. The residual column H(tau) at the back wall needs a much "
-                    "smaller shift than the front (the notes give both), so the lag is at "
-                    "the front's tip: the measured front starts slower, as the SPH "
-                    "literature reports and attributes to the release (the gate) and to "
-                    "friction on the dry bed, neither of which the simulation has (an "
-                    "instantaneous release, frictionless walls). A finer or less viscous "
-                    "run is closer to the inviscid collapse and further ahead (T0 grows), "
-                    "so the unshifted error grows with the particle count while the shifted "
-                    "one levels off.\n\n"
-                    "How to read the column at rest: the pressure profile is averaged over "
-                    "0.5 s sampled every 5 ms, because the column keeps ringing in its "
-                    "vertical breathing mode (period 4 H / c); the notes give one sample's "
-                    "range of slopes and the height the column lost against what its law's "
-                    "compression asks.\n\n");
+        if (!strcmp(st[s], "sph") &&
+            has_rows(rows, n, "sph", "particles", "dam-break front Z best time shift T0"))
+            fprintf(f, "How to read the dam break: the front Z(T) error is mostly a lag. The "
+                       "simulated front runs ahead of Martin & Moyce's from T ~ 0.8 on (the "
+                       "signed errors per point are in the notes), most at T ~ 1.2-1.4; its "
+                       "late speed (T >= 2.5) is close to the experiment's, and both stay under "
+                       "Ritter's inviscid shallow-water front 2 sqrt(g 2a) (the `Ritter speed` "
+                       "rows). Shifted by one time T0 the curves agree within the `after time "
+                       "shift` rows. The residual column H(tau) at the back wall needs a much "
+                       "smaller shift than the front (the notes give both), so the lag is at "
+                       "the front's tip: the measured front starts slower, as the SPH "
+                       "literature reports and attributes to the release (the gate) and to "
+                       "friction on the dry bed, neither of which the simulation has (an "
+                       "instantaneous release, frictionless walls). A finer or less viscous "
+                       "run is closer to the inviscid collapse and further ahead (T0 grows), "
+                       "so the unshifted error grows with the particle count while the shifted "
+                       "one levels off.\n\n"
+                       "How to read the column at rest: the pressure profile is averaged over "
+                       "0.5 s sampled every 5 ms, because the column keeps ringing in its "
+                       "vertical breathing mode (period 4 H / c); the notes give one sample's "
+                       "range of slopes and the height the column lost against what its law's "
+                       "compression asks.\n\n");
         if (plots && water)
             fprintf(f,
                     "![%s](%s_error.png)\n\n- `%s_error.png`: %s against wavelength, one "

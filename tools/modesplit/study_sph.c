@@ -65,8 +65,8 @@ static double trace_at(const double *t, const double *y, int m, double x)
 }
 
 /* RMS of the relative error of y(T - t0) against the points ref[k] = (T, Y). */
-static double trace_rms(const double *t, const double *y, int m, const double (*ref)[2],
-                        int nref, double t0)
+static double trace_rms(const double *t, const double *y, int m, const double (*ref)[2], int nref,
+                        double t0)
 {
     double e2 = 0;
     for (int k = 0; k < nref; ++k) {
@@ -82,8 +82,8 @@ static double trace_rms(const double *t, const double *y, int m, const double (*
  * experiment's gate or diaphragm) would leave: the shifted error is what
  * remains of the shape. */
 #define SHIFT_MAX 0.5
-static double best_shift(const double *t, const double *y, int m, const double (*ref)[2],
-                         int nref, double *rms)
+static double best_shift(const double *t, const double *y, int m, const double (*ref)[2], int nref,
+                         double *rms)
 {
     double best = 0, br = INFINITY;
     for (int i = -500; i <= 500; ++i) {
@@ -119,6 +119,15 @@ static double slope(const double *t, const double *y, int m, double lo, double h
  * these units dZ/dT = 2 sqrt(2 g a) / (a sqrt(2 g / a)) = 2. */
 #define LATE_T 2.5
 #define RITTER 2.0
+
+/* Row r again with another metric, error and reference; 0 on success. */
+static int add_metric(acc_ctx *c, acc_row *r, const char *metric, double error, double reference)
+{
+    snprintf(r->metric, sizeof r->metric, "%s", metric);
+    r->error = error;
+    r->reference = reference;
+    return acc_add(c, r);
+}
 
 /* The dam break of cfg; 1 when the build refuses the solver (nothing
  * added), 0 with rows added, -1 on a failure. Rows: the front Z(T) and the
@@ -216,8 +225,8 @@ static int dam_break(acc_ctx *c, const char *knob, double value, const dam_cfg *
     }
     /* the errors: Z(T) and H(tau) interpolated linearly between frames */
     double ez = trace_rms(tT, tZ, m, mm, 15, 0), eh = trace_rms(tt, tH, m, mmh, MM_H, 0);
-    double ez0, eh0, t0 = best_shift(tT, tZ, m, mm, 15, &ez0), h0 = best_shift(tt, tH, m, mmh,
-                                                                               MM_H, &eh0);
+    double ez0, eh0, t0 = best_shift(tT, tZ, m, mm, 15, &ez0),
+                     h0 = best_shift(tt, tH, m, mmh, MM_H, &eh0);
     double late = slope(tT, tZ, m, LATE_T, mm[14][0]);
     /* the experiment's own late slope: its points from LATE_T on */
     double xs[15], ys[15];
@@ -239,57 +248,39 @@ static int dam_break(acc_ctx *c, const char *knob, double value, const dam_cfg *
      * what does not move the front) */
     if (!strcmp(knob, "particles") || !strncmp(knob, "law_", 4))
         acc_note(c,
-             "- dam break, %s, %s c=%g m/s, courant %g, %d particles: Z_sim - Z_exp at T = "
-             "0.41, 1.19, 1.63, 1.98, 2.32, 2.65, 2.98, 3.33: %s %%; best time shift T0 = "
-             "%.3f (%.1f ms), after it %.1f %% RMS (%.1f %% without); late front dZ/dT %.2f "
-             "(experiment %.2f, Ritter 2); column H: shift %.3f, %.1f %% RMS after it "
-             "(%.1f %% without).",
-             knob, law_names[cfg->law], cfg->sound, cfg->courant > 0 ? cfg->courant : 0.4, n,
-             shape, t0, 1e3 * t0 / tscale, 100 * ez0, 100 * ez, late, late_exp, h0, 100 * eh0, 100 * eh);
+                 "- dam break, %s, %s c=%g m/s, courant %g, %d particles: Z_sim - Z_exp at T = "
+                 "0.41, 1.19, 1.63, 1.98, 2.32, 2.65, 2.98, 3.33: %s %%; best time shift T0 = "
+                 "%.3f (%.1f ms), after it %.1f %% RMS (%.1f %% without); late front dZ/dT %.2f "
+                 "(experiment %.2f, Ritter 2); column H: shift %.3f, %.1f %% RMS after it "
+                 "(%.1f %% without).",
+                 knob, law_names[cfg->law], cfg->sound, cfg->courant > 0 ? cfg->courant : 0.4, n,
+                 shape, t0, 1e3 * t0 / tscale, 100 * ez0, 100 * ez, late, late_exp, h0, 100 * eh0,
+                 100 * eh);
     free(tr);
-    acc_row r = {.value = value < 0 ? n : value, .error = ez, .reference = 4.11,
-                 .ms_per_s = 1e3 * wall / in.time, .ms_per_step = 1e3 * wall / in.substeps,
-                 .size = n, .threads = 1};
+    acc_row r = {.value = value < 0 ? n : value,
+                 .ms_per_s = 1e3 * wall / in.time,
+                 .ms_per_step = 1e3 * wall / in.substeps,
+                 .size = n,
+                 .threads = 1};
     snprintf(r.study, sizeof r.study, "sph");
     snprintf(r.knob, sizeof r.knob, "%s", knob);
     snprintf(r.config, sizeof r.config, "%s c=%g m/s, courant %g, %d particles, %ld substeps",
              law_names[cfg->law], cfg->sound, cfg->courant > 0 ? cfg->courant : 0.4, n,
              in.substeps);
-    snprintf(r.metric, sizeof r.metric, "dam-break front Z rel. RMS error");
-    if (acc_add(c, &r) != 0)
+    const double zref = 4.11, href = mmh[MM_H - 1][1];
+    if (add_metric(c, &r, "dam-break front Z rel. RMS error", ez, zref) ||
+        add_metric(c, &r, "dam-break column H rel. RMS error", eh, href) ||
+        /* the compression the run reached: weakly compressible SPH's price */
+        add_metric(c, &r, "dam-break max compression", maxc, 0) ||
+        add_metric(c, &r, "dam-break front Z RMS error after time shift", ez0, zref) ||
+        /* positive: the simulated front runs ahead of the experiment's */
+        add_metric(c, &r, "dam-break front Z best time shift T0", t0, 0) ||
+        add_metric(c, &r, "dam-break column H RMS error after time shift", eh0, href) ||
+        /* against Ritter's inviscid 2; the reference: the experiment's ratio */
+        add_metric(c, &r, "dam-break late front dZ/dT / Ritter speed", late / RITTER,
+                   late_exp / RITTER))
         return -1;
-    r.error = eh;
-    r.reference = mmh[MM_H - 1][1];
-    snprintf(r.metric, sizeof r.metric, "dam-break column H rel. RMS error");
-    if (acc_add(c, &r) != 0)
-        return -1;
-    /* the compression the run reached: weakly compressible SPH's own price */
-    r.error = maxc;
-    r.reference = 0;
-    snprintf(r.metric, sizeof r.metric, "dam-break max compression");
-    if (acc_add(c, &r) != 0)
-        return -1;
-    r.error = ez0;
-    r.reference = 4.11;
-    snprintf(r.metric, sizeof r.metric, "dam-break front Z RMS error after time shift");
-    if (acc_add(c, &r) != 0)
-        return -1;
-    /* positive: the simulated front runs ahead of the experiment's */
-    r.error = t0;
-    r.reference = 0;
-    snprintf(r.metric, sizeof r.metric, "dam-break front Z best time shift T0");
-    if (acc_add(c, &r) != 0)
-        return -1;
-    r.error = eh0;
-    r.reference = mmh[MM_H - 1][1];
-    snprintf(r.metric, sizeof r.metric, "dam-break column H RMS error after time shift");
-    if (acc_add(c, &r) != 0)
-        return -1;
-    /* against Ritter's inviscid 2; the reference is the experiment's ratio */
-    r.error = late / RITTER;
-    r.reference = late_exp / RITTER;
-    snprintf(r.metric, sizeof r.metric, "dam-break late front dZ/dT / Ritter speed");
-    return acc_add(c, &r);
+    return 0;
 }
 
 int study_sph_particles(acc_ctx *c)
@@ -384,11 +375,11 @@ int study_sph_courant(acc_ctx *c)
 typedef struct rest_acc {
     double ps[64], ds[64]; /* pressure and depth sums per slab of h / 2 */
     long cnt[64];
-    double sum_c;          /* compression rho/rho0 - 1 summed over the samples */
+    double sum_c; /* compression rho/rho0 - 1 summed over the samples */
     long m;
     double slope_lo, slope_hi; /* one sample's fitted dp/dd / (rho0 g): the range */
-    double vz_max;         /* the largest |mean vertical velocity| of a sample */
-    double top;            /* the free surface, summed over the samples */
+    double vz_max;             /* the largest |mean vertical velocity| of a sample */
+    double top;                /* the free surface, summed over the samples */
     int samples;
 } rest_acc;
 
@@ -399,8 +390,7 @@ static int by_z(const void *a, const void *b)
 }
 
 /* One sample of the column into o: p and u are scratch of 3 n floats. */
-static void rest_sample(ms_volume *v, int law, double h, double cs, float *p, float *u,
-                        rest_acc *o)
+static void rest_sample(ms_volume *v, int law, double h, double cs, float *p, float *u, rest_acc *o)
 {
     ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
@@ -560,15 +550,18 @@ int study_sph_rest(acc_ctx *c)
                          law_names[law], np, ra->slope_lo, ra->slope_hi, 100 * ra->vz_max,
                          100 * p_err, 100 * shrink, 100 * mean_c, 100 * g * H / (2 * cs * cs));
             free(ra);
-            acc_row r = {.value = in.count, .error = p_err, .reference = 1000 * g * H,
+            acc_row r = {.value = in.count,
+                         .error = p_err,
+                         .reference = 1000 * g * H,
                          .ms_per_s = 1e3 * wall / in.time,
-                         .ms_per_step = 1e3 * wall / in.substeps, .size = in.count,
+                         .ms_per_step = 1e3 * wall / in.substeps,
+                         .size = in.count,
                          .threads = 1};
             snprintf(r.study, sizeof r.study, "sph");
             snprintf(r.knob, sizeof r.knob, "rest_particles_%s", law_names[law]);
             snprintf(r.config, sizeof r.config,
-                     "%s, spacing %g m, compression mean %.4f (g H / c^2 = %.4f)",
-                     law_names[law], s, mean_c, g * H / (cs * cs));
+                     "%s, spacing %g m, compression mean %.4f (g H / c^2 = %.4f)", law_names[law],
+                     s, mean_c, g * H / (cs * cs));
             snprintf(r.metric, sizeof r.metric, "hydrostatic pressure RMS / (rho0 g H)");
             /* DFSPH solves for its pressure, no law of the density gives
              * it, and the public API has no particle pressure: a pressure
