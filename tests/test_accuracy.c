@@ -48,7 +48,7 @@ static int tool(const char *args, char *out, size_t size)
 
 typedef struct row {
     char study[32], knob[48], metric[64];
-    double value, error, ms_per_s, ms_per_step, size;
+    double value, error, reference, ms_per_s, ms_per_step, size;
 } row;
 
 static int read_rows(const char *path, row *rows, int max)
@@ -80,7 +80,7 @@ static int read_rows(const char *path, row *rows, int max)
         snprintf(r->metric, sizeof r->metric, "%.63s", p);
         p = q + 2;
         r->error = strtod(p, &p);
-        strtod(p + 1, &p); /* reference */
+        r->reference = strtod(p + 1, &p);
         r->ms_per_s = strtod(p + 1, &p);
         r->ms_per_step = strtod(p + 1, &p);
         r->size = strtod(p + 1, &p); /* cells or particles */
@@ -164,24 +164,62 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
     text[len] = '\0';
     fclose(md);
     for (int k = 0; k < 3; ++k) {
-        m = select_rows(rows, n, "sph", laws[k], "front", sel);
+        m = select_rows(rows, n, "sph", laws[k], "front Z rel.", sel);
         if (m == 0) {
             ck_assert_msg(strstr(text, "is not in this build"), "%s: no row and no note",
                           laws[k]);
             continue;
         }
+        ck_assert_int_eq(m, 1);
         ck_assert_msg(sel[0]->error < 0.15, "%s: front RMS %.3f", laws[k], sel[0]->error);
+        double ez = sel[0]->error;
+        /* the front runs ahead of the experiment by a lag, not a speed:
+         * shifted by its best T0 (0.18 to 0.21 measured, positive: the
+         * simulation ahead), the error falls to a third (2.5 to 2.9 %
+         * measured against 8.5 to 12 % unshifted) */
+        m = select_rows(rows, n, "sph", laws[k], "best time shift", sel);
+        ck_assert_int_eq(m, 1);
+        ck_assert_msg(sel[0]->error > 0.05 && sel[0]->error < 0.4, "%s: front shift T0 %.3f",
+                      laws[k], sel[0]->error);
+        m = select_rows(rows, n, "sph", laws[k], "front Z RMS error after time shift", sel);
+        ck_assert_int_eq(m, 1);
+        ck_assert_msg(sel[0]->error < 0.05 && sel[0]->error < 0.5 * ez,
+                      "%s: front RMS %.3f after the shift, %.3f before", laws[k], sel[0]->error,
+                      ez);
+        /* late, the front is slower than Ritter's inviscid shallow-water
+         * front 2 sqrt(g 2a) (dZ/dT = 2) and about as fast as the
+         * experiment's (0.69 of it; 0.73 to 0.74 measured) */
+        m = select_rows(rows, n, "sph", laws[k], "Ritter", sel);
+        ck_assert_int_eq(m, 1);
+        ck_assert_msg(sel[0]->error > 0.6 && sel[0]->error < 0.9, "%s: late front %.3f of Ritter's",
+                      laws[k], sel[0]->error);
+        ck_assert_msg(fabs(sel[0]->reference - 0.689) < 0.01, "the experiment's late slope %.3f",
+                      sel[0]->reference);
         /* and the residual column at the wall, H(tau) of their Table 6,
          * within 25 % RMS at 800 particles (0.07 to 0.15 measured) */
-        m = select_rows(rows, n, "sph", laws[k], "column H", sel);
+        m = select_rows(rows, n, "sph", laws[k], "column H rel.", sel);
         ck_assert_int_eq(m, 1);
         ck_assert_msg(sel[0]->error < 0.25, "%s: column H RMS %.3f", laws[k], sel[0]->error);
     }
-    /* the hydrostatic pressure at rest is rho0 g d within 40 % RMS */
-    m = select_rows(rows, n, "sph", "rest_particles_tait", "hydrostatic", sel);
-    ck_assert_int_ge(m, 2);
-    for (int i = 0; i < m; ++i)
-        ck_assert_msg(sel[i]->error < 0.4, "hydrostatic RMS %.3f", sel[i]->error);
+    /* the hydrostatic pressure at rest, averaged over 0.5 s of the column's
+     * breathing mode, is rho0 g d within 10 % RMS (5.5 to 6.3 % measured
+     * at 175 particles, 3 of them interior) and within 4 % at 1400 (1.3 to
+     * 1.6 %; a single snapshot was 10 to 16 % off) */
+    static const char *const rest_laws[] = {"rest_particles_ideal_gas", "rest_particles_tait"};
+    for (int k = 0; k < 2; ++k) {
+        m = select_rows(rows, n, "sph", rest_laws[k], "hydrostatic", sel);
+        ck_assert_int_ge(m, 2);
+        for (int i = 0; i < m; ++i)
+            ck_assert_msg(sel[i]->error < 0.1, "%s: hydrostatic RMS %.3f", rest_laws[k],
+                          sel[i]->error);
+        ck_assert_msg(sel[m - 1]->error < 0.04, "%s: hydrostatic RMS %.3f at %.0f particles",
+                      rest_laws[k], sel[m - 1]->error, sel[m - 1]->value);
+    }
+    /* the figures a user would quote, written from the rows */
+    ck_assert_ptr_nonnull(strstr(text, "## Figures to quote"));
+    ck_assert_ptr_nonnull(strstr(text, "front Z(T) RMS error against Martin & Moyce: "));
+    ck_assert_ptr_nonnull(strstr(text, "- the same after the best time shift: "));
+    ck_assert_ptr_nonnull(strstr(text, "standing-mode frequency error: "));
     /* the compression at rest that holds the column up: hydrostatics
      * gives a mean of g H / (2 c^2) = 0.0034 for the weakly compressible
      * laws (0.0026 to 0.0058 measured at 175 and 1400 particles); DFSPH

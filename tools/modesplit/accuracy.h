@@ -37,7 +37,7 @@ typedef struct acc_ctx {
     int quick;
     acc_row *rows;
     int nrows, cap;
-    char note[4096];  /* notes for accuracy.md: solvers not in this build, ... */
+    char note[16384]; /* notes for accuracy.md: solvers not in this build, ... */
 } acc_ctx;
 
 /* Append a row; 0 on success. */
