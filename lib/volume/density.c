@@ -155,7 +155,7 @@ static void density_part(void *ctxp, int part, int b, int e)
 }
 
 /* The packed copy's positions and velocities (v->pk: x, y, z, -, vx, vy,
- * vz, -), for the 64-bit gathers of the image search and the force pass;
+ * vz, -), for the record loads of the force pass (forces.c);
  * density_part adds p and 1/rho. */
 static void pack_part(void *ctxp, int part, int b, int e)
 {

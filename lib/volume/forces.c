@@ -64,17 +64,56 @@ static inline int padded(int n)
 }
 
 #if MS_VOLUME_HAVE_AVX512
-/* Two neighbour fields of 16 particles at once: lanes of 64-bit gathers
- * from the packed copy (pk, 8 floats a particle; q picks the pair), then
- * split into the even and odd floats. Uses jl/jh (the 16 indices times 4,
- * low and high halves), pk, even and odd of the caller. */
-#define GATHER2(q, a, b)                                                                  \
-    do {                                                                                  \
-        __m512 lo_ = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk + (q), 8));             \
-        __m512 hi_ = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk + (q), 8));             \
-        (a) = _mm512_permutex2var_ps(lo_, even, hi_);                                     \
-        (b) = _mm512_permutex2var_ps(lo_, odd, hi_);                                      \
+/* The 8-float records pk[8 j] (x, y, z, p, vx, vy, vz, 1/rho) of the 16
+ * particles j[0..16) as eight vectors of 16 lanes (lane l: particle
+ * j[l], vector f: field f): sixteen 32-byte loads and an 8 x 8 transpose
+ * in each 256-bit half, in place of eight 64-bit gathers (issue 12:
+ * measured on this Zen 4 machine, the force pass's share of a 32k
+ * sub-step went from 30 % to 20 %; with arrays in place of the written-out
+ * temporaries GCC spilled them to the stack and there was no gain).
+ * Vector a[k] holds the records of j[k] | j[k+4] (k < 4) or j[k+4] |
+ * j[k+8] (k >= 4), so that the last lane shuffle puts the lanes in order.
+ * Values are moved, never computed: the same bits as the gathers. */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512
+record_pair(const float *pk, int lo, int hi)
+{
+    return _mm512_insertf32x8(_mm512_castps256_ps512(_mm256_loadu_ps(pk + 8 * (size_t)lo)),
+                              _mm256_loadu_ps(pk + 8 * (size_t)hi), 1);
+}
+
+/* Written out (no arrays): with arrays GCC kept the vectors on the stack. */
+#define TRANSPOSE4(a0, a1, a2, a3, s0, s1, s2, s3)                                   \
+    do {                                                                              \
+        const __m512 t0_ = _mm512_unpacklo_ps(a0, a1), t1_ = _mm512_unpackhi_ps(a0, a1); \
+        const __m512 t2_ = _mm512_unpacklo_ps(a2, a3), t3_ = _mm512_unpackhi_ps(a2, a3); \
+        s0 = _mm512_shuffle_ps(t0_, t2_, 0x44);                                       \
+        s1 = _mm512_shuffle_ps(t0_, t2_, 0xee);                                       \
+        s2 = _mm512_shuffle_ps(t1_, t3_, 0x44);                                       \
+        s3 = _mm512_shuffle_ps(t1_, t3_, 0xee);                                       \
     } while (0)
+
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline void
+load_records(const float *pk, const int *restrict j, __m512 *o0, __m512 *o1, __m512 *o2,
+             __m512 *o3, __m512 *o4, __m512 *o5, __m512 *o6, __m512 *o7)
+{
+    const __m512 a0 = record_pair(pk, j[0], j[4]), a1 = record_pair(pk, j[1], j[5]);
+    const __m512 a2 = record_pair(pk, j[2], j[6]), a3 = record_pair(pk, j[3], j[7]);
+    const __m512 a4 = record_pair(pk, j[8], j[12]), a5 = record_pair(pk, j[9], j[13]);
+    const __m512 a6 = record_pair(pk, j[10], j[14]), a7 = record_pair(pk, j[11], j[15]);
+    __m512 s0, s1, s2, s3, s4, s5, s6, s7;
+    TRANSPOSE4(a0, a1, a2, a3, s0, s1, s2, s3);
+    TRANSPOSE4(a4, a5, a6, a7, s4, s5, s6, s7);
+    *o0 = _mm512_shuffle_f32x4(s0, s4, 0x88);
+    *o4 = _mm512_shuffle_f32x4(s0, s4, 0xdd);
+    *o1 = _mm512_shuffle_f32x4(s1, s5, 0x88);
+    *o5 = _mm512_shuffle_f32x4(s1, s5, 0xdd);
+    *o2 = _mm512_shuffle_f32x4(s2, s6, 0x88);
+    *o6 = _mm512_shuffle_f32x4(s2, s6, 0xdd);
+    *o3 = _mm512_shuffle_f32x4(s3, s7, 0x88);
+    *o7 = _mm512_shuffle_f32x4(s3, s7, 0xdd);
+}
+#undef TRANSPOSE4
+
 /* ms_lanes_sum in registers: the same tree order. */
 __attribute__((target("avx512f,avx512dq"))) static inline float hsum_avx512(__m512 v)
 {
@@ -88,15 +127,12 @@ __attribute__((target("avx512f,avx512dq"))) static inline float hsum_avx512(__m5
  * operations per lane in the same order (no fused multiply-adds, IEEE sqrt
  * and division) and the same lane sum, so the same bits as the C loop.
  * The neighbours' data come from the packed copy v->pk (x, y, z, p, vx,
- * vy, vz, 1/rho per particle) by 64-bit gathers, two floats per element,
- * split into even and odd floats by one permute each: measured here, eight
- * 8-element 64-bit gathers take less than half the time of eight
- * 16-element 32-bit gathers. */
+ * vy, vz, 1/rho per particle), sixteen records at a time by
+ * load_records. */
 __attribute__((target("avx512f,avx512dq"))) static pair_sums
 real_sums_avx512(const ms_volume *v, const int *restrict idx, const float *restrict r2s, int n,
                  int i)
 {
-    const double *pk = (const double *)(const void *)v->pk;
     const float *pi8 = v->pk + 8 * (size_t)i;
     const __m512 xi = _mm512_set1_ps(pi8[0]), yi = _mm512_set1_ps(pi8[1]),
                  zi = _mm512_set1_ps(pi8[2]);
@@ -104,18 +140,10 @@ real_sums_avx512(const ms_volume *v, const int *restrict idx, const float *restr
                  uzi = _mm512_set1_ps(pi8[6]);
     const __m512 pi = _mm512_set1_ps(pi8[3]), h = _mm512_set1_ps(v->K.h);
     const __m512 eps = _mm512_set1_ps(sqrtf(v->eps2)), zero = _mm512_setzero_ps();
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
     __m512 apx = zero, apy = zero, apz = zero, avx = zero, avy = zero, avz = zero, ad = zero;
     for (int k = 0; k < n; k += MS_VOLUME_LANES) {
-        /* 4 doubles per particle */
-        __m512i j4 = _mm512_slli_epi32(_mm512_loadu_si512((const void *)(idx + k)), 2);
-        __m256i jl = _mm512_castsi512_si256(j4), jh = _mm512_extracti64x4_epi64(j4, 1);
         __m512 xj, yj, zj, pj, uxj, uyj, uzj, irj;
-        GATHER2(0, xj, yj);
-        GATHER2(1, zj, pj);
-        GATHER2(2, uxj, uyj);
-        GATHER2(3, uzj, irj);
+        load_records(v->pk, idx + k, &xj, &yj, &zj, &pj, &uxj, &uyj, &uzj, &irj);
         __m512 dx = _mm512_sub_ps(xi, xj);
         __m512 dy = _mm512_sub_ps(yi, yj);
         __m512 dz = _mm512_sub_ps(zi, zj);
@@ -149,24 +177,17 @@ __attribute__((target("avx512f,avx512dq"))) static void
 image_terms_avx512(const ms_volume *v, const int *restrict gidx, const float *restrict gr2, int i,
                    const float wall[3], float t[7][16])
 {
-    const double *pk = (const double *)(const void *)v->pk;
     const float *pi8 = v->pk + 8 * (size_t)i;
     const __m512 zero = _mm512_setzero_ps(), h = _mm512_set1_ps(v->K.h);
     const __m512 eps = _mm512_set1_ps(sqrtf(v->eps2)), pi = _mm512_set1_ps(pi8[3]);
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
     const __m512i sign = _mm512_set1_epi32((int)0x80000000u);
     const __m512i g = _mm512_loadu_si512((const void *)gidx);
     const __m512i f = _mm512_srli_epi32(g, MS_VOLUME_IMAGE_SHIFT);
-    const __m512i j4 =
-        _mm512_slli_epi32(_mm512_and_si512(g, _mm512_set1_epi32((1 << MS_VOLUME_IMAGE_SHIFT) - 1)), 2);
-    const __m256i jl = _mm512_castsi512_si256(j4), jh = _mm512_extracti64x4_epi64(j4, 1);
+    int j[16];
+    _mm512_storeu_si512((void *)j,
+                        _mm512_and_si512(g, _mm512_set1_epi32((1 << MS_VOLUME_IMAGE_SHIFT) - 1)));
     __m512 p[3], u[3], pj, irj;
-    GATHER2(0, p[0], p[1]);
-    GATHER2(1, p[2], pj);
-    GATHER2(2, u[0], u[1]);
-    GATHER2(3, u[2], irj);
-#undef GATHER2
+    load_records(v->pk, j, &p[0], &p[1], &p[2], &pj, &u[0], &u[1], &u[2], &irj);
     const float own[3] = {pi8[0], pi8[1], pi8[2]}, ownu[3] = {pi8[4], pi8[5], pi8[6]};
     __m512 d[3], du[3];
     for (int a = 0; a < 3; ++a) {

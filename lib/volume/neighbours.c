@@ -18,6 +18,11 @@
 #endif
 
 enum { LANES = MS_VOLUME_LANES };
+/* The candidate run of the AVX-512 path (v->cand[part], cand_cap floats
+ * per field): x | y | z of the candidates, then x | y | z of the real
+ * neighbours the filter kept, in list order, for the image filter of a
+ * particle near a wall (gather_image_avx512: loads, not gathers). */
+enum { CAND_FIELDS = 6 };
 
 /* Room for `more` entries plus a block of padding. */
 static int reserve(ms_nlist *L, size_t more)
@@ -67,7 +72,7 @@ int ms_volume_lists_headroom(ms_volume *v, int part)
         const size_t cap = 2 * v->cand_cap[part];
         ms_free(v->cand[part]);
         ms_free(v->cand_idx[part]);
-        v->cand[part] = ms_alloc_array(3 * cap, sizeof(float));
+        v->cand[part] = ms_alloc_array(CAND_FIELDS * cap, sizeof(float));
         v->cand_idx[part] = ms_alloc_array(cap, sizeof(int));
         v->cand_cap[part] = v->cand[part] && v->cand_idx[part] ? cap : 0;
         if (!v->cand_cap[part])
@@ -142,16 +147,24 @@ static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi,
  * slow). Returns how many were within h. */
 __attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t
 filter_block(__m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y,
-             const float *z, __mmask16 valid, __m512i id, int *out, float *out2)
+             const float *z, __mmask16 valid, __m512i id, int *out, float *out2, float *pos,
+             size_t stride)
 {
-    __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, x));
-    __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, y));
-    __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, z));
+    __m512 xj = _mm512_maskz_loadu_ps(valid, x), yj = _mm512_maskz_loadu_ps(valid, y);
+    __m512 zj = _mm512_maskz_loadu_ps(valid, z);
+    __m512 dx = _mm512_sub_ps(qx, xj);
+    __m512 dy = _mm512_sub_ps(qy, yj);
+    __m512 dz = _mm512_sub_ps(qz, zj);
     __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
                               _mm512_mul_ps(dz, dz));
     __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
     _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(m, id));
     _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(m, r2));
+    if (pos) { /* the kept neighbours' positions too (constant per call site) */
+        _mm512_storeu_ps(pos, _mm512_maskz_compress_ps(m, xj));
+        _mm512_storeu_ps(pos + stride, _mm512_maskz_compress_ps(m, yj));
+        _mm512_storeu_ps(pos + 2 * stride, _mm512_maskz_compress_ps(m, zj));
+    }
     return (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
 }
 
@@ -170,7 +183,8 @@ filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float
         for (int j = lo[r]; j < hi[r]; j += 16) {
             unsigned rem = (unsigned)(hi[r] - j);
             __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
-            n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n);
+            n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n,
+                              NULL, 0);
             id = _mm512_add_epi32(id, sixteen);
         }
     }
@@ -178,10 +192,12 @@ filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float
 }
 
 /* filter_rows_avx512 over candidates already copied into one run
- * (cand_of): the same list, without a short loop per row. */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
-filter_run_avx512(const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride,
-                  const float q[3], float h2, int *restrict out, float *restrict out2)
+ * (cand_of): the same list, without a short loop per row. With pos, the
+ * kept neighbours' x | y | z (stride apart) are stored too, in list order. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t
+filter_run_body(const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride,
+                const float q[3], float h2, int *restrict out, float *restrict out2,
+                float *restrict pos)
 {
     const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
     const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
@@ -191,9 +207,25 @@ filter_run_avx512(const float *restrict cx, const int *restrict cidx, size_t nc,
         size_t rem = nc - j;
         __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
-        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n);
+        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n,
+                          pos ? pos + n : NULL, stride);
     }
     return n;
+}
+
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
+filter_run_avx512(const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride,
+                  const float q[3], float h2, int *restrict out, float *restrict out2)
+{
+    return filter_run_body(cx, cidx, nc, stride, q, h2, out, out2, NULL);
+}
+
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
+filter_run_pos_avx512(const float *restrict cx, const int *restrict cidx, size_t nc,
+                      size_t stride, const float q[3], float h2, int *restrict out,
+                      float *restrict out2, float *restrict pos)
+{
+    return filter_run_body(cx, cidx, nc, stride, q, h2, out, out2, pos);
 }
 #endif
 
@@ -263,7 +295,7 @@ __attribute__((target("avx512f,bmi,bmi2"))) static long cand_of(ms_volume *v, in
             cap *= 2;
         ms_free(v->cand[part]);
         ms_free(v->cand_idx[part]);
-        v->cand[part] = ms_alloc_array(3 * cap, sizeof(float));
+        v->cand[part] = ms_alloc_array(CAND_FIELDS * cap, sizeof(float));
         v->cand_idx[part] = ms_alloc_array(cap, sizeof(int));
         v->cand_cap[part] = v->cand[part] && v->cand_idx[part] ? cap : 0;
         if (!v->cand_cap[part])
@@ -331,20 +363,20 @@ static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int t
 }
 
 #if MS_VOLUME_HAVE_AVX512
-/* gather_image in AVX-512: positions by 64-bit gathers from the packed
- * copy (pack_part wrote them for this pass), the same r^2 and the same
- * order (compress keeps it), so the same list. */
-__attribute__((target("avx512f,avx512dq,bmi,bmi2,popcnt"))) static int
+/* gather_image in AVX-512: the neighbours' positions loaded from the
+ * copy the filter kept (pos: x | y | z, stride apart, in list order;
+ * issue 12: it replaced two 64-bit gathers per block, ~10 % of a fig1
+ * sub-step), the same r^2 and the same order (compress keeps it), so the
+ * same list. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static int
 gather_image_avx512(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
-                    const int *restrict idx, int n)
+                    const int *restrict idx, int n, const float *restrict pos, size_t stride)
 {
     if (!reserve(L, (size_t)n + 2 * LANES))
         return -1;
-    const double *pk = (const double *)(const void *)v->pk;
+    const float *restrict px = pos, *restrict py = pos + stride, *restrict pz = pos + 2 * stride;
     const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
     const __m512 hh = _mm512_set1_ps(v->K.h2);
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
-    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
     const __m512i vtag = _mm512_set1_epi32(tag);
     int *restrict out = L->idx + L->len;
     float *restrict out2 = L->r2 + L->len;
@@ -354,15 +386,9 @@ gather_image_avx512(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
         __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
         /* idx is padded (with the particle itself): a whole block is valid memory */
         __m512i j = _mm512_loadu_si512((const void *)(idx + k));
-        __m512i j4 = _mm512_slli_epi32(j, 2);
-        __m256i jl = _mm512_castsi512_si256(j4), jh = _mm512_extracti64x4_epi64(j4, 1);
-        __m512 a0 = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk, 8));
-        __m512 a1 = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk, 8));
-        __m512 b0 = _mm512_castpd_ps(_mm512_i32gather_pd(jl, pk + 1, 8));
-        __m512 b1 = _mm512_castpd_ps(_mm512_i32gather_pd(jh, pk + 1, 8));
-        __m512 dx = _mm512_sub_ps(qx, _mm512_permutex2var_ps(a0, even, a1));
-        __m512 dy = _mm512_sub_ps(qy, _mm512_permutex2var_ps(a0, odd, a1));
-        __m512 dz = _mm512_sub_ps(qz, _mm512_permutex2var_ps(b0, even, b1));
+        __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, px + k));
+        __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, py + k));
+        __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, pz + k));
         __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
                                   _mm512_mul_ps(dz, dz));
         __mmask16 hit = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
@@ -467,15 +493,25 @@ int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *n
             return -1;
         }
     }
+    float wall[3];
+    const unsigned near = ms_volume_walls_near(v, p[0], p[1], p[2], wall);
     int nreal; /* the particle itself included */
 #if MS_VOLUME_HAVE_AVX512
+    /* near a wall: the filter keeps the neighbours' positions for the
+     * image filter, after the candidates in the same run */
+    const size_t stride = run ? v->cand_cap[part] : 0;
+    float *const pos = run ? v->cand[part] + 3 * stride : NULL;
     if (run) {
         if (!reserve(L, (size_t)*ncand + 2 * LANES)) {
             return -1;
         }
-        nreal = (int)filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand,
-                                       v->cand_cap[part], p, h2, L->idx + L->len,
-                                       L->r2 + L->len);
+        if (near)
+            nreal = (int)filter_run_pos_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand,
+                                               stride, p, h2, L->idx + L->len, L->r2 + L->len,
+                                               pos);
+        else
+            nreal = (int)filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand,
+                                           stride, p, h2, L->idx + L->len, L->r2 + L->len);
         L->len += (size_t)nreal;
     } else
 #endif
@@ -485,8 +521,6 @@ int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *n
     }
     pad(L, begin, i, h2);
     int nghost = 0;
-    float wall[3];
-    unsigned near = ms_volume_walls_near(v, p[0], p[1], p[2], wall);
     for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
         if ((f & near) != f)
             continue;
@@ -498,7 +532,7 @@ int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *n
         int got;
 #if MS_VOLUME_HAVE_AVX512
         if (run)
-            got = gather_image_avx512(v, G, q, tag, L->idx + begin, nreal);
+            got = gather_image_avx512(v, G, q, tag, L->idx + begin, nreal, pos, stride);
         else
 #endif
             got = gather_image(v, G, q, tag, L->idx + begin, nreal);

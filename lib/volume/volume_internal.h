@@ -216,7 +216,7 @@ struct ms_volume {
     double pairs;
     int coincident;      /* pairs closer than eps in the last density pass */
 
-    /* per particle, 8 floats packed for the 64-bit gathers of the
+    /* per particle, 8 floats packed for the 32-byte record loads of the
      * AVX-512 force pass (forces.c): x, y, z, prs, vx, vy, vz, inv_rho of
      * the last density pass */
     float *pk;
@@ -285,23 +285,39 @@ void ms_volume_publish(ms_volume *v);
 
 /* grid.c: sort the particles into cell order; fills cell[] and cell_start. */
 void ms_volume_grid_build(ms_volume *v);
+/* The grid's shape, copied out of the volume for the loops that store
+ * ints (an int store may alias v->gx, and the compiler then reloads). */
+typedef struct ms_grid_shape {
+    float lo[3], inv_h;
+    int gx, gy, gz;
+} ms_grid_shape;
+static inline ms_grid_shape ms_volume_grid_shape(const ms_volume *v)
+{
+    ms_grid_shape g = {{v->desc.domain_min[0], v->desc.domain_min[1], v->desc.domain_min[2]},
+                       v->inv_h, v->gx, v->gy, v->gz};
+    return g;
+}
 /* Cell of a position (padded indices; a position outside the domain, a
  * wall image, gets the nearest cell inside it). */
-static inline long ms_volume_cell_of(const ms_volume *v, float x, float y, float z)
+static inline long ms_grid_cell(const ms_grid_shape *g, float x, float y, float z)
 {
-    const float *lo = v->desc.domain_min;
     /* "a > 0 ? a : 0" also turns a NaN into 0: never cast a NaN */
-    float fx = (x - lo[0]) * v->inv_h, fy = (y - lo[1]) * v->inv_h, fz = (z - lo[2]) * v->inv_h;
+    float fx = (x - g->lo[0]) * g->inv_h, fy = (y - g->lo[1]) * g->inv_h,
+          fz = (z - g->lo[2]) * g->inv_h;
     fx = fx > 0.0f ? fx : 0.0f;
     fy = fy > 0.0f ? fy : 0.0f;
     fz = fz > 0.0f ? fz : 0.0f;
-    fx = fx < (float)(v->gx - 3) ? fx : (float)(v->gx - 3);
-    fy = fy < (float)(v->gy - 3) ? fy : (float)(v->gy - 3);
-    fz = fz < (float)(v->gz - 3) ? fz : (float)(v->gz - 3);
+    fx = fx < (float)(g->gx - 3) ? fx : (float)(g->gx - 3);
+    fy = fy < (float)(g->gy - 3) ? fy : (float)(g->gy - 3);
+    fz = fz < (float)(g->gz - 3) ? fz : (float)(g->gz - 3);
     long cx = (long)fx + 1, cy = (long)fy + 1, cz = (long)fz + 1;
-    return (cz * v->gy + cy) * v->gx + cx;
+    return (cz * g->gy + cy) * g->gx + cx;
 }
-
+static inline long ms_volume_cell_of(const ms_volume *v, float x, float y, float z)
+{
+    const ms_grid_shape g = ms_volume_grid_shape(v);
+    return ms_grid_cell(&g, x, y, z);
+}
 
 /* neighbours.c: the nine row ranges (x-1 .. x+1) of the 27 cells around
  * a cell, and how many candidates they hold; particle i's runs of real
