@@ -322,6 +322,7 @@ static inline __attribute__((always_inline)) int column_candidates(const column_
                                                                    int avx512, float *cz, float *ca,
                                                                    float *zstart, float *zlow_out)
 {
+    (void)avx512; /* without MS_VOLUME_HAVE_AVX512 only the C gather */
     const ms_extract_snap *s = cc->s;
     const int nx = cc->nx, ny = cc->ny;
     const float *lo = s->lo, *hi = s->hi;
