@@ -22,6 +22,7 @@
 #include "modesplit/modesplit.h"
 #include "support.h"
 #include "support_volume.h"
+#include "volume/extract.h"
 #include "volume/volume_internal.h"
 
 /* Kinetic plus gravitational energy (J), potential from the domain floor. */
@@ -668,6 +669,66 @@ static double roughness(const float *f, int n)
     return s;
 }
 
+/* Phase B's gather runs in C or AVX-512 (picked at run time): over frames
+ * of moving liquid in three shipped scenes (columns with wall images at
+ * the sides and corners among them) both give the same field to the bit,
+ * and ms_extract_cell the same cells. */
+START_TEST(every_instruction_set_path_extracts_the_same_field)
+{
+    if (ms_volume_pick_isa() != MS_VOLUME_ISA_AVX512) {
+        MS_SKIP("this CPU has no AVX-512: only the C gather runs");
+        return;
+    }
+    static const char *const scenes[] = {"data/scenes/fig1.json", "data/scenes/fig10.json",
+                                         "data/scenes/glass.json"};
+    for (size_t k = 0; k < sizeof scenes / sizeof *scenes; ++k) {
+        ms_scene *sc;
+        ck_assert_int_eq(ms_scene_load(scenes[k], &sc), MS_OK);
+        ms_sim *sim;
+        ck_assert_int_eq(ms_sim_create_from_scene(sc, 1, &sim), MS_OK);
+        ms_volume *v = ms_sim_volume(sim);
+        ms_extract_snap s = {0};
+        ms_extract_work w = {0};
+        float *a = NULL, *b = NULL;
+        int nx = 0, ny = 0, wet = 0;
+        for (int f = 0; f < 24; ++f) {
+            ck_assert_int_eq(ms_sim_step(sim, ms_scene_frame_dt(sc)), MS_OK);
+            if (!a) {
+                ms_sim_volume_height(sim, &nx, &ny);
+                a = malloc(sizeof(float) * (size_t)nx * ny);
+                b = malloc(sizeof(float) * (size_t)nx * ny);
+                ck_assert_ptr_nonnull(a);
+                ck_assert_ptr_nonnull(b);
+            }
+            ck_assert_int_eq(ms_volume_extract_snap(v, &s), MS_OK);
+            s.isa = MS_VOLUME_ISA_C;
+            ck_assert_int_eq(ms_extract_field(&s, &w, NULL, nx, ny, a), MS_OK);
+            s.isa = MS_VOLUME_ISA_AVX512;
+            ck_assert_int_eq(ms_extract_field(&s, &w, NULL, nx, ny, b), MS_OK);
+            ck_assert_msg(memcmp(a, b, sizeof(float) * (size_t)nx * ny) == 0,
+                          "%s frame %d: the AVX-512 gather's field differs from C's", scenes[k], f);
+            const int corners[4][2] = {{0, 0}, {nx - 1, 0}, {0, ny - 1}, {nx / 2, ny / 2}};
+            for (int c = 0; c < 4; ++c) {
+                float h;
+                const int i = corners[c][0], j = corners[c][1];
+                ck_assert_int_eq(ms_extract_cell(&s, &w, nx, ny, i, j, &h), MS_OK);
+                ck_assert_msg(memcmp(&h, &b[(size_t)j * nx + i], sizeof h) == 0,
+                              "%s frame %d: cell (%d, %d) alone differs", scenes[k], f, i, j);
+            }
+        }
+        for (int c = 0; c < nx * ny; ++c)
+            wet += b[c] > 0.0f;
+        ck_assert_msg(wet > 0, "%s: no liquid extracted", scenes[k]);
+        free(a);
+        free(b);
+        ms_extract_snap_free(&s);
+        ms_extract_work_free(&w);
+        ms_sim_destroy(sim);
+        ms_scene_destroy(sc);
+    }
+}
+END_TEST
+
 START_TEST(adaptive_smoothing_keeps_turbulent_liquid_detailed)
 {
     ms_volume_desc d = box_desc(0.4f, 0.4f, 0.4f, 0.02f);
@@ -1203,6 +1264,7 @@ static Suite *volume_suite(void)
     tcase_add_test(ex, still_liquid_extracts_a_flat_surface_at_its_level);
     tcase_add_test(ex, columns_without_liquid_extract_zero);
     tcase_add_test(ex, adaptive_smoothing_keeps_turbulent_liquid_detailed);
+    tcase_add_test(ex, every_instruction_set_path_extracts_the_same_field);
     suite_add_tcase(s, ex);
 
     TCase *hard = tcase_create("hard");

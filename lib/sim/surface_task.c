@@ -135,8 +135,17 @@ void ms_sim_average_waves(ms_sim *sim, const float *w, float *out)
         ++count_y;
         const float *restrict src = w + (size_t)j * snx;
         float *restrict dst = acc + (size_t)r * fnx;
-        for (int i = 0; i < snx; ++i)
-            dst[sim->wave_colmap[i]] += src[i];
+        /* a run of wave columns in one SPH cell sums in a register: the
+         * same additions in the same order as dst[map[i]] += src[i], without
+         * a store-to-load chain through dst (issue 12: the combine) */
+        const int *restrict map = sim->wave_colmap;
+        for (int i = 0; i < snx;) {
+            const int c = map[i];
+            float t = dst[c];
+            for (; i < snx && map[i] == c; ++i)
+                t += src[i];
+            dst[c] = t;
+        }
     }
     for (int c = 0; c < fnx; ++c)
         out[(size_t)row * fnx + c] =

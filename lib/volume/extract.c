@@ -109,11 +109,9 @@ static void mark_part(void *ctxp, int part, int b, int e)
 /* phi (eq. 16) at height z of a column whose candidates are (zc, a), with
  * a = 1 - horizontal distance^2 / R^2; m is padded to a multiple of the
  * lanes with a = 0 (weight 0). Summed in lanes: vectorisable, fixed order. */
-#if MS_VOLUME_HAVE_AVX512
-__attribute__((target_clones("avx512f", "avx2", "default")))
-#endif
-static float phi_at(const float *restrict zc, const float *restrict a, int m, float z,
-                    float inv_r2)
+static inline __attribute__((always_inline)) float phi_at(const float *restrict zc,
+                                                          const float *restrict a, int m, float z,
+                                                          float inv_r2)
 {
     enum { L = MS_VOLUME_LANES };
     float acc[L] = {0};
@@ -170,11 +168,10 @@ static void row_reaches(const column_ctx *cc, int j, int *reach)
  * a spacing above the highest centre (a still lattice's phi there is
  * ~0.6 T: the top crossing lies below). Maxima and minima in lanes: exact
  * in any order, so vectorisable. */
-#if MS_VOLUME_HAVE_AVX512
-__attribute__((target_clones("avx512f", "avx2", "default")))
-#endif
-static void column_span(const float *restrict cz, const float *restrict ca, int mc, float R,
-                        float spacing, float *zstart, float *zlow_out)
+static inline __attribute__((always_inline)) void column_span(const float *restrict cz,
+                                                              const float *restrict ca, int mc,
+                                                              float R, float spacing, float *zstart,
+                                                              float *zlow_out)
 {
     enum { L = MS_VOLUME_LANES };
     float top[L], cmax[L], low[L];
@@ -207,14 +204,125 @@ static void column_span(const float *restrict cz, const float *restrict ca, int 
     *zlow_out = zlow;
 }
 
+#if MS_VOLUME_HAVE_AVX512
+#include <immintrin.h>
+
+/* The AVX-512 gather of column_candidates: the same floats (one multiply,
+ * one add per operation as the C loop, no contraction) kept in the same
+ * order by compressing the kept lanes in a register and storing all 16
+ * (a compress straight to memory is microcoded and slow on AMD); the lanes
+ * past the count are overwritten later, and the candidate buffers have 16
+ * floats to spare (extract_rect's cand_stride). So the same candidates and
+ * bytes as the C loop. Particles [k0, k1) of the bins; px, py the column;
+ * returns the new count. */
+__attribute__((target("avx512f,popcnt"))) static int gather_avx512(const float *bx, const float *by,
+                                                                   const float *bz, int k0, int k1,
+                                                                   float px, float py, float inv_r2,
+                                                                   float *cz, float *ca, int mc)
+{
+    const __m512 vpx = _mm512_set1_ps(px), vpy = _mm512_set1_ps(py);
+    const __m512 vinv = _mm512_set1_ps(inv_r2), one = _mm512_set1_ps(1.0f);
+    const __m512 zero = _mm512_setzero_ps();
+    for (int k = k0; k < k1; k += 16) {
+        const int left = k1 - k;
+        const __mmask16 live = left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
+        const __m512 ex = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, bx + k), vpx);
+        const __m512 ey = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, by + k), vpy);
+        const __m512 r2 = _mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_mul_ps(ey, ey));
+        const __m512 a = _mm512_sub_ps(one, _mm512_mul_ps(r2, vinv));
+        const __mmask16 keep = _mm512_mask_cmp_ps_mask(live, a, zero, _CMP_GT_OQ);
+        _mm512_storeu_ps(ca + mc, _mm512_maskz_compress_ps(keep, a));
+        _mm512_storeu_ps(cz + mc,
+                         _mm512_maskz_compress_ps(keep, _mm512_maskz_loadu_ps(live, bz + k)));
+        mc += __builtin_popcount(keep);
+    }
+    return mc;
+}
+
+/* The same with wall images: na = 2 or 4 terms a particle, in the C
+ * loop's order (my outer, mx inner); ex, ey: a particle's offsets are
+ * (x - px or 2 wx - x - px, y - py or 2 wy - y - py). The terms of 16
+ * particles are interleaved by permutes into that order, then kept like
+ * gather_avx512's. */
+__attribute__((target("avx512f,popcnt"))) static int gather_images_avx512(
+    const float *bx, const float *by, const float *bz, int k0, int k1, float px, float py,
+    float wx2, float wy2, int nxm, int nym, float inv_r2, float *cz, float *ca, int mc)
+{
+    const __m512 vpx = _mm512_set1_ps(px), vpy = _mm512_set1_ps(py);
+    const __m512 vwx = _mm512_set1_ps(wx2), vwy = _mm512_set1_ps(wy2);
+    const __m512 vinv = _mm512_set1_ps(inv_r2), one = _mm512_set1_ps(1.0f);
+    const __m512 zero = _mm512_setzero_ps(), dead = _mm512_set1_ps(-1.0f);
+    /* interleave (a0 b0 a1 b1 ...): lo from lanes 0-7, hi from 8-15 */
+    const __m512i ilo = _mm512_set_epi32(23, 7, 22, 6, 21, 5, 20, 4, 19, 3, 18, 2, 17, 1, 16, 0);
+    const __m512i ihi =
+        _mm512_set_epi32(31, 15, 30, 14, 29, 13, 28, 12, 27, 11, 26, 10, 25, 9, 24, 8);
+    const __m512i plo = _mm512_set_epi64(11, 3, 10, 2, 9, 1, 8, 0);
+    const __m512i phi = _mm512_set_epi64(15, 7, 14, 6, 13, 5, 12, 4);
+    const int na = nxm * nym;
+    for (int k = k0; k < k1; k += 16) {
+        const int left = k1 - k;
+        const __mmask16 live = left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
+        const __m512 x = _mm512_maskz_loadu_ps(live, bx + k);
+        const __m512 y = _mm512_maskz_loadu_ps(live, by + k);
+        const __m512 z = _mm512_maskz_loadu_ps(live, bz + k);
+        const __m512 ex[2] = {_mm512_sub_ps(x, vpx), _mm512_sub_ps(_mm512_sub_ps(vwx, x), vpx)};
+        const __m512 ey[2] = {_mm512_sub_ps(y, vpy), _mm512_sub_ps(_mm512_sub_ps(vwy, y), vpy)};
+        __m512 t[4];
+        int n = 0;
+        for (int my = 0; my < nym; ++my)
+            for (int mx = 0; mx < nxm; ++mx) {
+                const __m512 r2 =
+                    _mm512_add_ps(_mm512_mul_ps(ex[mx], ex[mx]), _mm512_mul_ps(ey[my], ey[my]));
+                const __m512 a = _mm512_sub_ps(one, _mm512_mul_ps(r2, vinv));
+                t[n++] = _mm512_mask_blend_ps(live, dead, a); /* dead lanes: never kept */
+            }
+        __m512 oa[4], oz[4];
+        if (na == 2) {
+            oa[0] = _mm512_permutex2var_ps(t[0], ilo, t[1]);
+            oa[1] = _mm512_permutex2var_ps(t[0], ihi, t[1]);
+            oz[0] = _mm512_permutex2var_ps(z, ilo, z);
+            oz[1] = _mm512_permutex2var_ps(z, ihi, z);
+        } else {
+            /* pairs (t0 t1) and (t2 t3) per particle, then the pairs
+             * interleaved as 64-bit units */
+            const __m512d p0 = _mm512_castps_pd(_mm512_permutex2var_ps(t[0], ilo, t[1]));
+            const __m512d p1 = _mm512_castps_pd(_mm512_permutex2var_ps(t[0], ihi, t[1]));
+            const __m512d q0 = _mm512_castps_pd(_mm512_permutex2var_ps(t[2], ilo, t[3]));
+            const __m512d q1 = _mm512_castps_pd(_mm512_permutex2var_ps(t[2], ihi, t[3]));
+            oa[0] = _mm512_castpd_ps(_mm512_permutex2var_pd(p0, plo, q0));
+            oa[1] = _mm512_castpd_ps(_mm512_permutex2var_pd(p0, phi, q0));
+            oa[2] = _mm512_castpd_ps(_mm512_permutex2var_pd(p1, plo, q1));
+            oa[3] = _mm512_castpd_ps(_mm512_permutex2var_pd(p1, phi, q1));
+            const __m512d z0 = _mm512_castps_pd(_mm512_permutex2var_ps(z, ilo, z));
+            const __m512d z1 = _mm512_castps_pd(_mm512_permutex2var_ps(z, ihi, z));
+            oz[0] = _mm512_castpd_ps(_mm512_permutex2var_pd(z0, plo, z0));
+            oz[1] = _mm512_castpd_ps(_mm512_permutex2var_pd(z0, phi, z0));
+            oz[2] = _mm512_castpd_ps(_mm512_permutex2var_pd(z1, plo, z1));
+            oz[3] = _mm512_castpd_ps(_mm512_permutex2var_pd(z1, phi, z1));
+        }
+        const int nv = (left >= 16 ? 16 : left) * na; /* live terms */
+        for (int q = 0; q < na && q * 16 < nv; ++q) {
+            const __mmask16 keep = _mm512_cmp_ps_mask(oa[q], zero, _CMP_GT_OQ);
+            _mm512_storeu_ps(ca + mc, _mm512_maskz_compress_ps(keep, oa[q]));
+            _mm512_storeu_ps(cz + mc, _mm512_maskz_compress_ps(keep, oz[q]));
+            mc += __builtin_popcount(keep);
+        }
+    }
+    return mc;
+}
+#endif
+
 /* Column (i, j)'s candidates: the spheres (and their images in the nearer
  * side walls) within R horizontally, as (z, a = 1 - horizontal r^2 / R^2)
  * in cz, ca, padded with weight-0 lanes; their count (padded), where the
  * downward walk starts (*zstart) and the lowest sphere bottom (*zlow).
  * reach: row_reaches of row j. */
-static int column_candidates(const column_ctx *cc, int i, int j, const int *reach_row,
-                             float *cz, float *ca, float *zstart, float *zlow_out)
+static inline __attribute__((always_inline)) int column_candidates(const column_ctx *cc, int i,
+                                                                   int j, const int *reach_row,
+                                                                   int avx512, float *cz, float *ca,
+                                                                   float *zstart, float *zlow_out)
 {
+    (void)avx512; /* without MS_VOLUME_HAVE_AVX512 only the C gather */
     const ms_extract_snap *s = cc->s;
     const int nx = cc->nx, ny = cc->ny;
     const float *lo = s->lo, *hi = s->hi;
@@ -243,6 +351,14 @@ static int column_candidates(const column_ctx *cc, int i, int j, const int *reac
         const int i0 = i - reach < 0 ? 0 : i - reach;
         const int i1 = i + reach > nx - 1 ? nx - 1 : i + reach;
         const int k0 = cstart[jj * nx + i0], k1 = cstart[jj * nx + i1 + 1];
+#if MS_VOLUME_HAVE_AVX512
+        if (avx512) {
+            mc = images ? gather_images_avx512(bx, by, bz, k0, k1, px, py, 2.0f * wx, 2.0f * wy,
+                                               nxm, nym, inv_r2, cz, ca, mc)
+                        : gather_avx512(bx, by, bz, k0, k1, px, py, inv_r2, cz, ca, mc);
+            continue;
+        }
+#endif
         if (!images) {
             for (int k = k0; k < k1; ++k) {
                 const float ex = bx[k] - px, ey = by[k] - py;
@@ -283,8 +399,9 @@ static int column_candidates(const column_ctx *cc, int i, int j, const int *reac
  * column with candidates (cz, ca, mc): walk down from zmax in steps of
  * half a spacing until phi reaches T, and close in on the crossing by
  * regula falsi to 1/256 of a spacing. */
-static float column_height(const ms_extract_snap *s, const float *cz, const float *ca, int mc,
-                           float zmax, float zlow)
+static inline __attribute__((always_inline)) float column_height(const ms_extract_snap *s,
+                                                                 const float *cz, const float *ca,
+                                                                 int mc, float zmax, float zlow)
 {
     const float *lo = s->lo, *hi = s->hi;
     const float R = s->R, inv_r2 = 1.0f / (R * R);
@@ -385,10 +502,13 @@ static float column_height(const ms_extract_snap *s, const float *cz, const floa
     return height;
 }
 
-/* Columns [b, e) of the rectangle (index (j - j0) * rw + i - i0). */
-static void columns_part(void *ctxp, int part, int b, int e)
+/* Columns [b, e) of the rectangle (index (j - j0) * rw + i - i0), the
+ * gather in AVX-512 or in C; inlined into one function per instruction
+ * set: the same floats in the same lanes on each (no contraction under
+ * -std=c11), the same bytes. */
+static inline __attribute__((always_inline)) void columns_body(const column_ctx *cc, int part,
+                                                               int b, int e, int avx512)
 {
-    const column_ctx *cc = ctxp;
     float *cz = cc->cand + (size_t)part * cc->cand_stride, *ca = cz + cc->cand_stride / 2;
     int *reach = cc->reach + (size_t)part * cc->reach_stride, reach_j = -1;
     for (int col = b; col < e; ++col) {
@@ -398,9 +518,24 @@ static void columns_part(void *ctxp, int part, int b, int e)
             reach_j = j;
         }
         float zmax, zlow;
-        const int mc = column_candidates(cc, i, j, reach, cz, ca, &zmax, &zlow);
+        const int mc = column_candidates(cc, i, j, reach, avx512, cz, ca, &zmax, &zlow);
         cc->raw[col] = column_height(cc->s, cz, ca, mc, zmax, zlow);
     }
+}
+
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target("avx512f,popcnt"))) static void columns_avx512(void *ctxp, int part, int b,
+                                                                     int e)
+{
+    columns_body(ctxp, part, b, e, 1);
+}
+
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+static void
+columns_c(void *ctxp, int part, int b, int e)
+{
+    columns_body(ctxp, part, b, e, 0);
 }
 
 /* Phase A (extract.h): mark, then copy the marked particles (internal
@@ -417,6 +552,7 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
     memcpy(s->hi, v->desc.domain_max, sizeof s->hi);
     s->smooth_steps = v->desc.smooth_steps;
     s->smooth_energy = v->desc.smooth_energy;
+    s->isa = v->isa;
     if (v->n == 0)
         return MS_OK;
     if (!v->counts_valid) {
@@ -574,7 +710,12 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
                      .dye = dye, .cstart = cstart, .bx = bx, .by = by, .bz = bz, .cand = cand,
                      .cand_stride = cand_stride, .reach = reach, .reach_stride = reach_stride,
                      .raw = raw};
-    ms_vpool_run(pool, columns_part, &cc, (int)rcells);
+    ms_vpool_fn *columns = columns_c;
+#if MS_VOLUME_HAVE_AVX512
+    if (s->isa == MS_VOLUME_ISA_AVX512)
+        columns = columns_avx512;
+#endif
+    ms_vpool_run(pool, columns, &cc, (int)rcells);
 
     /* eq. 18: the number of smoothing passes from E_kin / total mass */
     int full;

@@ -30,6 +30,7 @@ typedef struct ms_extract_snap {
     float lo[3], hi[3];  /* m, the domain */
     int smooth_steps;    /* eq. 18 */
     float smooth_energy; /* J/kg, eq. 18 */
+    int isa;             /* MS_VOLUME_ISA_*: phase B's gather (any gives the same bytes) */
 } ms_extract_snap;
 
 /* Phase B's scratch (one per thread that runs it). */

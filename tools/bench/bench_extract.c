@@ -6,11 +6,16 @@
  * of a 1-thread call on a loaded machine; with 2 threads the workers'
  * share is not in it); and "sim", the sim's own extract_ms per frame over 30 frames
  * (phase A with its neighbour recount, the particle copy, phase B; the
- * mean, one run). Writes <csv-dir>/extract.csv.
+ * mean, one run). Each case runs twice, interleaved repeat by repeat:
+ * with the candidate gather in C (c406aeb's code path, the reference) and
+ * with the AVX-512 gather when the CPU has it (issue 12); the same bytes,
+ * compared here. "x" is the C median over the AVX-512 median. Writes
+ * <csv-dir>/extract.csv (column gather: c or avx512).
  *
  *   bench_extract [--csv-dir DIR] [--quick] [--data DIR] [--scenes fig1,fig10] */
 #include "bench_common.h"
 #include "modesplit/modesplit.h"
+#include "volume/volume_internal.h"
 
 /* s of CPU time of the calling thread: on a loaded machine the cost of a
  * 1-thread call, which wall-clock time is not */
@@ -59,16 +64,17 @@ int main(int argc, char **argv)
     char machine[300], commit[64];
     bench_machine(machine, sizeof machine);
     bench_commit(commit, sizeof commit);
-    FILE *csv = bench_csv_open(bench_csv_dir(argc, argv), "extract.csv",
-                               "scene,threads,particles,nx,ny,ms_median,ms_p10,ms_p90,cpu_ms_median,sim_extract_ms,"
-                               "machine,"
-                               "commit");
+    FILE *csv = bench_csv_open(
+        bench_csv_dir(argc, argv), "extract.csv",
+        "scene,threads,particles,nx,ny,ms_median,ms_p10,ms_p90,cpu_ms_median,sim_extract_ms,"
+        "machine,"
+        "commit,gather");
     if (!csv)
         return 1;
     printf("extract: ms per ms_volume_extract_height after 60 frames, median [p10, p90]\n");
     printf("machine: %s; commit %s\n", machine, commit);
-    printf("%-10s %3s %6s %9s %9s %9s %9s %9s %9s\n", "scene", "thr", "parts", "field", "ms",
-           "p10", "p90", "cpu_ms", "sim");
+    printf("%-10s %3s %6s %9s %7s %9s %9s %9s %9s %9s %6s\n", "scene", "thr", "parts", "field",
+           "gather", "ms", "p10", "p90", "cpu_ms", "sim", "x");
     for (size_t s = 0; s < sizeof scenes / sizeof *scenes; ++s) {
         if (!wanted(only, scenes[s]))
             continue;
@@ -110,7 +116,15 @@ int main(int argc, char **argv)
             if (!h)
                 return 1;
             enum { REPEATS = 31 };
-            double t[REPEATS], tc[REPEATS];
+            /* the gathers to compare: C (the reference) and the best */
+            const int best = ms_volume_pick_isa();
+            const int isas[2] = {MS_VOLUME_ISA_C, best};
+            const int nisa = best == MS_VOLUME_ISA_AVX512 ? 2 : 1;
+            double t[2][REPEATS], tc[2][REPEATS];
+            float *h2 = malloc((size_t)nx * ny * sizeof *h2);
+            if (!h2)
+                return 1;
+            const int own = v->isa;
             int calls = 1;
             for (;;) { /* calls per repeat: a repeat lasts about 20 ms (4 ms quick) */
                 double t0 = bench_now();
@@ -121,24 +135,41 @@ int main(int argc, char **argv)
                 calls *= 2;
             }
             const int repeats = quick ? 5 : REPEATS;
-            for (int r = 0; r < repeats; ++r) {
-                double t0 = bench_now(), c0 = thread_cpu_now();
-                for (int c = 0; c < calls; ++c)
-                    ms_volume_extract_height(v, nx, ny, h);
-                t[r] = (bench_now() - t0) * 1e3 / calls;
-                tc[r] = (thread_cpu_now() - c0) * 1e3 / calls;
+            for (int r = 0; r < repeats; ++r)
+                for (int g = 0; g < nisa; ++g) { /* interleaved: the same minute */
+                    v->isa = isas[g];
+                    double t0 = bench_now(), c0 = thread_cpu_now();
+                    for (int c = 0; c < calls; ++c)
+                        ms_volume_extract_height(v, nx, ny, g ? h2 : h);
+                    t[g][r] = (bench_now() - t0) * 1e3 / calls;
+                    tc[g][r] = (thread_cpu_now() - c0) * 1e3 / calls;
+                }
+            v->isa = own;
+            if (nisa == 2 && memcmp(h, h2, (size_t)nx * ny * sizeof *h) != 0) {
+                fprintf(stderr, "bench_extract: %s: the AVX-512 gather's field differs from C's\n",
+                        scenes[s]);
+                return 1;
             }
-            bench_stats st = bench_summarise(t, repeats);
-            bench_stats sc_ = bench_summarise(tc, repeats);
             int n = 0;
             const float *pos[3];
             ms_sim_particles(sim, &n, pos, NULL);
             char field[32];
             snprintf(field, sizeof field, "%dx%d", nx, ny);
-            printf("%-10s %3d %6d %9s %9.3f %9.3f %9.3f %9.3f %9.3f\n", scenes[s], threads, n,
-                   field, st.median, st.p10, st.p90, sc_.median, sim_ms);
-            fprintf(csv, "%s,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%s\n", scenes[s], threads, n,
-                    nx, ny, st.median, st.p10, st.p90, sc_.median, sim_ms, machine, commit);
+            double ref = 0.0;
+            for (int g = 0; g < nisa; ++g) {
+                bench_stats st = bench_summarise(t[g], repeats);
+                bench_stats sc_ = bench_summarise(tc[g], repeats);
+                const char *name = isas[g] == MS_VOLUME_ISA_AVX512 ? "avx512" : "c";
+                if (g == 0)
+                    ref = st.median;
+                printf("%-10s %3d %6d %9s %7s %9.3f %9.3f %9.3f %9.3f %9.3f %6.2f\n", scenes[s],
+                       threads, n, field, name, st.median, st.p10, st.p90, sc_.median, sim_ms,
+                       ref / st.median);
+                fprintf(csv, "%s,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%s,%s\n", scenes[s],
+                        threads, n, nx, ny, st.median, st.p10, st.p90, sc_.median, sim_ms, machine,
+                        commit, name);
+            }
+            free(h2);
             free(h);
             ms_sim_destroy(sim);
         }

@@ -115,6 +115,8 @@ def table_parts():
                    f"{num(r, 'ms_per_step_median', 2)} ms per sub-step, "
                    f"{num(r, 'Mpairs_per_s', 0)} M pairs/s |")
     for r in load("data/bench/extract.csv"):
+        if r.get("gather") == "c":  # the C gather: bench_extract's reference row
+            continue
         out.append(f"| extraction (`extract.csv`) | {r['scene']}, {r['nx']}×{r['ny']}, "
                    f"{r['threads']} thread{'s' if r['threads'] != '1' else ''} | "
                    f"{num(r, 'ms_median', 2)} ms per call |")
