@@ -393,17 +393,24 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
     }
     if (rows > 0)
         memset(c->walls, 0, 4 * (size_t)rows * (size_t)n * sizeof *c->walls);
-    const int nl = d->depth > 0 ? MS_CLAMP(d->layers, 0, 16) : 0;
-    if (nl != c->nlayers) {
+    /* the light in the water at half the floor's resolution: objects are
+     * small in the picture, and the layers' splats are most of their cost */
+    const int nl = d->depth > 0 ? MS_CLAMP(d->layers, 0, 16) : 0, ln = MS_MAX(n / 2, 8);
+    const size_t slice = (size_t)ln * (size_t)ln;
+    if (nl != c->nlayers || (nl && ln != c->layer_n)) {
         ms_free(c->layers);
-        c->layers = nl ? ms_alloc_array((size_t)nl * n * n, sizeof(float)) : NULL;
+        c->layers = nl ? ms_alloc_array((size_t)(nl + 1) * slice, sizeof(float)) : NULL;
         c->nlayers = c->layers ? nl : 0;
+        c->layer_n = ln;
         if (nl && !c->layers)
             return ms_fail(MS_ERR_OUT_OF_MEMORY,
                            "render: out of memory for %d layers of the caustics", nl);
     }
     if (nl)
-        memset(c->layers, 0, (size_t)nl * n * n * sizeof *c->layers);
+        memset(c->layers, 0, (size_t)(nl + 1) * slice * sizeof *c->layers);
+    /* a ray's light per floor texel, per layer texel */
+    const float lw = (float)ln * (float)ln / ((float)n * (float)n);
+    const float ilx = (float)ln / d->pool[2], ily = (float)ln / d->pool[3];
     float *map = c->map;
     memset(map, 0, (size_t)n * (size_t)n * sizeof *map);
     c->shaded = 0;
@@ -451,8 +458,9 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
                 for (int l = 0; l < nl && z0 > 0; ++l) {
                     const float zl = d->depth * (float)(l + 1) / (float)(nl + 1);
                     const float f = MS_MAX(z0 - zl, 0.0f) / z0; /* of the way down */
-                    splat(c->layers + (size_t)l * n * n, n, (x + f * (hx[k] - x) - px0) * itx - 0.5f,
-                          (y + f * (hy[k] - y) - py0) * ity - 0.5f, w[k]);
+                    splat(c->layers + (size_t)(l + 1) * slice, ln,
+                          (x + f * (hx[k] - x) - px0) * ilx - 0.5f,
+                          (y + f * (hy[k] - y) - py0) * ily - 0.5f, w[k] * lw);
                 }
             }
             float u = (hx[k] - px0) * itx - 0.5f, v = (hy[k] - py0) * ity - 0.5f;
@@ -483,12 +491,26 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
     const float k = d->intensity;
     for (size_t i = 0; i < (size_t)n * (size_t)n; ++i)
         map[i] = MS_MAX(1.0f + k * (map[i] - 1.0f), 0.0f);
-    for (int l = 0; l < nl; ++l) {
-        float *m = c->layers + (size_t)l * n * n;
-        blur_rows(m, c->tmp, n);
-        blur_cols(c->tmp, m, n);
-        for (size_t i = 0; i < (size_t)n * (size_t)n; ++i)
+    for (int l = 1; l <= nl; ++l) {
+        float *m = c->layers + (size_t)l * slice;
+        blur_rows(m, c->tmp, ln);
+        blur_cols(c->tmp, m, ln);
+        for (size_t i = 0; i < slice; ++i)
             m[i] = MS_MAX(1.0f + k * (m[i] - 1.0f), 0.0f);
+    }
+    if (nl) {
+        /* slice 0: the floor before any shadow, sampled bilinearly at the
+         * layer texels' centres (for ln = n / 2 the mean of 2 x 2) */
+        for (int j = 0; j < ln; ++j)
+            for (int i = 0; i < ln; ++i) {
+                int i0, j0;
+                float fi, fj;
+                sample_axis(((float)i + 0.5f) / (float)ln, 0, 1.0f / (float)n, n, &i0, &fi);
+                sample_axis(((float)j + 0.5f) / (float)ln, 0, 1.0f / (float)n, n, &j0, &fj);
+                const float *a = map + (size_t)j0 * n + i0, *b = a + n;
+                c->layers[(size_t)j * ln + i] = (1 - fj) * ((1 - fi) * a[0] + fi * a[1]) +
+                                                fj * ((1 - fi) * b[0] + fi * b[1]);
+            }
     }
     if (d->occluders && d->occluder_verts >= 3 && (st = shade_floor(c, d)) != MS_OK)
         return st;

@@ -183,8 +183,8 @@ ms_status ms_gl_glass_create(ms_renderer *r);
  * their texture after a trace; bound with their uniforms for the liquid. */
 ms_status ms_gl_walls_upload(ms_renderer *r);
 /* gl_walls.c: the light in the water after a trace with layers, as one
- * texture of n x n slices stacked along t: the floor before the objects'
- * shadow (ms_caustics.open, or map), then ms_caustics.layers bottom up;
+ * texture of layer_n^2 slices stacked along t (ms_caustics.layers: the
+ * floor before the objects' shadow, then the planes above it);
  * the objects under the water take their light from it (gl_pool.c).
  * ms_gl_open_texture gives it and its slices (the floor map alone, 1, when
  * no layers were traced). */

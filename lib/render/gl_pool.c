@@ -406,7 +406,8 @@ static void pool_program(const ms_renderer *r, GLuint vbo, float sun_under, floa
     glUniform1f(glGetUniformLocation(p, "u_floor_z"), d->pool_min[2]);
     glUniform2f(glGetUniformLocation(p, "u_caustic_light"), CAUSTIC_SKY, CAUSTIC_SUN);
     glUniform1f(glGetUniformLocation(p, "u_slices"), (float)slices);
-    glUniform1f(glGetUniformLocation(p, "u_slice_texels"), (float)MS_MAX(r->caustics.n, 1));
+    glUniform1f(glGetUniformLocation(p, "u_slice_texels"),
+                (float)MS_MAX(slices > 1 ? r->caustics.layer_n : r->caustics.n, 1));
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_NORMAL_ARRAY);

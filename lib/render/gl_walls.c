@@ -54,7 +54,7 @@ ms_status ms_gl_open_upload(ms_renderer *r)
     const ms_caustics *c = &r->caustics;
     if (c->nlayers <= 0)
         return MS_OK;
-    const int n = c->n, slices = c->nlayers + 1;
+    const int n = c->layer_n, slices = c->nlayers + 1;
     if (!gl->open_tex) {
         glGenTextures(1, &gl->open_tex);
         glBindTexture(GL_TEXTURE_2D, gl->open_tex);
@@ -72,8 +72,7 @@ ms_status ms_gl_open_upload(ms_renderer *r)
     }
     /* the floor as the light reaches it before the objects' shadow, then
      * the layers above it */
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, n, GL_RED, GL_FLOAT, c->shaded ? c->open : c->map);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, n, n, c->nlayers * n, GL_RED, GL_FLOAT, c->layers);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n, slices * n, GL_RED, GL_FLOAT, c->layers);
     glBindTexture(GL_TEXTURE_2D, 0);
     return MS_OK;
 }

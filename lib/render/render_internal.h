@@ -134,10 +134,12 @@ typedef struct ms_caustics {
      * unused without occluders */
     float *lit, *open;
     int shaded; /* 1: the last trace had occluders (lit, open hold it) */
-    /* the light crossing the horizontal planes at heights depth k / (nlayers
-     * + 1) over the floor, k = 1 .. nlayers (n * n each, bottom first), as
-     * map but not shaded: the light volume the objects are lit from */
-    int nlayers;
+    /* the light in the water the objects are lit from: nlayers + 1 slices
+     * of layer_n^2 texels (n / 2, at least 8) over the pool, bottom first:
+     * slice 0 the floor's before any shadow (map resampled), slice k the
+     * light crossing the plane depth k / (nlayers + 1) over the floor, in
+     * map's unit. NULL when no layers were asked for */
+    int nlayers, layer_n;
     float *layers;
 } ms_caustics;
 
