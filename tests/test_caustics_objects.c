@@ -23,8 +23,13 @@
 
 static ms_caustics_desc desc(float lx, float depth, int layers)
 {
-    ms_caustics_desc d = {.pool = {0, 0, 1, 1}, .floor_z = 0, .ior = 1.333f, .intensity = 1,
-                          .resolution = RES, .depth = depth, .layers = layers};
+    ms_caustics_desc d = {.pool = {0, 0, 1, 1},
+                          .floor_z = 0,
+                          .ior = 1.333f,
+                          .intensity = 1,
+                          .resolution = RES,
+                          .depth = depth,
+                          .layers = layers};
     const double l = sqrt((double)lx * lx + 1);
     d.light_dir[0] = (float)(lx / l);
     d.light_dir[2] = (float)(-1 / l);
@@ -96,8 +101,7 @@ START_TEST(the_light_at_a_height_in_the_water_is_a_floor_at_that_height)
         double peak = 0;
         for (int i = 0; i < slice; ++i)
             peak = fmax(peak, m[i]);
-        ck_assert_msg(peak > prev, "the light at slice %d peaks at %g, above it %g", l, peak,
-                      prev);
+        ck_assert_msg(peak > prev, "the light at slice %d peaks at %g, above it %g", l, peak, prev);
         prev = peak;
     }
     ms_caustics_free(&c);
@@ -168,10 +172,10 @@ END_TEST
 
 /* ---- drawn -------------------------------------------------------------- */
 
-#define REQUIRE_GL()                                                                   \
-    do {                                                                               \
-        if (!MS_HAVE_GL)                                                               \
-            MS_SKIP("built without OSMesa and EGL: nothing can draw");                 \
+#define REQUIRE_GL()                                                   \
+    do {                                                               \
+        if (!MS_HAVE_GL)                                               \
+            MS_SKIP("built without OSMesa and EGL: nothing can draw"); \
     } while (0)
 
 #define W 160 /* image side */
@@ -267,8 +271,10 @@ START_TEST(a_submerged_box_takes_the_caustics_where_the_refracted_sun_meets_it)
     /* paraxially the lens gathers its light 1 / (1 - 0.354 / 0.8)^2 = 3.2
      * times over at A; the box's top takes 0.22 + 0.48 cos t focus of the
      * sky-lit stone: ~2.4 times the light, tone-mapped */
-    ck_assert_msg(top_lens > 1.5 * top_flat, "the box's top under the lens's light: %.4f, "
-                  "under flat water %.4f", top_lens, top_flat);
+    ck_assert_msg(top_lens > 1.5 * top_flat,
+                  "the box's top under the lens's light: %.4f, "
+                  "under flat water %.4f",
+                  top_lens, top_flat);
     /* the top away from the lens's light is as under flat water */
     pixel(0.65, 0.65, 0.3, &col, &row);
     ck_assert_msg(fabs(linear(b, col, row) - linear(a, col, row)) < 0.02 * linear(a, col, row),
@@ -280,8 +286,8 @@ START_TEST(a_submerged_box_takes_the_caustics_where_the_refracted_sun_meets_it)
     pixel(0.85, 0.5, 0, &sc_col, &sc_row);
     pixel(0.85, 0.15, 0, &lit_col, &lit_row);
     const double shade = linear(a, sc_col, sc_row), sun = linear(a, lit_col, lit_row);
-    ck_assert_msg(shade < 0.7 * sun, "the floor in the box's shadow %.4f, in the sun %.4f",
-                  shade, sun);
+    ck_assert_msg(shade < 0.7 * sun, "the floor in the box's shadow %.4f, in the sun %.4f", shade,
+                  sun);
     free(a);
     free(b);
     free(flat);

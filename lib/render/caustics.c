@@ -329,11 +329,11 @@ static ms_status shade_floor(ms_caustics *c, const ms_caustics_desc *d)
         for (int k = 0; k < 3; ++k) {
             const float *p = d->occluders + (size_t)(v + k) * (size_t)d->occluder_stride;
             const float down = MS_MAX(MS_MIN(p[2], top) - d->floor_z, 0.0f); /* m to the floor */
-            P[k][0] = (p[0] + down * sx - d->pool[0]) * ux - 0.5f; /* texel coordinates */
+            P[k][0] = (p[0] + down * sx - d->pool[0]) * ux - 0.5f;           /* texel coordinates */
             P[k][1] = (p[1] + down * sy - d->pool[1]) * uy - 0.5f;
         }
-        const float area = (P[1][0] - P[0][0]) * (P[2][1] - P[0][1]) -
-                           (P[2][0] - P[0][0]) * (P[1][1] - P[0][1]);
+        const float area =
+            (P[1][0] - P[0][0]) * (P[2][1] - P[0][1]) - (P[2][0] - P[0][0]) * (P[1][1] - P[0][1]);
         if (!(fabsf(area) > 1e-12f))
             continue; /* edge-on: the neighbours cover it */
         const int i0 = MS_MAX((int)floorf(MS_MIN(P[0][0], MS_MIN(P[1][0], P[2][0]))), 0);
@@ -346,8 +346,8 @@ static ms_status shade_floor(ms_caustics *c, const ms_caustics_desc *d)
                 int inside = 1;
                 for (int e = 0; e < 3 && inside; ++e) {
                     const float *a = P[e], *b = P[(e + 1) % 3];
-                    const float w = (b[0] - a[0]) * ((float)j - a[1]) -
-                                    (b[1] - a[1]) * ((float)i - a[0]);
+                    const float w =
+                        (b[0] - a[0]) * ((float)j - a[1]) - (b[1] - a[1]) * ((float)i - a[0]);
                     inside = area > 0 ? w >= 0 : w <= 0;
                 }
                 if (inside)
@@ -508,8 +508,8 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
                 sample_axis(((float)i + 0.5f) / (float)ln, 0, 1.0f / (float)n, n, &i0, &fi);
                 sample_axis(((float)j + 0.5f) / (float)ln, 0, 1.0f / (float)n, n, &j0, &fj);
                 const float *a = map + (size_t)j0 * n + i0, *b = a + n;
-                c->layers[(size_t)j * ln + i] = (1 - fj) * ((1 - fi) * a[0] + fi * a[1]) +
-                                                fj * ((1 - fi) * b[0] + fi * b[1]);
+                c->layers[(size_t)j * ln + i] =
+                    (1 - fj) * ((1 - fi) * a[0] + fi * a[1]) + fj * ((1 - fi) * b[0] + fi * b[1]);
             }
     }
     if (d->occluders && d->occluder_verts >= 3 && (st = shade_floor(c, d)) != MS_OK)

@@ -83,9 +83,8 @@ static const char pool_fs[] =
     "    f1 = mix(f1, 1.0, step(u_slices - 0.5, s0 + 1.0));\n"
     "    float focus = mix(f0, f1, clamp(slice - s0, 0.0, 1.0));\n"
     "    float caustic = max(dot(n, -u_refracted), 0.0) * focus;\n"
-    "    vec3 light = u_light_color * mix(u_ambient + (1.0 - u_ambient) * sun,\n"
-    "                                     u_ambient * (u_caustic_light.x + u_caustic_light.y * caustic),\n"
-    "                                     lit);\n"
+    "    float under = u_ambient * (u_caustic_light.x + u_caustic_light.y * caustic);\n"
+    "    vec3 light = u_light_color * mix(u_ambient + (1.0 - u_ambient) * sun, under, lit);\n"
     "    gl_FragColor = vec4(albedo * light, 1.0 - lit);\n"
     "}\n";
 

@@ -17,8 +17,7 @@
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n" SHADER_TONEMAP_SOURCE SHADER_NORMAL_SOURCE
-    "uniform vec3 ms_eye;\n"
+    "#version 120\n" SHADER_TONEMAP_SOURCE SHADER_NORMAL_SOURCE "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
     "uniform samplerCube ms_env;\n"
@@ -76,7 +75,8 @@ static const char fragment_source[] =
     "    float strip = mix(2.0 + step(0.0, t.y), step(0.0, t.x), xwall);\n"
     "    float along = mix((q.x - ms_pool.x) / ms_pool.z, (q.y - ms_pool.y) / ms_pool.w, xwall);\n"
     "    float half_texel = 0.5 / max(ms_caustics_wall_rows, 1.0);\n"
-    "    float height = clamp((q.z - ms_floor_z) / max(ms_pool_depth, 1e-6), half_texel, 1.0 - half_texel);\n"
+    "    float height = clamp((q.z - ms_floor_z) / max(ms_pool_depth, 1e-6), half_texel,\n"
+    "                         1.0 - half_texel);\n"
     "    float on_wall = texture2D(ms_caustics_walls, vec2(along, (strip + height) / 4.0)).r;\n"
     "    focus = mix(focus, on_wall, off_floor);\n"
     "    len = mix(len, to_wall, off_floor);\n"

@@ -208,7 +208,8 @@ static int bench_lp_threads(const char *csv_dir, const char *commit, const char 
         return 1;
     exe[len] = 0;
     printf("\nLP_NUM_THREADS: fig1 at 950^2, ms per draw (median; p10-p90), a process per "
-           "setting, %d rounds of %d frames taking turns\n", LP_ROUNDS, LP_FRAMES);
+           "setting, %d rounds of %d frames taking turns\n",
+           LP_ROUNDS, LP_FRAMES);
     for (int round = 0; round < LP_ROUNDS; ++round)
         for (int k = 0; k < 3; ++k) {
             char cmd[4200];
@@ -221,8 +222,7 @@ static int bench_lp_threads(const char *csv_dir, const char *commit, const char 
             while (got[k] < LP_MAX && fscanf(p, "%lf %lf", &a, &b) == 2)
                 draw[k][got[k]] = a, gl[k][got[k]++] = b;
             if (pclose(p) != 0) {
-                fprintf(stderr, "bench_render: LP_NUM_THREADS=%d: the child failed\n",
-                        threads[k]);
+                fprintf(stderr, "bench_render: LP_NUM_THREADS=%d: the child failed\n", threads[k]);
                 return 1;
             }
         }
@@ -244,8 +244,8 @@ static int bench_lp_threads(const char *csv_dir, const char *commit, const char 
     }
     for (int k = 0; k < 3; ++k) {
         printf("LP_NUM_THREADS=%d%s: %8.1f (%5.1f-%5.1f) ms, GL %8.1f ms, %.2f x the default\n",
-               threads[k], k == def ? " (default here)" : "", s[k].median, s[k].p10, s[k].p90,
-               g[k], s[k].median / s[def].median);
+               threads[k], k == def ? " (default here)" : "", s[k].median, s[k].p10, s[k].p90, g[k],
+               s[k].median / s[def].median);
         fprintf(csv, "%s,%s,%d,fig1,950,950,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f\n", commit, machine,
                 threads[k], got[k], s[k].median, s[k].p10, s[k].p90, g[k],
                 s[k].median / s[def].median, loadavg());
@@ -259,15 +259,16 @@ int main(int argc, char **argv)
     for (int i = 1; i + 1 < argc; ++i)
         if (!strcmp(argv[i], "--lp-child"))
             return lp_child(atoi(argv[i + 1]) < 1 ? 1 : atoi(argv[i + 1]));
-    if (bench_help(argc, argv,
-                   "usage: bench_render [--csv-dir DIR] [--quick]\n"
-        "ms per frame of ms_renderer_draw_field (OSMesa) for 256^2, 512^2 and 950^2\n"
-        "images of 200^2 and 400^2 fields, water shader with caustics (median,\n"
-        "10th-90th percentile, stages); writes DIR/render.csv (default DIR: bench).\n"
-        "Then the shipped scenes fig1, fig9a, fig9b, fig10 at 950^2 (sim step, draw and its\n"
-        "split, PNG encoding): DIR/render_scenes.csv. --scenes: only those.\n"
-        "Then fig1 at 950^2 with LP_NUM_THREADS 1, 2 and 4 (a process each, taking turns):\n"
-        "DIR/render_lp_threads.csv. --lp-threads: only that.\n"))
+    if (bench_help(
+            argc, argv,
+            "usage: bench_render [--csv-dir DIR] [--quick]\n"
+            "ms per frame of ms_renderer_draw_field (OSMesa) for 256^2, 512^2 and 950^2\n"
+            "images of 200^2 and 400^2 fields, water shader with caustics (median,\n"
+            "10th-90th percentile, stages); writes DIR/render.csv (default DIR: bench).\n"
+            "Then the shipped scenes fig1, fig9a, fig9b, fig10 at 950^2 (sim step, draw and its\n"
+            "split, PNG encoding): DIR/render_scenes.csv. --scenes: only those.\n"
+            "Then fig1 at 950^2 with LP_NUM_THREADS 1, 2 and 4 (a process each, taking turns):\n"
+            "DIR/render_lp_threads.csv. --lp-threads: only that.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     const int reps = quick ? 3 : 8, warm = 2;
