@@ -188,7 +188,10 @@ typedef struct ms_shader_uniforms {
  *     float ms_time         s since the start
  *     vec4  ms_viewport     width, height, 1/width, 1/height (pixels)
  *     samplerCube ms_env    environment cubemap, texture unit 0 (with
- *                           MS_SHADER_NEEDS_REFLECTION or _REFRACTION)
+ *                           MS_SHADER_NEEDS_REFLECTION or _REFRACTION);
+ *                           alpha 1, but 0 on an object under the water
+ *                           already lit through ms_caustics (with
+ *                           _CAUSTICS): the floor's light map is not for it
  *     float ms_floor_z      height of the pool floor (m)
  *     vec4  ms_pool         x0, y0, size x, size y of the pool (m)
  *     sampler2D ms_caustics caustics light map over ms_pool, texture unit 1,

@@ -40,6 +40,9 @@ void ms_caustics_free(ms_caustics *c)
     ms_free(c->row);
     ms_free(c->col0);
     ms_free(c->colf);
+    ms_free(c->lit);
+    ms_free(c->open);
+    ms_free(c->layers);
     memset(c, 0, sizeof *c);
 }
 
@@ -60,6 +63,11 @@ static ms_status reserve(ms_caustics *c, int n, size_t cells, size_t row)
     if (c->n != n) {
         ms_free(c->map);
         ms_free(c->tmp);
+        ms_free(c->lit);
+        ms_free(c->open);
+        ms_free(c->layers);
+        c->lit = c->open = c->layers = NULL;
+        c->nlayers = 0;
         c->map = ms_alloc_array((size_t)n * (size_t)n, sizeof(float));
         c->tmp = ms_alloc_array((size_t)n * (size_t)n, sizeof(float));
         c->n = c->map && c->tmp ? n : 0;
@@ -276,6 +284,85 @@ static void blur_walls(ms_caustics *c)
         }
 }
 
+/* Light w splat bilinearly at texel coordinates (u, v) of the n x n map m;
+ * nothing outside it. */
+static void splat(float *m, int n, float u, float v, float w)
+{
+    if (!(u >= -0.5f && u <= (float)n - 0.5f && v >= -0.5f && v <= (float)n - 0.5f))
+        return;
+    int iu = (int)floorf(u), iv = (int)floorf(v);
+    const float au = u - (float)iu, av = v - (float)iv;
+    const int iu1 = MS_MIN(iu + 1, n - 1), iv1 = MS_MIN(iv + 1, n - 1);
+    iu = MS_MAX(iu, 0);
+    iv = MS_MAX(iv, 0);
+    m[(size_t)iv * n + iu] += w * (1 - au) * (1 - av);
+    m[(size_t)iv * n + iu1] += w * au * (1 - av);
+    m[(size_t)iv1 * n + iu] += w * (1 - au) * av;
+    m[(size_t)iv1 * n + iu1] += w * au * av;
+}
+
+/* The floor's texels in the shadow of the occluders (issue 14; section
+ * 3.6 has no objects under the water): each triangle projected onto the
+ * floor along flat water's refracted sun t (Snell's law), its parts above
+ * the still water from the water plane (there the light is not yet
+ * bent), and the texels whose centres it covers set to 0 in c->lit, then
+ * [1 2 1]/4 each way for a soft edge as the light map's. */
+static ms_status shade_floor(ms_caustics *c, const ms_caustics_desc *d)
+{
+    const int n = c->n;
+    if (!c->lit)
+        c->lit = ms_alloc_array((size_t)n * (size_t)n, sizeof(float));
+    if (!c->open)
+        c->open = ms_alloc_array((size_t)n * (size_t)n, sizeof(float));
+    if (!c->lit || !c->open)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the objects' shadow");
+    for (size_t i = 0; i < (size_t)n * (size_t)n; ++i)
+        c->lit[i] = 1.0f;
+    const float *L = d->light_dir, eta = 1.0f / d->ior;
+    const float cosi = MS_MAX(-L[2], 0.0f);
+    const float tz = -sqrtf(MS_MAX(1.0f - eta * eta * (1.0f - cosi * cosi), 1e-6f));
+    const float sx = eta * L[0] / -tz, sy = eta * L[1] / -tz; /* m across per m down */
+    const float top = d->floor_z + d->depth;
+    const float ux = (float)n / d->pool[2], uy = (float)n / d->pool[3];
+    for (int v = 0; v + 2 < d->occluder_verts; v += 3) {
+        float P[3][2];
+        for (int k = 0; k < 3; ++k) {
+            const float *p = d->occluders + (size_t)(v + k) * (size_t)d->occluder_stride;
+            const float down = MS_MAX(MS_MIN(p[2], top) - d->floor_z, 0.0f); /* m to the floor */
+            P[k][0] = (p[0] + down * sx - d->pool[0]) * ux - 0.5f;           /* texel coordinates */
+            P[k][1] = (p[1] + down * sy - d->pool[1]) * uy - 0.5f;
+        }
+        const float area =
+            (P[1][0] - P[0][0]) * (P[2][1] - P[0][1]) - (P[2][0] - P[0][0]) * (P[1][1] - P[0][1]);
+        if (!(fabsf(area) > 1e-12f))
+            continue; /* edge-on: the neighbours cover it */
+        const int i0 = MS_MAX((int)floorf(MS_MIN(P[0][0], MS_MIN(P[1][0], P[2][0]))), 0);
+        const int i1 = MS_MIN((int)ceilf(MS_MAX(P[0][0], MS_MAX(P[1][0], P[2][0]))), n - 1);
+        const int j0 = MS_MAX((int)floorf(MS_MIN(P[0][1], MS_MIN(P[1][1], P[2][1]))), 0);
+        const int j1 = MS_MIN((int)ceilf(MS_MAX(P[0][1], MS_MAX(P[1][1], P[2][1]))), n - 1);
+        for (int j = j0; j <= j1; ++j)
+            for (int i = i0; i <= i1; ++i) {
+                /* inside: the three edge functions share the area's sign */
+                int inside = 1;
+                for (int e = 0; e < 3 && inside; ++e) {
+                    const float *a = P[e], *b = P[(e + 1) % 3];
+                    const float w =
+                        (b[0] - a[0]) * ((float)j - a[1]) - (b[1] - a[1]) * ((float)i - a[0]);
+                    inside = area > 0 ? w >= 0 : w <= 0;
+                }
+                if (inside)
+                    c->lit[(size_t)j * n + i] = 0.0f;
+            }
+    }
+    blur_rows(c->lit, c->tmp, n);
+    blur_cols(c->tmp, c->lit, n);
+    memcpy(c->open, c->map, (size_t)n * (size_t)n * sizeof *c->map);
+    for (size_t i = 0; i < (size_t)n * (size_t)n; ++i)
+        c->map[i] *= c->lit[i];
+    c->shaded = 1;
+    return MS_OK;
+}
+
 ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const float *h,
                             const ms_grid *g)
 {
@@ -306,8 +393,27 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
     }
     if (rows > 0)
         memset(c->walls, 0, 4 * (size_t)rows * (size_t)n * sizeof *c->walls);
+    /* the light in the water at half the floor's resolution: objects are
+     * small in the picture, and the layers' splats are most of their cost */
+    const int nl = d->depth > 0 ? MS_CLAMP(d->layers, 0, 16) : 0, ln = MS_MAX(n / 2, 8);
+    const size_t slice = (size_t)ln * (size_t)ln;
+    if (nl != c->nlayers || (nl && ln != c->layer_n)) {
+        ms_free(c->layers);
+        c->layers = nl ? ms_alloc_array((size_t)(nl + 1) * slice, sizeof(float)) : NULL;
+        c->nlayers = c->layers ? nl : 0;
+        c->layer_n = ln;
+        if (nl && !c->layers)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "render: out of memory for %d layers of the caustics", nl);
+    }
+    if (nl)
+        memset(c->layers, 0, (size_t)(nl + 1) * slice * sizeof *c->layers);
+    /* a ray's light per floor texel, per layer texel */
+    const float lw = (float)ln * (float)ln / ((float)n * (float)n);
+    const float ilx = (float)ln / d->pool[2], ily = (float)ln / d->pool[3];
     float *map = c->map;
     memset(map, 0, (size_t)n * (size_t)n * sizeof *map);
+    c->shaded = 0;
     if (!(d->light_dir[2] < -1e-3f)) {
         /* the sun at or below the horizon: no direct light on the floor */
         return MS_OK;
@@ -343,6 +449,20 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
                   w_ray, hx, hy, w);
         /* splat each ray's light bilinearly where it meets the floor */
         for (int k = 0; k < rx; ++k) {
+            if (nl && w[k] > 0) {
+                /* and where it crosses each layer on its way: the ray runs
+                 * from its start (x, y, z0) to (hx, hy, 0) straight */
+                const int i = c->col0[k];
+                const float z0 = rh[i] + c->colf[k] * (rh[i + 1] - rh[i]);
+                const float x = px0 + ((float)k + 0.5f) * stepx;
+                for (int l = 0; l < nl && z0 > 0; ++l) {
+                    const float zl = d->depth * (float)(l + 1) / (float)(nl + 1);
+                    const float f = MS_MAX(z0 - zl, 0.0f) / z0; /* of the way down */
+                    splat(c->layers + (size_t)(l + 1) * slice, ln,
+                          (x + f * (hx[k] - x) - px0) * ilx - 0.5f,
+                          (y + f * (hy[k] - y) - py0) * ily - 0.5f, w[k] * lw);
+                }
+            }
             float u = (hx[k] - px0) * itx - 0.5f, v = (hy[k] - py0) * ity - 0.5f;
             if (!(w[k] > 0 && u >= -0.5f && u <= (float)n - 0.5f && v >= -0.5f &&
                   v <= (float)n - 0.5f)) {
@@ -371,6 +491,29 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
     const float k = d->intensity;
     for (size_t i = 0; i < (size_t)n * (size_t)n; ++i)
         map[i] = MS_MAX(1.0f + k * (map[i] - 1.0f), 0.0f);
+    for (int l = 1; l <= nl; ++l) {
+        float *m = c->layers + (size_t)l * slice;
+        blur_rows(m, c->tmp, ln);
+        blur_cols(c->tmp, m, ln);
+        for (size_t i = 0; i < slice; ++i)
+            m[i] = MS_MAX(1.0f + k * (m[i] - 1.0f), 0.0f);
+    }
+    if (nl) {
+        /* slice 0: the floor before any shadow, sampled bilinearly at the
+         * layer texels' centres (for ln = n / 2 the mean of 2 x 2) */
+        for (int j = 0; j < ln; ++j)
+            for (int i = 0; i < ln; ++i) {
+                int i0, j0;
+                float fi, fj;
+                sample_axis(((float)i + 0.5f) / (float)ln, 0, 1.0f / (float)n, n, &i0, &fi);
+                sample_axis(((float)j + 0.5f) / (float)ln, 0, 1.0f / (float)n, n, &j0, &fj);
+                const float *a = map + (size_t)j0 * n + i0, *b = a + n;
+                c->layers[(size_t)j * ln + i] =
+                    (1 - fj) * ((1 - fi) * a[0] + fi * a[1]) + fj * ((1 - fi) * b[0] + fi * b[1]);
+            }
+    }
+    if (d->occluders && d->occluder_verts >= 3 && (st = shade_floor(c, d)) != MS_OK)
+        return st;
     if (rows > 0) {
         blur_walls(c);
         /* intensity scales each wall's contrast about its mean */

@@ -105,6 +105,7 @@ void ms_gl_delete_objects(ms_gl *gl)
     glDeleteTextures(5, tex);
     glDeleteTextures(1, &gl->env_live);
     glDeleteTextures(1, &gl->walls_tex);
+    glDeleteTextures(1, &gl->open_tex);
     glDeleteFramebuffers(1, &gl->env_fbo);
     glDeleteRenderbuffers(1, &gl->env_depth);
     GLuint buf[4] = {gl->pool_vbo, gl->discs_vbo, gl->mesh_vbo, gl->mesh_ibo};

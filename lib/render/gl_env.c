@@ -386,8 +386,10 @@ ms_status ms_gl_env_objects(ms_renderer *r)
         return MS_OK;
     }
     const unsigned long long hash = objects_hash(r);
-    if (gl->env_live_fresh && gl->env_tex == gl->env_live && hash == gl->env_objects_hash)
-        return MS_OK; /* nothing moved */
+    /* nothing moved, and no caustics play on the objects under the water */
+    if (gl->env_live_fresh && gl->env_tex == gl->env_live && hash == gl->env_objects_hash &&
+        !r->trace_caustics)
+        return MS_OK;
     if (!gl->env_live) {
         gl->env_live = env_texture(n);
         glGenFramebuffers(1, &gl->env_fbo);
@@ -408,7 +410,8 @@ ms_status ms_gl_env_objects(ms_renderer *r)
     float eyes[2][3], proj[16], view[16];
     env_projection(r, eyes, proj);
     /* as the pool: with a caustics shader, lit by the sky alone under the
-     * water (the shader brings the sun in through the light map) */
+     * water, and the sun through the caustics light map where it reaches
+     * them (gl_pool.c: alpha 0 marks them lit, for the liquid's shader) */
     const float sun_under = (r->shader.vt->passes & MS_SHADER_NEEDS_CAUSTICS) ? 0.0f : 1.0f;
     const int pass[2] = {(r->passes & MS_SHADER_NEEDS_REFLECTION) != 0,
                          (r->passes & MS_SHADER_NEEDS_REFRACTION) != 0};

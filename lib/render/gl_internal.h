@@ -143,6 +143,8 @@ struct ms_gl {
     ms_gl_program glass;            /* gl_glass.c */
     GLuint walls_tex;               /* ms_caustics_walls (gl_walls.c) */
     int walls_n, walls_rows;        /* its size as uploaded: n x 4 rows */
+    GLuint open_tex;                /* the light in the water, in slices (gl_walls.c) */
+    int open_n, open_slices;        /* its size as uploaded: n x slices n */
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */
@@ -180,6 +182,14 @@ ms_status ms_gl_glass_create(ms_renderer *r);
 /* gl_walls.c: the caustics on the pool's walls (r->caustics.walls) into
  * their texture after a trace; bound with their uniforms for the liquid. */
 ms_status ms_gl_walls_upload(ms_renderer *r);
+/* gl_walls.c: the light in the water after a trace with layers, as one
+ * texture of layer_n^2 slices stacked along t (ms_caustics.layers: the
+ * floor before the objects' shadow, then the planes above it);
+ * the objects under the water take their light from it (gl_pool.c).
+ * ms_gl_open_texture gives it and its slices (the floor map alone, 1, when
+ * no layers were traced). */
+ms_status ms_gl_open_upload(ms_renderer *r);
+GLuint ms_gl_open_texture(const ms_renderer *r, int *slices);
 void ms_gl_walls_bind(const ms_renderer *r, const ms_shader_uniforms *u);
 void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep);
 /* gl_renderer.c: after r->desc's camera changed: ms_env drawn again. */

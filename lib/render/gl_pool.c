@@ -8,6 +8,12 @@
 #include "render/gl_internal.h"
 
 #define AMBIENT 0.4f      /* the sky's share of the light on the pool */
+/* An object under the water with caustics is lit as the water shader
+ * (plugins/shaders/water.c) lights the sky-lit floor it sees through the
+ * water, AMBIENT (SKY + SUN focus), with its default strength, so a stone
+ * and a tile of one colour at one depth look alike */
+#define CAUSTIC_SKY 0.55f
+#define CAUSTIC_SUN 1.2f
 #define TILE_TEXELS 64
 
 static const char pool_vs[] =
@@ -28,6 +34,7 @@ static const char pool_vs[] =
 static const char pool_fs[] =
     "#version 120\n"
     "uniform sampler2D u_tiles;\n"
+    "uniform sampler2D u_caustics;\n"
     "uniform vec3 u_light_to;\n"
     "uniform vec3 u_light_color;\n"
     "uniform float u_water_level;\n"
@@ -35,6 +42,13 @@ static const char pool_fs[] =
     "uniform float u_ambient;\n"
     "uniform float u_keep;\n"
     "uniform float u_textured;\n"
+    "uniform float u_caustic_lit;\n"
+    "uniform vec3 u_refracted;\n"
+    "uniform vec4 u_pool;\n"
+    "uniform float u_floor_z;\n"
+    "uniform vec2 u_caustic_light;\n"
+    "uniform float u_slices;\n"
+    "uniform float u_slice_texels;\n"
     "varying vec3 v_pos;\n"
     "varying vec3 v_normal;\n"
     "varying vec2 v_uv;\n"
@@ -44,11 +58,34 @@ static const char pool_fs[] =
     "    if (u_keep * (v_pos.z - u_water_level) < 0.0)\n"
     "        discard;\n"
     "    vec3 albedo = v_color * mix(1.0, texture2D(u_tiles, v_uv).r, u_textured);\n"
-    "    float sun = max(dot(normalize(v_normal), u_light_to), 0.0);\n"
+    "    vec3 n = normalize(v_normal);\n"
+    "    float sun = max(dot(n, u_light_to), 0.0);\n"
     "    if (v_pos.z < u_water_level)\n"
     "        sun *= u_sun_under;\n"
-    "    vec3 light = u_light_color * (u_ambient + (1.0 - u_ambient) * sun);\n"
-    "    gl_FragColor = vec4(albedo * light, 1.0);\n"
+    "    /* an object under the water with caustics: the sun that reaches it\n"
+    "     * refracted (u_refracted, flat water's, downwards, for its angle on\n"
+    "     * the face), focused as the light in the water is at its point\n"
+    "     * (the tracer's slices at heights depth k / u_slices, the floor's\n"
+    "     * first, interpolated in height); alpha 0 tells the liquid's\n"
+    "     * shader it is lit already */\n"
+    "    float lit = u_caustic_lit * step(v_pos.z, u_water_level);\n"
+    "    float depth = max(u_water_level - u_floor_z, 1e-6);\n"
+    "    float slice = clamp((v_pos.z - u_floor_z) / depth, 0.0, 1.0) * u_slices;\n"
+    "    float s0 = min(floor(slice), u_slices - 1.0);\n"
+    "    float s1 = min(s0 + 1.0, u_slices - 1.0);\n"
+    "    vec2 uv = clamp((v_pos.xy - u_pool.xy) / u_pool.zw, 0.0, 1.0);\n"
+    "    float half_texel = 0.5 / u_slice_texels;\n"
+    "    float t = clamp(uv.y, half_texel, 1.0 - half_texel);\n"
+    "    float f0 = texture2D(u_caustics, vec2(uv.x, (s0 + t) / u_slices)).r;\n"
+    "    float f1 = texture2D(u_caustics, vec2(uv.x, (s1 + t) / u_slices)).r;\n"
+    "    /* past the top slice towards the surface, where no rays have\n"
+    "     * converged yet: 1 */\n"
+    "    f1 = mix(f1, 1.0, step(u_slices - 0.5, s0 + 1.0));\n"
+    "    float focus = mix(f0, f1, clamp(slice - s0, 0.0, 1.0));\n"
+    "    float caustic = max(dot(n, -u_refracted), 0.0) * focus;\n"
+    "    float under = u_ambient * (u_caustic_light.x + u_caustic_light.y * caustic);\n"
+    "    vec3 light = u_light_color * mix(u_ambient + (1.0 - u_ambient) * sun, under, lit);\n"
+    "    gl_FragColor = vec4(albedo * light, 1.0 - lit);\n"
     "}\n";
 
 typedef struct builder {
@@ -323,25 +360,53 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
     return MS_OK;
 }
 
+/* Flat water's refracted sun (Snell's law, vector form, as caustics.c),
+ * travelling down. */
+static void refracted_sun(const ms_renderer *r, float t[3])
+{
+    const float *L = r->light_to, eta = 1.0f / r->desc.ior; /* L: towards the sun */
+    const float cosi = MS_MAX(L[2], 0.0f);
+    const float k = MS_MAX(1.0f - eta * eta * (1.0f - cosi * cosi), 1e-6f);
+    t[0] = -eta * L[0], t[1] = -eta * L[1], t[2] = -sqrtf(k);
+}
+
 /* The pool program bound with its uniforms and the vertex arrays of vbo
- * (MS_POOL_STRIDE layout) enabled. */
+ * (MS_POOL_STRIDE layout) enabled; caustic_lit 1: what lies under the
+ * water takes the sun through the caustics light map (the objects in the
+ * environment's refraction half, gl_env.c). */
 static void pool_program(const ms_renderer *r, GLuint vbo, float sun_under, float keep,
-                         float textured)
+                         float textured, float caustic_lit)
 {
     const ms_gl *gl = r->gl;
+    const ms_renderer_desc *d = &r->desc;
     const GLsizei stride = MS_POOL_STRIDE * sizeof(float);
     GLuint p = gl->pool.prog;
     glUseProgram(p);
+    int slices;
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, ms_gl_open_texture(r, &slices)); /* not in their own shadow */
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, gl->tiles_tex);
     glUniform1i(glGetUniformLocation(p, "u_tiles"), 0);
+    glUniform1i(glGetUniformLocation(p, "u_caustics"), 1);
     glUniform3fv(glGetUniformLocation(p, "u_light_to"), 1, r->light_to);
-    glUniform3fv(glGetUniformLocation(p, "u_light_color"), 1, r->desc.light_color);
-    glUniform1f(glGetUniformLocation(p, "u_water_level"), r->desc.water_level);
+    glUniform3fv(glGetUniformLocation(p, "u_light_color"), 1, d->light_color);
+    glUniform1f(glGetUniformLocation(p, "u_water_level"), d->water_level);
     glUniform1f(glGetUniformLocation(p, "u_sun_under"), sun_under);
     glUniform1f(glGetUniformLocation(p, "u_ambient"), AMBIENT);
     glUniform1f(glGetUniformLocation(p, "u_keep"), keep);
     glUniform1f(glGetUniformLocation(p, "u_textured"), textured);
+    float t[3];
+    refracted_sun(r, t);
+    glUniform1f(glGetUniformLocation(p, "u_caustic_lit"), caustic_lit);
+    glUniform3fv(glGetUniformLocation(p, "u_refracted"), 1, t);
+    glUniform4f(glGetUniformLocation(p, "u_pool"), d->pool_min[0], d->pool_min[1],
+                d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
+    glUniform1f(glGetUniformLocation(p, "u_floor_z"), d->pool_min[2]);
+    glUniform2f(glGetUniformLocation(p, "u_caustic_light"), CAUSTIC_SKY, CAUSTIC_SUN);
+    glUniform1f(glGetUniformLocation(p, "u_slices"), (float)slices);
+    glUniform1f(glGetUniformLocation(p, "u_slice_texels"),
+                (float)MS_MAX(slices > 1 ? r->caustics.layer_n : r->caustics.n, 1));
     glBindBuffer(GL_ARRAY_BUFFER, vbo);
     glEnableClientState(GL_VERTEX_ARRAY);
     glEnableClientState(GL_NORMAL_ARRAY);
@@ -365,13 +430,13 @@ static void pool_program_end(void)
 void ms_gl_pool_draw(const ms_renderer *r, float sun_under, float keep)
 {
     const ms_gl *gl = r->gl;
-    pool_program(r, gl->pool_vbo, sun_under, keep, 1.0f);
+    pool_program(r, gl->pool_vbo, sun_under, keep, 1.0f, 0.0f);
     glDrawArrays(GL_TRIANGLES, 0, keep < 0 ? gl->pool_apron_count : gl->pool_count);
     pool_program_end();
     if (keep == 0 && gl->discs_count > 0) {
         /* the floating discs: untextured, lifted off the water by the
          * depth offset */
-        pool_program(r, gl->discs_vbo, sun_under, keep, 0.0f);
+        pool_program(r, gl->discs_vbo, sun_under, keep, 0.0f, 0.0f);
         glEnable(GL_POLYGON_OFFSET_FILL);
         glPolygonOffset(-1.0f, -4.0f);
         glDisable(GL_CULL_FACE);
@@ -387,7 +452,9 @@ void ms_gl_objects_draw(const ms_renderer *r, const float eye[3], float sun_unde
     const ms_gl *gl = r->gl;
     if (gl->discs_count <= gl->objects_first)
         return;
-    pool_program(r, gl->discs_vbo, sun_under, keep, 0.0f);
+    /* under the water with the caustics traced: lit through the light map */
+    const float caustic_lit = keep < 0 && r->trace_caustics ? 1.0f : 0.0f;
+    pool_program(r, gl->discs_vbo, sun_under, keep, 0.0f, caustic_lit);
     glDisable(GL_CULL_FACE);
     glDrawArrays(GL_TRIANGLES, gl->objects_first, gl->glass_first - gl->objects_first);
     pool_program_end();

@@ -16,14 +16,15 @@ static const char sky_vs[] =
     "    gl_Position = vec4(gl_Vertex.xy, 1.0, 1.0); /* on the far plane */\n"
     "}\n";
 
-static const char sky_fs[] =
-    "#version 120\n"
-    "uniform samplerCube u_sky;\n"
-    "varying vec3 v_dir;\n"
-    "void main()\n"
-    "{\n"
-    "    gl_FragColor = vec4(textureCube(u_sky, v_dir).rgb, 1.0);\n"
-    "}\n";
+static const char sky_fs[] = "#version 120\n"
+                             "uniform samplerCube u_sky;\n"
+                             "uniform float u_alpha;\n"
+                             "varying vec3 v_dir;\n"
+                             "void main()\n"
+                             "{\n"
+                             "    vec4 c = textureCube(u_sky, v_dir);\n"
+                             "    gl_FragColor = vec4(c.rgb, mix(1.0, c.a, u_alpha));\n"
+                             "}\n";
 
 ms_status ms_gl_sky_create(ms_renderer *r, const ms_cubemap *sky)
 {
@@ -59,6 +60,10 @@ void ms_gl_sky_draw(const ms_renderer *r, const float forward[3], const float ri
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_CUBE_MAP, gl->sky_tex);
     glUniform1i(glGetUniformLocation(gl->sky.prog, "u_sky"), 0);
+    /* the sky is opaque; ms_env's own alpha (the objects' mark, gl_pool.c)
+     * goes through when its mipmaps are remade from it (gl_env.c) */
+    glUniform1f(glGetUniformLocation(gl->sky.prog, "u_alpha"),
+                gl->sky_tex == gl->env_live ? 1.0f : 0.0f);
     glUniform3fv(glGetUniformLocation(gl->sky.prog, "u_forward"), 1, forward);
     glUniform3fv(glGetUniformLocation(gl->sky.prog, "u_right"), 1, right);
     glUniform3fv(glGetUniformLocation(gl->sky.prog, "u_up"), 1, up);

@@ -99,6 +99,15 @@ typedef struct ms_caustics_desc {
     float intensity;      /* 1 = physical contrast, 0 = flat */
     int resolution;       /* texels per side */
     float depth;          /* m: still water over the floor; > 0 also traces the walls */
+    /* issue 14: what blocks the light on its way to the floor, as
+     * triangles (3 vertices each, x y z first of `occluder_stride` floats
+     * a vertex, world); NULL: nothing */
+    const float *occluders;
+    int occluder_verts;
+    int occluder_stride;
+    /* issue 14: the light also at `layers` heights between the floor and
+     * the still water (needs depth > 0), for the objects under the water */
+    int layers;
 } ms_caustics_desc;
 
 /* Scratch and result of the tracer (reused frame to frame). */
@@ -119,6 +128,19 @@ typedef struct ms_caustics {
      * floor texel gets under flat water, per area. 0 rows: not traced. */
     int wall_rows;
     float *walls, *walls_tmp;
+    /* n * n: 1 where the occluders leave the floor in the sun, 0 in their
+     * shadow (issue 14); map is multiplied by it, open is map before that:
+     * the light the occluders themselves take (gl_pool.c). NULL and
+     * unused without occluders */
+    float *lit, *open;
+    int shaded; /* 1: the last trace had occluders (lit, open hold it) */
+    /* the light in the water the objects are lit from: nlayers + 1 slices
+     * of layer_n^2 texels (n / 2, at least 8) over the pool, bottom first:
+     * slice 0 the floor's before any shadow (map resampled), slice k the
+     * light crossing the plane depth k / (nlayers + 1) over the floor, in
+     * map's unit. NULL when no layers were asked for */
+    int nlayers, layer_n;
+    float *layers;
 } ms_caustics;
 
 /* Rows of each wall strip for d (0 when d->depth is 0): as tall as
@@ -131,7 +153,8 @@ int ms_caustics_wall_rows(const ms_caustics_desc *d);
  * Schlick's transmission over the flat water's; the rays' light is splat bilinearly onto the floor, blurred by
  * [1 2 1]/4, and scaled so flat water gives 1 everywhere. Rays that leave
  * the floor's square meet a wall (d->depth > 0): they are splat there, in
- * c->walls, the same way. */
+ * c->walls, the same way. Occluders (d->occluders) shade the floor where
+ * flat water's refracted sun meets them first (c->lit). */
 ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const float *h,
                             const ms_grid *g);
 void ms_caustics_free(ms_caustics *c);

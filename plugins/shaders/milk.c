@@ -4,20 +4,21 @@
  * refraction, no caustics.
  *
  * Parameters: {"color": [0.93, 0.92, 0.88], "softness": 0.3, "sheen": 0.35,
- *              "relief": 3}
+ *              "relief": 8}
  *   color     linear RGB, 0..1;
  *   softness  how far light wraps past the terminator, 0 (hard) .. 1;
  *   sheen     strength of the environment's reflection at grazing angles;
  *   relief    how much the slopes shade the diffuse light, 0 .. 20 (1 =
- *             physical; the default 3 lets millimetre ripples show on an
- *             opaque liquid, as in the paper's Fig. 9b).
+ *             physical; the default 8 lets millimetre ripples show on an
+ *             opaque liquid, as in the paper's Fig. 9b: at 3 fig9b's frame
+ *             60 was a flat white, its liquid's luma varying by 1.9 levels
+ *             (sd), now 4.6).
  */
 #include "../common/shader_params.h"
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n" SHADER_TONEMAP_SOURCE SHADER_NORMAL_SOURCE
-    "uniform vec3 ms_eye;\n"
+    "#version 120\n" SHADER_TONEMAP_SOURCE SHADER_NORMAL_SOURCE "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
     "uniform samplerCube ms_env;\n"
@@ -36,9 +37,10 @@ static const char fragment_source[] =
     "    vec3 nd = normalize(vec3(n.xy * milk_relief, n.z));\n"
     "    float wrap = (dot(nd, ms_light_dir) + milk_softness) / (1.0 + milk_softness);\n"
     "    /* milk's albedo under the sun (wrapped Lambert) and the sky, kept\n"
-    "     * near the tone map's knee so the slopes of the ripples show */\n"
-    "    vec3 diffuse = milk_color * ms_light_color * 0.75 * clamp(wrap, 0.0, 1.0);\n"
-    "    vec3 ambient = milk_color * 0.25;\n"
+    "     * near the tone map's knee (0.6) so the slopes of the ripples show:\n"
+    "     * its shoulder flattened them at 0.75 + 0.25 */\n"
+    "    vec3 diffuse = milk_color * ms_light_color * 0.62 * clamp(wrap, 0.0, 1.0);\n"
+    "    vec3 ambient = milk_color * 0.22;\n"
     "    float cosi = clamp(-dot(v, n), 0.0, 1.0);\n"
     "    /* Schlick with milk's index (about 1.35), broadened by milk_sheen */\n"
     "    float fresnel = 0.022 + 0.978 * pow(1.0 - cosi, 5.0);\n"
@@ -54,7 +56,7 @@ static const shader_param milk_params[] = {
     {"color", 3, {0.93f, 0.92f, 0.88f}, 0.0, 1.0, ""},
     {"softness", 1, {0.3f}, 0.0, 1.0, ""},
     {"sheen", 1, {0.35f}, 0.0, 1.0, ""},
-    {"relief", 1, {3.0f}, 0.0, 20.0, ""},
+    {"relief", 1, {8.0f}, 0.0, 20.0, ""},
     {NULL, 0, {0}, 0, 0, NULL},
 };
 

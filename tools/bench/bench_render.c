@@ -9,6 +9,8 @@
  * machine's load average is printed with each row, since other work on the
  * cores slows it. Writes render.csv. */
 #include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -150,15 +152,123 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
     return 0;
 }
 
+/* ---- LP_NUM_THREADS (issue 14) -------------------------------------------
+ *
+ * llvmpipe reads LP_NUM_THREADS once, when it makes its first context, so
+ * each setting runs in a child process of its own (this program again,
+ * --lp-child, through popen): fig1 at 950^2, the simulation stepped and
+ * the frame drawn, each draw's ms (and the GL part) printed a line each.
+ * The settings take turns, LP_ROUNDS rounds of LP_FRAMES frames each, so
+ * the machine's load moves them alike; medians and 10th-90th percentiles
+ * over all rounds go to render_lp_threads.csv. */
+#define LP_ROUNDS 4
+#define LP_FRAMES 12
+#define LP_MAX (LP_ROUNDS * LP_FRAMES)
+
+static int lp_child(int frames)
+{
+    ms_scene *sc = NULL;
+    ms_sim *sim = NULL;
+    ms_renderer *r = NULL;
+    if (ms_scene_load("data/scenes/fig1.json", &sc) != MS_OK ||
+        ms_sim_create_from_scene(sc, 0, &sim) != MS_OK ||
+        ms_renderer_create_from_scene(sc, &r) != MS_OK) {
+        fprintf(stderr, "bench_render: fig1: %s (run from the source tree)\n", ms_last_error());
+        return 1;
+    }
+    const float dt = ms_scene_frame_dt(sc);
+    ms_render_stats st = ms_render_stats_init();
+    for (int f = 0; f < 3 + frames; ++f) { /* 3 warm-up frames */
+        if (ms_sim_step(sim, dt) != MS_OK)
+            return 1;
+        double t0 = bench_now();
+        if (ms_renderer_draw(r, sim) != MS_OK) {
+            fprintf(stderr, "bench_render: fig1: %s\n", ms_last_error());
+            return 1;
+        }
+        double t1 = bench_now();
+        ms_renderer_get_stats(r, &st);
+        if (f >= 3)
+            printf("%.3f %.3f\n", 1e3 * (t1 - t0), st.draw_ms);
+    }
+    ms_renderer_destroy(r);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    return 0;
+}
+
+static int bench_lp_threads(const char *csv_dir, const char *commit, const char *machine)
+{
+    static const int threads[3] = {1, 2, 4};
+    double draw[3][LP_MAX], gl[3][LP_MAX];
+    int got[3] = {0, 0, 0};
+    char exe[4096];
+    const ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (len <= 0)
+        return 1;
+    exe[len] = 0;
+    printf("\nLP_NUM_THREADS: fig1 at 950^2, ms per draw (median; p10-p90), a process per "
+           "setting, %d rounds of %d frames taking turns\n",
+           LP_ROUNDS, LP_FRAMES);
+    for (int round = 0; round < LP_ROUNDS; ++round)
+        for (int k = 0; k < 3; ++k) {
+            char cmd[4200];
+            snprintf(cmd, sizeof cmd, "LP_NUM_THREADS=%d '%s' --lp-child %d", threads[k], exe,
+                     LP_FRAMES);
+            FILE *p = popen(cmd, "r");
+            if (!p)
+                return 1;
+            double a, b;
+            while (got[k] < LP_MAX && fscanf(p, "%lf %lf", &a, &b) == 2)
+                draw[k][got[k]] = a, gl[k][got[k]++] = b;
+            if (pclose(p) != 0) {
+                fprintf(stderr, "bench_render: LP_NUM_THREADS=%d: the child failed\n", threads[k]);
+                return 1;
+            }
+        }
+    FILE *csv = bench_csv_open(csv_dir, "render_lp_threads.csv",
+                               "commit,machine,lp_num_threads,scene,width,height,frames,"
+                               "draw_ms_median,draw_ms_p10,draw_ms_p90,gl_ms_median,"
+                               "over_default,loadavg");
+    if (!csv)
+        return 1;
+    const long cores = sysconf(_SC_NPROCESSORS_ONLN);
+    bench_stats s[3];
+    double g[3];
+    int def = 1; /* llvmpipe's default: one thread per core */
+    for (int k = 0; k < 3; ++k) {
+        s[k] = bench_summarise(draw[k], got[k]);
+        g[k] = bench_summarise(gl[k], got[k]).median;
+        if (threads[k] == cores)
+            def = k;
+    }
+    for (int k = 0; k < 3; ++k) {
+        printf("LP_NUM_THREADS=%d%s: %8.1f (%5.1f-%5.1f) ms, GL %8.1f ms, %.2f x the default\n",
+               threads[k], k == def ? " (default here)" : "", s[k].median, s[k].p10, s[k].p90, g[k],
+               s[k].median / s[def].median);
+        fprintf(csv, "%s,%s,%d,fig1,950,950,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f\n", commit, machine,
+                threads[k], got[k], s[k].median, s[k].p10, s[k].p90, g[k],
+                s[k].median / s[def].median, loadavg());
+    }
+    fclose(csv);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
-    if (bench_help(argc, argv,
-                   "usage: bench_render [--csv-dir DIR] [--quick]\n"
-        "ms per frame of ms_renderer_draw_field (OSMesa) for 256^2, 512^2 and 950^2\n"
-        "images of 200^2 and 400^2 fields, water shader with caustics (median,\n"
-        "10th-90th percentile, stages); writes DIR/render.csv (default DIR: bench).\n"
-        "Then the shipped scenes fig1, fig9a, fig9b, fig10 at 950^2 (sim step, draw and its\n"
-        "split, PNG encoding): DIR/render_scenes.csv. --scenes: only those.\n"))
+    for (int i = 1; i + 1 < argc; ++i)
+        if (!strcmp(argv[i], "--lp-child"))
+            return lp_child(atoi(argv[i + 1]) < 1 ? 1 : atoi(argv[i + 1]));
+    if (bench_help(
+            argc, argv,
+            "usage: bench_render [--csv-dir DIR] [--quick]\n"
+            "ms per frame of ms_renderer_draw_field (OSMesa) for 256^2, 512^2 and 950^2\n"
+            "images of 200^2 and 400^2 fields, water shader with caustics (median,\n"
+            "10th-90th percentile, stages); writes DIR/render.csv (default DIR: bench).\n"
+            "Then the shipped scenes fig1, fig9a, fig9b, fig10 at 950^2 (sim step, draw and its\n"
+            "split, PNG encoding): DIR/render_scenes.csv. --scenes: only those.\n"
+            "Then fig1 at 950^2 with LP_NUM_THREADS 1, 2 and 4 (a process each, taking turns):\n"
+            "DIR/render_lp_threads.csv. --lp-threads: only that.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     const int reps = quick ? 3 : 8, warm = 2;
@@ -182,6 +292,11 @@ int main(int argc, char **argv)
     int scenes_only = 0;
     for (int i = 1; i < argc; ++i)
         scenes_only |= !strcmp(argv[i], "--scenes");
+    int lp_only = 0;
+    for (int i = 1; i < argc; ++i)
+        lp_only |= !strcmp(argv[i], "--lp-threads");
+    if (lp_only)
+        return bench_lp_threads(bench_csv_dir(argc, argv), commit, machine);
     if (scenes_only)
         return bench_scenes(quick ? 8 : 30, bench_csv_dir(argc, argv), commit, machine, lp);
     FILE *csv = bench_csv_open(bench_csv_dir(argc, argv), "render.csv",
@@ -250,5 +365,7 @@ int main(int argc, char **argv)
         free(h);
     }
     fclose(csv);
-    return bench_scenes(quick ? 8 : 30, bench_csv_dir(argc, argv), commit, machine, lp);
+    if (bench_scenes(quick ? 8 : 30, bench_csv_dir(argc, argv), commit, machine, lp))
+        return 1;
+    return lp ? 0 : bench_lp_threads(bench_csv_dir(argc, argv), commit, machine);
 }
