@@ -87,8 +87,8 @@ static float smoothstepf(float a, float b, float x)
  * sinks, clouds on a plane above (value-noise fbm, lit on the sun's side),
  * the sun's glow and disc. Below: a lawn with patches and a dark tree line
  * along the horizon, so reflections and the frame's background carry an
- * environment, not one colour. */
-static void sky_color(const float d[3], const float sun[3], float rgb[3])
+ * environment, not one colour. texel: the angle (radians) one texel spans. */
+static void sky_color(const float d[3], const float sun[3], float texel, float rgb[3])
 {
     static const float zenith[3] = {0.08f, 0.22f, 0.62f}, horizon[3] = {0.52f, 0.68f, 0.88f};
     static const float dusk[3] = {0.95f, 0.55f, 0.30f};
@@ -97,8 +97,13 @@ static void sky_color(const float d[3], const float sun[3], float rgb[3])
     const float z = d[2];
     const float low = 1.0f - smoothstepf(0.05f, 0.45f, sun[2]); /* 1: the sun near the horizon */
     const float az = atan2f(d[1], d[0]);
-    /* the tree line: its top wanders between 1 and 4 degrees */
-    const float tree_top = 0.018f + 0.05f * fbm(3.0f * cosf(az) + 7.0f, 3.0f * sinf(az) + 3.0f);
+    /* the tree line: its top wanders between 1 and 4 degrees, with crowns
+     * (value noise of about a degree, taken around the circle so that the
+     * line has no seam at az = +-pi) */
+    const float ca = cosf(az), sa = sinf(az);
+    const float tree_top = 0.016f + 0.04f * fbm(3.0f * ca + 7.0f, 3.0f * sa + 3.0f) +
+                           0.012f * value_noise(45.0f * ca + 1.3f, 45.0f * sa + 2.9f) +
+                           0.005f * value_noise(140.0f * ca + 4.1f, 140.0f * sa + 0.7f);
     if (z >= 0) {
         float k = powf(1.0f - z, 2.5f);
         float cs = d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2];
@@ -117,9 +122,14 @@ static void sky_color(const float d[3], const float sun[3], float rgb[3])
                 rgb[c] += (cloud - rgb[c]) * 0.85f * dens;
             }
         }
-        if (z < tree_top) {
-            for (int c = 0; c < 3; ++c)
-                rgb[c] = trees[c] * (0.8f + 0.4f * value_noise(40.0f * az, 40.0f * z));
+        /* the trees cover the part of the texel below their top: a hard
+         * edge steps from texel to texel (blocks in the reflection) */
+        float cover = smoothstepf(tree_top + texel, tree_top - texel, z);
+        if (cover > 0) {
+            for (int c = 0; c < 3; ++c) {
+                float leaf = trees[c] * (0.8f + 0.4f * value_noise(60.0f * ca + 40.0f * sa, 40.0f * z));
+                rgb[c] += (leaf - rgb[c]) * cover;
+            }
         }
     } else {
         /* the lawn seen on a plane below: patches, fading into haze far off */
@@ -165,7 +175,7 @@ ms_status ms_sky_builtin(int size, const float light_dir[3], ms_cubemap *out)
                 float l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
                 for (int k = 0; k < 3; ++k)
                     d[k] /= l;
-                sky_color(d, sun, rgb);
+                sky_color(d, sun, 2.0f / (float)size, rgb);
                 p[0] = srgb_byte(rgb[0]);
                 p[1] = srgb_byte(rgb[1]);
                 p[2] = srgb_byte(rgb[2]);
