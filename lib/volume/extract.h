@@ -61,11 +61,7 @@ ms_vpool *ms_volume_extract_pool(ms_volume *v);
  * thread. With the engine's tasks (ms_volume_set_tasks) each loop also
  * enqueues one engine task that claims chunks the same way. */
 ms_status ms_volume_share_loops(ms_volume *v);
-/* eight chunks a loop for two threads: the loops' chunks differ in cost
- * (the floor's wall images, the thin top layer), and with four the helper
- * idled ~0.4 ms at the end of each sub-step's force loop on fig1_x10
- * (issue 12, round five); eight halve that, sixteen gain nothing more */
-#define MS_VPOOL_SHARED_PARTS 8
+#define MS_VPOOL_SHARED_PARTS 4
 #define MS_VPOOL_SHARED_MIN 1024 /* shorter loops run on the calling thread */
 void ms_vpool_help_open(ms_vpool *p);
 void ms_vpool_help(ms_vpool *p);
