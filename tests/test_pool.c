@@ -93,6 +93,109 @@ START_TEST(a_lent_helper_runs_chunks_and_the_values_are_one_threads)
 }
 END_TEST
 
+/* Round five: chunks are claimed with an atomic add, a helper spins a
+ * little between loops and then sleeps. Many loops of odd sizes with a
+ * lent helper: every chunk of every loop runs exactly once, on its own
+ * range, and the loop's values are one thread's. */
+typedef struct tally_ctx {
+    int n;
+    atomic_int chunks[MS_VPOOL_SHARED_PARTS];
+    atomic_long items; /* items touched, all chunks */
+    atomic_int bad;    /* chunks called with other bounds than their own */
+    float out[N];
+} tally_ctx;
+
+static void tally_body(void *ctxp, int part, int b, int e)
+{
+    tally_ctx *c = ctxp;
+    const long n = c->n;
+    /* the bounds of chunk `part`: contiguous, in order, covering [0, n)
+     * (counted, not asserted: this may be the helper's thread) */
+    if (b != (int)(n * part / MS_VPOOL_SHARED_PARTS) ||
+        e != (int)(n * (part + 1) / MS_VPOOL_SHARED_PARTS))
+        atomic_fetch_add(&c->bad, 1);
+    for (int i = b; i < e; ++i)
+        c->out[i] = (float)i * 0.25f + (float)c->n;
+    atomic_fetch_add(&c->chunks[part], 1);
+    atomic_fetch_add(&c->items, e - b);
+}
+
+/* A shared pool of MS_VPOOL_SHARED_PARTS chunks with a helper thread lent
+ * to it; return_helper closes, joins and destroys. */
+static ms_vpool *lend_helper(pthread_t *t)
+{
+    ms_vpool *p = NULL;
+    ck_assert_int_eq(ms_vpool_create_shared(MS_VPOOL_SHARED_PARTS, &p), MS_OK);
+    ms_vpool_help_open(p);
+    ck_assert_int_eq(pthread_create(t, NULL, helper, p), 0);
+    return p;
+}
+
+static void return_helper(ms_vpool *p, pthread_t t)
+{
+    ms_vpool_help_close(p);
+    ck_assert_int_eq(pthread_join(t, NULL), 0);
+    ms_vpool_destroy(p);
+}
+
+START_TEST(every_chunk_of_every_loop_runs_once_with_a_lent_helper)
+{
+    pthread_t t;
+    ms_vpool *p = lend_helper(&t);
+    enum { LOOPS = 3000 };
+    static tally_ctx c;
+    long expect = 0;
+    for (int k = 0; k < LOOPS; ++k) {
+        const int n = MS_VPOOL_SHARED_MIN + (k * 37) % (N - MS_VPOOL_SHARED_MIN + 1);
+        c.n = n;
+        ms_vpool_run(p, tally_body, &c, n);
+        expect += n;
+        ck_assert_int_eq(atomic_load(&c.items), expect); /* the loop is over when run returns */
+        for (int i = 0; i < n; i += 97)
+            ck_assert_float_eq(c.out[i], (float)i * 0.25f + (float)n);
+    }
+    return_helper(p, t);
+    for (int q = 0; q < MS_VPOOL_SHARED_PARTS; ++q)
+        ck_assert_int_eq(atomic_load(&c.chunks[q]), LOOPS);
+    ck_assert_int_eq(atomic_load(&c.bad), 0);
+}
+END_TEST
+
+/* No busy-wait: a helper lent while no loop comes spins at most ~0.1 ms,
+ * then sleeps; over half a second of nothing (and again after a burst of
+ * loops) it uses a small fraction of a core. */
+static double thread_cpu_s(pthread_t t)
+{
+    clockid_t id;
+    struct timespec ts;
+    ck_assert_int_eq(pthread_getcpuclockid(t, &id), 0);
+    ck_assert_int_eq(clock_gettime(id, &ts), 0);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+START_TEST(an_idle_lent_helper_sleeps_instead_of_spinning)
+{
+    pthread_t t;
+    ms_vpool *p = lend_helper(&t);
+    static tally_ctx c;
+    for (int round = 0; round < 2; ++round) {
+        if (round == 1) /* a burst of loops, then nothing again */
+            for (int k = 0; k < 200; ++k) {
+                c.n = N;
+                ms_vpool_run(p, tally_body, &c, N);
+            }
+        nanosleep(&(struct timespec){0, 50000000}, NULL); /* let it settle: 50 ms */
+        const double c0 = thread_cpu_s(t);
+        nanosleep(&(struct timespec){0, 500000000}, NULL); /* 0.5 s of no loops */
+        const double used = thread_cpu_s(t) - c0;
+        /* asleep: next to nothing; spinning would be ~0.5 s */
+        ck_assert_msg(used < 0.05, "round %d: the idle helper used %.3f s of CPU in 0.5 s",
+                      round, used);
+    }
+    return_helper(p, t);
+}
+END_TEST
+
 /* ---- the engine's task interface (issue 15) ---------------------------- */
 
 /* A test task system: each enqueued task on a thread of its own (or, with
@@ -361,6 +464,8 @@ static Suite *pool_suite(void)
     TCase *tc = tcase_create("pool");
     tcase_set_timeout(tc, 180); /* TSan: the sim and grid cases run ~20 s each */
     tcase_add_test(tc, a_lent_helper_runs_chunks_and_the_values_are_one_threads);
+    tcase_add_test(tc, every_chunk_of_every_loop_runs_once_with_a_lent_helper);
+    tcase_add_test(tc, an_idle_lent_helper_sleeps_instead_of_spinning);
     tcase_add_test(tc, a_shared_pool_runs_its_loops_through_the_engines_tasks);
     tcase_add_test(tc, a_sims_volume_loops_run_through_the_engines_tasks);
     tcase_add_test(tc, the_pooled_grid_sort_gives_the_bytes_of_one_thread);
