@@ -143,6 +143,7 @@ struct ms_gl {
     ms_gl_program glass;            /* gl_glass.c */
     GLuint walls_tex;               /* ms_caustics_walls (gl_walls.c) */
     int walls_n, walls_rows;        /* its size as uploaded: n x 4 rows */
+    GLuint side_vbo;                /* the liquid's side in the glass (gl_glass.c) */
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */
@@ -182,6 +183,9 @@ ms_status ms_gl_glass_create(ms_renderer *r);
 ms_status ms_gl_walls_upload(ms_renderer *r);
 void ms_gl_walls_bind(const ms_renderer *r, const ms_shader_uniforms *u);
 void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep);
+/* gl_glass.c: the side of the liquid in the glass (r->cavity), drawn with
+ * the liquid's program and its vertex arrays enabled (draw_liquid). */
+void ms_gl_liquid_side_draw(ms_renderer *r, const ms_shader_uniforms *u);
 /* gl_renderer.c: after r->desc's camera changed: ms_env drawn again. */
 ms_status ms_gl_camera_moved(ms_renderer *r);
 
