@@ -42,6 +42,7 @@
  * side, which hides it (it showed as vertical streaks outside the glass). */
 #define SINK 10.0f        /* m */
 #define SNAP_INSIDE 0.05f /* of the vertex spacing */
+#define MAX_TILT_COS 0.9f /* the axis within 26 degrees of vertical */
 
 /* The container's object, or NULL. */
 static const ms_render_object *container(const ms_renderer *r)
@@ -147,18 +148,20 @@ static float table_at(const float *t, float a)
  * radius from the axis and the angle. */
 static void polar(const ms_render_cavity *c, float x, float y, float *rho, float *a)
 {
-    float p[3] = {x, y, 0}, q[3];
-    /* the world height of the probe plane on the axis */
-    p[2] = c->pos[2] + c->rot[8] * c->z_probe;
+    const float p[3] = {x, y, c->plane_z};
+    float q[3];
     ms_rigid_to_local(c->rot, c->pos, p, q);
     *rho = sqrtf(q[0] * q[0] + q[1] * q[1]);
     *a = atan2f(q[1], q[0]);
 }
 
-/* The world point at local radius rr along local angle a, probe height. */
+/* The world point at local radius rr along local angle a, on the plane
+ * z = plane_z (world). */
 static void at_radius(const ms_render_cavity *c, float rr, float a, float w[3])
 {
-    const float l[3] = {rr * cosf(a), rr * sinf(a), c->z_probe};
+    const float x = rr * cosf(a), y = rr * sinf(a);
+    const float *R = c->rot;
+    const float l[3] = {x, y, (c->plane_z - c->pos[2] - R[6] * x - R[7] * y) / R[8]};
     ms_rigid_to_world(c->rot, l, w);
     for (int k = 0; k < 3; ++k)
         w[k] += c->pos[k];
@@ -206,11 +209,9 @@ static float smallest(const float *t)
  * from the cavity's floor to the filled surface, its normal outward. */
 static void build_side(ms_render_cavity *c, const float *h, const ms_grid *g, float floor_z)
 {
-    float bottom[3];
-    const float axis[3] = {0, 0, c->z_floor};
-    ms_rigid_to_world(c->rot, axis, bottom);
-    const float zb = bottom[2] + c->pos[2];
-    float top[MS_CAVITY_SEGMENTS + 1][4]; /* x, y, z, and the angle */
+    /* per segment edge: the top (x, y, z), the angle, the bottom (x, y, z) on
+     * the cavity's floor (the glass may lean) */
+    float top[MS_CAVITY_SEGMENTS + 1][7];
     for (int s = 0; s <= MS_CAVITY_SEGMENTS; ++s) {
         const float a = TWO_PI * (float)s / MS_CAVITY_SEGMENTS;
         const float rin = table_at(c->r_in, a);
@@ -220,11 +221,15 @@ static void build_side(ms_render_cavity *c, const float *h, const ms_grid *g, fl
         top[s][0] = w[0], top[s][1] = w[1];
         top[s][2] = floor_z + sample(h, g, inner[0], inner[1]);
         top[s][3] = a;
+        const float l[3] = {rin * cosf(a), rin * sinf(a), c->z_floor};
+        ms_rigid_to_world(c->rot, l, top[s] + 4);
+        for (int k = 0; k < 3; ++k)
+            top[s][4 + k] += c->pos[k];
     }
     int n = 0;
     for (int s = 0; s < MS_CAVITY_SEGMENTS; ++s) {
         const float *t0 = top[s], *t1 = top[s + 1];
-        if (t0[2] <= zb + MS_RENDER_DRY_DEPTH && t1[2] <= zb + MS_RENDER_DRY_DEPTH)
+        if (t0[2] <= t0[6] + MS_RENDER_DRY_DEPTH && t1[2] <= t1[6] + MS_RENDER_DRY_DEPTH)
             continue; /* no liquid against the wall here */
         /* MS_CAVITY_SIDE_ROWS quads up, each with corners b0 b1 t1 t0
          * counter-clockwise seen from outside (rows, so the shading
@@ -237,10 +242,12 @@ static void build_side(ms_render_cavity *c, const float *h, const ms_grid *g, fl
                 const int k = order[m];
                 float *o = c->side + 6 * (size_t)n++;
                 const float l[3] = {cosf(corner[k][3]), sinf(corner[k][3]), 0};
-                const float zt = MS_MAX(corner[k][2], zb);
+                const float *b = corner[k] + 4;
+                const float zt = MS_MAX(corner[k][2], b[2]);
                 const float f = (float)(row + up[k]) / MS_CAVITY_SIDE_ROWS;
-                o[0] = corner[k][0], o[1] = corner[k][1];
-                o[2] = zb + f * (zt - zb);
+                o[0] = b[0] + f * (corner[k][0] - b[0]);
+                o[1] = b[1] + f * (corner[k][1] - b[1]);
+                o[2] = b[2] + f * (zt - b[2]);
                 ms_rigid_to_world(c->rot, l, o + 3);
             }
     }
@@ -263,6 +270,11 @@ ms_status ms_render_cavity_fill(ms_renderer *r, const float *h, const ms_grid *g
         return MS_OK;
     memcpy(c->pos, ob->shape->pos, sizeof c->pos);
     memcpy(c->rot, ob->shape->rot, sizeof c->rot);
+    /* a glass tilted far (poured, `modesplit view`'s Q / E) is drawn as
+     * the fields are: its cavity's cross-section at the water is no longer
+     * the one probed, and the cut would hide the liquid pouring over the rim */
+    if (c->rot[8] < MAX_TILT_COS)
+        return MS_OK;
     const size_t cells = (size_t)g->nx * (size_t)g->ny;
     if (r->fill_cap < cells) {
         ms_free(r->fill);
@@ -274,9 +286,35 @@ ms_status ms_render_cavity_fill(ms_renderer *r, const float *h, const ms_grid *g
     float *f = r->fill;
     memcpy(f, h, cells * sizeof *f);
     const float cell = MS_MAX(g->dx, g->dy);
-    const float reach = largest(c->r_in) + 2 * cell; /* the fill's outer edge */
+    const float reach = largest(c->r_in) + 2 * cell;          /* the fill's outer edge */
+    const float floor_w = c->pos[2] + c->rot[8] * c->z_floor; /* m, world, on the axis */
+    const float wet_above =
+        floor_w - r->desc.pool_min[2] + MS_RENDER_DRY_DEPTH; /* m over the floor */
+    /* the cavity is taken on the plane of the liquid's level near the axis
+     * (a leaning glass's cross-section moves with height); first guess: the
+     * probe's height */
+    c->plane_z = c->pos[2] + c->rot[8] * c->z_probe;
     int box[4];
-    cell_box(g, c->pos[0], c->pos[1], reach, box);
+    for (int pass = 0; pass < 2; ++pass) {
+        float axis[3];
+        at_radius(c, 0, 0, axis);
+        cell_box(g, axis[0], axis[1], reach, box);
+        if (pass == 1)
+            break;
+        double sum = 0;
+        long wet = 0;
+        for (int j = box[2]; j <= box[3]; ++j)
+            for (int i = box[0]; i <= box[1]; ++i) {
+                float rho, a;
+                polar(c, g->origin[0] + ((float)i + 0.5f) * g->dx,
+                      g->origin[1] + ((float)j + 0.5f) * g->dy, &rho, &a);
+                const float hv = h[(size_t)j * g->nx + i];
+                if (rho < 0.5f * table_at(c->r_in, a) && hv > wet_above)
+                    sum += hv, ++wet;
+            }
+        if (wet > 0)
+            c->plane_z = r->desc.pool_min[2] + (float)(sum / (double)wet);
+    }
     /* the band along the inner wall that is carried: two SPH cells (the
      * up-sampling's slope and the display's cubic), at least 4 wave cells,
      * at most 40 % of the radius */
@@ -286,9 +324,6 @@ ms_status ms_render_cavity_fill(ms_renderer *r, const float *h, const ms_grid *g
     /* the core's plane h = p0 + p1 x + p2 y (x, y from the axis), least
      * squares over its wet cells: those over the cavity's floor (a glass
      * standing in shallow water has the pool's water under its floor) */
-    const float floor_w = c->pos[2] + c->rot[8] * c->z_floor; /* m, world, on the axis */
-    const float wet_above =
-        floor_w - r->desc.pool_min[2] + MS_RENDER_DRY_DEPTH; /* m over the floor */
     double m[3][3] = {{0}}, b[3] = {0};
     long n = 0;
     for (int j = box[2]; j <= box[3]; ++j)

@@ -173,6 +173,7 @@ typedef struct ms_render_cavity {
     int active;           /* 1: the field drawn is filled and the mesh is cut */
     float pos[3], rot[9]; /* the container's pose (local -> world) */
     float tail;           /* m: how far past the inner wall the field may be wet */
+    float plane_z;        /* m, world: the plane the cavity is taken on (the level) */
     const float *field;   /* the filled field (r->fill) over grid */
     ms_grid grid;
     float side[MS_CAVITY_SIDE_FLOATS];      /* the column's side: x, y, z, normal */
