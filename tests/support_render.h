@@ -1,5 +1,6 @@
-/* Helpers of the render suites (tests/test_render.c, tests/test_caustics.c):
- * height fields on the unit pool, filled or with a Gaussian bump. */
+/* Helpers of the render suites (tests/test_render.c, tests/test_caustics.c,
+ * the look suites): height fields on the unit pool, filled or with a
+ * Gaussian bump; where a world point lands in a camera's picture. */
 #ifndef MS_TESTS_SUPPORT_RENDER_H
 #define MS_TESTS_SUPPORT_RENDER_H
 
@@ -34,6 +35,36 @@ static inline void add_bump(float *h, int n, float x, float y, float a, float si
             float dx = ((float)i + 0.5f) / (float)n - x, dy = ((float)j + 0.5f) / (float)n - y;
             h[j * n + i] += a * expf(-(dx * dx + dy * dy) / (2 * sigma * sigma));
         }
+}
+
+/* Where world point p lands in a w x h picture of d's camera (pixel
+ * column, row from the top, continuous); 0 if behind the eye. */
+static inline int ms_test_project(const ms_renderer_desc *d, const float p[3], int w, int h,
+                                  double *col, double *row)
+{
+    double f[3], v[3], rt[3], up[3], len = 0;
+    for (int k = 0; k < 3; ++k)
+        f[k] = d->target[k] - d->eye[k], len += f[k] * f[k];
+    for (int k = 0; k < 3; ++k)
+        f[k] /= sqrt(len), v[k] = p[k] - d->eye[k];
+    rt[0] = f[1] * d->up[2] - f[2] * d->up[1];
+    rt[1] = f[2] * d->up[0] - f[0] * d->up[2];
+    rt[2] = f[0] * d->up[1] - f[1] * d->up[0];
+    len = sqrt(rt[0] * rt[0] + rt[1] * rt[1] + rt[2] * rt[2]);
+    for (int k = 0; k < 3; ++k)
+        rt[k] /= len;
+    up[0] = rt[1] * f[2] - rt[2] * f[1];
+    up[1] = rt[2] * f[0] - rt[0] * f[2];
+    up[2] = rt[0] * f[1] - rt[1] * f[0];
+    const double z = v[0] * f[0] + v[1] * f[1] + v[2] * f[2];
+    if (z <= 0)
+        return 0;
+    const double t = tan(0.5 * d->fov * 3.14159265358979 / 180.0);
+    const double x = (v[0] * rt[0] + v[1] * rt[1] + v[2] * rt[2]) / (z * t * w / h);
+    const double y = (v[0] * up[0] + v[1] * up[1] + v[2] * up[2]) / (z * t);
+    *col = 0.5 * w * (1 + x);
+    *row = 0.5 * h * (1 - y);
+    return 1;
 }
 
 #endif

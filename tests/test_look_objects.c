@@ -106,29 +106,7 @@ static double window_diff(const unsigned char *a, const unsigned char *b, int cx
  * top); 0 if behind the eye. */
 static int project(const ms_renderer_desc *d, const float p[3], double *col, double *row)
 {
-    double f[3], v[3], rt[3], up[3], len = 0;
-    for (int k = 0; k < 3; ++k)
-        f[k] = d->target[k] - d->eye[k], len += f[k] * f[k];
-    for (int k = 0; k < 3; ++k)
-        f[k] /= sqrt(len), v[k] = p[k] - d->eye[k];
-    rt[0] = f[1] * d->up[2] - f[2] * d->up[1];
-    rt[1] = f[2] * d->up[0] - f[0] * d->up[2];
-    rt[2] = f[0] * d->up[1] - f[1] * d->up[0];
-    len = sqrt(rt[0] * rt[0] + rt[1] * rt[1] + rt[2] * rt[2]);
-    for (int k = 0; k < 3; ++k)
-        rt[k] /= len;
-    up[0] = rt[1] * f[2] - rt[2] * f[1];
-    up[1] = rt[2] * f[0] - rt[0] * f[2];
-    up[2] = rt[0] * f[1] - rt[1] * f[0];
-    const double z = v[0] * f[0] + v[1] * f[1] + v[2] * f[2];
-    if (z <= 0)
-        return 0;
-    const double t = tan(0.5 * d->fov * PI / 180.0);
-    const double x = (v[0] * rt[0] + v[1] * rt[1] + v[2] * rt[2]) / (z * t);
-    const double y = (v[0] * up[0] + v[1] * up[1] + v[2] * up[2]) / (z * t);
-    *col = 0.5 * W * (1 + x);
-    *row = 0.5 * W * (1 - y);
-    return 1;
+    return ms_test_project(d, p, W, W, col, row);
 }
 
 /* A sphere of radius 15 cm in a pool 1 m deep, its centre 70 cm under the

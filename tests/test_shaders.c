@@ -36,11 +36,14 @@ static const char *const shaders[] = {"water", "milk", "oil", "honey"};
 #define N_SHADERS 4
 
 /* The uniforms the renderer provides (plugin.h's contract). */
-static const char *const contract[] = {"ms_eye", "ms_light_dir", "ms_light_color", "ms_time",
-                                       "ms_viewport", "ms_env", "ms_floor_z", "ms_pool",
-                                       "ms_caustics", "ms_normal_map", "ms_field",
-                                       "ms_caustics_walls", "ms_pool_depth",
-                                       "ms_caustics_wall_rows", NULL};
+static const char *const contract[] = {"ms_eye",         "ms_light_dir",
+                                       "ms_light_color", "ms_time",
+                                       "ms_viewport",    "ms_env",
+                                       "ms_floor_z",     "ms_pool",
+                                       "ms_caustics",    "ms_normal_map",
+                                       "ms_field",       "ms_caustics_walls",
+                                       "ms_pool_depth",  "ms_caustics_wall_rows",
+                                       "ms_side",        NULL};
 
 /* Records the names set_uniforms sets. */
 typedef struct recorder {

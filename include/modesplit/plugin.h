@@ -213,6 +213,9 @@ typedef struct ms_shader_uniforms {
  *     float ms_pool_depth   still water depth over the floor the strips
  *                           span (m); 0 when the walls were not traced
  *     float ms_caustics_wall_rows  texel rows of one strip
+ *     float ms_side         1 while the side of the liquid in a glass is
+ *                           drawn (a vertical wall: shade with gl_Normal,
+ *                           which the renderer sets for it), else 0
  *   the shader's own uniforms (colours, ...) it sets in set_uniforms.
  * The fragment shader writes gl_FragColor (linear RGB, alpha 1).
  * A vertex shader that writes gl_ClipVertex = gl_Vertex (the world

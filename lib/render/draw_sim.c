@@ -230,7 +230,14 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
         vg.nx == vnx && vg.ny == vny &&
         (st = smooth_sph_part(r, h, &g, v, &vg, &h)) != MS_OK)
         return st;
-    return ms_renderer_draw_field(r, h, &g, ms_sim_time(sim));
+    /* the liquid in a glass carried to its inner wall (glass_fill.c) */
+    ms_grid sph;
+    const float sph_dx = v && ms_sim_field_grid(sim, MS_FIELD_VOLUME, &sph) == MS_OK ? sph.dx : 0;
+    if ((st = ms_render_cavity_fill(r, h, &g, sph_dx, &h)) != MS_OK)
+        return st;
+    st = ms_renderer_draw_field(r, h, &g, ms_sim_time(sim));
+    r->cavity.active = 0;
+    return st;
 }
 
 ms_status ms_renderer_draw_scene_field(ms_renderer *r, const ms_scene *sc, const float *h,
@@ -248,5 +255,9 @@ ms_status ms_renderer_draw_scene_field(ms_renderer *r, const ms_scene *sc, const
     if ((st = scene_discs(r, sc, NULL, 0, time, h, g, NULL)) != MS_OK ||
         (st = ms_render_objects_update(r, sc, NULL, time)) != MS_OK)
         return st;
-    return ms_renderer_draw_field(r, h, g, time);
+    if ((st = ms_render_cavity_fill(r, h, g, 0.0f, &h)) != MS_OK) /* glass_fill.c */
+        return st;
+    st = ms_renderer_draw_field(r, h, g, time);
+    r->cavity.active = 0;
+    return st;
 }

@@ -57,6 +57,9 @@ static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *full
                            g->ny);
     }
     ms_mesh_build(h, g, r->desc.pool_min[2], gl->vertices);
+    ms_status st = ms_render_cavity_cut(r, gl->vertices, g->nx, g->ny); /* glass_fill.c */
+    if (st != MS_OK)
+        return st;
     r->stats.mesh_nx = g->nx;
     r->stats.mesh_ny = g->ny;
     glBindBuffer(GL_ARRAY_BUFFER, gl->mesh_vbo);
@@ -264,6 +267,7 @@ static void draw_liquid(ms_renderer *r, double time)
                                 (const void *)(first * sizeof(unsigned)));
         }
     }
+    ms_gl_liquid_side_draw(r, &u); /* the liquid's side in a glass (gl_glass.c) */
     glDisableClientState(GL_NORMAL_ARRAY);
     glDisableClientState(GL_VERTEX_ARRAY);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);

@@ -9,8 +9,22 @@
  * through is nearly clear; before, a constant 30 % of a lit pale colour
  * made it milky and showed the mesh's overlapping wall triangles as
  * vertical streaks. Premultiplied alpha, blended in linear light. */
+#include <math.h>
+#include <string.h>
+
 #include "core/core_internal.h"
 #include "render/gl_internal.h"
+
+/* How much of the side's own normal across the view tilts its shading
+ * normal (side_normal): 0 looks straight through, 1 bends as one face. */
+#define SIDE_LENS 0.3f
+
+static void normalize3(float v[3])
+{
+    const float l = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (l > 0)
+        v[0] /= l, v[1] /= l, v[2] /= l;
+}
 
 static const char glass_vs[] =
     "#version 120\n"
@@ -69,6 +83,13 @@ void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep)
     const ms_gl *gl = r->gl;
     if (gl->discs_count <= gl->glass_first || !gl->glass.prog)
         return;
+    /* with liquid in it (glass_fill.c), the glass is left out of ms_env's
+     * refracted half: that half shows the pool from the eye's virtual image
+     * above the water, so the liquid inside would see the glass's own outer
+     * walls at grazing angles, mirror-bright (pale bands down the column,
+     * streaks on its floor) where it should see through them */
+    if (keep < 0 && r->cavity.active)
+        return;
     const GLsizei stride = MS_POOL_STRIDE * sizeof(float);
     GLuint p = gl->glass.prog;
     glUseProgram(p);
@@ -94,5 +115,95 @@ void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep)
     glDisable(GL_BLEND);
     glDisableClientState(GL_NORMAL_ARRAY);
     glDisableClientState(GL_VERTEX_ARRAY);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+/* Where ms_env's refracted half is seen from: gl_env.c's viewpoints()
+ * (the eye's virtual image above the still water at L + H tan(i)/tan(t),
+ * for the ray to the target; the pool's centre at the water when the eye
+ * is at or under it). */
+static void refraction_viewpoint(const ms_renderer_desc *d, float virt[3])
+{
+    const float L = d->water_level, H = d->eye[2] - L;
+    const float ext = MS_MAX(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
+    if (!(H > 1e-4f * ext)) {
+        virt[0] = 0.5f * (d->pool_min[0] + d->pool_max[0]);
+        virt[1] = 0.5f * (d->pool_min[1] + d->pool_max[1]);
+        virt[2] = L;
+        return;
+    }
+    double v[3], k = d->ior;
+    for (int i = 0; i < 3; ++i)
+        v[i] = (double)d->target[i] - d->eye[i];
+    const double horiz = sqrt(v[0] * v[0] + v[1] * v[1]);
+    const double sin_i = v[2] < 0 ? horiz / sqrt(horiz * horiz + v[2] * v[2]) : 0;
+    if (sin_i > 1e-6) {
+        const double sin_t = sin_i / d->ior;
+        k = (sin_i / sqrt(1 - sin_i * sin_i)) / (sin_t / sqrt(1 - sin_t * sin_t));
+    }
+    virt[0] = d->eye[0], virt[1] = d->eye[1];
+    virt[2] = (float)(L + k * H);
+}
+
+/* The normal the side's vertex at p shades with, seen from eye. A water
+ * column's two vertical faces give a view ray back its elevation, and
+ * ms_env's refracted half is drawn for rays through the flat top from
+ * virt: the side's own horizontal normal sent the lookups up to the deck
+ * beyond the pool (beige-yellow bands, the spots of issue 14). So the
+ * normal is the one that refracts the view ray (1 / ior) towards what
+ * lies behind the column on the floor as seen from virt, tilted sideways
+ * by the side's own normal's part across the view (a lens's sideways
+ * bend, and Fresnel's brighter edges where the column turns away). */
+static void side_normal(const float p[3], const float nh[3], const float eye[3],
+                        const float virt[3], float floor_z, float eta, float out[3])
+{
+    float v[3], b[3], w[3];
+    for (int k = 0; k < 3; ++k)
+        v[k] = p[k] - eye[k];
+    normalize3(v);
+    const float run = MS_MAX(p[2] - floor_z, 0.0f) / MS_MAX(-v[2], 0.05f);
+    for (int k = 0; k < 3; ++k) {
+        b[k] = p[k] + run * v[k];
+        w[k] = b[k] - virt[k];
+    }
+    normalize3(w);
+    float hx = v[0], hy = v[1], hl = sqrtf(hx * hx + hy * hy);
+    hx = hl > 0 ? hx / hl : 1, hy = hl > 0 ? hy / hl : 0;
+    const float along = nh[0] * hx + nh[1] * hy;
+    const float across[3] = {nh[0] - along * hx, nh[1] - along * hy, 0};
+    for (int k = 0; k < 3; ++k)
+        out[k] = eta * v[k] - w[k] + SIDE_LENS * across[k];
+    normalize3(out);
+}
+
+/* The side of the liquid column in the glass (glass_fill.c's quads),
+ * drawn by the liquid's program while it is bound (draw_liquid) with
+ * ms_side = 1: the shipped programs then shade with the normals given here
+ * (side_normal) instead of the height field's (plugins/common/shader.h). */
+void ms_gl_liquid_side_draw(ms_renderer *r, const ms_shader_uniforms *u)
+{
+    ms_gl *gl = r->gl;
+    const ms_render_cavity *c = &r->cavity;
+    if (!c->active || c->side_verts == 0)
+        return;
+    const ms_renderer_desc *d = &r->desc;
+    float virt[3];
+    refraction_viewpoint(d, virt);
+    float *o = r->cavity.side_draw;
+    for (int i = 0; i < c->side_verts; ++i) {
+        const float *q = c->side + 6 * (size_t)i;
+        memcpy(o + 6 * (size_t)i, q, 3 * sizeof(float));
+        side_normal(q, q + 3, d->eye, virt, d->pool_min[2], 1.0f / d->ior, o + 6 * (size_t)i + 3);
+    }
+    if (!gl->side_vbo)
+        glGenBuffers(1, &gl->side_vbo);
+    glBindBuffer(GL_ARRAY_BUFFER, gl->side_vbo);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)c->side_verts * 6 * sizeof(float)), o,
+                 GL_STREAM_DRAW);
+    glVertexPointer(3, GL_FLOAT, 6 * sizeof(float), (const void *)0);
+    glNormalPointer(GL_FLOAT, 6 * sizeof(float), (const void *)(3 * sizeof(float)));
+    u->set_float(u->ctx, "ms_side", 1.0f);
+    glDrawArrays(GL_TRIANGLES, 0, c->side_verts);
+    u->set_float(u->ctx, "ms_side", 0.0f);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }

@@ -145,6 +145,7 @@ struct ms_gl {
     int walls_n, walls_rows;        /* its size as uploaded: n x 4 rows */
     GLuint open_tex;                /* the light in the water, in slices (gl_walls.c) */
     int open_n, open_slices;        /* its size as uploaded: n x slices n */
+    GLuint side_vbo;                /* the liquid's side in the glass (gl_glass.c) */
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */
@@ -192,6 +193,9 @@ ms_status ms_gl_open_upload(ms_renderer *r);
 GLuint ms_gl_open_texture(const ms_renderer *r, int *slices);
 void ms_gl_walls_bind(const ms_renderer *r, const ms_shader_uniforms *u);
 void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep);
+/* gl_glass.c: the side of the liquid in the glass (r->cavity), drawn with
+ * the liquid's program and its vertex arrays enabled (draw_liquid). */
+void ms_gl_liquid_side_draw(ms_renderer *r, const ms_shader_uniforms *u);
 /* gl_renderer.c: after r->desc's camera changed: ms_env drawn again. */
 ms_status ms_gl_camera_moved(ms_renderer *r);
 

@@ -199,6 +199,7 @@ void ms_render_objects_free(ms_renderer *r)
     ms_free(r->object_verts);
     r->objects = NULL, r->object_verts = NULL;
     r->nobjects = 0, r->object_nverts = 0, r->object_scene = NULL;
+    r->cavity.probed = NULL; /* the container's cavity is probed again (glass_fill.c) */
 }
 
 /* One mesh per obstacle then the container (the sim's order). */

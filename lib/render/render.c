@@ -328,6 +328,7 @@ void ms_renderer_destroy(ms_renderer *r)
     ms_render_objects_free(r);
     ms_free(r->discs);
     ms_free(r->display);
+    ms_render_cavity_free(r);
     ms_free(r->pixels);
     ms_free(r->shader_name);
     ms_free(r->shader_params);

@@ -176,6 +176,36 @@ ms_status ms_png_write_rgba(const char *path, const unsigned char *rgba, int w, 
 
 typedef struct ms_gl ms_gl; /* the GL side (gl_*.c) */
 
+/* The liquid inside the scene's container (glass_fill.c, issue 14): the
+ * container's cavity found once from its signed distance (per angle about
+ * its local z axis: where the inner wall starts and the outer wall ends,
+ * and the cavity's floor), then each frame, for display only, the field
+ * filled to the inner wall at the liquid's level, the mesh cut along the
+ * inner wall, and the side of the liquid column as a vertical wall. */
+#define MS_CAVITY_ANGLES 128
+#define MS_CAVITY_SEGMENTS 128
+#define MS_CAVITY_SIDE_ROWS 6
+#define MS_CAVITY_SIDE_FLOATS (MS_CAVITY_SEGMENTS * MS_CAVITY_SIDE_ROWS * 6 * 6)
+typedef struct ms_render_cavity {
+    const void *probed;            /* the object the tables below are for */
+    int found;                     /* 1: the container has a cavity about its axis */
+    float r_in[MS_CAVITY_ANGLES];  /* m, local: the inner wall per angle */
+    float r_out[MS_CAVITY_ANGLES]; /* m, local: the outer wall's outside */
+    float z_probe, z_floor;        /* m, local: where the radii were taken; the cavity's floor */
+    /* this frame (set by ms_render_cavity_fill, cleared after the draw) */
+    int active;           /* 1: the field drawn is filled and the mesh is cut */
+    float pos[3], rot[9]; /* the container's pose (local -> world) */
+    float tail;           /* m: how far past the inner wall the field may be wet */
+    float plane_z;        /* m, world: the plane the cavity is taken on (the level) */
+    const float *field;   /* the filled field (r->fill) over grid */
+    ms_grid grid;
+    float side[MS_CAVITY_SIDE_FLOATS];      /* the column's side: x, y, z, normal */
+    float side_draw[MS_CAVITY_SIDE_FLOATS]; /* the same with the normals it is shaded with */
+    int side_verts;
+    unsigned char *flags; /* the mesh cut's scratch */
+    size_t flags_cap;
+} ms_render_cavity;
+
 /* An obstacle or the container drawn as a mesh (objects.c). */
 typedef struct ms_render_object {
     const struct ms_scene_shape *spec; /* the scene's, not owned */
@@ -214,6 +244,9 @@ struct ms_renderer {
     int object_glass;       /* object_verts from here on are the container's: see-through */
     float *display;         /* the field drawn by ms_renderer_draw (draw_sim.c) and scratch */
     size_t display_cap;     /* floats */
+    float *fill;            /* the field filled to the container's inner wall (glass_fill.c) */
+    size_t fill_cap;        /* floats */
+    ms_render_cavity cavity;
     unsigned char *pixels;  /* width * height * 4, top row first */
     int have_frame;
     ms_render_stats stats;
@@ -227,6 +260,18 @@ struct ms_renderer {
 ms_status ms_render_objects_update(ms_renderer *r, const struct ms_scene *sc,
                                    const ms_sim *sim, double t);
 void ms_render_objects_free(ms_renderer *r);
+
+/* glass_fill.c. For the frame at hand: when the scene's container holds
+ * liquid in a cavity, *out is h (over g, heights above the floor) with the
+ * liquid's surface carried to the inner wall (coarse_dx: the SPH cell, m,
+ * 0 if unknown) and cavity.active is set; else *out = h. */
+ms_status ms_render_cavity_fill(ms_renderer *r, const float *h, const ms_grid *g, float coarse_dx,
+                                const float **out);
+/* The mesh vertices (ms_mesh_build's, nx x ny) cut along the inner wall:
+ * those just outside it moved onto it, those over the wall and beyond it
+ * sunk under the floor (the dry clip removes them). */
+ms_status ms_render_cavity_cut(ms_renderer *r, float *vertices, int nx, int ny);
+void ms_render_cavity_free(ms_renderer *r);
 
 #if MS_HAVE_GL
 /* gl_renderer.c: make the GL side for r (desc checked, shader and passes

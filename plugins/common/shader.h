@@ -50,15 +50,20 @@
  * (unit 2, bilinear between cell centres) and the field's rectangle as
  * ms_field (origin x, y; 1 / width, 1 / height), so the normal keeps
  * every cell's ripple while the mesh may have a vertex only every few
- * cells (render.h, mesh_step). Put it after "#version"; it reads v_pos. */
-#define SHADER_NORMAL_SOURCE                                                                    \
-    "uniform sampler2D ms_normal_map;\n"                                                        \
-    "uniform vec4 ms_field;\n"                                                                  \
-    "varying vec3 v_pos;\n"                                                                     \
-    "vec3 ms_surface_normal()\n"                                                                \
-    "{\n"                                                                                       \
-    "    vec2 g = texture2D(ms_normal_map, (v_pos.xy - ms_field.xy) * ms_field.zw).rg;\n"       \
-    "    return normalize(vec3(-g, 1.0));\n"                                                    \
+ * cells (render.h, mesh_step). The side of the liquid in a glass, a
+ * vertical wall the renderer draws with ms_side = 1 (else 0), takes the
+ * normals it gives with its vertices (gl_glass.c). Put it after "#version";
+ * it reads v_pos and v_normal. */
+#define SHADER_NORMAL_SOURCE                                                              \
+    "uniform sampler2D ms_normal_map;\n"                                                  \
+    "uniform vec4 ms_field;\n"                                                            \
+    "uniform float ms_side;\n"                                                            \
+    "varying vec3 v_pos;\n"                                                               \
+    "varying vec3 v_normal;\n"                                                            \
+    "vec3 ms_surface_normal()\n"                                                          \
+    "{\n"                                                                                 \
+    "    vec2 g = texture2D(ms_normal_map, (v_pos.xy - ms_field.xy) * ms_field.zw).rg;\n" \
+    "    return ms_side > 0.5 ? normalize(v_normal) : normalize(vec3(-g, 1.0));\n"        \
     "}\n"
 
 /* A heap copy of the size bytes of parsed parameters at parsed, in *out

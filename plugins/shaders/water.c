@@ -35,11 +35,10 @@ static const char fragment_source[] =
     "{\n"
     "    vec3 n = ms_surface_normal();\n"
     "    vec3 v = normalize(v_pos - ms_eye);\n"
-    "    /* seen from below (the eye under the surface): light leaves the\n"
-    "     * water, n1 = ior > n2 = 1; Snell's window, total internal\n"
-    "     * reflection outside it. Both sides share one refracted lookup,\n"
-    "     * picked by selects: llvmpipe runs both arms of an if on every\n"
-    "     * pixel, so a branch with its own lookups costs them everywhere */\n"
+    /* seen from below (the eye under the surface): light leaves the water, n1 = ior > n2 =
+     * 1; Snell's window, total internal reflection outside it. Both sides share one
+     * refracted lookup, picked by selects: llvmpipe runs both arms of an if on every
+     * pixel, so a branch with its own lookups costs them everywhere */
     "    bool under = dot(n, v) > 0.0;\n"
     "    n = under ? -n : n;\n"
     "    float r0 = (1.0 - water_ior) / (1.0 + water_ior);\n"
@@ -47,25 +46,25 @@ static const char fragment_source[] =
     "    vec3 reflected = textureCube(ms_env, reflect(v, n)).rgb;\n"
     "    vec3 t = refract(v, n, under ? water_ior : 1.0 / water_ior);\n"
     "    bool tir = dot(t, t) == 0.0;\n"
-    "    /* Schlick from the denser side takes the angle in air */\n"
+    /* Schlick from the denser side takes the angle in air */
     "    float c = under ? clamp(-dot(t, n), 0.0, 1.0) : clamp(-dot(v, n), 0.0, 1.0);\n"
     "    float fresnel = tir ? 1.0 : r0 + (1.0 - r0) * pow(1.0 - c, 5.0);\n"
     "    vec4 seen = textureCube(ms_env, t);\n"
     "    vec3 refracted = seen.rgb;\n"
-    "    /* from below: the sky in Snell's window; the reflected ray runs\n"
-    "     * back down through the water */\n"
+    /* from below: the sky in Snell's window; the reflected ray runs back down through the
+     * water */
     "    vec3 seen_under = mix(tir ? vec3(0.0) : refracted, mix(water_color, reflected, 0.8),\n"
     "                          fresnel);\n"
     "    float len = max(v_pos.z - ms_floor_z, 0.0) / max(-t.z, 0.05);\n"
     "    vec2 uv = (v_pos.xy + len * t.xy - ms_pool.xy) / ms_pool.zw;\n"
     "    float focus = texture2D(ms_caustics, uv).r;\n"
-    "    /* a ray that leaves the floor's square meets a wall first: the\n"
-    "     * walls' strips (-x, +x, -y, +y) of the light map */\n"
+    /* a ray that leaves the floor's square meets a wall first: the walls' strips (-x, +x,
+     * -y, +y) of the light map */
     "    vec2 out_lo = -uv, out_hi = uv - 1.0;\n"
     "    float off_floor = step(0.0, max(max(out_lo.x, out_lo.y), max(out_hi.x, out_hi.y)))\n"
     "                    * step(1e-6, ms_pool_depth);\n"
-    "    /* no branch: a texture read inside one costs llvmpipe the whole\n"
-    "     * shader's speed (fig1 drew 12-21 % slower) */\n"
+    /* no branch: a texture read inside one costs llvmpipe the whole shader's speed (fig1
+     * drew 12-21 % slower) */
     "    vec2 wall = ms_pool.xy + step(0.0, t.xy) * ms_pool.zw;\n"
     "    vec2 tt = vec2(abs(t.x) < 1e-6 ? 1e-6 : t.x, abs(t.y) < 1e-6 ? 1e-6 : t.y);\n"
     "    vec2 s = (wall - v_pos.xy) / tt;\n"
@@ -80,8 +79,8 @@ static const char fragment_source[] =
     "    float on_wall = texture2D(ms_caustics_walls, vec2(along, (strip + height) / 4.0)).r;\n"
     "    focus = mix(focus, on_wall, off_floor);\n"
     "    len = mix(len, to_wall, off_floor);\n"
-    "    /* alpha 0: an object under the water, lit through the light map\n"
-    "     * where the sun's refracted rays meet it (ms_env, plugin.h) */\n"
+    /* alpha 0: an object under the water, lit through the light map where the sun's
+     * refracted rays meet it (ms_env, plugin.h) */
     "    float light = mix(1.0, 0.55 + water_caustics * focus, seen.a);\n"
     "    vec3 below = refracted * light;\n"
     "    below = mix(water_color, below, exp(-len / water_clarity));\n"
