@@ -374,8 +374,8 @@ END_TEST
  * constant-density solve's, in eq. 13's convention), averaged over
  * 0.5 s in slabs deeper than h (below the first layer), matches rho0 g d
  * within 2 % (issue 12's bar); measured within 1.3 % at the worst of its
- * 12 slabs since the sub-step's 5 ms cap (step.c; 3.3 % without it, when
- * the at-rest column stepped 9 ms). The compression at the
+ * 12 slabs at 4.2 ms sub-steps (step.c's a dt^2 <= lambda^2/16 spacing;
+ * 3.3 % at round four's 8.3 ms). The compression at the
  * positions each step ends with, max(rho/rho0 - 1, 0), averages at most
  * the desc's 0.1 % plus a tenth of it (measured 0.098 %) and peaks below
  * 1 % (measured 0.57 %), where the ideal gas law at c = 20 m/s compresses
