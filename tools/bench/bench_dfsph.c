@@ -1,7 +1,10 @@
 /* DFSPH against the weakly compressible laws, side by side in one run:
  * the same dam break (a column a x a x 2a released in a 4a x a x 2.2a
- * tank, h = 2 spacing, mu = 1 Pa s) with about 2k, 32k and 128k particles
- * (--quick: 2k and 32k, 3 frames), simulated for a fixed time after a warm-up, once per
+ * tank, h = 2 spacing, mu = 1 Pa s) with about 2k, 32k and 128k particles,
+ * then the peer's scene (a 32^3 block of spacing 0.0303 m in a 4 x 3 x 1.5 m
+ * box, 32768 particles, the first 0.3 s: SPlisHSPlasH's DamBreakModel as
+ * issue 12 timed it) (--quick: 2k and 32k, 3 frames), simulated for a
+ * fixed time after a warm-up (the peer's scene: from its release), once per
  * law: ideal gas (k = 400 m^2/s^2, c = 20 m/s), Tait (c0 = 20 m/s) and
  * DFSPH (0.1 % average compression). For each: wall time per simulated
  * second (ms/s), sub-steps and solver iterations per simulated second,
@@ -20,21 +23,30 @@ static const ms_pressure law_of[LAWS] = {MS_PRESSURE_IDEAL_GAS, MS_PRESSURE_TAIT
                                          MS_PRESSURE_DFSPH};
 static const char *const law_name[LAWS] = {"ideal_gas", "tait", "dfsph"};
 
+/* target > 0: the dam break of about target particles; target 0: the
+ * peer's scene (SPlisHSPlasH's DamBreakModel as the issue measured it: a
+ * 32^3 block of spacing 0.0303 m in a corner of a 4 x 3 m box 1.5 m
+ * high), whose figures compare with its 22-26 s per simulated second. */
 static ms_volume *dam_break(int target, ms_pressure law)
 {
     const float a = 0.5f;
-    const float s = a * cbrtf(2.0f / (float)target);
+    const float s = target > 0 ? a * cbrtf(2.0f / (float)target) : 0.0303f;
+    const float lo[3] = {0, 0, 0};
+    float box[3] = {4.0f * a, a, 2.2f * a}, block[3] = {a, a, 2.0f * a};
+    if (target == 0)
+        for (int k = 0; k < 3; ++k) {
+            box[k] = k == 0 ? 4.0f : (k == 1 ? 3.0f : 1.5f);
+            block[k] = 32.0f * s;
+        }
     ms_volume_desc d = ms_volume_desc_default();
-    d.domain_max[0] = 4.0f * a;
-    d.domain_max[1] = a;
-    d.domain_max[2] = 2.2f * a;
+    for (int k = 0; k < 3; ++k)
+        d.domain_max[k] = box[k];
     d.spacing = s;
     d.smoothing_length = 2.0f * s;
-    d.max_particles = 2 * target;
+    d.max_particles = target > 0 ? 2 * target : 65536;
     d.pressure = law;
     ms_volume *v;
-    if (ms_volume_create(&d, &v) != MS_OK ||
-        ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){a, a, 2.0f * a}) != MS_OK) {
+    if (ms_volume_create(&d, &v) != MS_OK || ms_volume_fill_box(v, lo, block) != MS_OK) {
         fprintf(stderr, "bench_dfsph: %s\n", ms_last_error());
         exit(1);
     }
@@ -146,12 +158,13 @@ static void compression(const ms_volume *v, double *avg, float *mx)
 int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
-                   "usage: bench_dfsph [--csv-dir DIR] [--quick]\n"
+                   "usage: bench_dfsph [--csv-dir DIR] [--quick | --peer]\n"
                    "the same dam break with the ideal gas, Tait and DFSPH laws, interleaved, at\n"
-                   "~2k, 32k and 128k particles (--quick: 2k and 32k, 3 frames): ms per simulated\n"
-                   "second, sub-steps\n"
-                   "and iterations per simulated second, average and max compression, ratios;\n"
-                   "writes DIR/dfsph.csv (default DIR: bench).\n"))
+                   "~2k, 32k and 128k particles, and the peer's scene (SPlisHSPlasH's\n"
+                   "DamBreakModel: 32768 particles, its first 0.3 s); --quick: 2k and 32k, 3\n"
+                   "frames; --peer: the peer's scene alone. Prints ms per simulated second,\n"
+                   "sub-steps and iterations per simulated second, average and max compression,\n"
+                   "ratios; writes DIR/dfsph.csv (default DIR: bench).\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     char machine[320], commit[64];
@@ -168,13 +181,19 @@ int main(int argc, char **argv)
                                "ms_ratio_to_dfsph");
     if (!csv)
         return 1;
-    const int sizes[3] = {2000, 32000, 128000};
-    const int nsizes = quick ? 2 : 3;
+    /* 0: the peer's scene, 0.3 s from its release (as the peer was
+     * timed), no warm-up */
+    const int sizes[4] = {2000, 32000, 128000, 0};
+    int peer_only = 0;
+    for (int i = 1; i < argc; ++i)
+        peer_only |= strcmp(argv[i], "--peer") == 0;
+    const int nsizes = quick ? 2 : 4;
     const float frame = 1.0f / 60;
-    for (int k = 0; k < nsizes; ++k) {
+    for (int k = peer_only ? 3 : 0; k < nsizes; ++k) {
         run r[LAWS];
         memset(r, 0, sizeof r);
-        const int warm = 6, frames = quick ? 3 : (sizes[k] >= 128000 ? 6 : 18);
+        const int warm = sizes[k] == 0 ? 0 : 6;
+        const int frames = quick ? 3 : (sizes[k] >= 128000 ? 6 : 18);
         for (int l = 0; l < LAWS; ++l)
             r[l].v = dam_break(sizes[k], law_of[l]);
         for (int f = 0; f < warm + frames; ++f)
