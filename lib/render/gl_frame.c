@@ -57,6 +57,10 @@ static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *full
                            g->ny);
     }
     ms_mesh_build(h, g, r->desc.pool_min[2], gl->vertices);
+    /* display only: the liquid never above the pool's rim, where it would
+     * be drawn over the deck (the field itself is not changed) */
+    for (size_t k = 0; k < nv; ++k)
+        gl->vertices[6 * k + 2] = MS_MIN(gl->vertices[6 * k + 2], r->rim_z);
     ms_status st = ms_render_cavity_cut(r, gl->vertices, g->nx, g->ny); /* glass_fill.c */
     if (st != MS_OK)
         return st;

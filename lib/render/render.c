@@ -68,6 +68,13 @@ ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out)
     d.pool_max[2] = MS_MIN(hi[2], d.water_level + 0.05f * ext_xy);
     if (!(d.pool_max[2] > lo[2]))
         d.pool_max[2] = hi[2];
+    /* A fill that rises above that rim (a dam break, Fig. 4c) is liquid
+     * that runs up the walls: the walls then go up to the domain's top,
+     * the highest the particles can reach, so the liquid stays inside the
+     * pool and is not drawn over the deck. */
+    for (int i = 0; i < sc->nfill; ++i)
+        if (sc->has_volume && sc->fill_hi[i][2] > d.pool_max[2])
+            d.pool_max[2] = hi[2];
     if (sc->has_render) {
         const ms_scene_render *r = &sc->render;
         d.width = r->width;
