@@ -91,6 +91,14 @@ ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_write
                        int legacy, ms_xdmf **out);
 /* Append frame `frame` (time t, `particles` particles in /Step#frame). */
 ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles);
+/* run.xmf's next state with the frame, made before the HDF5 frame is written
+ * (a refusal here leaves every file as it was); ms_xdmf_frame then renames
+ * it in (or prepares it itself when nothing is pending). No-op for the
+ * legacy sidecar. ms_xdmf_drop_pending forgets a prepared state. */
+ms_status ms_xdmf_prepare(ms_xdmf *x, long frame, double t, int particles);
+void ms_xdmf_drop_pending(ms_xdmf *x);
+/* Bytes ms_xdmf_prepare may need on the file system (a copy of run.xmf). */
+uint64_t ms_xdmf_copy_bytes(const ms_xdmf *x);
 ms_status ms_xdmf_close(ms_xdmf *x);
 /* "run.xmf" for "run.h5", "out.dat.xmf" for "out.dat"; ms_malloc'ed (ms_free it). */
 char *ms_xdmf_path_for(const char *h5_path);

@@ -13,7 +13,10 @@
  *      data and metadata are on disk;
  *   4. link /Step#k and /particles/k, raise the root attribute `frames`, guard and flush
  *      again: the commit;
- *   5. append the frame to the XDMF sidecars (one pwrite each).
+ *   5. append the frame to the XDMF sidecars: run.xmf by renaming in the
+ *      copy with the frame made before step 2 (a kill leaves the old or the
+ *      new file, a full disk refuses the frame before anything is written),
+ *      the legacy grid files by one pwrite each.
  * A checkpoint (a sim snapshot, issue 17) goes with step 2 into the older
  * of the two /checkpoint/<slot> datasets, its `frame` attribute set to the
  * frame: a reader uses it only once `frames` counts that frame (so a kill
@@ -502,11 +505,15 @@ static ms_status check_space(const ms_writer *w, int particles)
     if (fstatvfs(*fdp, &vb) == 0) {
         uint64_t blocks = geteuid() == 0 ? (uint64_t)vb.f_bfree : (uint64_t)vb.f_bavail;
         uint64_t free_bytes = blocks * (uint64_t)vb.f_frsize;
-        if (free_bytes < need)
+        /* and the copy of run.xmf (xdmf.c: ms_xdmf_prepare), assumed on
+         * the same file system */
+        uint64_t copy = ms_xdmf_copy_bytes(w->xdmf);
+        if (free_bytes < need + copy)
             return ms_fail(MS_ERR_IO,
                            "io: frame %ld needs up to %.2f MB but only %.2f MB are free on the "
                            "file system of %s; stopped before writing it (the file holds %s)",
-                           w->frames, need / 1e6, free_bytes / 1e6, w->path, holds);
+                           w->frames, (need + copy) / 1e6, free_bytes / 1e6, w->path,
+                           holds);
     }
     struct rlimit rl;
     if (getrlimit(RLIMIT_FSIZE, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
@@ -700,6 +707,12 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
         return st;
     }
     long k = w->frames;
+    int particles = (w->layout.fields & MS_FIELD_PARTICLES) ? d->particles : 0;
+    /* 0: run.xmf's next state, renamed in after the commit (xdmf.c) */
+    if ((st = ms_xdmf_prepare(w->xdmf, k, d->time, particles)) != MS_OK) {
+        ms_h5_loud(&q);
+        return st;
+    }
     int ok = 1;
     hid_t step = -1, xyz = -1;
     for (int i = 0; i < MS_IO_NFIELDS && ok; ++i) {
@@ -708,7 +721,6 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
         hsize_t row[2] = {(hsize_t)w->layout.grid[i].ny, (hsize_t)w->layout.grid[i].nx};
         ok = append_rows(w->dset[i], k, d->field[i], H5T_NATIVE_FLOAT, 3, row) >= 0;
     }
-    int particles = (w->layout.fields & MS_FIELD_PARTICLES) ? d->particles : 0;
     if (ok && (w->layout.fields & MS_FIELD_PARTICLES))
         ok = ms_h5part_write_step(w->file, d->time, particles, d->pos, d->vel, &step) == MS_OK &&
              ms_h5part_write_xyz(w->file, particles, d->pos, d->vel, &xyz) == MS_OK;
