@@ -1,4 +1,4 @@
-# gnuplot script written by `modesplit accuracy` (commit several (see the notes)); run it in this
+# gnuplot script written by `modesplit accuracy` (commit e5c1f3b); run it in this
 # directory: gnuplot accuracy.gp. Restyle freely.
 set terminal pngcairo noenhanced size 1000,650 font 'sans,11'
 set logscale xy
@@ -63,6 +63,50 @@ plot 'sph_dam_break_max_compression.dat' index 0 using 1:2 with linespoints pt 7
      'sph_dam_break_max_compression.dat' index 4 using 1:2 with linespoints pt 7 title 'sound_speed_ideal_gas', \
      'sph_dam_break_max_compression.dat' index 5 using 1:2 with linespoints pt 7 title 'sound_speed_tait', \
      'sph_dam_break_max_compression.dat' index 6 using 1:2 with linespoints pt 7 title 'courant'
+set output 'sph_cost_dam_break_front_z_rms_error_after_time_shift.png'
+set title 'sph: dam-break front Z RMS error after time shift against cost, one curve per knob'
+set xlabel 'cost: ms of wall clock per simulated second (1 thread)'
+set ylabel 'dam-break front Z RMS error after time shift'
+plot 'sph_dam_break_front_z_rms_error_after_time_shift.dat' index 0 using 1:2 with linespoints pt 7 title 'particles', \
+     'sph_dam_break_front_z_rms_error_after_time_shift.dat' index 1 using 1:2 with linespoints pt 7 title 'law_ideal_gas', \
+     'sph_dam_break_front_z_rms_error_after_time_shift.dat' index 2 using 1:2 with linespoints pt 7 title 'law_tait', \
+     'sph_dam_break_front_z_rms_error_after_time_shift.dat' index 3 using 1:2 with linespoints pt 7 title 'law_dfsph', \
+     'sph_dam_break_front_z_rms_error_after_time_shift.dat' index 4 using 1:2 with linespoints pt 7 title 'sound_speed_ideal_gas', \
+     'sph_dam_break_front_z_rms_error_after_time_shift.dat' index 5 using 1:2 with linespoints pt 7 title 'sound_speed_tait', \
+     'sph_dam_break_front_z_rms_error_after_time_shift.dat' index 6 using 1:2 with linespoints pt 7 title 'courant'
+set output 'sph_cost_dam_break_front_z_best_time_shift_t0.png'
+set title 'sph: dam-break front Z best time shift T0 against cost, one curve per knob'
+set xlabel 'cost: ms of wall clock per simulated second (1 thread)'
+set ylabel 'dam-break front Z best time shift T0'
+plot 'sph_dam_break_front_z_best_time_shift_t0.dat' index 0 using 1:2 with linespoints pt 7 title 'particles', \
+     'sph_dam_break_front_z_best_time_shift_t0.dat' index 1 using 1:2 with linespoints pt 7 title 'law_ideal_gas', \
+     'sph_dam_break_front_z_best_time_shift_t0.dat' index 2 using 1:2 with linespoints pt 7 title 'law_tait', \
+     'sph_dam_break_front_z_best_time_shift_t0.dat' index 3 using 1:2 with linespoints pt 7 title 'law_dfsph', \
+     'sph_dam_break_front_z_best_time_shift_t0.dat' index 4 using 1:2 with linespoints pt 7 title 'sound_speed_ideal_gas', \
+     'sph_dam_break_front_z_best_time_shift_t0.dat' index 5 using 1:2 with linespoints pt 7 title 'sound_speed_tait', \
+     'sph_dam_break_front_z_best_time_shift_t0.dat' index 6 using 1:2 with linespoints pt 7 title 'courant'
+set output 'sph_cost_dam_break_column_h_rms_error_after_time_shift.png'
+set title 'sph: dam-break column H RMS error after time shift against cost, one curve per knob'
+set xlabel 'cost: ms of wall clock per simulated second (1 thread)'
+set ylabel 'dam-break column H RMS error after time shift'
+plot 'sph_dam_break_column_h_rms_error_after_time_shift.dat' index 0 using 1:2 with linespoints pt 7 title 'particles', \
+     'sph_dam_break_column_h_rms_error_after_time_shift.dat' index 1 using 1:2 with linespoints pt 7 title 'law_ideal_gas', \
+     'sph_dam_break_column_h_rms_error_after_time_shift.dat' index 2 using 1:2 with linespoints pt 7 title 'law_tait', \
+     'sph_dam_break_column_h_rms_error_after_time_shift.dat' index 3 using 1:2 with linespoints pt 7 title 'law_dfsph', \
+     'sph_dam_break_column_h_rms_error_after_time_shift.dat' index 4 using 1:2 with linespoints pt 7 title 'sound_speed_ideal_gas', \
+     'sph_dam_break_column_h_rms_error_after_time_shift.dat' index 5 using 1:2 with linespoints pt 7 title 'sound_speed_tait', \
+     'sph_dam_break_column_h_rms_error_after_time_shift.dat' index 6 using 1:2 with linespoints pt 7 title 'courant'
+set output 'sph_cost_dam_break_late_front_dz_dt_ritter_speed.png'
+set title 'sph: dam-break late front dZ/dT / Ritter speed against cost, one curve per knob'
+set xlabel 'cost: ms of wall clock per simulated second (1 thread)'
+set ylabel 'dam-break late front dZ/dT / Ritter speed'
+plot 'sph_dam_break_late_front_dz_dt_ritter_speed.dat' index 0 using 1:2 with linespoints pt 7 title 'particles', \
+     'sph_dam_break_late_front_dz_dt_ritter_speed.dat' index 1 using 1:2 with linespoints pt 7 title 'law_ideal_gas', \
+     'sph_dam_break_late_front_dz_dt_ritter_speed.dat' index 2 using 1:2 with linespoints pt 7 title 'law_tait', \
+     'sph_dam_break_late_front_dz_dt_ritter_speed.dat' index 3 using 1:2 with linespoints pt 7 title 'law_dfsph', \
+     'sph_dam_break_late_front_dz_dt_ritter_speed.dat' index 4 using 1:2 with linespoints pt 7 title 'sound_speed_ideal_gas', \
+     'sph_dam_break_late_front_dz_dt_ritter_speed.dat' index 5 using 1:2 with linespoints pt 7 title 'sound_speed_tait', \
+     'sph_dam_break_late_front_dz_dt_ritter_speed.dat' index 6 using 1:2 with linespoints pt 7 title 'courant'
 set output 'sph_cost_hydrostatic_pressure_rms_rho0_g_h.png'
 set title 'sph: hydrostatic pressure RMS / (rho0 g H) against cost, one curve per knob'
 set xlabel 'cost: ms of wall clock per simulated second (1 thread)'
