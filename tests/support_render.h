@@ -6,6 +6,7 @@
 
 #include <check.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "modesplit/modesplit.h"
@@ -65,6 +66,18 @@ static inline int ms_test_project(const ms_renderer_desc *d, const float p[3], i
     *col = 0.5 * w * (1 + x);
     *row = 0.5 * h * (1 - y);
     return 1;
+}
+
+/* The look suites' pictures: with MS_LOOK_DUMP=DIR, r's last picture is
+ * written to DIR/name.png for a person to look at; without it, nothing. */
+static inline void ms_test_dump_png(const ms_renderer *r, const char *name)
+{
+    const char *dir = getenv("MS_LOOK_DUMP");
+    if (!dir)
+        return;
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s.png", dir, name);
+    ck_assert_int_eq(ms_renderer_write_png(r, path), MS_OK);
 }
 
 #endif

@@ -37,16 +37,6 @@ typedef struct glass_pictures {
     float level;              /* m, world: the liquid's mean height near the axis */
 } glass_pictures;
 
-static void dump(const ms_renderer *r, const char *name)
-{
-    const char *dir = getenv("MS_LOOK_DUMP");
-    if (!dir)
-        return;
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s.png", dir, name);
-    ck_assert_int_eq(ms_renderer_write_png(r, path), MS_OK);
-}
-
 static unsigned char *copy_pixels(const ms_renderer *r)
 {
     unsigned char *p = malloc((size_t)W * W * 4);
@@ -114,14 +104,14 @@ static glass_pictures draw_glass(int top_down, const char *shader, const char *n
     ck_assert_msg(st == MS_OK, "%s", ms_last_error());
     char what[64];
     snprintf(what, sizeof what, "%s_wet", name);
-    dump(r, what);
+    ms_test_dump_png(r, what);
     g.wet = copy_pixels(r);
     float *zero = calloc((size_t)nx * ny, sizeof *zero);
     ck_assert_ptr_nonnull(zero);
     st = ms_renderer_draw_scene_field(r, sc, zero, &grid, t);
     ck_assert_msg(st == MS_OK, "%s", ms_last_error());
     snprintf(what, sizeof what, "%s_dry", name);
-    dump(r, what);
+    ms_test_dump_png(r, what);
     g.dry = copy_pixels(r);
     free(zero);
     ms_renderer_destroy(r);

@@ -51,16 +51,6 @@ static ms_renderer_desc camera_desc(const ms_scene *sc, const float eye[3], cons
     return d;
 }
 
-static void dump(const ms_renderer *r, const char *name)
-{
-    const char *dir = getenv("MS_LOOK_DUMP");
-    if (!dir)
-        return;
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s.png", dir, name);
-    ck_assert_int_eq(ms_renderer_write_png(r, path), MS_OK);
-}
-
 /* The picture of the still water (level above the floor) of d's pool,
  * drawn with the scene's objects (sc) or without (NULL); a copy. */
 static unsigned char *picture(const ms_renderer_desc *d, const ms_scene *sc, const char *name)
@@ -73,7 +63,7 @@ static unsigned char *picture(const ms_renderer_desc *d, const ms_scene *sc, con
                  {d->pool_min[0], d->pool_min[1]}};
     st = sc ? ms_renderer_draw_scene_field(r, sc, h, &g, 0.0) : ms_renderer_draw_field(r, h, &g, 0.0);
     ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
-    dump(r, name);
+    ms_test_dump_png(r, name);
     unsigned char *copy = malloc((size_t)W * W * 4);
     ck_assert_ptr_nonnull(copy);
     memcpy(copy, ms_renderer_pixels(r, NULL, NULL), (size_t)W * W * 4);
@@ -218,7 +208,7 @@ START_TEST(a_moving_obstacle_leaves_no_trace_in_the_environment)
         st = ms_renderer_draw_scene_field(r, sc, h, &g, times[k]);
         ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
     }
-    dump(r, "moved");
+    ms_test_dump_png(r, "moved");
     /* a fresh renderer's picture of the last time */
     ms_renderer *fresh = NULL;
     ck_assert_int_eq(ms_renderer_create_desc(&d, &fresh), MS_OK);

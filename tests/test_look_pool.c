@@ -34,16 +34,6 @@ static const char *const dam =
     " \"volume\": {\"spacing\": 0.044, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 1, 0.44]}],"
     "   \"field\": [50, 50]}}";
 
-static void dump(const ms_renderer *r, const char *name)
-{
-    const char *dir = getenv("MS_LOOK_DUMP");
-    if (!dir)
-        return;
-    char path[512];
-    snprintf(path, sizeof path, "%s/%s.png", dir, name);
-    ck_assert_int_eq(ms_renderer_write_png(r, path), MS_OK);
-}
-
 static void sub3(const float a[3], const float b[3], double o[3])
 {
     for (int k = 0; k < 3; ++k)
@@ -137,8 +127,8 @@ START_TEST(a_run_up_against_the_wall_stays_inside_the_pool)
     ck_assert_int_eq(ms_renderer_create_desc(&d, &b), MS_OK);
     ck_assert_int_eq(ms_renderer_draw_scene_field(a, sc, flat, &g, 0.0), MS_OK);
     ck_assert_int_eq(ms_renderer_draw_scene_field(b, sc, high, &g, 0.0), MS_OK);
-    dump(a, "pool_flat");
-    dump(b, "pool_run_up");
+    ms_test_dump_png(a, "pool_flat");
+    ms_test_dump_png(b, "pool_run_up");
     /* the pool's opening at its rim, projected */
     const float rim = d.pool_max[2];
     const float corner[4][3] = {{d.pool_min[0], d.pool_min[1], rim},
