@@ -31,4 +31,3 @@ void ms_test_skip(const char *file, int line, const char *why)
     fprintf(f, "%s:%d %s: %s\n", file, line, tcase_name(), why);
     fclose(f);
 }
-

@@ -18,10 +18,10 @@
 #include "support.h"
 #include "support_render.h"
 
-#define REQUIRE_GL()                                                                   \
-    do {                                                                               \
-        if (!MS_HAVE_GL)                                                               \
-            MS_SKIP("built without OSMesa and EGL: nothing can draw");                 \
+#define REQUIRE_GL()                                                   \
+    do {                                                               \
+        if (!MS_HAVE_GL)                                               \
+            MS_SKIP("built without OSMesa and EGL: nothing can draw"); \
     } while (0)
 
 #define N 50  /* field cells per side: fig4c's SPH field */
@@ -79,8 +79,8 @@ static double outside_quad(double q[4][2], double x, double y)
 {
     double worst = -1e9;
     /* orientation of the quad */
-    const double area = (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) -
-                        (q[1][1] - q[0][1]) * (q[2][0] - q[0][0]);
+    const double area =
+        (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[1][1] - q[0][1]) * (q[2][0] - q[0][0]);
     for (int k = 0; k < 4; ++k) {
         const double *a = q[k], *b = q[(k + 1) % 4];
         double ex = b[0] - a[0], ey = b[1] - a[1], len = sqrt(ex * ex + ey * ey);
@@ -138,7 +138,8 @@ START_TEST(a_run_up_against_the_wall_stays_inside_the_pool)
     double q[4][2];
     for (int k = 0; k < 4; ++k)
         project(&d, corner[k], &q[k][0], &q[k][1]);
-    const unsigned char *pa = ms_renderer_pixels(a, NULL, NULL), *pb = ms_renderer_pixels(b, NULL, NULL);
+    const unsigned char *pa = ms_renderer_pixels(a, NULL, NULL),
+                        *pb = ms_renderer_pixels(b, NULL, NULL);
     int beyond = 0, inside = 0;
     double farthest = 0;
     for (int y = 0; y < W; ++y)
@@ -146,7 +147,9 @@ START_TEST(a_run_up_against_the_wall_stays_inside_the_pool)
             const size_t i = ((size_t)y * W + (size_t)x) * 4;
             int diff = 0;
             for (int c = 0; c < 3; ++c)
-                diff = abs((int)pa[i + c] - (int)pb[i + c]) > diff ? abs((int)pa[i + c] - (int)pb[i + c]) : diff;
+                diff = abs((int)pa[i + c] - (int)pb[i + c]) > diff
+                           ? abs((int)pa[i + c] - (int)pb[i + c])
+                           : diff;
             if (diff <= 8)
                 continue;
             const double out = outside_quad(q, x + 0.5, y + 0.5);

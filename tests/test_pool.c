@@ -189,8 +189,8 @@ START_TEST(an_idle_lent_helper_sleeps_instead_of_spinning)
         nanosleep(&(struct timespec){0, 500000000}, NULL); /* 0.5 s of no loops */
         const double used = thread_cpu_s(t) - c0;
         /* asleep: next to nothing; spinning would be ~0.5 s */
-        ck_assert_msg(used < 0.05, "round %d: the idle helper used %.3f s of CPU in 0.5 s",
-                      round, used);
+        ck_assert_msg(used < 0.05, "round %d: the idle helper used %.3f s of CPU in 0.5 s", round,
+                      used);
     }
     return_helper(p, t);
 }

@@ -512,8 +512,7 @@ static ms_status check_space(const ms_writer *w, int particles)
             return ms_fail(MS_ERR_IO,
                            "io: frame %ld needs up to %.2f MB but only %.2f MB are free on the "
                            "file system of %s; stopped before writing it (the file holds %s)",
-                           w->frames, (need + copy) / 1e6, free_bytes / 1e6, w->path,
-                           holds);
+                           w->frames, (need + copy) / 1e6, free_bytes / 1e6, w->path, holds);
     }
     struct rlimit rl;
     if (getrlimit(RLIMIT_FSIZE, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&

@@ -72,9 +72,9 @@ struct ms_xdmf {
     long gcount[MS_IO_NFIELDS + 1];
     /* run.xmf's next state, made by ms_xdmf_prepare: a copy under
      * pending_path, renamed over path by ms_xdmf_frame */
-    int pending_fd;             /* -1: none */
-    char *pending_path;         /* path.tmp */
-    off_t pending_body;         /* bytes the frame adds before the closing tags */
+    int pending_fd;     /* -1: none */
+    char *pending_path; /* path.tmp */
+    off_t pending_body; /* bytes the frame adds before the closing tags */
 };
 
 #define PARTICLE_GROUP MS_IO_NFIELDS
@@ -538,8 +538,8 @@ ms_status ms_xdmf_prepare(ms_xdmf *x, long frame, double t, int particles)
     int bad = fd < 0;
     char chunk[16384];
     for (off_t at = 0; !bad && at < x->tail_at;) {
-        size_t want = (size_t)(x->tail_at - at) < sizeof chunk ? (size_t)(x->tail_at - at)
-                                                                 : sizeof chunk;
+        size_t want =
+            (size_t)(x->tail_at - at) < sizeof chunk ? (size_t)(x->tail_at - at) : sizeof chunk;
         ssize_t got = pread(x->fd, chunk, want, at);
         if (got < 0 && errno == EINTR)
             continue;
@@ -561,8 +561,8 @@ ms_status ms_xdmf_prepare(ms_xdmf *x, long frame, double t, int particles)
             close(fd);
         unlink(tmp);
         ms_free(tmp);
-        return ms_fail(MS_ERR_IO, "io: writing frame %ld to the XDMF sidecar %s failed: %s",
-                       frame, x->path, strerror(e));
+        return ms_fail(MS_ERR_IO, "io: writing frame %ld to the XDMF sidecar %s failed: %s", frame,
+                       x->path, strerror(e));
     }
     x->pending_fd = fd;
     x->pending_path = tmp;

@@ -274,8 +274,7 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
         (st = smooth_sph_part(r, h, &g, v, &vg, &h)) != MS_OK)
         return st;
     /* the SPH field alone: blurred over the particles' spacing */
-    if (!ms_sim_surface_height(sim, NULL, NULL) && sc && sc->has_volume &&
-        sc->volume.spacing > 0) {
+    if (!ms_sim_surface_height(sim, NULL, NULL) && sc && sc->has_volume && sc->volume.spacing > 0) {
         const float sigma = sc->volume.spacing / MS_MIN(g.dx, g.dy);
         if (sigma > 0.5f && (st = blur_field(r, h, &g, sigma, &h)) != MS_OK)
             return st;

@@ -127,7 +127,8 @@ static void sky_color(const float d[3], const float sun[3], float texel, float r
         float cover = smoothstepf(tree_top + texel, tree_top - texel, z);
         if (cover > 0) {
             for (int c = 0; c < 3; ++c) {
-                float leaf = trees[c] * (0.8f + 0.4f * value_noise(60.0f * ca + 40.0f * sa, 40.0f * z));
+                float leaf =
+                    trees[c] * (0.8f + 0.4f * value_noise(60.0f * ca + 40.0f * sa, 40.0f * z));
                 rgb[c] += (leaf - rgb[c]) * cover;
             }
         }

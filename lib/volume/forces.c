@@ -74,27 +74,27 @@ static inline int padded(int n)
  * Vector a[k] holds the records of j[k] | j[k+4] (k < 4) or j[k+4] |
  * j[k+8] (k >= 4), so that the last lane shuffle puts the lanes in order.
  * Values are moved, never computed: the same bits as the gathers. */
-__attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512
-record_pair(const float *pk, int lo, int hi)
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 record_pair(
+    const float *pk, int lo, int hi)
 {
     return _mm512_insertf32x8(_mm512_castps256_ps512(_mm256_loadu_ps(pk + 8 * (size_t)lo)),
                               _mm256_loadu_ps(pk + 8 * (size_t)hi), 1);
 }
 
 /* Written out (no arrays): with arrays GCC kept the vectors on the stack. */
-#define TRANSPOSE4(a0, a1, a2, a3, s0, s1, s2, s3)                                   \
-    do {                                                                              \
+#define TRANSPOSE4(a0, a1, a2, a3, s0, s1, s2, s3)                                       \
+    do {                                                                                 \
         const __m512 t0_ = _mm512_unpacklo_ps(a0, a1), t1_ = _mm512_unpackhi_ps(a0, a1); \
         const __m512 t2_ = _mm512_unpacklo_ps(a2, a3), t3_ = _mm512_unpackhi_ps(a2, a3); \
-        s0 = _mm512_shuffle_ps(t0_, t2_, 0x44);                                       \
-        s1 = _mm512_shuffle_ps(t0_, t2_, 0xee);                                       \
-        s2 = _mm512_shuffle_ps(t1_, t3_, 0x44);                                       \
-        s3 = _mm512_shuffle_ps(t1_, t3_, 0xee);                                       \
+        s0 = _mm512_shuffle_ps(t0_, t2_, 0x44);                                          \
+        s1 = _mm512_shuffle_ps(t0_, t2_, 0xee);                                          \
+        s2 = _mm512_shuffle_ps(t1_, t3_, 0x44);                                          \
+        s3 = _mm512_shuffle_ps(t1_, t3_, 0xee);                                          \
     } while (0)
 
-__attribute__((target("avx512f,avx512dq"), always_inline)) static inline void
-load_records(const float *pk, const int *restrict j, __m512 *o0, __m512 *o1, __m512 *o2,
-             __m512 *o3, __m512 *o4, __m512 *o5, __m512 *o6, __m512 *o7)
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline void load_records(
+    const float *pk, const int *restrict j, __m512 *o0, __m512 *o1, __m512 *o2, __m512 *o3,
+    __m512 *o4, __m512 *o5, __m512 *o6, __m512 *o7)
 {
     const __m512 a0 = record_pair(pk, j[0], j[4]), a1 = record_pair(pk, j[1], j[5]);
     const __m512 a2 = record_pair(pk, j[2], j[6]), a3 = record_pair(pk, j[3], j[7]);

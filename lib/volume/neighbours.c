@@ -145,10 +145,9 @@ static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi,
  * ids of those within h of q, and their r^2, stored as whole compressed
  * blocks (the lists have slack: a compress to memory is microcoded and
  * slow). Returns how many were within h. */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t
-filter_block(__m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y,
-             const float *z, __mmask16 valid, __m512i id, int *out, float *out2, float *pos,
-             size_t stride)
+__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t filter_block(
+    __m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y, const float *z,
+    __mmask16 valid, __m512i id, int *out, float *out2, float *pos, size_t stride)
 {
     __m512 xj = _mm512_maskz_loadu_ps(valid, x), yj = _mm512_maskz_loadu_ps(valid, y);
     __m512 zj = _mm512_maskz_loadu_ps(valid, z);
@@ -213,17 +212,16 @@ filter_run_body(const float *restrict cx, const int *restrict cidx, size_t nc, s
     return n;
 }
 
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
-filter_run_avx512(const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride,
-                  const float q[3], float h2, int *restrict out, float *restrict out2)
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx512(
+    const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
+    float h2, int *restrict out, float *restrict out2)
 {
     return filter_run_body(cx, cidx, nc, stride, q, h2, out, out2, NULL);
 }
 
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
-filter_run_pos_avx512(const float *restrict cx, const int *restrict cidx, size_t nc,
-                      size_t stride, const float q[3], float h2, int *restrict out,
-                      float *restrict out2, float *restrict pos)
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_pos_avx512(
+    const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
+    float h2, int *restrict out, float *restrict out2, float *restrict pos)
 {
     return filter_run_body(cx, cidx, nc, stride, q, h2, out, out2, pos);
 }
@@ -368,9 +366,9 @@ static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int t
  * issue 12: it replaced two 64-bit gathers per block, ~10 % of a fig1
  * sub-step), the same r^2 and the same order (compress keeps it), so the
  * same list. */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static int
-gather_image_avx512(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
-                    const int *restrict idx, int n, const float *restrict pos, size_t stride)
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static int gather_image_avx512(
+    const ms_volume *v, ms_nlist *L, const float q[3], int tag, const int *restrict idx, int n,
+    const float *restrict pos, size_t stride)
 {
     if (!reserve(L, (size_t)n + 2 * LANES))
         return -1;
@@ -507,11 +505,10 @@ int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *n
         }
         if (near)
             nreal = (int)filter_run_pos_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand,
-                                               stride, p, h2, L->idx + L->len, L->r2 + L->len,
-                                               pos);
+                                               stride, p, h2, L->idx + L->len, L->r2 + L->len, pos);
         else
-            nreal = (int)filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand,
-                                           stride, p, h2, L->idx + L->len, L->r2 + L->len);
+            nreal = (int)filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand, stride,
+                                           p, h2, L->idx + L->len, L->r2 + L->len);
         L->len += (size_t)nreal;
     } else
 #endif

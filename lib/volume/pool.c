@@ -70,11 +70,11 @@ struct ms_vpool {
      * caller writes the next loop's only once `done` says every chunk of
      * this one ran. */
     int shared;
-    _Atomic uint64_t claim;   /* generation << 16 | next unclaimed chunk */
-    _Atomic int done;         /* chunks of the current loop finished */
-    _Atomic int help_open;    /* a helper may claim chunks */
+    _Atomic uint64_t claim;                   /* generation << 16 | next unclaimed chunk */
+    _Atomic int done;                         /* chunks of the current loop finished */
+    _Atomic int help_open;                    /* a helper may claim chunks */
     _Atomic int helper_sleeps, caller_sleeps; /* on `go`, on `done` */
-    uint64_t gen;             /* the caller's: the current loop's generation */
+    uint64_t gen;                             /* the caller's: the current loop's generation */
 };
 
 /* Claim word: the low 16 bits count claims of the current generation. A

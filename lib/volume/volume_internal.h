@@ -294,7 +294,10 @@ typedef struct ms_grid_shape {
 static inline ms_grid_shape ms_volume_grid_shape(const ms_volume *v)
 {
     ms_grid_shape g = {{v->desc.domain_min[0], v->desc.domain_min[1], v->desc.domain_min[2]},
-                       v->inv_h, v->gx, v->gy, v->gz};
+                       v->inv_h,
+                       v->gx,
+                       v->gy,
+                       v->gz};
     return g;
 }
 /* Cell of a position (padded indices; a position outside the domain, a

@@ -119,8 +119,7 @@ static int repeat(ms_sim *sim, const ms_scene *sc, int r, result *out)
  * 2-thread run. Frames per repeat chosen from the 1-thread warm-up
  * (frames_hint 0) so a repeat lasts about `target` seconds; the two sims
  * take the same frames. */
-static int run_pair(const ms_scene *sc, int frames_hint, int repeats, double target,
-                    result out[2])
+static int run_pair(const ms_scene *sc, int frames_hint, int repeats, double target, result out[2])
 {
     ms_sim *sim[2] = {NULL, NULL};
     double per_frame[2] = {0, 0};
@@ -235,10 +234,9 @@ int main(int argc, char **argv)
                     "%s,%s,%s,%d,%d,%d,%.0f,%d,%d,%d,%.3f,%.3f,%.3f,%.4f,%.4f,%.4f,%.4f,%.4f,"
                     "%.3f,%.0f,%.2f,%.4f,%.3f\n",
                     commit, machine, rows[k].name, threads, res.particles,
-                    res.info.field_nx * res.info.field_ny, wave_cells, res.n_time, frames,
-                    repeats, fps.median, fps.p10, fps.p90, med[0], med[1], med[2], med[3],
-                    med[4], speedup, rows[k].paper_fps, gbps, bound_ms,
-                    threads == 2 ? paired : 1.0);
+                    res.info.field_nx * res.info.field_ny, wave_cells, res.n_time, frames, repeats,
+                    fps.median, fps.p10, fps.p90, med[0], med[1], med[2], med[3], med[4], speedup,
+                    rows[k].paper_fps, gbps, bound_ms, threads == 2 ? paired : 1.0);
             fflush(stdout);
         }
         ms_scene_destroy(sc);
