@@ -69,13 +69,9 @@ static ms_status smooth_sph_part(ms_renderer *r, const float *h, const ms_grid *
 {
     const size_t cells = (size_t)g->nx * (size_t)g->ny;
     const size_t need = cells + 4 * (size_t)vg->ny * (size_t)g->nx;
-    if (r->display_cap < need) {
-        ms_free(r->display);
-        r->display = ms_alloc_array(need, sizeof(float));
-        r->display_cap = r->display ? need : 0;
-        if (!r->display)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the display field");
-    }
+    ms_status st = ms_render_reserve(&r->display, &r->display_cap, need, "the display field");
+    if (st != MS_OK)
+        return st;
     float *o = r->display;
     /* per coarse row, along x: cubic (cx), cubic - linear (dx), linear (lx) */
     float *cx = o + cells, *dxr = cx + (size_t)vg->ny * g->nx, *lx = dxr + (size_t)vg->ny * g->nx;
@@ -139,13 +135,9 @@ static ms_status blur_field(ms_renderer *r, const float *h, const ms_grid *g, fl
 {
     const int nx = g->nx, ny = g->ny, rad = MS_MIN((int)ceilf(2.5f * sigma), 32);
     const size_t cells = (size_t)nx * (size_t)ny, need = 2 * cells;
-    if (r->display_cap < need) {
-        ms_free(r->display);
-        r->display = ms_alloc_array(need, sizeof(float));
-        r->display_cap = r->display ? need : 0;
-        if (!r->display)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the display field");
-    }
+    ms_status st = ms_render_reserve(&r->display, &r->display_cap, need, "the display field");
+    if (st != MS_OK)
+        return st;
     float w[65], sum = 0;
     for (int k = -rad; k <= rad; ++k)
         sum += w[k + rad] = expf(-0.5f * (float)(k * k) / (sigma * sigma));

@@ -276,13 +276,9 @@ ms_status ms_render_cavity_fill(ms_renderer *r, const float *h, const ms_grid *g
     if (c->rot[8] < MAX_TILT_COS)
         return MS_OK;
     const size_t cells = (size_t)g->nx * (size_t)g->ny;
-    if (r->fill_cap < cells) {
-        ms_free(r->fill);
-        r->fill = ms_alloc_array(cells, sizeof(float));
-        r->fill_cap = r->fill ? cells : 0;
-        if (!r->fill)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for the glass's fill");
-    }
+    ms_status st = ms_render_reserve(&r->fill, &r->fill_cap, cells, "the glass's fill");
+    if (st != MS_OK)
+        return st;
     float *f = r->fill;
     memcpy(f, h, cells * sizeof *f);
     const float cell = MS_MAX(g->dx, g->dy);

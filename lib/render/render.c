@@ -496,3 +496,13 @@ const float *ms_renderer_caustics(const ms_renderer *r, int *n)
         *n = ok ? r->caustics.n : 0;
     return ok ? r->caustics.map : NULL;
 }
+
+ms_status ms_render_reserve(float **buf, size_t *cap, size_t need, const char *what)
+{
+    if (*cap >= need)
+        return MS_OK;
+    ms_free(*buf);
+    *buf = ms_alloc_array(need, sizeof(float));
+    *cap = *buf ? need : 0;
+    return *buf ? MS_OK : ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %s", what);
+}
