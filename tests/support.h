@@ -29,6 +29,8 @@ void ms_test_skip(const char *file, int line, const char *why);
 int ms_test_tmp_dir(char *buf, size_t size, const char *prefix);
 void ms_test_remove_tree(const char *dir);
 char *ms_test_slurp(const char *path);
+/* The same, with its length in *size (binary files). */
+char *ms_test_slurp_n(const char *path, size_t *size);
 /* The text of the scene file at path with its first `from` replaced by
  * `to` (a variant of a shipped scene; from NULL: the text as it is);
  * malloc'd, NULL when `from` is not in it. */
@@ -48,6 +50,10 @@ int ms_test_run_tool(const char *const *args, const char *out, const char *err);
  * 1 yes, 0 no, -1 when h5dump is not installed. MS_ASSERT_H5DUMP_READS
  * skips the case (MS_SKIP) rather than pass it when h5dump is absent. */
 int ms_test_h5dump(const char *path);
+/* Wait until no process holds `path` open (a killed run's writer helper
+ * finishing the flush it was given, lib/io/h5_atomic.c), at most `seconds`:
+ * 1 when none does, 0 on time out. */
+int ms_test_wait_unused(const char *path, double seconds);
 #define MS_ASSERT_H5DUMP_READS(path)                                                   \
     do {                                                                               \
         const char *p_ = (path);                                                       \

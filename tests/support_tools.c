@@ -11,6 +11,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 int ms_test_tmp_dir(char *buf, size_t size, const char *prefix)
@@ -45,6 +46,13 @@ void ms_test_remove_tree(const char *dir)
 
 char *ms_test_slurp(const char *path)
 {
+    return ms_test_slurp_n(path, NULL);
+}
+
+char *ms_test_slurp_n(const char *path, size_t *size)
+{
+    if (size)
+        *size = 0;
     FILE *f = fopen(path, "rb");
     if (!f)
         return strdup("");
@@ -59,6 +67,8 @@ char *ms_test_slurp(const char *path)
     size_t got = fread(s, 1, (size_t)n, f);
     s[got] = '\0';
     fclose(f);
+    if (size)
+        *size = got;
     return s;
 }
 
@@ -138,4 +148,40 @@ int ms_test_h5dump(const char *path)
     char cmd[1024];
     snprintf(cmd, sizeof cmd, "h5dump '%s' > /dev/null 2>&1", path);
     return system(cmd) == 0;
+}
+
+int ms_test_wait_unused(const char *path, double seconds)
+{
+    struct stat want;
+    if (stat(path, &want) != 0)
+        return 1;
+    for (double waited = 0; waited <= seconds; waited += 0.01) {
+        int open_here = 0;
+        DIR *procs = opendir("/proc");
+        if (!procs)
+            return 1; /* no /proc: nothing to wait for that we could see */
+        struct dirent *p;
+        while (!open_here && (p = readdir(procs)))
+            if (p->d_name[0] >= '1' && p->d_name[0] <= '9') {
+                char dir[288];
+                snprintf(dir, sizeof dir, "/proc/%s/fd", p->d_name);
+                DIR *fds = opendir(dir);
+                struct dirent *f;
+                while (fds && !open_here && (f = readdir(fds))) {
+                    char link[576];
+                    struct stat got;
+                    snprintf(link, sizeof link, "%s/%s", dir, f->d_name);
+                    open_here = f->d_name[0] != '.' && stat(link, &got) == 0 &&
+                                got.st_dev == want.st_dev && got.st_ino == want.st_ino;
+                }
+                if (fds)
+                    closedir(fds);
+            }
+        closedir(procs);
+        if (!open_here)
+            return 1;
+        struct timespec ts = {0, 10000000L};
+        nanosleep(&ts, NULL);
+    }
+    return 0;
 }

@@ -1,6 +1,8 @@
 /* lib/io: keeps the end-of-allocation (EOA) address stored in the file's
  * superblock ahead of every object the file points to, so that a run
- * killed in the middle of an HDF5 flush still opens in h5dump.
+ * killed in the middle of an HDF5 flush still opens in h5dump. Used only
+ * when h5_atomic.c could not start its helper process (whose flushes land
+ * whole, superblock included); it narrows the window that driver closes.
  *
  * Why: HDF5 (without SWMR) writes a flush's metadata entries first and the
  * superblock, which holds the EOA, last. A kill between the two leaves

@@ -9,8 +9,10 @@
  *   1. check the space left (file system and RLIMIT_FSIZE) for the frame;
  *   2. extend and write every field and /time, build the particle step as
  *      an anonymous group;
- *   3. move the superblock's EOA ahead (eoa_guard.c), H5Fflush: the frame's
- *      data and metadata are on disk;
+ *   3. H5Fflush: the frame's data and metadata are on disk (the file is
+ *      written through h5_atomic.c, whose flushes land all or nothing even
+ *      when the process is killed in one; without its helper process the
+ *      superblock's EOA is moved ahead first, eoa_guard.c);
  *   4. link /Step#k and /particles/k, raise the root attribute `frames`, guard and flush
  *      again: the commit;
  *   5. append the frame to the XDMF sidecars: run.xmf by renaming in the
@@ -24,7 +26,8 @@
  * checksum (ms_sim_restore), which sends the resume to the other slot.
  * Freed file space is never reused (H5F_FSPACE_STRATEGY_NONE), so nothing a
  * flushed state refers to is overwritten by a later frame's data; a kill
- * between two flushes leaves the last committed state readable. The reader
+ * between two flushes or inside one leaves the last committed state
+ * readable. The reader
  * takes the smallest of `frames` and every dataset's length.
  */
 #define _GNU_SOURCE /* memfd_create */
@@ -121,6 +124,7 @@ static void abandon_file(ms_writer *w)
     if (w->file < 0)
         return;
     int *fdp = NULL;
+    ms_h5_atomic_abandon(w->file);
     if (H5Fget_vfd_handle(w->file, H5P_DEFAULT, (void **)&fdp) >= 0 && fdp && *fdp >= 0) {
         int scratch = -1;
 #ifdef MFD_CLOEXEC
@@ -420,7 +424,7 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
     }
     ms_h5_quiet q;
     ms_h5_hush(&q);
-    hid_t fapl = ms_h5_fapl();
+    hid_t fapl = ms_h5_fapl_atomic();
     hid_t fcpl = H5Pcreate(H5P_FILE_CREATE);
     if (fapl < 0 || fcpl < 0 ||
         H5Pset_file_space_strategy(fcpl, H5F_FSPACE_STRATEGY_NONE, 0, 1) < 0 ||
@@ -531,7 +535,7 @@ static ms_status check_space(const ms_writer *w, int particles)
 /* Flush with the superblock's EOA moved ahead first (eoa_guard.c). */
 static int commit(ms_writer *w)
 {
-    if (ms_h5_guard_eoa(w->file) != MS_OK)
+    if (!ms_h5_atomic_active(w->file) && ms_h5_guard_eoa(w->file) != MS_OK)
         return 0;
     return H5Fflush(w->file, H5F_SCOPE_GLOBAL) >= 0;
 }
@@ -1112,7 +1116,7 @@ ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout 
     }
     ms_h5_quiet q;
     ms_h5_hush(&q);
-    hid_t fapl = ms_h5_fapl();
+    hid_t fapl = ms_h5_fapl_atomic();
     w->file = fapl >= 0 ? H5Fopen(path, H5F_ACC_RDWR, fapl) : -1;
     if (fapl >= 0)
         H5Pclose(fapl);
