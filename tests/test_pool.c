@@ -161,6 +161,66 @@ START_TEST(every_chunk_of_every_loop_runs_once_with_a_lent_helper)
 }
 END_TEST
 
+/* Round six: the caller claims chunks from the front, a lent helper from
+ * the back, so that each keeps its end of the arrays (and its core's cache)
+ * from loop to loop. In every loop the caller's chunks are 0 .. k-1 and the
+ * helper's k .. parts-1: with the chunks dealt alternately (one counter, as
+ * before) the helper's would be interleaved with the caller's and this
+ * fails. Chunk 0 (always the caller's) holds until the helper has run the
+ * last chunk (bounded: 20 s); the helper's chunks take 1 ms, so the caller
+ * takes some of the rest from the front. */
+typedef struct ends_ctx {
+    pthread_t caller;
+    atomic_int ran_by_caller[MS_VPOOL_SHARED_PARTS]; /* 1 caller, 2 helper */
+    atomic_int last_done;
+} ends_ctx;
+
+static void ends_body(void *ctxp, int part, int b, int e)
+{
+    ends_ctx *c = ctxp;
+    (void)b;
+    (void)e;
+    const int mine = pthread_equal(pthread_self(), c->caller);
+    atomic_store(&c->ran_by_caller[part], mine ? 1 : 2);
+    if (part == 0) {
+        for (int k = 0; k < 20000 && !atomic_load(&c->last_done); ++k)
+            nanosleep(&(struct timespec){0, 1000000}, NULL);
+    } else if (!mine) {
+        nanosleep(&(struct timespec){0, 1000000}, NULL);
+    }
+    if (part == MS_VPOOL_SHARED_PARTS - 1)
+        atomic_store(&c->last_done, 1);
+}
+
+START_TEST(the_caller_claims_from_the_front_and_a_helper_from_the_back)
+{
+    pthread_t t;
+    ms_vpool *p = lend_helper(&t);
+    static ends_ctx c;
+    c.caller = pthread_self();
+    int caller_more = 0; /* loops where the caller took more than chunk 0 */
+    for (int loop = 0; loop < 50; ++loop) {
+        for (int q = 0; q < MS_VPOOL_SHARED_PARTS; ++q)
+            atomic_store(&c.ran_by_caller[q], 0);
+        atomic_store(&c.last_done, 0);
+        ms_vpool_run(p, ends_body, &c, N);
+        int k = 0; /* the caller's chunks: 0 .. k-1 */
+        while (k < MS_VPOOL_SHARED_PARTS && atomic_load(&c.ran_by_caller[k]) == 1)
+            ++k;
+        ck_assert_int_ge(k, 1);
+        for (int q = k; q < MS_VPOOL_SHARED_PARTS; ++q)
+            ck_assert_msg(atomic_load(&c.ran_by_caller[q]) == 2,
+                          "loop %d: chunk %d ran on %s after the caller's 0..%d", loop, q,
+                          atomic_load(&c.ran_by_caller[q]) == 1 ? "the caller" : "nobody",
+                          k - 1);
+        caller_more += k > 1;
+    }
+    return_helper(p, t);
+    /* the helper's chunks are slow: the caller went on from the front too */
+    ck_assert_int_gt(caller_more, 0);
+}
+END_TEST
+
 /* No busy-wait: a helper lent while no loop comes spins at most ~0.1 ms,
  * then sleeps; over half a second of nothing (and again after a burst of
  * loops) it uses a small fraction of a core. */
@@ -465,6 +525,7 @@ static Suite *pool_suite(void)
     tcase_set_timeout(tc, 180); /* TSan: the sim and grid cases run ~20 s each */
     tcase_add_test(tc, a_lent_helper_runs_chunks_and_the_values_are_one_threads);
     tcase_add_test(tc, every_chunk_of_every_loop_runs_once_with_a_lent_helper);
+    tcase_add_test(tc, the_caller_claims_from_the_front_and_a_helper_from_the_back);
     tcase_add_test(tc, an_idle_lent_helper_sleeps_instead_of_spinning);
     tcase_add_test(tc, a_shared_pool_runs_its_loops_through_the_engines_tasks);
     tcase_add_test(tc, a_sims_volume_loops_run_through_the_engines_tasks);
