@@ -33,7 +33,10 @@
  * Two phases (extract.h): A marks the particles over the neighbour lists
  * and snapshots what the columns need; B, a pure function of the snapshot,
  * bins, searches the columns and smooths, on any thread (lib/sim runs it
- * on the surface thread, Fig. 8).
+ * on the surface thread, Fig. 8). B's column search comes in two forms:
+ * the band search (columns_band, the default since issue 12's round six)
+ * and the reference (columns_reference, 663cc3c's bytes), kept to measure
+ * the first against.
  */
 #include <assert.h>
 #include <math.h>
@@ -137,6 +140,15 @@ typedef struct column_ctx {
     int *reach;        /* per thread, 2 ry + 1: the row reaches of row `reach_j` */
     size_t reach_stride;
     float *raw; /* rw x rh, the rectangle's columns */
+    /* the band path (not reference): bins of the extended grid ex x ey
+     * (rx, ry cells beyond every side, wall images included) and per
+     * thread the band of 2 ry + 1 bin rows around the row being worked
+     * on, ordered by bin column: band[part] (x, y, z, band_stride floats
+     * each), bstart[part] (ex + 1) */
+    int ex, rx, ry;
+    float *band;
+    size_t band_stride;
+    int *bstart;
 } column_ctx;
 
 /* The bins of row jj = j + dj, dj in [-ry, ry], within R of a column of
@@ -397,11 +409,14 @@ static inline __attribute__((always_inline)) int column_candidates(const column_
 
 /* The height (m above the domain floor, 0 if phi never reaches T) of a
  * column with candidates (cz, ca, mc): walk down from zmax in steps of
- * half a spacing until phi reaches T, and close in on the crossing by
- * regula falsi to 1/256 of a spacing. */
+ * half a spacing until phi reaches T, and close in on the crossing: the
+ * reference by regula falsi until the bracket is 1/256 of a spacing, the
+ * default by secant steps (issue 12: ~2 evaluations where that took ~3.5;
+ * test_volume checks it lands as near a root of eq. 17). */
 static inline __attribute__((always_inline)) float column_height(const ms_extract_snap *s,
                                                                  const float *cz, const float *ca,
-                                                                 int mc, float zmax, float zlow)
+                                                                 int mc, float zmax, float zlow,
+                                                                 int reference)
 {
     const float *lo = s->lo, *hi = s->hi;
     const float R = s->R, inv_r2 = 1.0f / (R * R);
@@ -473,8 +488,9 @@ static inline __attribute__((always_inline)) float column_height(const ms_extrac
             fa = phi_at(cz, ca, mc, za, inv_r2) - T;
             found = fa < 0.0f;
         }
-        if (found) {
-            /* regula falsi (Illinois) to 1/256 of a spacing */
+        if (found && reference) {
+            /* the reference (ms_extract_snap.reference): regula falsi
+             * (Illinois) until the bracket is 1/256 of a spacing wide */
             const float tol = s->spacing / 256.0f;
             int side = 0;
             for (int it = 0; it < 12 && za - zb > tol; ++it) {
@@ -497,6 +513,41 @@ static inline __attribute__((always_inline)) float column_height(const ms_extrac
                 }
             }
             height = fminf(fmaxf(0.5f * (za + zb) - lo[2], 0.0f), ztop);
+        } else if (found) {
+            /* Secant steps inside the bracket [zb, za] (phi(zb) >= T >
+             * phi(za)), from the regula falsi point: superlinear where phi
+             * is smooth, so the step that falls under 1/256 of a spacing
+             * is taken without evaluating its end (2 evaluations a column
+             * where the bracket needed 4-5); a step that leaves the
+             * bracket (near a sphere's rim phi's slope is unbounded)
+             * falls back to regula falsi, then bisection. */
+            const float tol = s->spacing / 256.0f;
+            float zp = fb < -fa ? zb : za, fp = fb < -fa ? fb : fa;
+            float zr = zb + (za - zb) * fb / (fb - fa);
+            for (int it = 0; it < 10; ++it) {
+                if (!(zr > zb && zr < za))
+                    zr = 0.5f * (za + zb);
+                const float f = phi_at(cz, ca, mc, zr, inv_r2) - T;
+                if (f >= 0.0f) {
+                    zb = zr;
+                    fb = f;
+                } else {
+                    za = zr;
+                    fa = f;
+                }
+                float zn = f != fp ? zr - f * (zr - zp) / (f - fp) : zr;
+                if (!(zn > zb && zn < za))
+                    zn = zb + (za - zb) * fb / (fb - fa);
+                /* a quarter of tol: where phi's slope changes fast (a
+                 * sphere's rim) a secant step underestimates the error */
+                const int done = fabsf(zn - zr) < 0.25f * tol || za - zb < tol;
+                zp = zr;
+                fp = f;
+                zr = zn;
+                if (done)
+                    break;
+            }
+            height = fminf(fmaxf(zr - lo[2], 0.0f), ztop);
         }
     }
     return height;
@@ -519,7 +570,78 @@ static inline __attribute__((always_inline)) void columns_body(const column_ctx 
         }
         float zmax, zlow;
         const int mc = column_candidates(cc, i, j, reach, avx512, cz, ca, &zmax, &zlow);
-        cc->raw[col] = column_height(cc->s, cz, ca, mc, zmax, zlow);
+        cc->raw[col] = column_height(cc->s, cz, ca, mc, zmax, zlow, 1);
+    }
+}
+
+/* The band of row j: the bins of extended rows j .. j + 2 ry (field rows
+ * j - ry .. j + ry) copied bin column by bin column, so the bins of
+ * columns i - rx .. i + rx of every one of those rows are one run,
+ * [bst[i], bst[i + 2 rx + 1]). Once a row of columns. */
+static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float *tz, int *bst)
+{
+    const int ex = cc->ex, span = 2 * cc->ry + 1;
+    const int *cstart = cc->cstart;
+    int k = 0;
+    for (int ix = 0; ix < ex; ++ix) {
+        bst[ix] = k;
+        for (int r = 0; r < span; ++r) {
+            const int c = (j + r) * ex + ix;
+            for (int q = cstart[c]; q < cstart[c + 1]; ++q) {
+                tx[k] = cc->bx[q];
+                ty[k] = cc->by[q];
+                tz[k] = cc->bz[q];
+                k++;
+            }
+        }
+    }
+    bst[ex] = k;
+}
+
+/* Columns [b, e) of the rectangle by the band: one run of candidates a
+ * column (images are particles of the extended bins), then the secant
+ * root search. Per instruction set as columns_body. */
+static inline __attribute__((always_inline)) void columns_band_body(const column_ctx *cc, int part,
+                                                                    int b, int e, int avx512)
+{
+    (void)avx512;
+    const ms_extract_snap *s = cc->s;
+    float *cz = cc->cand + (size_t)part * cc->cand_stride, *ca = cz + cc->cand_stride / 2;
+    float *tx = cc->band + (size_t)part * 3 * cc->band_stride, *ty = tx + cc->band_stride,
+          *tz = ty + cc->band_stride;
+    int *bst = cc->bstart + (size_t)part * (size_t)(cc->ex + 1), band_j = -1;
+    const float R = s->R, inv_r2 = 1.0f / (R * R);
+    for (int col = b; col < e; ++col) {
+        const int i = cc->i0 + col % cc->rw, j = cc->j0 + col / cc->rw;
+        if (j != band_j) { /* columns go row by row: once a row */
+            band_build(cc, j, tx, ty, tz, bst);
+            band_j = j;
+        }
+        const float px = s->lo[0] + ((float)i + 0.5f) * cc->dxe;
+        const float py = s->lo[1] + ((float)j + 0.5f) * cc->dye;
+        const int k0 = bst[i], k1 = bst[i + 2 * cc->rx + 1];
+        int mc = 0;
+#if MS_VOLUME_HAVE_AVX512
+        if (avx512)
+            mc = gather_avx512(tx, ty, tz, k0, k1, px, py, inv_r2, cz, ca, 0);
+        else
+#endif
+            for (int k = k0; k < k1; ++k) {
+                const float dx = tx[k] - px, dy = ty[k] - py;
+                const float a = 1.0f - (dx * dx + dy * dy) * inv_r2;
+                cz[mc] = tz[k];
+                ca[mc] = a;
+                mc += a > 0.0f;
+            }
+        float zmax = -INFINITY, zlow = INFINITY;
+        if (mc > 0)
+            column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
+        for (int pad = mc; pad % MS_VOLUME_LANES; ++pad) { /* weight-0 lanes */
+            cz[pad] = 0.0f;
+            ca[pad] = 0.0f;
+        }
+        mc = (mc + MS_VOLUME_LANES - 1) / MS_VOLUME_LANES * MS_VOLUME_LANES;
+        cc->raw[col] = column_height(s, cz, ca, mc, zmax, zlow, 0);
     }
 }
 
@@ -530,12 +652,27 @@ __attribute__((target("avx512f,popcnt"))) static void columns_avx512(void *ctxp,
     columns_body(ctxp, part, b, e, 1);
 }
 
+__attribute__((target("avx512f,popcnt"))) static void columns_band_avx512(void *ctxp, int part,
+                                                                          int b, int e)
+{
+    columns_band_body(ctxp, part, b, e, 1);
+}
+
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
 static void
 columns_c(void *ctxp, int part, int b, int e)
 {
     columns_body(ctxp, part, b, e, 0);
+}
+
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+static void
+columns_band_c(void *ctxp, int part, int b, int e)
+{
+    columns_band_body(ctxp, part, b, e, 0);
 }
 
 /* Phase A (extract.h): mark, then copy the marked particles (internal
@@ -553,6 +690,7 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
     s->smooth_steps = v->desc.smooth_steps;
     s->smooth_energy = v->desc.smooth_energy;
     s->isa = v->isa;
+    s->reference = 0; /* a bench or test sets it between the phases */
     if (v->n == 0)
         return MS_OK;
     if (!v->counts_valid) {
@@ -647,13 +785,15 @@ static int smooth_passes(const ms_extract_snap *s, int *full, float *frac)
  * sees dry cells beyond the rectangle, so a cell's value is the field's
  * when the rectangle holds every cell within the passes of it (or the
  * field ends there): the 3 x 3 filter reaches one cell further per pass. */
-static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool,
-                              int nx, int ny, int i0, int j0, int rw, int rh, float *out)
+/* The columns of the reference (663cc3c's code, bytes unchanged): bins of
+ * the field, a run per bin row trimmed to R, the wall images computed per
+ * column, the bracketing root search. Into *raw_out (rw x rh in buf);
+ * tmp_out, blend_out: the smoothing's scratch. */
+static ms_status columns_reference(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool,
+                                   int nx, int ny, int i0, int j0, int rw, int rh,
+                                   float **raw_out, float **tmp_out, float **blend_out)
 {
     const size_t rcells = (size_t)rw * rh;
-    memset(out, 0, rcells * sizeof *out);
-    if (s->empty)
-        return MS_OK;
     const size_t cells = (size_t)nx * ny;
     const int m = s->m;
     const float *lo = s->lo, *hi = s->hi;
@@ -716,6 +856,140 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
         columns = columns_avx512;
 #endif
     ms_vpool_run(pool, columns, &cc, (int)rcells);
+    *raw_out = raw;
+    *tmp_out = tmp;
+    *blend_out = blend;
+    return MS_OK;
+}
+
+
+/* The columns by bands (the default): the marked particles and their
+ * wall images (a particle within R of a side wall is mirrored in it, in
+ * both at a corner: every image a column within R of that wall sees,
+ * whichever wall is nearer to the column) binned on the field grid
+ * extended by rx, ry cells each side; a thread copies the 2 ry + 1 bin
+ * rows around its row of columns into a band ordered by bin column, so a
+ * column's candidates are one run of it (more particles tested than the
+ * reference's trimmed runs, but in one run, not 2 ry + 1); the secant
+ * root search. The same spheres as the reference, summed in another
+ * order, the root to the same tolerance by another path: not the same
+ * bytes (bench_extract and test_volume measure the difference). */
+static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool,
+                              int nx, int ny, int i0, int j0, int rw, int rh, float **raw_out,
+                              float **tmp_out, float **blend_out)
+{
+    const size_t rcells = (size_t)rw * rh;
+    const int m = s->m;
+    const float *lo = s->lo, *hi = s->hi;
+    const float dxe = (hi[0] - lo[0]) / (float)nx, dye = (hi[1] - lo[1]) / (float)ny;
+    const float R = s->R;
+    const int rx = (int)ceilf(R / dxe), ry = (int)ceilf(R / dye);
+    const int ex = nx + 2 * rx, ey = ny + 2 * ry;
+    const size_t ecells = (size_t)ex * ey;
+    const int parts = ms_vpool_parts(pool);
+    /* sized for the snapshot's capacity, not its m: no growth as m does (i15) */
+    const size_t mcap = (size_t)s->cap, icap = 4 * mcap; /* a particle and 3 images */
+    ms_status st = scratch((void **)&w->start, &w->start_cap, ecells + 1, sizeof(int));
+    if (st == MS_OK)
+        st = scratch((void **)&w->list, &w->list_cap,
+                     icap + ecells + 1 + (size_t)parts * (size_t)(ex + 1), sizeof(int));
+    /* buf: 3 x 4m binned positions, 3 fields, per thread the candidates
+     * (cz, ca) and the band (x, y, z) */
+    const size_t cand_stride = 2 * (icap + MS_VOLUME_LANES);
+    const size_t band_stride = icap + MS_VOLUME_LANES;
+    const size_t padded = (size_t)(rw + 2) * (rh + 2);
+    if (st == MS_OK)
+        st = scratch((void **)&w->buf, &w->buf_cap,
+                     3 * icap + 2 * rcells + padded +
+                         (size_t)parts * (cand_stride + 3 * band_stride),
+                     sizeof(float));
+    if (st != MS_OK)
+        return st;
+    int *cstart = w->start, *ckey = w->list, *cfill = ckey + icap, *bstart = cfill + ecells + 1;
+    float *bx = w->buf, *by = bx + icap, *bz = by + icap;
+    float *raw = bz + icap, *tmp = raw + rcells, *blend = tmp + padded;
+    float *cand = blend + rcells, *band = cand + (size_t)parts * cand_stride;
+    memset(cfill, 0, ecells * sizeof *cfill);
+    /* the bin of a particle or image: the particles' clamped to the field
+     * as the reference's, the images' to the extension */
+    int mi = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        int q = 0;
+        for (int k = 0; k < m; ++k) {
+            const float x = s->x[k], y = s->y[k];
+            /* the image in the wall within R (a domain narrower than 2 R:
+             * the low wall's) */
+            const int nxm = x - lo[0] < R || hi[0] - x < R ? 2 : 1;
+            const int nym = y - lo[1] < R || hi[1] - y < R ? 2 : 1;
+            const float xs[2] = {x, 2.0f * (x - lo[0] < R ? lo[0] : hi[0]) - x};
+            const float ys[2] = {y, 2.0f * (y - lo[1] < R ? lo[1] : hi[1]) - y};
+            for (int my = 0; my < nym; ++my)
+                for (int mx = 0; mx < nxm; ++mx) {
+                    int ix, iy;
+                    if (mx == 0)
+                        ix = (int)fminf(fmaxf((x - lo[0]) / dxe, 0.0f), (float)(nx - 1));
+                    else
+                        ix = (int)fminf(fmaxf(floorf((xs[1] - lo[0]) / dxe), (float)-rx),
+                                        (float)(nx + rx - 1));
+                    if (my == 0)
+                        iy = (int)fminf(fmaxf((y - lo[1]) / dye, 0.0f), (float)(ny - 1));
+                    else
+                        iy = (int)fminf(fmaxf(floorf((ys[1] - lo[1]) / dye), (float)-ry),
+                                        (float)(ny + ry - 1));
+                    const int key = (iy + ry) * ex + ix + rx;
+                    if (pass == 0) {
+                        ckey[q++] = key;
+                        cfill[key]++;
+                    } else {
+                        const int d = cfill[ckey[q++]]++;
+                        bx[d] = mx ? xs[1] : x;
+                        by[d] = my ? ys[1] : y;
+                        bz[d] = s->z[k];
+                    }
+                }
+        }
+        if (pass == 0) {
+            mi = q;
+            int sum = 0;
+            for (size_t c = 0; c < ecells; ++c) {
+                cstart[c] = sum;
+                sum += cfill[c];
+                cfill[c] = cstart[c];
+            }
+            cstart[ecells] = sum;
+        }
+    }
+    assert((size_t)mi <= icap);
+    (void)mi;
+    column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
+                     .dye = dye, .cstart = cstart, .bx = bx, .by = by, .bz = bz, .cand = cand,
+                     .cand_stride = cand_stride, .raw = raw, .ex = ex, .rx = rx, .ry = ry,
+                     .band = band, .band_stride = band_stride, .bstart = bstart};
+    ms_vpool_fn *columns = columns_band_c;
+#if MS_VOLUME_HAVE_AVX512
+    if (s->isa == MS_VOLUME_ISA_AVX512)
+        columns = columns_band_avx512;
+#endif
+    ms_vpool_run(pool, columns, &cc, (int)rcells);
+    *raw_out = raw;
+    *tmp_out = tmp;
+    *blend_out = blend;
+    return MS_OK;
+}
+
+static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool,
+                              int nx, int ny, int i0, int j0, int rw, int rh, float *out)
+{
+    const size_t rcells = (size_t)rw * rh;
+    memset(out, 0, rcells * sizeof *out);
+    if (s->empty)
+        return MS_OK;
+    float *raw, *tmp, *blend;
+    ms_status st = s->reference
+                       ? columns_reference(s, w, pool, nx, ny, i0, j0, rw, rh, &raw, &tmp, &blend)
+                       : columns_band(s, w, pool, nx, ny, i0, j0, rw, rh, &raw, &tmp, &blend);
+    if (st != MS_OK)
+        return st;
 
     /* eq. 18: the number of smoothing passes from E_kin / total mass */
     int full;

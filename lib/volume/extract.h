@@ -31,6 +31,8 @@ typedef struct ms_extract_snap {
     int smooth_steps;    /* eq. 18 */
     float smooth_energy; /* J/kg, eq. 18 */
     int isa;             /* MS_VOLUME_ISA_*: phase B's gather (any gives the same bytes) */
+    int reference;       /* 1: the root search of 663cc3c (bracket to 1/256 of a spacing),
+                          * the yardstick of bench_extract and test_volume; 0: secant */
 } ms_extract_snap;
 
 /* Phase B's scratch (one per thread that runs it). */

@@ -1,20 +1,24 @@
 /* Extraction benchmark (eqs. 16-18, issue 12's goal: < 0.3 ms a frame on
  * fig1): ms per ms_volume_extract_height call of a scene's volume after
- * 60 frames of the scene (the liquid in motion), at the scene's field
+ * 100 frames of the scene (the liquid in motion), at the scene's field
  * size, with 1 and 2 volume threads. Median and 10th/90th percentiles of
  * the repeats; cpu_ms, the calling thread's CPU time per call (the cost
  * of a 1-thread call on a loaded machine; with 2 threads the workers'
  * share is not in it); and "sim", the sim's own extract_ms per frame over 30 frames
  * (phase A with its neighbour recount, the particle copy, phase B; the
- * mean, one run). Each case runs twice, interleaved repeat by repeat:
- * with the candidate gather in C (c406aeb's code path, the reference) and
- * with the AVX-512 gather when the CPU has it (issue 12); the same bytes,
- * compared here. "x" is the C median over the AVX-512 median. Writes
- * <csv-dir>/extract.csv (column gather: c or avx512).
+ * mean, one run). Each case runs twice, interleaved repeat by repeat,
+ * both with the best gather of the CPU: the reference search (663cc3c's
+ * code, ms_extract_snap.reference) and the band search (the default);
+ * "x" is the reference median over the band median. max_dh: the largest
+ * |band - reference| of a cell over the 100 frames (phase B of each
+ * frame's snapshot both ways, 1 thread), in m and in spacings. Writes
+ * <csv-dir>/extract.csv (gather: the instruction set; search: reference
+ * or band).
  *
  *   bench_extract [--csv-dir DIR] [--quick] [--data DIR] [--scenes fig1,fig10] */
 #include "bench_common.h"
 #include "modesplit/modesplit.h"
+#include "volume/extract.h"
 #include "volume/volume_internal.h"
 
 /* s of CPU time of the calling thread: on a loaded machine the cost of a
@@ -26,7 +30,7 @@ static double thread_cpu_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static const char *const scenes[] = {"fig1", "fig1_x10", "fig10"};
+static const char *const scenes[] = {"fig1", "fig1_x10", "fig10", "glass"};
 
 static const char *arg_value(int argc, char **argv, const char *key, const char *def)
 {
@@ -55,8 +59,10 @@ int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
                    "usage: bench_extract [--csv-dir DIR] [--quick] [--data DIR] [--scenes a,b]\n"
-                   "ms per height-field extraction (eqs. 16-18) of a scene's volume after 60\n"
-                   "frames, 1 and 2 threads: median [p10, p90]. Writes extract.csv.\n"))
+                   "ms per height-field extraction (eqs. 16-18) of a scene's volume after 100\n"
+                   "frames, 1 and 2 threads: median [p10, p90], the reference search and the\n"
+                   "band search interleaved, and the band's max |dh| against the reference over\n"
+                   "the 100 frames. Writes extract.csv.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     const char *dir = arg_value(argc, argv, "--data", "data/scenes");
@@ -68,13 +74,13 @@ int main(int argc, char **argv)
         bench_csv_dir(argc, argv), "extract.csv",
         "scene,threads,particles,nx,ny,ms_median,ms_p10,ms_p90,cpu_ms_median,sim_extract_ms,"
         "machine,"
-        "commit,gather");
+        "commit,gather,search,max_dh_m,max_dh_spacings");
     if (!csv)
         return 1;
-    printf("extract: ms per ms_volume_extract_height after 60 frames, median [p10, p90]\n");
+    printf("extract: ms per ms_volume_extract_height after 100 frames, median [p10, p90]\n");
     printf("machine: %s; commit %s\n", machine, commit);
-    printf("%-10s %3s %6s %9s %7s %9s %9s %9s %9s %9s %6s\n", "scene", "thr", "parts", "field",
-           "gather", "ms", "p10", "p90", "cpu_ms", "sim", "x");
+    printf("%-10s %3s %6s %9s %7s %9s %9s %9s %9s %9s %9s %6s %10s\n", "scene", "thr", "parts",
+           "field", "gather", "search", "ms", "p10", "p90", "cpu_ms", "sim", "x", "max_dh");
     for (size_t s = 0; s < sizeof scenes / sizeof *scenes; ++s) {
         if (!wanted(only, scenes[s]))
             continue;
@@ -91,12 +97,43 @@ int main(int argc, char **argv)
                 fprintf(stderr, "bench_extract: %s: %s\n", scenes[s], ms_last_error());
                 return 1;
             }
-            const int frames = quick ? 10 : 60;
-            for (int f = 0; f < frames; ++f)
+            const int frames = quick ? 10 : 100;
+            ms_extract_snap es = {0};
+            ms_extract_work ew = {0};
+            float *ha = NULL, *hb = NULL;
+            double max_dh = 0.0;
+            for (int f = 0; f < frames; ++f) {
                 if (ms_sim_step(sim, ms_scene_frame_dt(sc)) != MS_OK) {
                     fprintf(stderr, "bench_extract: %s: %s\n", scenes[s], ms_last_error());
                     return 1;
                 }
+                int fx, fy;
+                ms_sim_volume_height(sim, &fx, &fy);
+                if (!ha) {
+                    ha = malloc((size_t)fx * fy * sizeof *ha);
+                    hb = malloc((size_t)fx * fy * sizeof *hb);
+                    if (!ha || !hb)
+                        return 1;
+                }
+                if (ms_volume_extract_snap(ms_sim_volume(sim), &es) != MS_OK)
+                    return 1;
+                es.reference = 1;
+                ms_status st = ms_extract_field(&es, &ew, NULL, fx, fy, ha);
+                es.reference = 0;
+                if (st != MS_OK || ms_extract_field(&es, &ew, NULL, fx, fy, hb) != MS_OK) {
+                    fprintf(stderr, "bench_extract: %s: %s\n", scenes[s], ms_last_error());
+                    return 1;
+                }
+                for (int c = 0; c < fx * fy; ++c) {
+                    const double d = fabs((double)ha[c] - hb[c]);
+                    max_dh = d > max_dh ? d : max_dh;
+                }
+            }
+            const double spacing = es.spacing;
+            free(ha);
+            free(hb);
+            ms_extract_snap_free(&es);
+            ms_extract_work_free(&ew);
             /* the sim's own figure: extract_ms per frame (phase A, the
              * particle copy and phase B) over the next frames */
             ms_stats a = ms_stats_init(), b = ms_stats_init();
@@ -113,61 +150,74 @@ int main(int argc, char **argv)
             ms_sim_volume_height(sim, &nx, &ny);
             ms_volume *v = ms_sim_volume(sim);
             float *h = malloc((size_t)nx * ny * sizeof *h);
-            if (!h)
+            float *h2 = malloc((size_t)nx * ny * sizeof *h2);
+            if (!h || !h2)
                 return 1;
             enum { REPEATS = 31 };
-            /* the gathers to compare: C (the reference) and the best */
-            const int best = ms_volume_pick_isa();
-            const int isas[2] = {MS_VOLUME_ISA_C, best};
-            const int nisa = best == MS_VOLUME_ISA_AVX512 ? 2 : 1;
+            /* the searches to compare: the reference (663cc3c) and the band */
             double t[2][REPEATS], tc[2][REPEATS];
-            float *h2 = malloc((size_t)nx * ny * sizeof *h2);
-            if (!h2)
+            ms_extract_snap snap = {0};
+            ms_extract_work work = {0};
+            if (ms_volume_extract_snap(v, &snap) != MS_OK)
                 return 1;
-            const int own = v->isa;
+            /* one call: phase A (marks and copy; the counts are valid
+             * after the first) and phase B with the volume's pool */
+#define EXTRACT_CALL(ref, out)                                                                    \
+    do {                                                                                          \
+        ms_volume_extract_snap(v, &snap);                                                         \
+        snap.reference = (ref);                                                                   \
+        ms_extract_field(&snap, &work, ms_volume_extract_pool(v), nx, ny, (out));                 \
+    } while (0)
             int calls = 1;
             for (;;) { /* calls per repeat: a repeat lasts about 20 ms (4 ms quick) */
                 double t0 = bench_now();
                 for (int c = 0; c < calls; ++c)
-                    ms_volume_extract_height(v, nx, ny, h);
+                    EXTRACT_CALL(1, h);
                 if (bench_now() - t0 > (quick ? 0.004 : 0.02) || calls > 100000)
                     break;
                 calls *= 2;
             }
             const int repeats = quick ? 5 : REPEATS;
             for (int r = 0; r < repeats; ++r)
-                for (int g = 0; g < nisa; ++g) { /* interleaved: the same minute */
-                    v->isa = isas[g];
+                for (int g = 0; g < 2; ++g) { /* interleaved: the same minute */
                     double t0 = bench_now(), c0 = thread_cpu_now();
                     for (int c = 0; c < calls; ++c)
-                        ms_volume_extract_height(v, nx, ny, g ? h2 : h);
+                        EXTRACT_CALL(g == 0, h);
                     t[g][r] = (bench_now() - t0) * 1e3 / calls;
                     tc[g][r] = (thread_cpu_now() - c0) * 1e3 / calls;
                 }
-            v->isa = own;
-            if (nisa == 2 && memcmp(h, h2, (size_t)nx * ny * sizeof *h) != 0) {
-                fprintf(stderr, "bench_extract: %s: the AVX-512 gather's field differs from C's\n",
+#undef EXTRACT_CALL
+            /* the library's own call is the band search */
+            ms_volume_extract_height(v, nx, ny, h);
+            ms_volume_extract_snap(v, &snap);
+            ms_extract_field(&snap, &work, NULL, nx, ny, h2);
+            if (memcmp(h, h2, (size_t)nx * ny * sizeof *h) != 0) {
+                fprintf(stderr, "bench_extract: %s: ms_volume_extract_height is not the band's\n",
                         scenes[s]);
                 return 1;
             }
+            ms_extract_snap_free(&snap);
+            ms_extract_work_free(&work);
             int n = 0;
             const float *pos[3];
             ms_sim_particles(sim, &n, pos, NULL);
             char field[32];
             snprintf(field, sizeof field, "%dx%d", nx, ny);
             double ref = 0.0;
-            for (int g = 0; g < nisa; ++g) {
+            const char *isa = v->isa == MS_VOLUME_ISA_AVX512 ? "avx512" : "c";
+            for (int g = 0; g < 2; ++g) {
                 bench_stats st = bench_summarise(t[g], repeats);
                 bench_stats sc_ = bench_summarise(tc[g], repeats);
-                const char *name = isas[g] == MS_VOLUME_ISA_AVX512 ? "avx512" : "c";
+                const char *search = g == 0 ? "reference" : "band";
+                const double dh = g == 0 ? 0.0 : max_dh;
                 if (g == 0)
                     ref = st.median;
-                printf("%-10s %3d %6d %9s %7s %9.3f %9.3f %9.3f %9.3f %9.3f %6.2f\n", scenes[s],
-                       threads, n, field, name, st.median, st.p10, st.p90, sc_.median, sim_ms,
-                       ref / st.median);
-                fprintf(csv, "%s,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%s,%s\n", scenes[s],
-                        threads, n, nx, ny, st.median, st.p10, st.p90, sc_.median, sim_ms, machine,
-                        commit, name);
+                printf("%-10s %3d %6d %9s %7s %9s %9.3f %9.3f %9.3f %9.3f %9.3f %6.2f %10.3g\n",
+                       scenes[s], threads, n, field, isa, search, st.median, st.p10, st.p90,
+                       sc_.median, sim_ms, ref / st.median, dh);
+                fprintf(csv, "%s,%d,%d,%d,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%s,%s,%s,%.3g,%.4f\n",
+                        scenes[s], threads, n, nx, ny, st.median, st.p10, st.p90, sc_.median,
+                        sim_ms, machine, commit, isa, search, dh, dh / spacing);
             }
             free(h2);
             free(h);

@@ -117,6 +117,8 @@ def table_parts():
     for r in load("data/bench/extract.csv"):
         if r.get("gather") == "c":  # the C gather: bench_extract's reference row
             continue
+        if r.get("search") == "reference":  # issue 12 round 6: 663cc3c's root search
+            continue
         out.append(f"| extraction (`extract.csv`) | {r['scene']}, {r['nx']}×{r['ny']}, "
                    f"{r['threads']} thread{'s' if r['threads'] != '1' else ''} | "
                    f"{num(r, 'ms_median', 2)} ms per call |")
