@@ -528,10 +528,6 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
     v->vx[i] = nx;
     v->vy[i] = ny;
     v->vz[i] = nz;
-    float *pk = v->pk + 8 * (size_t)i; /* the copy the AVX-512 loops read */
-    pk[4] = nx;
-    pk[5] = ny;
-    pk[6] = nz;
 }
 
 /* e / rho0 in units of 2^-32, clamped to [0, 64] (NaN counts as 64) so
@@ -558,7 +554,6 @@ static inline MS_DFSPH_INLINE int64_t divergence_error_of(ms_volume *v, const ms
         ei = ei > 0.0f ? ei : 0.0f;
     }
     v->df_s[i] = ei * v->df_inv_diag[i];
-    v->pk[8 * (size_t)i + 3] = v->df_s[i];
     return quantise(dt * ei / v->desc.rest_density);
 }
 
@@ -601,7 +596,6 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
             float ei = ci - dt * mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, img, i);
             ei = ei > 0.0f ? ei : 0.0f;
             v->df_s[i] = ei * v->df_inv_diag[i];
-            v->pk[8 * (size_t)i + 3] = v->df_s[i];
             err += quantise(ei / rho0); /* compression only: quantise clamps at 0 */
         }
         break;
@@ -625,21 +619,36 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
         break;
     }
     case F_WARM:
-        for (int i = b; i < e; ++i) {
+        for (int i = b; i < e; ++i)
             v->df_s[i] = ms_volume_is_surface(v, i) ? 0.0f : ctx->scale * v->df_warm[v->id[i]];
-            v->pk[8 * (size_t)i + 3] = v->df_s[i];
-        }
         break;
     }
     ctx->err[part] = err;
 }
 
+/* After an update pass: the running total of s, and the new velocities
+ * into the packed copy the AVX-512 loops read. The passes themselves never
+ * write pk: a neighbour's 16-byte record load would race with the write. */
 static void sum_add(void *ctxp, int part, int b, int e)
 {
     (void)part;
     ms_volume *v = ((dfsph_ctx *)ctxp)->v;
-    for (int i = b; i < e; ++i)
+    for (int i = b; i < e; ++i) {
         v->df_sum[i] += v->df_s[i];
+        float *pk = v->pk + 8 * (size_t)i;
+        pk[4] = v->vx[i];
+        pk[5] = v->vy[i];
+        pk[6] = v->vz[i];
+    }
+}
+
+/* After a pass that set s: s into the packed copy (see sum_add). */
+static void pack_s(void *ctxp, int part, int b, int e)
+{
+    (void)part;
+    ms_volume *v = ((dfsph_ctx *)ctxp)->v;
+    for (int i = b; i < e; ++i)
+        v->pk[8 * (size_t)i + 3] = v->df_s[i];
 }
 
 /* One pass of kind over all particles; the average error of an error pass. */
@@ -651,6 +660,8 @@ static float run(ms_volume *v, dfsph_ctx *ctx, pass_kind kind)
     ms_vpool_run(v->pool, dfsph_part, ctx, v->n);
     if (kind == F_APPLY)
         ms_vpool_run(v->pool, sum_add, ctx, v->n);
+    else if (kind != F_PRESSURE)
+        ms_vpool_run(v->pool, pack_s, ctx, v->n);
     int64_t err = 0;
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) /* integers: order-free */
         err += ctx->err[p];
