@@ -51,9 +51,16 @@
  * it stops after 1 iteration (SPlisHSPlasH's minimum) on the shipped flows.
  *
  * Each sub-step computes the pair terms g_ij (x_i - x_j) of every real
- * neighbour once (the factors pass, which also takes the divergence
- * solve's first error) and every iteration reads them: no square root,
- * division or position gather per pair and iteration.
+ * neighbour, and g and x_i - x_j' of every image, once (the factors pass,
+ * which also takes the divergence solve's first error) and every
+ * iteration reads them: no square root, division, position gather or
+ * mirroring of a position per pair and iteration (round six: the images'
+ * recomputed terms were a fifth of a 32k dam break's DFSPH time). The
+ * AVX-512 loops read the neighbours' s and velocity as 16-byte records of
+ * the packed copy v->pk instead of gathers, and sum their lanes in
+ * registers; the values and the order of the sums are the C loops', so the
+ * bits are too. Measured together (peer scene, first 0.15 s, loaded
+ * machine, CPU time of the whole run): 1.41 s -> 1.13 s.
  *
  * The boundary: the walls and shapes take part as the images of density.c
  * (the liquid mirrored across each wall within h, and across the tangent
@@ -154,6 +161,28 @@ static inline MS_DFSPH_INLINE void image_of(const ms_volume *v, int i, int g, co
     }
 }
 
+/* The velocity half of image_of (the same operations): the passes after
+ * the factors read the image's g and x_i - x_j' from v->df_img. */
+static inline MS_DFSPH_INLINE void image_velocity(const ms_volume *v, int i, int g, float uj[3])
+{
+    const unsigned f = (unsigned)g >> MS_VOLUME_IMAGE_SHIFT;
+    const int j = g & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
+    uj[0] = v->vx[j];
+    uj[1] = v->vy[j];
+    uj[2] = v->vz[j];
+    if (f == MS_VOLUME_IMAGE_SHAPE) {
+        const float nn[3] = {v->c_nx[i], v->c_ny[i], v->c_nz[i]};
+        const float vs[3] = {v->c_vx[i], v->c_vy[i], v->c_vz[i]};
+        float su = (uj[0] - vs[0]) * nn[0] + (uj[1] - vs[1]) * nn[1] + (uj[2] - vs[2]) * nn[2];
+        for (int a = 0; a < 3; ++a)
+            uj[a] -= 2.0f * su * nn[a];
+    } else {
+        for (int a = 0; a < 3; ++a)
+            if (f & (1u << a))
+                uj[a] = -uj[a];
+    }
+}
+
 /* grad W_ij = -G g (x_i - x_j), G = 45/(pi h^6), g = (h - r)^2 / r: the
  * factor g of an entry at r^2 (0 at and beyond h; a coincident pair,
  * r <= eps, has no direction and gets 0 here: see coincident()). */
@@ -210,7 +239,7 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
  * underestimated several times over and a tank at rest blew up. */
 static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
                                               float *restrict cgx, float *restrict cgy,
-                                              float *restrict cgz, int i)
+                                              float *restrict cgz, float *restrict img, int i)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const int *restrict idx = lst->idx + v->nl_begin[i];
@@ -258,10 +287,15 @@ static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
         const float *gr2 = gst->r2 + v->gl_begin[i];
         float wall[3];
         ms_volume_walls_near(v, xi, yi, zi, wall);
+        float *c = img + 4 * (size_t)v->gl_begin[i];
         for (int k = 0; k < gn; ++k) {
             float pj[3], uj[3];
             image_of(v, i, gidx[k], wall, pj, uj);
             float g = grad_factor(gr2[k], h, eps);
+            c[4 * k] = g; /* the image's terms for the solves' passes */
+            c[4 * k + 1] = xi - pj[0];
+            c[4 * k + 2] = yi - pj[1];
+            c[4 * k + 3] = zi - pj[2];
             gx += g * (xi - pj[0]);
             gy += g * (yi - pj[1]);
             gz += g * (zi - pj[2]);
@@ -303,45 +337,84 @@ static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
 
 #if MS_VOLUME_HAVE_AVX512
 /* The real-neighbour loops of divergence_sum and apply_of in AVX-512
- * intrinsics (GCC's vectoriser emulates their gathers lane by lane): the
- * same operations per lane in the same order, no fused multiply-adds, into
- * the same lane accumulators, so the same bits as the C loops. */
-__attribute__((target("avx512f"))) static void
+ * intrinsics: the same operations per lane in the same order, no fused
+ * multiply-adds, into the same lane accumulators, so the same bits as the
+ * C loops. During the solves the packed copy v->pk holds (s, vx, vy, vz)
+ * at floats 3..6 of each 8-float record (pk[3] is the pressure slot, 0
+ * under DFSPH until the density solve's end), so the 16 neighbours' data
+ * are sixteen 16-byte loads and a 4 x 4 transpose in each 128-bit lane, in
+ * place of gathers (AVX-512 gathers were 35 % of a 32k dam break's
+ * sub-step; forces.c measured the same technique). Vector a[k] holds the
+ * records of j[k], j[k+4], j[k+8], j[k+12], so that the transpose leaves
+ * the lanes in order. Values are moved, never computed: the same bits. */
+#define MS_DFSPH_REC(k) _mm_loadu_ps(b + 8 * (size_t)j[k])
+#define MS_DFSPH_ROW(k)                                                                    \
+    _mm512_insertf32x4(                                                                    \
+        _mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(MS_DFSPH_REC(k)),    \
+                                              MS_DFSPH_REC((k) + 4), 1),                   \
+                           MS_DFSPH_REC((k) + 8), 2),                                      \
+        MS_DFSPH_REC((k) + 12), 3)
+__attribute__((target("avx512f"), always_inline)) static inline void
+load_svel(const float *pk, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
+{
+    const float *b = pk + 3;
+    const __m512 a0 = MS_DFSPH_ROW(0), a1 = MS_DFSPH_ROW(1), a2 = MS_DFSPH_ROW(2),
+                 a3 = MS_DFSPH_ROW(3);
+    const __m512 t0 = _mm512_unpacklo_ps(a0, a1), t1 = _mm512_unpackhi_ps(a0, a1);
+    const __m512 t2 = _mm512_unpacklo_ps(a2, a3), t3 = _mm512_unpackhi_ps(a2, a3);
+    *s = _mm512_shuffle_ps(t0, t2, 0x44);
+    *u = _mm512_shuffle_ps(t0, t2, 0xee);
+    *w = _mm512_shuffle_ps(t1, t3, 0x44);
+    *t = _mm512_shuffle_ps(t1, t3, 0xee);
+}
+#undef MS_DFSPH_ROW
+#undef MS_DFSPH_REC
+
+/* ms_lanes_sum in registers (the same tree order, so the same bits): the
+ * store and sixteen scalar reloads cost more than the sums. */
+__attribute__((target("avx512f"), always_inline)) static inline float hsum(__m512 a)
+{
+    __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(a),
+                              _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(a), 1)));
+    __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
+    __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
+    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
+}
+
+__attribute__((target("avx512f"))) static float
 divergence_real_avx512(const ms_volume *v, const int *idx, const float *gx, const float *gy,
-                       const float *gz, int n, float ui, float wi, float ti, float acc[LANES])
+                       const float *gz, int n, float ui, float wi, float ti)
 {
     const __m512 u = _mm512_set1_ps(ui), w = _mm512_set1_ps(wi), t = _mm512_set1_ps(ti);
     __m512 a = _mm512_setzero_ps();
     for (int k = 0; k < n; k += LANES) {
-        const __m512i j = _mm512_loadu_si512((const void *)(idx + k));
-        __m512 d = _mm512_mul_ps(_mm512_sub_ps(u, _mm512_i32gather_ps(j, v->vx, 4)),
-                                 _mm512_loadu_ps(gx + k));
-        d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(w, _mm512_i32gather_ps(j, v->vy, 4)),
-                                           _mm512_loadu_ps(gy + k)));
-        d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(t, _mm512_i32gather_ps(j, v->vz, 4)),
-                                           _mm512_loadu_ps(gz + k)));
+        __m512 sj, uj, wj, tj;
+        load_svel(v->pk, idx + k, &sj, &uj, &wj, &tj);
+        __m512 d = _mm512_mul_ps(_mm512_sub_ps(u, uj), _mm512_loadu_ps(gx + k));
+        d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(w, wj), _mm512_loadu_ps(gy + k)));
+        d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(t, tj), _mm512_loadu_ps(gz + k)));
         a = _mm512_add_ps(a, d);
     }
-    _mm512_storeu_ps(acc, a);
+    return hsum(a);
 }
 
 __attribute__((target("avx512f"))) static void
-apply_real_avx512(const float *s, const int *idx, const float *gx, const float *gy,
-                  const float *gz, int n, float si, float ax[LANES], float ay[LANES],
-                  float az[LANES])
+apply_real_avx512(const float *pk, const int *idx, const float *gx, const float *gy,
+                  const float *gz, int n, float si, float out[3])
 {
     const __m512 sv = _mm512_set1_ps(si);
     __m512 a = _mm512_setzero_ps(), b = a, c = a;
     for (int k = 0; k < n; k += LANES) {
-        const __m512i j = _mm512_loadu_si512((const void *)(idx + k));
-        const __m512 f = _mm512_add_ps(sv, _mm512_i32gather_ps(j, s, 4));
+        __m512 sj, uj, wj, tj;
+        load_svel(pk, idx + k, &sj, &uj, &wj, &tj);
+        const __m512 f = _mm512_add_ps(sv, sj);
         a = _mm512_add_ps(a, _mm512_mul_ps(f, _mm512_loadu_ps(gx + k)));
         b = _mm512_add_ps(b, _mm512_mul_ps(f, _mm512_loadu_ps(gy + k)));
         c = _mm512_add_ps(c, _mm512_mul_ps(f, _mm512_loadu_ps(gz + k)));
     }
-    _mm512_storeu_ps(ax, a);
-    _mm512_storeu_ps(ay, b);
-    _mm512_storeu_ps(az, c);
+    out[0] = hsum(a);
+    out[1] = hsum(b);
+    out[2] = hsum(c);
 }
 #endif
 
@@ -350,42 +423,40 @@ apply_real_avx512(const float *s, const int *idx, const float *gx, const float *
 static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
                                                    const float *restrict cgx,
                                                    const float *restrict cgy,
-                                                   const float *restrict cgz, int i)
+                                                   const float *restrict cgz, const float *restrict img, int i)
 {
-    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const float *restrict vx = v->vx, *restrict vy = v->vy, *restrict vz = v->vz;
     const int *restrict idx = lst->idx + v->nl_begin[i];
     const int n = padded(v->nl_count[i]);
-    const float h = v->K.h, eps = sqrtf(v->eps2);
-    const float xi = x[i], yi = y[i], zi = z[i], ui = vx[i], wi = vy[i], ti = vz[i];
+    const float ui = vx[i], wi = vy[i], ti = vz[i];
     cgx += v->nl_begin[i];
     cgy += v->nl_begin[i];
     cgz += v->nl_begin[i];
-    float acc[LANES] = {0};
+    float s;
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512)
-        divergence_real_avx512(v, idx, cgx, cgy, cgz, n, ui, wi, ti, acc);
+        s = divergence_real_avx512(v, idx, cgx, cgy, cgz, n, ui, wi, ti);
     else
 #endif
+    {
+        float acc[LANES] = {0};
         for (int k = 0; k < n; k += LANES)
             for (int l = 0; l < LANES; ++l) {
                 const int j = idx[k + l];
                 acc[l] += (ui - vx[j]) * cgx[k + l] + (wi - vy[j]) * cgy[k + l] +
                           (ti - vz[j]) * cgz[k + l];
             }
-    float s = ms_lanes_sum(acc);
+        s = ms_lanes_sum(acc);
+    }
     const int gn = v->gl_count[i];
     if (gn) {
         const int *gidx = gst->idx + v->gl_begin[i];
-        const float *gr2 = gst->r2 + v->gl_begin[i];
-        float wall[3];
-        ms_volume_walls_near(v, xi, yi, zi, wall);
+        const float *c = img + 4 * (size_t)v->gl_begin[i];
         for (int k = 0; k < gn; ++k) {
-            float pj[3], uj[3];
-            image_of(v, i, gidx[k], wall, pj, uj);
-            float g = grad_factor(gr2[k], h, eps);
-            s += g * ((ui - uj[0]) * (xi - pj[0]) + (wi - uj[1]) * (yi - pj[1]) +
-                      (ti - uj[2]) * (zi - pj[2]));
+            float uj[3];
+            image_velocity(v, i, gidx[k], uj);
+            s += c[4 * k] * ((ui - uj[0]) * c[4 * k + 1] + (wi - uj[1]) * c[4 * k + 2] +
+                             (ti - uj[2]) * c[4 * k + 3]);
         }
     }
     return s;
@@ -394,23 +465,23 @@ static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_
 /* v_i += scale m G sum_j (s_i + s_j) g_ij (x_i - x_j): the pressure term. */
 static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
                                             const float *restrict cgx, const float *restrict cgy,
-                                            const float *restrict cgz, int i, float scale)
+                                            const float *restrict cgz, const float *restrict img, int i, float scale)
 {
-    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const float *restrict s = v->df_s;
     const int *restrict idx = lst->idx + v->nl_begin[i];
     const int n = padded(v->nl_count[i]);
-    const float h = v->K.h, eps = sqrtf(v->eps2);
-    const float xi = x[i], yi = y[i], zi = z[i], si = s[i];
+    const float si = s[i];
     cgx += v->nl_begin[i];
     cgy += v->nl_begin[i];
     cgz += v->nl_begin[i];
-    float ax[LANES] = {0}, ay[LANES] = {0}, az[LANES] = {0};
+    float sum[3];
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512)
-        apply_real_avx512(s, idx, cgx, cgy, cgz, n, si, ax, ay, az);
+        apply_real_avx512(v->pk, idx, cgx, cgy, cgz, n, si, sum);
     else
 #endif
+    {
+        float ax[LANES] = {0}, ay[LANES] = {0}, az[LANES] = {0};
         for (int k = 0; k < n; k += LANES)
             for (int l = 0; l < LANES; ++l) {
                 const float f = si + s[idx[k + l]];
@@ -418,22 +489,22 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
                 ay[l] += f * cgy[k + l];
                 az[l] += f * cgz[k + l];
             }
-    float sx = ms_lanes_sum(ax), sy = ms_lanes_sum(ay), sz = ms_lanes_sum(az);
+        sum[0] = ms_lanes_sum(ax);
+        sum[1] = ms_lanes_sum(ay);
+        sum[2] = ms_lanes_sum(az);
+    }
+    float sx = sum[0], sy = sum[1], sz = sum[2];
     const int gn = v->gl_count[i];
     if (gn) {
         const int *gidx = gst->idx + v->gl_begin[i];
-        const float *gr2 = gst->r2 + v->gl_begin[i];
-        float wall[3];
-        ms_volume_walls_near(v, xi, yi, zi, wall);
+        const float *c = img + 4 * (size_t)v->gl_begin[i];
         for (int k = 0; k < gn; ++k) {
-            float pj[3], uj[3];
-            image_of(v, i, gidx[k], wall, pj, uj);
             const int j = gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
             float sb = si + s[j];
-            float f = sb * grad_factor(gr2[k], h, eps);
-            sx += f * (xi - pj[0]);
-            sy += f * (yi - pj[1]);
-            sz += f * (zi - pj[2]);
+            float f = sb * c[4 * k];
+            sx += f * c[4 * k + 1];
+            sy += f * c[4 * k + 2];
+            sz += f * c[4 * k + 3];
         }
     }
     const float c = scale * v->mass * v->K.spiky_grad;
@@ -474,12 +545,12 @@ static inline int64_t quantise(float e_rel)
 static inline MS_DFSPH_INLINE int64_t divergence_error_of(ms_volume *v, const ms_nlist *lst,
                                                           const ms_nlist *gst, const float *cgx,
                                                           const float *cgy, const float *cgz,
-                                                          int i, float dt)
+                                                          const float *restrict img, int i, float dt)
 {
     float ei = 0.0f;
     if (!ms_volume_is_surface(v, i)) {
         const float mg = v->mass * v->K.spiky_grad;
-        ei = -mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, i); /* D rho_i/Dt */
+        ei = -mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, img, i); /* D rho_i/Dt */
         ei = ei > 0.0f ? ei : 0.0f;
     }
     v->df_s[i] = ei * v->df_inv_diag[i];
@@ -498,13 +569,14 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
     ms_volume *v = ctx->v;
     const ms_nlist *lst = &v->lists[part], *gst = &v->ghosts[part];
     float *cgx = v->df_grad[part], *cgy = cgx + v->df_grad_cap[part], *cgz = cgy + v->df_grad_cap[part];
+    float *img = v->df_img[part];
     const float rho0 = v->desc.rest_density, mg = v->mass * v->K.spiky_grad, dt = ctx->dt;
     int64_t err = 0;
     switch (ctx->kind) {
     case F_FACTORS: /* and the divergence solve's first error, while i's terms are hot */
         for (int i = b; i < e; ++i) {
-            factors_of(v, lst, gst, cgx, cgy, cgz, i);
-            err += divergence_error_of(v, lst, gst, cgx, cgy, cgz, i, dt);
+            factors_of(v, lst, gst, cgx, cgy, cgz, img, i);
+            err += divergence_error_of(v, lst, gst, cgx, cgy, cgz, img, i, dt);
         }
         break;
     case F_DENSITY_ERROR: {
@@ -521,7 +593,7 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
             /* rho*_i - rho0 = rho_i - rho0 + dt D rho_i/Dt */
             float ci = v->rho[i] - rho0;
             ci = ci < cap ? ci : cap;
-            float ei = ci - dt * mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, i);
+            float ei = ci - dt * mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, img, i);
             ei = ei > 0.0f ? ei : 0.0f;
             v->df_s[i] = ei * v->df_inv_diag[i];
             err += quantise(ei / rho0); /* compression only: quantise clamps at 0 */
@@ -530,11 +602,11 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
     }
     case F_DIVERGENCE_ERROR:
         for (int i = b; i < e; ++i)
-            err += divergence_error_of(v, lst, gst, cgx, cgy, cgz, i, dt);
+            err += divergence_error_of(v, lst, gst, cgx, cgy, cgz, img, i, dt);
         break;
     case F_APPLY:
         for (int i = b; i < e; ++i)
-            apply_of(v, lst, gst, cgx, cgy, cgz, i, ctx->scale);
+            apply_of(v, lst, gst, cgx, cgy, cgz, img, i, ctx->scale);
         break;
     case F_PRESSURE: {
         /* the pressure the liquid exerts (eq. 13's convention) */
@@ -554,12 +626,29 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
     ctx->err[part] = err;
 }
 
+/* After an update pass: the running total of s, and the new velocities
+ * into the packed copy the AVX-512 loops read. The passes themselves never
+ * write pk: a neighbour's 16-byte record load would race with the write. */
 static void sum_add(void *ctxp, int part, int b, int e)
 {
     (void)part;
     ms_volume *v = ((dfsph_ctx *)ctxp)->v;
-    for (int i = b; i < e; ++i)
+    for (int i = b; i < e; ++i) {
         v->df_sum[i] += v->df_s[i];
+        float *pk = v->pk + 8 * (size_t)i;
+        pk[4] = v->vx[i];
+        pk[5] = v->vy[i];
+        pk[6] = v->vz[i];
+    }
+}
+
+/* After a pass that set s: s into the packed copy (see sum_add). */
+static void pack_s(void *ctxp, int part, int b, int e)
+{
+    (void)part;
+    ms_volume *v = ((dfsph_ctx *)ctxp)->v;
+    for (int i = b; i < e; ++i)
+        v->pk[8 * (size_t)i + 3] = v->df_s[i];
 }
 
 /* One pass of kind over all particles; the average error of an error pass. */
@@ -571,6 +660,8 @@ static float run(ms_volume *v, dfsph_ctx *ctx, pass_kind kind)
     ms_vpool_run(v->pool, dfsph_part, ctx, v->n);
     if (kind == F_APPLY)
         ms_vpool_run(v->pool, sum_add, ctx, v->n);
+    else if (kind != F_PRESSURE)
+        ms_vpool_run(v->pool, pack_s, ctx, v->n);
     int64_t err = 0;
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) /* integers: order-free */
         err += ctx->err[p];
@@ -598,6 +689,16 @@ static void repack(void *ctxp, int part, int b, int e)
     }
 }
 
+/* The packed copy's pressure slot back from s to the pressure density.c
+ * wrote (0 under DFSPH), for the force pass after the divergence solve. */
+static void unpack_s(void *ctxp, int part, int b, int e)
+{
+    (void)part;
+    ms_volume *v = ((dfsph_ctx *)ctxp)->v;
+    for (int i = b; i < e; ++i)
+        v->pk[8 * (size_t)i + 3] = v->prs[i];
+}
+
 /* Room for the pair terms of every list the density pass filled. */
 static ms_status reserve_terms(ms_volume *v)
 {
@@ -614,6 +715,19 @@ static ms_status reserve_terms(ms_volume *v)
         ms_free(v->df_grad[p]);
         v->df_grad[p] = g;
         v->df_grad_cap[p] = cap;
+    }
+    for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) { /* and of every image list */
+        const size_t need = v->ghosts[p].len;
+        if (need == 0 || need <= v->df_img_cap[p])
+            continue;
+        const size_t cap = v->ghosts[p].cap > need ? v->ghosts[p].cap : need;
+        float *g = ms_alloc_array(4 * cap, sizeof(float));
+        if (!g)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "volume: no memory for the DFSPH image terms (%zu images)", cap);
+        ms_free(v->df_img[p]);
+        v->df_img[p] = g;
+        v->df_img_cap[p] = cap;
     }
     return MS_OK;
 }
@@ -644,14 +758,16 @@ ms_status ms_volume_dfsph_divergence(ms_volume *v, float dt_scale)
     MS_TRY(reserve_terms(v));
     dfsph_ctx ctx = {.v = v, .dt = dt_scale, .scale = 1.0f};
     const float first = run(v, &ctx, F_FACTORS);
-    if (v->desc.max_divergence_iterations == 0)
+    if (v->desc.max_divergence_iterations == 0) {
+        ms_vpool_run(v->pool, unpack_s, &ctx, v->n);
         return MS_OK;
+    }
     ms_vpool_run(v->pool, zero_sum, &ctx, v->n);
     float reached = 0.0f;
     int it = solve(v, &ctx, F_DIVERGENCE_ERROR, v->desc.max_divergence_error,
                    MIN_DIVERGENCE_ITERATIONS, v->desc.max_divergence_iterations, &first,
                    &reached);
-    ms_vpool_run(v->pool, repack, &ctx, v->n);
+    ms_vpool_run(v->pool, unpack_s, &ctx, v->n);
     v->df_divergence_iters = it;
     v->df_divergence_total += it;
     v->df_divergence_err = reached;
@@ -665,6 +781,7 @@ void ms_volume_dfsph_density(ms_volume *v, float dt)
         return;
     dfsph_ctx ctx = {.v = v, .dt = dt, .scale = 1.0f / dt};
     ms_vpool_run(v->pool, zero_sum, &ctx, v->n);
+    ms_vpool_run(v->pool, repack, &ctx, v->n); /* the kick changed v */
     if (v->df_warm_n == v->n && v->df_warm_dt > 0.0f) {
         /* warm start (2017, section 4.4): the last sub-step's pressure,
          * kappa_i = s_i rho_i / dt^2 kept, applied before the first error */

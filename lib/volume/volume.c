@@ -157,6 +157,7 @@ void ms_volume_destroy(ms_volume *v)
         ms_free(v->cand[p]);
         ms_free(v->cand_idx[p]);
         ms_free(v->df_grad[p]);
+        ms_free(v->df_img[p]);
     }
     ms_free(v);
 }
@@ -464,7 +465,7 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
         out->bytes += (size_t)v->cap * 6 * sizeof(float);
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p)
         out->bytes += (v->lists[p].cap + v->ghosts[p].cap) * (sizeof(int) + sizeof(float)) +
-                      3 * v->df_grad_cap[p] * sizeof(float);
+                      3 * v->df_grad_cap[p] * sizeof(float) + 4 * v->df_img_cap[p] * sizeof(float);
     out->threads = ms_vpool_threads(v->pool);
     out->density_iterations = v->df_density_iters;
     out->divergence_iterations = v->df_divergence_iters;

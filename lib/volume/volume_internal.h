@@ -247,6 +247,10 @@ struct ms_volume {
     int df_density_iters, df_divergence_iters;
     long df_density_total, df_divergence_total;
     float df_density_err, df_divergence_err;
+    /* per part, the image-list twin of df_grad: g and x_i - x_j' of each
+     * entry of ghosts[part], 4 floats an entry, df_img_cap entries */
+    float *df_img[MS_VOLUME_MAX_THREADS];
+    size_t df_img_cap[MS_VOLUME_MAX_THREADS];
 };
 
 /* A surface particle: fewer neighbours (self and wall images included)
