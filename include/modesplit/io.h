@@ -33,9 +33,16 @@
  *
  * Crash safety: each frame is written and flushed before ms_writer_frame
  * returns, then the root attribute `frames` is raised and flushed again;
- * freed file space is never reused. A run killed at any point leaves a file
- * that h5dump and ms_reader read, with every frame whose ms_writer_frame
- * returned. Before each frame the writer checks the space left on the file
+ * freed file space is never reused. A run killed at any point after its
+ * first frame leaves a file that h5dump and ms_reader read, with every frame
+ * whose ms_writer_frame returned, even when killed in the middle of a
+ * flush: the writer forks one helper process at the first flush that
+ * rewrites what an earlier one wrote, and the helper applies each flush's
+ * in-place writes whole once it has received them all (it holds only the
+ * file and its socket, ignores terminal signals, sits in its own process
+ * group and ends when the writer closes or dies; the writer reaps it). If
+ * the fork is refused, the writer writes each flush itself, with a narrow
+ * window left. Before each frame the writer checks the space left on the file
  * system (and RLIMIT_FSIZE) and stops with MS_ERR_IO instead of writing a
  * frame that cannot fit. The writer turns off HDF5 file locking so that the
  * file can be read while the run goes on.
