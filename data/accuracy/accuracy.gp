@@ -1,4 +1,4 @@
-# gnuplot script written by `modesplit accuracy` (commit e5c1f3b); run it in this
+# gnuplot script written by `modesplit accuracy` (commit dde8f23); run it in this
 # directory: gnuplot accuracy.gp. Restyle freely.
 set terminal pngcairo noenhanced size 1000,650 font 'sans,11'
 set logscale xy
