@@ -624,8 +624,8 @@ END_TEST
  * *untouched: the file's committed bytes are those before the flush
  * (<file>.before); *readable: h5dump and the reader read the file, which
  * holds `before` frames bit for bit. */
-static int kill_inside_a_flush(int before, int batch, long at, int without_helper,
-                               int *untouched, int *readable)
+static int kill_inside_a_flush(int before, int batch, long at, int without_helper, int *untouched,
+                               int *readable)
 {
     ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
     const char *path = tmp_path("torn.h5");

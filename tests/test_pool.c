@@ -211,8 +211,7 @@ START_TEST(the_caller_claims_from_the_front_and_a_helper_from_the_back)
         for (int q = k; q < MS_VPOOL_SHARED_PARTS; ++q)
             ck_assert_msg(atomic_load(&c.ran_by_caller[q]) == 2,
                           "loop %d: chunk %d ran on %s after the caller's 0..%d", loop, q,
-                          atomic_load(&c.ran_by_caller[q]) == 1 ? "the caller" : "nobody",
-                          k - 1);
+                          atomic_load(&c.ran_by_caller[q]) == 1 ? "the caller" : "nobody", k - 1);
         caller_more += k > 1;
     }
     return_helper(p, t);

@@ -876,8 +876,9 @@ START_TEST(the_band_search_finds_the_reference_surface)
             }
         }
         ck_assert_msg(wet > 0, "%s: no liquid extracted", scenes[k]);
-        fprintf(stderr, "%s: max distance to a root of phi = T: reference %.3g m, band %.3g m "
-                        "(spacing %g m)\n",
+        fprintf(stderr,
+                "%s: max distance to a root of phi = T: reference %.3g m, band %.3g m "
+                "(spacing %g m)\n",
                 scenes[k], worst_ref, worst_band, (double)s.spacing);
         free(a);
         free(b);

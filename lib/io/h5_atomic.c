@@ -62,16 +62,16 @@ typedef struct atomic_file {
     dev_t dev;
     ino_t ino;
     haddr_t eoa;
-    haddr_t eof;          /* as if the journal were applied */
-    haddr_t durable_end;  /* below: in place, journaled */
-    haddr_t shrink_to;    /* a truncate that waits for the next batch, 0 = none */
+    haddr_t eof;            /* as if the journal were applied */
+    haddr_t durable_end;    /* below: in place, journaled */
+    haddr_t shrink_to;      /* a truncate that waits for the next batch, 0 = none */
     unsigned char *journal; /* entries: u64 addr, u64 size, bytes */
     size_t journal_len, journal_cap;
-    int helper;           /* HELPER_* */
+    int helper; /* HELPER_* */
     pid_t pid;
-    int sock;             /* our end of the socket pair */
-    int abandoned;        /* ms_h5_atomic_abandon: drop the journal */
-    char name[4096];      /* as opened, for the tests' snapshot */
+    int sock;        /* our end of the socket pair */
+    int abandoned;   /* ms_h5_atomic_abandon: drop the journal */
+    char name[4096]; /* as opened, for the tests' snapshot */
 } atomic_file;
 
 static hid_t driver_id = -1;
@@ -137,7 +137,7 @@ static int recv_all(int s, void *buf, size_t n)
 
 static void helper_main(int sock, int fd)
 {
-    static const int ignored[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGTSTP,
+    static const int ignored[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGPIPE, SIGTSTP,
                                   SIGTTIN, SIGTTOU, SIGUSR1, SIGUSR2, SIGALRM};
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
@@ -151,13 +151,13 @@ static void helper_main(int sock, int fd)
     /* keep only the socket and the file: a pipe or socket of the program
      * held open here would keep its reader waiting for our end */
     unsigned lo = (unsigned)(sock < fd ? sock : fd), hi = (unsigned)(sock < fd ? fd : sock);
-    if ((lo == 0 || close_range(0, lo - 1, 0) == 0) &&
-        (hi == lo + 1 || close_range(lo + 1, hi - 1, 0) == 0) && close_range(hi + 1, ~0u, 0) == 0)
-        ;
-    else { /* no close_range (Linux < 5.9): the descriptors a program opens */
+    int closed = (lo == 0 || close_range(0, lo - 1, 0) == 0) &&
+                 (hi == lo + 1 || close_range(lo + 1, hi - 1, 0) == 0) &&
+                 close_range(hi + 1, ~0u, 0) == 0;
+    if (!closed) { /* no close_range (Linux < 5.9): the descriptors a program opens */
         struct rlimit rl;
-        int top = getrlimit(RLIMIT_NOFILE, &rl) == 0 && rl.rlim_cur < 65536 ? (int)rl.rlim_cur
-                                                                             : 65536;
+        int top =
+            getrlimit(RLIMIT_NOFILE, &rl) == 0 && rl.rlim_cur < 65536 ? (int)rl.rlim_cur : 65536;
         for (int i = 0; i < top; ++i)
             if (i != sock && i != fd)
                 close(i);
@@ -172,9 +172,9 @@ static void helper_main(int sock, int fd)
         size_t bytes = (size_t)head[2];
         if (bytes > cap) {
             size_t want = bytes + bytes / 2 + 4096;
-            void *p = buf ? mremap(buf, cap, want, MREMAP_MAYMOVE)
-                          : mmap(NULL, want, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS,
-                                 -1, 0);
+            void *p =
+                buf ? mremap(buf, cap, want, MREMAP_MAYMOVE)
+                    : mmap(NULL, want, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
             if (p == MAP_FAILED)
                 _exit(1); /* the writer sees the socket close and writes itself */
             buf = p;
@@ -183,8 +183,7 @@ static void helper_main(int sock, int fd)
         uint64_t tail;
         /* a writer killed while sending leaves a batch without its end:
          * nothing of it is applied */
-        if (!recv_all(sock, buf, bytes) || !recv_all(sock, &tail, sizeof tail) ||
-            tail != BATCH_END)
+        if (!recv_all(sock, buf, bytes) || !recv_all(sock, &tail, sizeof tail) || tail != BATCH_END)
             _exit(0);
         int32_t answer = 0;
         size_t at = 0;

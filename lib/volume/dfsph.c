@@ -237,9 +237,10 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
  * answers to i's image in its own list at the same distance). Without
  * them a particle in a corner (seven images of itself) had its diagonal
  * underestimated several times over and a tank at rest blew up. */
-static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
-                                              float *restrict cgx, float *restrict cgy,
-                                              float *restrict cgz, float *restrict img, int i)
+static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
+                                              const ms_nlist *gst, float *restrict cgx,
+                                              float *restrict cgy, float *restrict cgz,
+                                              float *restrict img, int i)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const int *restrict idx = lst->idx + v->nl_begin[i];
@@ -348,14 +349,14 @@ static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
  * records of j[k], j[k+4], j[k+8], j[k+12], so that the transpose leaves
  * the lanes in order. Values are moved, never computed: the same bits. */
 #define MS_DFSPH_REC(k) _mm_loadu_ps(b + 8 * (size_t)j[k])
-#define MS_DFSPH_ROW(k)                                                                    \
-    _mm512_insertf32x4(                                                                    \
-        _mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(MS_DFSPH_REC(k)),    \
-                                              MS_DFSPH_REC((k) + 4), 1),                   \
-                           MS_DFSPH_REC((k) + 8), 2),                                      \
+#define MS_DFSPH_ROW(k)                                                                            \
+    _mm512_insertf32x4(                                                                            \
+        _mm512_insertf32x4(                                                                        \
+            _mm512_insertf32x4(_mm512_castps128_ps512(MS_DFSPH_REC(k)), MS_DFSPH_REC((k) + 4), 1), \
+            MS_DFSPH_REC((k) + 8), 2),                                                             \
         MS_DFSPH_REC((k) + 12), 3)
-__attribute__((target("avx512f"), always_inline)) static inline void
-load_svel(const float *pk, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
+__attribute__((target("avx512f"), always_inline)) static inline void load_svel(
+    const float *pk, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
 {
     const float *b = pk + 3;
     const __m512 a0 = MS_DFSPH_ROW(0), a1 = MS_DFSPH_ROW(1), a2 = MS_DFSPH_ROW(2),
@@ -381,9 +382,9 @@ __attribute__((target("avx512f"), always_inline)) static inline float hsum(__m51
     return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
 }
 
-__attribute__((target("avx512f"))) static float
-divergence_real_avx512(const ms_volume *v, const int *idx, const float *gx, const float *gy,
-                       const float *gz, int n, float ui, float wi, float ti)
+__attribute__((target("avx512f"))) static float divergence_real_avx512(
+    const ms_volume *v, const int *idx, const float *gx, const float *gy, const float *gz, int n,
+    float ui, float wi, float ti)
 {
     const __m512 u = _mm512_set1_ps(ui), w = _mm512_set1_ps(wi), t = _mm512_set1_ps(ti);
     __m512 a = _mm512_setzero_ps();
@@ -398,9 +399,10 @@ divergence_real_avx512(const ms_volume *v, const int *idx, const float *gx, cons
     return hsum(a);
 }
 
-__attribute__((target("avx512f"))) static void
-apply_real_avx512(const float *pk, const int *idx, const float *gx, const float *gy,
-                  const float *gz, int n, float si, float out[3])
+__attribute__((target("avx512f"))) static void apply_real_avx512(const float *pk, const int *idx,
+                                                                 const float *gx, const float *gy,
+                                                                 const float *gz, int n, float si,
+                                                                 float out[3])
 {
     const __m512 sv = _mm512_set1_ps(si);
     __m512 a = _mm512_setzero_ps(), b = a, c = a;
@@ -420,10 +422,11 @@ apply_real_avx512(const float *pk, const int *idx, const float *gx, const float 
 
 /* sum_j (v_i - v_j) . (x_i - x_j) g_ij over real neighbours and images:
  * D rho_i/Dt = -m G times it. */
-static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
-                                                   const float *restrict cgx,
+static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_nlist *lst,
+                                                   const ms_nlist *gst, const float *restrict cgx,
                                                    const float *restrict cgy,
-                                                   const float *restrict cgz, const float *restrict img, int i)
+                                                   const float *restrict cgz,
+                                                   const float *restrict img, int i)
 {
     const float *restrict vx = v->vx, *restrict vy = v->vy, *restrict vz = v->vz;
     const int *restrict idx = lst->idx + v->nl_begin[i];
@@ -465,7 +468,8 @@ static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_
 /* v_i += scale m G sum_j (s_i + s_j) g_ij (x_i - x_j): the pressure term. */
 static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
                                             const float *restrict cgx, const float *restrict cgy,
-                                            const float *restrict cgz, const float *restrict img, int i, float scale)
+                                            const float *restrict cgz, const float *restrict img,
+                                            int i, float scale)
 {
     const float *restrict s = v->df_s;
     const int *restrict idx = lst->idx + v->nl_begin[i];
@@ -545,7 +549,8 @@ static inline int64_t quantise(float e_rel)
 static inline MS_DFSPH_INLINE int64_t divergence_error_of(ms_volume *v, const ms_nlist *lst,
                                                           const ms_nlist *gst, const float *cgx,
                                                           const float *cgy, const float *cgz,
-                                                          const float *restrict img, int i, float dt)
+                                                          const float *restrict img, int i,
+                                                          float dt)
 {
     float ei = 0.0f;
     if (!ms_volume_is_surface(v, i)) {

@@ -790,8 +790,8 @@ static int smooth_passes(const ms_extract_snap *s, int *full, float *frac)
  * column, the bracketing root search. Into *raw_out (rw x rh in buf);
  * tmp_out, blend_out: the smoothing's scratch. */
 static ms_status columns_reference(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool,
-                                   int nx, int ny, int i0, int j0, int rw, int rh,
-                                   float **raw_out, float **tmp_out, float **blend_out)
+                                   int nx, int ny, int i0, int j0, int rw, int rh, float **raw_out,
+                                   float **tmp_out, float **blend_out)
 {
     const size_t rcells = (size_t)rw * rh;
     const size_t cells = (size_t)nx * ny;
@@ -862,7 +862,6 @@ static ms_status columns_reference(const ms_extract_snap *s, ms_extract_work *w,
     return MS_OK;
 }
 
-
 /* The columns by bands (the default): the marked particles and their
  * wall images (a particle within R of a side wall is mirrored in it, in
  * both at a corner: every image a column within R of that wall sees,
@@ -874,8 +873,8 @@ static ms_status columns_reference(const ms_extract_snap *s, ms_extract_work *w,
  * root search. The same spheres as the reference, summed in another
  * order, the root to the same tolerance by another path: not the same
  * bytes (bench_extract and test_volume measure the difference). */
-static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool,
-                              int nx, int ny, int i0, int j0, int rw, int rh, float **raw_out,
+static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool, int nx,
+                              int ny, int i0, int j0, int rw, int rh, float **raw_out,
                               float **tmp_out, float **blend_out)
 {
     const size_t rcells = (size_t)rw * rh;
@@ -961,10 +960,27 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     }
     assert((size_t)mi <= icap);
     (void)mi;
-    column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
-                     .dye = dye, .cstart = cstart, .bx = bx, .by = by, .bz = bz, .cand = cand,
-                     .cand_stride = cand_stride, .raw = raw, .ex = ex, .rx = rx, .ry = ry,
-                     .band = band, .band_stride = band_stride, .bstart = bstart};
+    column_ctx cc = {.s = s,
+                     .nx = nx,
+                     .ny = ny,
+                     .i0 = i0,
+                     .j0 = j0,
+                     .rw = rw,
+                     .dxe = dxe,
+                     .dye = dye,
+                     .cstart = cstart,
+                     .bx = bx,
+                     .by = by,
+                     .bz = bz,
+                     .cand = cand,
+                     .cand_stride = cand_stride,
+                     .raw = raw,
+                     .ex = ex,
+                     .rx = rx,
+                     .ry = ry,
+                     .band = band,
+                     .band_stride = band_stride,
+                     .bstart = bstart};
     ms_vpool_fn *columns = columns_band_c;
 #if MS_VOLUME_HAVE_AVX512
     if (s->isa == MS_VOLUME_ISA_AVX512)
@@ -977,8 +993,8 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     return MS_OK;
 }
 
-static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool,
-                              int nx, int ny, int i0, int j0, int rw, int rh, float *out)
+static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool, int nx,
+                              int ny, int i0, int j0, int rw, int rh, float *out)
 {
     const size_t rcells = (size_t)rw * rh;
     memset(out, 0, rcells * sizeof *out);

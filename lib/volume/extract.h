@@ -64,7 +64,7 @@ ms_vpool *ms_volume_extract_pool(ms_volume *v);
  * thread. With the engine's tasks (ms_volume_set_tasks) each loop also
  * enqueues one engine task that claims chunks the same way. */
 ms_status ms_volume_share_loops(ms_volume *v);
-#define MS_VPOOL_SHARED_PARTS 8 /* pool.c: claimed from both ends (issue 12, round six) */
+#define MS_VPOOL_SHARED_PARTS 8  /* pool.c: claimed from both ends (issue 12, round six) */
 #define MS_VPOOL_SHARED_MIN 1024 /* shorter loops run on the calling thread */
 void ms_vpool_help_open(ms_vpool *p);
 void ms_vpool_help(ms_vpool *p);

@@ -92,7 +92,7 @@ struct ms_vpool {
  * <= parts). A claim of an old generation fails its compare-and-swap. */
 #define CLAIM_BITS 16
 #define CLAIM_MASK ((UINT64_C(1) << CLAIM_BITS) - 1)
-#define CLAIM_FRONT(w) ((int)((w) & CLAIM_MASK))
+#define CLAIM_FRONT(w) ((int)((w)&CLAIM_MASK))
 #define CLAIM_BACK(w) ((int)(((w) >> CLAIM_BITS) & CLAIM_MASK))
 /* How long a thread with nothing to claim spins before it sleeps. */
 #define MS_VPOOL_SPIN_US 100.0

@@ -160,13 +160,13 @@ int main(int argc, char **argv)
             ms_extract_work work = {0};
             if (ms_volume_extract_snap(v, &snap) != MS_OK)
                 return 1;
-            /* one call: phase A (marks and copy; the counts are valid
+                /* one call: phase A (marks and copy; the counts are valid
              * after the first) and phase B with the volume's pool */
-#define EXTRACT_CALL(ref, out)                                                                    \
-    do {                                                                                          \
-        ms_volume_extract_snap(v, &snap);                                                         \
-        snap.reference = (ref);                                                                   \
-        ms_extract_field(&snap, &work, ms_volume_extract_pool(v), nx, ny, (out));                 \
+#define EXTRACT_CALL(ref, out)                                                    \
+    do {                                                                          \
+        ms_volume_extract_snap(v, &snap);                                         \
+        snap.reference = (ref);                                                   \
+        ms_extract_field(&snap, &work, ms_volume_extract_pool(v), nx, ny, (out)); \
     } while (0)
             int calls = 1;
             for (;;) { /* calls per repeat: a repeat lasts about 20 ms (4 ms quick) */
