@@ -428,6 +428,104 @@ START_TEST(a_teleported_collider_is_swept_not_crushed)
 }
 END_TEST
 
+/* Issue 12: the next step's first sub-step takes the neighbour pass the
+ * extraction ran between steps (ms_volume_count_neighbours) only while it
+ * holds. Two volumes take the same steps with the same colliders; only A
+ * is extracted between steps (a pass every frame), while between steps the
+ * caller, in both: leaves the box alone, teleports it, sets it moving,
+ * stops it, turns it, adds a sphere, removes and adds particles, sets it
+ * moving and then leaves it behind its velocity (a jump). A stale
+ * pass (a collider's old place, a particle set that changed) would change
+ * A's sub-steps: the particles must match bit for bit after every step. */
+static void move_both(ms_shape *s[2], const float pos[3], const float vel[3])
+{
+    for (int k = 0; k < 2; ++k)
+        ck_assert_int_eq(ms_shape_set_pose(s[k], pos, vel), MS_OK);
+}
+
+START_TEST(a_pass_left_by_the_extraction_changes_no_byte)
+{
+    if (skip_under_tsan())
+        MS_SKIP(TSAN_WHY);
+    ms_volume_desc d = box_desc(0.2f, 0.1f, 0.12f, 0.01f);
+    d.threads = 2; /* the lists are per chunk: the pass must match them too */
+    ms_volume *v[2];
+    ms_shape *box[2], *ball[2];
+    for (int k = 0; k < 2; ++k) {
+        v[k] = make(&d);
+        ck_assert_int_eq(
+            ms_volume_fill_box(v[k], (float[3]){0, 0, 0}, (float[3]){0.2f, 0.1f, 0.05f}), MS_OK);
+        box[k] = shape("box", "{\"size\": [0.04, 0.04, 0.04]}", 0.06f, 0.05f, 0.04f, 0, 0, 0);
+        ball[k] = shape("sphere", "{\"radius\": 0.02}", 0.15f, 0.05f, 0.05f, 0, 0, 0);
+        ck_assert_int_eq(ms_volume_add_collider(v[k], box[k]), MS_OK);
+    }
+    const int n0 = ms_volume_count(v[0]);
+    float *p[2] = {malloc(sizeof(float) * 6 * (size_t)(n0 + 64)),
+                   malloc(sizeof(float) * 6 * (size_t)(n0 + 64))};
+    float *hf = malloc(sizeof(float) * 16 * 8);
+    ck_assert(p[0] && p[1] && hf);
+    for (int f = 0; f < 16; ++f) {
+        switch (f) {
+        case 3: /* a teleport: swept during the next step */
+            move_both(box, (float[3]){0.08f, 0.05f, 0.04f}, (float[3]){0, 0, 0});
+            break;
+        case 5: /* moving: placed where its velocity took it, by the caller */
+            move_both(box, (float[3]){0.08f, 0.05f, 0.04f}, (float[3]){0.3f, 0, 0});
+            break;
+        case 6:
+            move_both(box, (float[3]){0.085f, 0.05f, 0.04f}, (float[3]){0.3f, 0, 0});
+            break;
+        case 7: /* stopped where it was */
+            move_both(box, (float[3]){0.085f, 0.05f, 0.04f}, (float[3]){0, 0, 0});
+            break;
+        case 9: /* turned in place */
+            for (int k = 0; k < 2; ++k)
+                ck_assert_int_eq(
+                    ms_shape_set_orientation(box[k], (float[4]){0.99f, 0, 0, 0.14f}, NULL), MS_OK);
+            break;
+        case 11:
+            for (int k = 0; k < 2; ++k)
+                ck_assert_int_eq(ms_volume_add_collider(v[k], ball[k]), MS_OK);
+            break;
+        case 13:
+            for (int k = 0; k < 2; ++k) {
+                int removed = 0;
+                ck_assert_int_eq(ms_volume_remove_box(v[k], (float[3]){0.17f, 0, 0},
+                                                      (float[3]){0.2f, 0.1f, 0.12f}, &removed),
+                                 MS_OK);
+                ck_assert_int_gt(removed, 0);
+                ck_assert_int_eq(ms_volume_add_particles(v[k], 1, (float[3]){0.1f, 0.05f, 0.1f},
+                                                         (float[3]){0, 0, -1}),
+                                 MS_OK);
+            }
+            break;
+        case 14: /* moving, and next frame left where it is: a jump back */
+            move_both(box, (float[3]){0.085f, 0.05f, 0.04f}, (float[3]){0.3f, 0, 0});
+            break;
+        default:
+            break;
+        }
+        for (int k = 0; k < 2; ++k)
+            step(v[k], 1.0f / 60);
+        ck_assert_int_eq(ms_volume_extract_height(v[0], 16, 8, hf), MS_OK);
+        const int n = ms_volume_count(v[0]);
+        ck_assert_int_eq(ms_volume_count(v[1]), n);
+        for (int k = 0; k < 2; ++k)
+            ck_assert_int_eq(ms_volume_get_particles(v[k], p[k], p[k] + 3 * (size_t)n), MS_OK);
+        ck_assert_msg(!memcmp(p[0], p[1], sizeof(float) * 6 * (size_t)n),
+                      "frame %d: the extracted volume's particles differ", f);
+    }
+    free(p[0]);
+    free(p[1]);
+    free(hf);
+    for (int k = 0; k < 2; ++k) {
+        ms_volume_destroy(v[k]);
+        ms_shape_destroy(box[k]);
+        ms_shape_destroy(ball[k]);
+    }
+}
+END_TEST
+
 static Suite *colliders_suite(void)
 {
     Suite *s = suite_create("colliders");
@@ -442,6 +540,7 @@ static Suite *colliders_suite(void)
     tcase_add_test(col, dfsph_an_obstacle_at_20_m_s_pushes_the_liquid_and_none_tunnels);
     tcase_add_test(col, tait_an_obstacle_at_20_m_s_pushes_the_liquid_and_none_tunnels);
     tcase_add_test(col, dfsph_fast_particles_do_not_cross_a_thin_wall);
+    tcase_add_test(col, a_pass_left_by_the_extraction_changes_no_byte);
     suite_add_tcase(s, col);
     return s;
 }

@@ -199,8 +199,53 @@ ms_status ms_volume_density(ms_volume *v)
     return MS_OK;
 }
 
+/* A collider's pose as the boundary pass outside a step sees it. */
+static void collider_pose(const ms_shape *s, float out[13])
+{
+    ms_shape_get_pose(s, out, out + 3);
+    ms_shape_get_orientation(s, out + 6, out + 10);
+}
+
 ms_status ms_volume_count_neighbours(ms_volume *v)
 {
     ms_volume_boundary(v, 0.0);
-    return ms_volume_density(v);
+    ms_status st = ms_volume_density(v);
+    v->pass_ready = st == MS_OK;
+    v->pass_ncol = v->ncolliders;
+    for (int c = 0; c < v->ncolliders; ++c) {
+        v->pass_col[c] = v->colliders[c];
+        collider_pose(v->colliders[c], v->pass_pose[c]);
+    }
+    return st;
+}
+
+/* Issue 12: after the step's last drift the extraction (and the coupling
+ * to the waves) rebuilt the grid and ran a density pass at the end-of-step
+ * positions; the next step's first sub-step would build the same again:
+ * the sort of particles already in cell order is the identity, and the
+ * boundary terms at tau = 0 are those of the step's view of the colliders
+ * when none jumped (col_jump 0: shift 0, col_vel the shape's own velocity,
+ * compared bit for bit). Nothing else the pass reads can change between
+ * steps without clearing counts_valid (positions, count, order) or
+ * showing in the colliders' poses; the velocities can (ms_volume_adapt_to
+ * _waves), so the packed copy of them is refreshed. */
+int ms_volume_take_counted_pass(ms_volume *v)
+{
+    int ok = v->pass_ready && v->counts_valid && v->pass_ncol == v->ncolliders;
+    v->pass_ready = 0;
+    for (int c = 0; ok && c < v->ncolliders; ++c) {
+        float now[13];
+        collider_pose(v->colliders[c], now);
+        ok = v->pass_col[c] == v->colliders[c] && !memcmp(now, v->pass_pose[c], sizeof now);
+        for (int k = 0; ok && k < 3; ++k) {
+            const float zero = 0.0f;
+            ok = !memcmp(&v->col_jump[c][k], &zero, sizeof zero) &&
+                 !memcmp(&v->col_vel[c][k], &now[3 + k], sizeof zero);
+        }
+    }
+    if (ok) {
+        density_ctx ctx = {.v = v};
+        ms_vpool_run(v->pool, pack_part, &ctx, v->n);
+    }
+    return ok;
 }

@@ -3,7 +3,9 @@
  * padding on each side, so the 27 cells around any particle's cell exist.
  * Rebuilt at every sub-step by a stable counting sort that reorders the
  * particle arrays into cell order (x fastest), so the three cells of a
- * row (x-1, x, x+1) are one contiguous run of particles.
+ * row (x-1, x, x+1) are one contiguous run of particles; a step's first
+ * sub-step takes instead the build the extraction made between steps
+ * while nothing moved since (ms_volume_take_counted_pass, density.c).
  * With a pool the sort runs in the pool's chunks (issue 12: on one thread
  * it was the largest serial part of a sub-step, ~8 % of fig1_x10's frame):
  * each chunk counts its particles per cell, the counts are summed in

@@ -195,6 +195,9 @@ ms_status ms_volume_step(ms_volume *v, float dt)
                        dt, least, (double)lambda, at_rest, v->desc.max_substeps);
     if (dt > 0.0f)
         ms_volume_colliders_begin(v, dt);
+    /* the first sub-step takes the pass the extraction left, if it holds */
+    int counted = dt > 0.0f && v->n > 0 && ms_volume_take_counted_pass(v);
+    v->pass_ready = 0;
     while (rest > 0.0 && v->n > 0) {
         if (atomic_exchange(&v->cancel, 0)) {
             st = ms_fail(MS_ERR_CANCELED,
@@ -202,11 +205,14 @@ ms_status ms_volume_step(ms_volume *v, float dt)
                          "is valid at that time)", taken, v->time);
             break;
         }
-        ms_volume_grid_build(v);
-        ms_volume_boundary(v, tau);
-        st = ms_volume_density(v);
-        if (st != MS_OK)
-            break;
+        if (!counted) {
+            ms_volume_grid_build(v);
+            ms_volume_boundary(v, tau);
+            st = ms_volume_density(v);
+            if (st != MS_OK)
+                break;
+        }
+        counted = 0;
         if (dfsph) {
             st = ms_volume_dfsph_divergence(v, v->max_dt);
             if (st != MS_OK)

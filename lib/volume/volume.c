@@ -511,6 +511,7 @@ ms_status ms_volume_add_collider(ms_volume *v, ms_shape *shape)
                        MS_VOLUME_MAX_COLLIDERS);
     v->col_expect_valid[v->ncolliders] = 0;
     v->colliders[v->ncolliders++] = shape;
+    v->pass_ready = 0; /* issue 12: the boundary terms changed (density.c) */
     return MS_OK;
 }
 
@@ -527,6 +528,7 @@ ms_status ms_volume_remove_collider(ms_volume *v, ms_shape *shape)
             memmove(&v->col_expect_valid[i], &v->col_expect_valid[i + 1],
                     rest * sizeof v->col_expect_valid[0]);
             v->ncolliders--;
+            v->pass_ready = 0; /* a new shape may come at the same address */
             return MS_OK;
         }
     return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: remove_collider: shape is not a collider");

@@ -155,6 +155,16 @@ struct ms_volume {
     int *cell;                  /* cell of each particle (sorted order) */
     unsigned char *mark;        /* extraction: 1 surface, 2 neighbour of one */
     int counts_valid;           /* nbr[] matches the current positions */
+    /* issue 12: the pass of the last ms_volume_count_neighbours (grid,
+     * boundary terms at tau = 0, lists, density), which the next step's
+     * first sub-step takes as its own while counts_valid holds, the
+     * colliders are the same shapes at the same poses (pass_col,
+     * pass_pose: pos, vel, orientation, omega) and none jumped. Cleared
+     * by every step and by adding or removing a collider; the positions'
+     * mutators clear counts_valid. */
+    int pass_ready, pass_ncol;
+    const ms_shape *pass_col[MS_VOLUME_MAX_COLLIDERS];
+    float pass_pose[MS_VOLUME_MAX_COLLIDERS][13];
 
     /* neighbour grid, 1 cell of padding on each side */
     int gx, gy, gz;
@@ -353,8 +363,14 @@ float ms_volume_pressure(const ms_volume *v, float rho);
 /* The best neighbour filter this CPU runs (MS_VOLUME_ISA_*). */
 int ms_volume_pick_isa(void);
 /* The boundary terms and a density pass at the current positions
- * (extraction and coupling between steps). */
+ * (extraction and coupling between steps); marks the pass ready for the
+ * next step (pass_ready). */
 ms_status ms_volume_count_neighbours(ms_volume *v);
+/* After ms_volume_colliders_begin: 1 if the step's first sub-step may take
+ * the pass of ms_volume_count_neighbours as its own (the same bytes as
+ * building it again), having refreshed the packed velocities (the
+ * coupling to the waves changes them between steps). */
+int ms_volume_take_counted_pass(ms_volume *v);
 
 /* dfsph.c: after a density pass (prs = 0 under DFSPH): the Jacobi
  * diagonals; the divergence-free solve of the velocities (dt_scale, s, the
