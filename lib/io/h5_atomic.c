@@ -132,6 +132,14 @@ static int recv_all(int s, void *buf, size_t n)
     return 1;
 }
 
+/* A journal entry's head at p: its file address and its byte count (the
+ * bytes follow the 16-byte head). */
+static void entry_head(const unsigned char *p, uint64_t *addr, uint64_t *n)
+{
+    memcpy(addr, p, 8);
+    memcpy(n, p + 8, 8);
+}
+
 /* ---- the helper process: only system calls (it is a fork of a process
  * that may run other threads, so no malloc, no stdio, no locks) ---- */
 
@@ -189,8 +197,7 @@ static void helper_main(int sock, int fd)
         size_t at = 0;
         for (uint64_t e = 0; e < head[1] && answer == 0; ++e) {
             uint64_t addr, n;
-            memcpy(&addr, buf + at, 8);
-            memcpy(&n, buf + at + 8, 8);
+            entry_head(buf + at, &addr, &n);
             if (write_at(fd, buf + at + 16, (size_t)n, (haddr_t)addr) != 0)
                 answer = errno ? errno : EIO;
             at += 16 + (size_t)n;
@@ -261,8 +268,8 @@ static size_t journal_entries(const atomic_file *f)
 {
     size_t count = 0;
     for (size_t at = 0; at < f->journal_len; ++count) {
-        uint64_t n;
-        memcpy(&n, f->journal + at + 8, 8);
+        uint64_t addr, n;
+        entry_head(f->journal + at, &addr, &n);
         at += 16 + (size_t)n;
     }
     return count;
@@ -274,8 +281,7 @@ static int apply_here(atomic_file *f)
     size_t written = 0;
     for (size_t at = 0; at < f->journal_len;) {
         uint64_t addr, n;
-        memcpy(&addr, f->journal + at, 8);
-        memcpy(&n, f->journal + at + 8, 8);
+        entry_head(f->journal + at, &addr, &n);
         size_t part = (size_t)n;
         written += 16; /* counted as in the journal: entry head, then bytes */
         if (test_die_after > 0 && written + part >= test_die_after)
@@ -509,8 +515,7 @@ static herr_t atomic_read(H5FD_t *file, H5FD_mem_t type, hid_t dxpl, haddr_t add
     /* lay the journal over it, in the order it was written */
     for (size_t j = 0; j < f->journal_len;) {
         uint64_t a, n;
-        memcpy(&a, f->journal + j, 8);
-        memcpy(&n, f->journal + j + 8, 8);
+        entry_head(f->journal + j, &a, &n);
         haddr_t lo = a > addr ? a : addr, hi = a + n < addr + size ? a + n : addr + size;
         if (lo < hi)
             memcpy((unsigned char *)buf + (lo - addr), f->journal + j + 16 + (lo - a),
@@ -655,22 +660,10 @@ void ms_h5_atomic_abandon(hid_t file)
     }
 }
 
-pid_t ms_h5_atomic_helper(hid_t file)
-{
-    const atomic_file *f = atomic_of(file);
-    return f && f->helper == HELPER_RUNNING ? f->pid : 0;
-}
-
 void ms_h5_atomic_test_die(int batch, long at, int without_helper)
 {
     test_die_batch = batch;
     test_die_at = at;
     test_die_after = 0;
     test_no_helper = without_helper;
-}
-
-size_t ms_h5_atomic_journal_bytes(hid_t file)
-{
-    const atomic_file *f = atomic_of(file);
-    return f ? f->journal_len : 0;
 }

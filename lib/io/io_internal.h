@@ -11,7 +11,6 @@
 
 #include <hdf5.h>
 #include <stdint.h>
-#include <sys/types.h>
 
 #include "core/core_internal.h"
 #include "modesplit/io.h"
@@ -135,8 +134,6 @@ int ms_h5_atomic_active(hid_t file);
 /* Drop what the file has not committed: nothing more reaches it (the
  * writer gives up a file after a write error). */
 void ms_h5_atomic_abandon(hid_t file);
-/* The helper's process id, 0 when none runs (tests). */
-pid_t ms_h5_atomic_helper(hid_t file);
 /* Tests: the process kills itself (SIGKILL) in a flush's in-place writes
  * (the flush after `batch` others that had some), `at` bytes into them
  * (or, when negative, -at bytes short of their end), while they go to the
@@ -144,8 +141,6 @@ pid_t ms_h5_atomic_helper(hid_t file);
  * then); at 0 turns it off. Just before that flush the file's committed
  * bytes are copied to <file>.before. */
 void ms_h5_atomic_test_die(int batch, long at, int without_helper);
-/* Bytes of in-place writes waiting for the next flush. */
-size_t ms_h5_atomic_journal_bytes(hid_t file);
 /* Jenkins lookup3 (HDF5's metadata checksum). */
 uint32_t ms_lookup3(const void *key, size_t length, uint32_t initval);
 /* A 48-byte version-2 superblock with 8-byte addresses and a good checksum. */
