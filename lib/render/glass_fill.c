@@ -155,6 +155,23 @@ static void polar(const ms_render_cavity *c, float x, float y, float *rho, float
     *a = atan2f(q[1], q[0]);
 }
 
+/* Cell (i, j) of grid g: its centre (x, y) and polar() of it. */
+static void cell_polar(const ms_render_cavity *c, const ms_grid *g, int i, int j, float *x,
+                       float *y, float *rho, float *a)
+{
+    *x = g->origin[0] + ((float)i + 0.5f) * g->dx;
+    *y = g->origin[1] + ((float)j + 0.5f) * g->dy;
+    polar(c, *x, *y, rho, a);
+}
+
+/* The determinant of a 3x3 matrix, by its first row. */
+static double det3(double a[3][3])
+{
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+           a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+
 /* The world point at local radius rr along local angle a, on the plane
  * z = plane_z (world). */
 static void at_radius(const ms_render_cavity *c, float rr, float a, float w[3])
@@ -324,10 +341,8 @@ ms_status ms_render_cavity_fill(ms_renderer *r, const float *h, const ms_grid *g
     long n = 0;
     for (int j = box[2]; j <= box[3]; ++j)
         for (int i = box[0]; i <= box[1]; ++i) {
-            const float x = g->origin[0] + ((float)i + 0.5f) * g->dx;
-            const float y = g->origin[1] + ((float)j + 0.5f) * g->dy;
-            float rho, a;
-            polar(c, x, y, &rho, &a);
+            float x, y, rho, a;
+            cell_polar(c, g, i, j, &x, &y, &rho, &a);
             const float hv = h[(size_t)j * g->nx + i];
             if (table_at(c->r_in, a) - rho <= band || !(hv > wet_above))
                 continue;
@@ -349,27 +364,20 @@ ms_status ms_render_cavity_fill(ms_renderer *r, const float *h, const ms_grid *g
     c->grid = *g;
     *out = f;
     double pl[3] = {b[0] / (double)n, 0, 0};
-    const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                       m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    const double det = det3(m);
     if (n >= 3 && fabs(det) > 1e-12 * fabs(m[0][0] * m[1][1] * m[2][2])) {
         for (int k = 0; k < 3; ++k) { /* Cramer */
             double a[3][3];
             memcpy(a, m, sizeof a);
             for (int p = 0; p < 3; ++p)
                 a[p][k] = b[p];
-            pl[k] = (a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                     a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                     a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0])) /
-                    det;
+            pl[k] = det3(a) / det;
         }
     }
     for (int j = box[2]; j <= box[3]; ++j)
         for (int i = box[0]; i <= box[1]; ++i) {
-            const float x = g->origin[0] + ((float)i + 0.5f) * g->dx;
-            const float y = g->origin[1] + ((float)j + 0.5f) * g->dy;
-            float rho, a;
-            polar(c, x, y, &rho, &a);
+            float x, y, rho, a;
+            cell_polar(c, g, i, j, &x, &y, &rho, &a);
             const float rin = table_at(c->r_in, a), phi = rin - rho; /* > 0 inside */
             if (phi >= band || phi < -2 * cell)
                 continue;
