@@ -707,6 +707,69 @@ START_TEST(a_kill_inside_a_flush_leaves_the_committed_bytes)
 }
 END_TEST
 
+/* A new run is made as "<path>.part" and renamed over path once its
+ * layout's first flush is on disk: a kill while HDF5 writes that first
+ * flush (its blocks point into each other and nothing committed guards
+ * them) leaves an older run at path whole and readable, not a file that
+ * does not open. The kills land at chosen bytes of the new file's writes;
+ * the old code (create path itself) fails the first assertion. */
+START_TEST(a_kill_before_the_layout_is_on_disk_leaves_the_older_run)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    char path[512], part[520];
+    snprintf(path, sizeof path, "%s", tmp_path("older.h5"));
+    snprintf(part, sizeof part, "%s.part", path);
+    ms_writer *w;
+    ck_assert_int_eq(ms_writer_open_layout(path, &l, &w), MS_OK);
+    write_frames(w, &l, 0, 3);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    size_t n_old;
+    char *old = ms_test_slurp_n(path, &n_old);
+    static const size_t at[] = {1, 48, 200, 500, 900, 1400, 2100};
+    int died = 0;
+    for (size_t i = 0; i < sizeof at / sizeof at[0]; ++i) {
+        pid_t pid = fork();
+        ck_assert_int_ge(pid, 0);
+        if (pid == 0) {
+            ms_h5_atomic_test_die_writing(at[i]);
+            ms_writer *v;
+            _exit(ms_writer_open_layout(path, &l, &v) == MS_OK ? 7 : 3);
+        }
+        int status;
+        waitpid(pid, &status, 0);
+        ck_assert_msg(WIFSIGNALED(status) || (WIFEXITED(status) && WEXITSTATUS(status) == 7),
+                      "child status %d", status);
+        if (!WIFSIGNALED(status))
+            continue;
+        ++died;
+        ck_assert(ms_test_wait_unused(path, 10));
+        size_t n_now;
+        char *now = ms_test_slurp_n(path, &n_now);
+        ck_assert_msg(now && n_now == n_old && memcmp(now, old, n_old) == 0,
+                      "killed %zu bytes into the new file: the older run at its path changed",
+                      at[i]);
+        free(now);
+        ms_reader *r;
+        ck_assert_int_eq(ms_reader_open(path, &r), MS_OK);
+        check_frames(r, &l, 3);
+        ms_reader_close(r);
+        ck_assert_int_eq(access(part, F_OK), 0);
+    }
+    ck_assert_int_eq(died, 7); /* all inside the first ~3 kB of the new file */
+    /* an open that finishes replaces the older run and leaves no .part */
+    ck_assert_int_eq(ms_writer_open_layout(path, &l, &w), MS_OK);
+    ck_assert_int_ne(access(part, F_OK), 0);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(path, &r), MS_OK);
+    ck_assert_int_eq(ms_reader_frames(r), 0);
+    ms_reader_close(r);
+    free(old);
+    remove_tmp_dir();
+}
+END_TEST
+
 /* Write frames of incompressible data until the writer refuses one. */
 static long fill_until_refused(ms_writer *w, const ms_writer_layout *l, ms_status *st)
 {
@@ -1326,6 +1389,7 @@ static Suite *io_suite(void)
     tcase_add_test(tc, sigkill_mid_run_leaves_every_flushed_frame);
     tcase_add_test(tc, sigkill_mid_run_leaves_a_whole_checkpoint);
     tcase_add_test(tc, a_kill_inside_a_flush_leaves_the_committed_bytes);
+    tcase_add_test(tc, a_kill_before_the_layout_is_on_disk_leaves_the_older_run);
     tcase_add_test(tc, file_size_limit_stops_before_a_frame_that_cannot_fit);
     tcase_add_test(tc, full_disk_is_an_error_and_leaves_a_readable_file);
     tcase_add_test(tc, unwritable_paths_are_refused_with_the_reason);

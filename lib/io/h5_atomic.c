@@ -81,6 +81,9 @@ static size_t test_die_after;
 static long test_die_at;   /* as given: > 0 bytes in, < 0 bytes short of the end */
 static int test_die_batch; /* batches with in-place writes to let pass first */
 static int test_no_helper;
+/* tests: die after this many more bytes written straight to a file (not
+ * journaled), 0 = never */
+static size_t test_die_direct;
 static pthread_once_t driver_once = PTHREAD_ONCE_INIT;
 
 /* ---- plain I/O, retried on EINTR and short counts ---- */
@@ -542,6 +545,12 @@ static herr_t atomic_write(H5FD_t *file, H5FD_mem_t type, hid_t dxpl, haddr_t ad
         addr += in_place;
         size -= in_place;
     }
+    if (size > 0 && test_die_direct > 0 && size >= test_die_direct) {
+        write_at(f->fd, p, test_die_direct, addr);
+        raise(SIGKILL);
+    }
+    if (size > 0 && test_die_direct > 0)
+        test_die_direct -= size;
     if (size > 0 && write_at(f->fd, p, size, addr) != 0)
         return -1;
     if (addr + size > f->eof)
@@ -658,6 +667,18 @@ void ms_h5_atomic_abandon(hid_t file)
         f->abandoned = 1;
         f->journal_len = 0;
     }
+}
+
+void ms_h5_atomic_renamed(hid_t file, const char *name)
+{
+    atomic_file *f = atomic_of(file);
+    if (f)
+        snprintf(f->name, sizeof f->name, "%s", name);
+}
+
+void ms_h5_atomic_test_die_writing(size_t bytes)
+{
+    test_die_direct = bytes;
 }
 
 void ms_h5_atomic_test_die(int batch, long at, int without_helper)

@@ -141,6 +141,14 @@ void ms_h5_atomic_abandon(hid_t file);
  * then); at 0 turns it off. Just before that flush the file's committed
  * bytes are copied to <file>.before. */
 void ms_h5_atomic_test_die(int batch, long at, int without_helper);
+/* The file was renamed to `name` (the writer's "<path>.part"), which the
+ * tests' snapshot is named after. */
+void ms_h5_atomic_renamed(hid_t file, const char *name);
+/* Tests: the process kills itself (SIGKILL) once `bytes` more bytes have
+ * gone straight to a file (outside any flush's journal: a new file's
+ * first flush, a frame's raw data); the write that crosses the count
+ * lands only up to it. 0 turns it off. */
+void ms_h5_atomic_test_die_writing(size_t bytes);
 /* Jenkins lookup3 (HDF5's metadata checksum). */
 uint32_t ms_lookup3(const void *key, size_t length, uint32_t initval);
 /* A 48-byte version-2 superblock with 8-byte addresses and a good checksum. */

@@ -336,12 +336,13 @@ static int write_layout(ms_writer *w, const ms_writer_layout *l)
  * HDF5 cannot close a file whose very first flush fails (it keeps it open
  * inside and prints when the program exits), so an unwritable path, a
  * device that refuses writes (/dev/full) or a full disk is caught here,
- * with the system's reason. */
-static ms_status probe_path(const char *path, const ms_writer_layout *l)
+ * with the system's reason; sentences name `shown` (the run's path, when
+ * path is its "<path>.part"). */
+static ms_status probe_path(const char *path, const char *shown, const ms_writer_layout *l)
 {
     int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0)
-        return ms_fail(MS_ERR_IO, "io: cannot create %s: %s", path, strerror(errno));
+        return ms_fail(MS_ERR_IO, "io: cannot create %s: %s", shown, strerror(errno));
     static const char zeros[4096];
     struct stat sb;
     int regular = fstat(fd, &sb) == 0 && S_ISREG(sb.st_mode);
@@ -356,15 +357,15 @@ static ms_status probe_path(const char *path, const ms_writer_layout *l)
         if (free_bytes < need)
             st = ms_fail(MS_ERR_IO,
                          "io: cannot create %s: its file system has %.2f MB free, the layout "
-                         "and a first frame need up to %.2f MB", path, free_bytes / 1e6,
+                         "and a first frame need up to %.2f MB", shown, free_bytes / 1e6,
                          need / 1e6);
     }
     for (int i = 0; i < 16 && st == MS_OK; ++i)
         if (pwrite(fd, zeros, sizeof zeros, (off_t)i * (off_t)sizeof zeros) != (ssize_t)sizeof zeros)
-            st = ms_fail(MS_ERR_IO, "io: cannot write %s: %s", path,
+            st = ms_fail(MS_ERR_IO, "io: cannot write %s: %s", shown,
                          errno ? strerror(errno) : "short write");
     if (regular && ftruncate(fd, 0) != 0 && st == MS_OK)
-        st = ms_fail(MS_ERR_IO, "io: cannot write %s: %s", path, strerror(errno));
+        st = ms_fail(MS_ERR_IO, "io: cannot write %s: %s", shown, strerror(errno));
     close(fd);
     if (st != MS_OK && regular)
         unlink(path);
@@ -411,6 +412,41 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
     return MS_OK;
 }
 
+/* Where a new run file is made: "<path>.part", renamed over path once the
+ * layout's first flush is on disk. A kill before that rename leaves path
+ * as it was (an older run there stays whole) instead of a file that does
+ * not open; HDF5's first flush writes blocks that point into each other,
+ * and before it nothing committed could guard them (h5_atomic.c). NULL
+ * (write path itself, as before) when path is not a plain file (a device;
+ * a symbolic link, which is written through), is a file this process may
+ * not write, or its folder takes no new file: the probe then reports why
+ * with path's name. *oom: out of memory. */
+static char *part_path_for(const char *path, int *oom)
+{
+    *oom = 0;
+    struct stat sb;
+    if (lstat(path, &sb) == 0 && (!S_ISREG(sb.st_mode) || access(path, W_OK) != 0))
+        return NULL;
+    const char *slash = strrchr(path, '/');
+    char *dir = slash ? ms_strndup(path, slash == path ? 1 : (size_t)(slash - path))
+                      : ms_strdup(".");
+    if (!dir) {
+        *oom = 1;
+        return NULL;
+    }
+    int writable = access(dir, W_OK | X_OK) == 0;
+    ms_free(dir);
+    if (!writable)
+        return NULL;
+    size_t n = strlen(path);
+    char *part = ms_malloc(n + 6);
+    if (!part)
+        *oom = 1;
+    else
+        memcpy(part, path, n), memcpy(part + n, ".part", 6);
+    return part;
+}
+
 ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out)
 {
     ms_writer *w = NULL;
@@ -418,7 +454,15 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
     if (st != MS_OK)
         return st;
 
-    if ((st = probe_path(path, l)) != MS_OK) {
+    int oom;
+    char *part = part_path_for(path, &oom);
+    const char *made = part ? part : path; /* the name HDF5 creates */
+    if (oom)
+        st = ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+    else
+        st = probe_path(made, path, l);
+    if (st != MS_OK) {
+        ms_free(part);
         free_writer(w);
         return st;
     }
@@ -431,11 +475,18 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
         H5Pset_istore_k(fcpl, CHUNK_BTREE_K) < 0) {
         st = ms_h5_fail(MS_ERR_IO, "io: cannot set up HDF5 for %s", path);
     } else {
-        w->file = H5Fcreate(path, H5F_ACC_TRUNC, fcpl, fapl);
+        w->file = H5Fcreate(made, H5F_ACC_TRUNC, fcpl, fapl);
         if (w->file < 0)
             st = ms_h5_fail(MS_ERR_IO, "io: cannot create %s", path);
         else if (write_layout(w, l) < 0)
             st = ms_h5_fail(MS_ERR_IO, "io: cannot write the layout of %s", path);
+        else if (part && rename(part, path) != 0)
+            st = ms_fail(MS_ERR_IO, "io: cannot rename %s to %s: %s", part, path,
+                         strerror(errno));
+        else if (part) {
+            ms_h5_atomic_renamed(w->file, path);
+            made = path;
+        }
     }
     if (fapl >= 0)
         H5Pclose(fapl);
@@ -462,14 +513,17 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
             int *fdp = NULL;
             if (H5Fget_vfd_handle(w->file, H5P_DEFAULT, (void **)&fdp) >= 0 && fdp &&
                 fstat(*fdp, &sb) == 0 && S_ISREG(sb.st_mode))
-                unlink(path);
+                unlink(made);
             abandon_file(w);
-        }
+        } else if (part)
+            unlink(part); /* the probe's empty file */
         H5Eclear2(H5E_DEFAULT);
         ms_h5_loud(&q);
+        ms_free(part);
         free_writer(w);
         return st;
     }
+    ms_free(part);
     ms_h5_loud(&q);
     *out = w;
     return MS_OK;
