@@ -162,14 +162,17 @@ static void compression(const ms_volume *v, double *avg, float *mx)
  * interaction, no extraction), sub-steps a frame, DFSPH iterations a
  * sub-step (density + divergence), average and maximum compression as
  * above, and the ratio of the scene law's volume time to DFSPH's. Prints
- * only (no CSV): a diagnosis, not one of the committed figures. */
-static int scene_mode(const char *path, int frames)
+ * only (no CSV): a diagnosis, not one of the committed figures. --set
+ * KEY=VALUE (as `modesplit run --set`) applies to both, e.g. the ideal gas
+ * at DFSPH's accuracy: --set volume.gas_constant=3600. */
+static int scene_mode(const char *path, int frames, int nset, const char **set)
 {
-    const char *dfsph = "volume.pressure=\"dfsph\"";
+    /* set[0 .. nset) from --set, then room for the DFSPH key */
+    set[nset] = "volume.pressure=\"dfsph\"";
     ms_scene *sc[2];
     ms_sim *sim[2];
     for (int l = 0; l < 2; ++l)
-        if (ms_scene_load_with_overrides(path, l, &dfsph, &sc[l]) != MS_OK ||
+        if (ms_scene_load_with_overrides(path, nset + l, set, &sc[l]) != MS_OK ||
             ms_sim_create_from_scene(sc[l], 1, &sim[l]) != MS_OK) {
             fprintf(stderr, "bench_dfsph: %s: %s\n", path, ms_last_error());
             return 1;
@@ -226,7 +229,7 @@ int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
                    "usage: bench_dfsph [--csv-dir DIR] [--quick | --peer]\n"
-                   "       bench_dfsph --scene FILE [--frames N]\n"
+                   "       bench_dfsph --scene FILE [--frames N] [--set KEY=VALUE ...]\n"
                    "the same dam break with the ideal gas, Tait and DFSPH laws, interleaved, at\n"
                    "~2k, 32k and 128k particles, and the peer's scene (SPlisHSPlasH's\n"
                    "DamBreakModel: 32768 particles, its first 0.3 s); --quick: 2k and 32k, 3\n"
@@ -235,7 +238,7 @@ int main(int argc, char **argv)
                    "ratios; writes DIR/dfsph.csv (default DIR: bench). --scene: a scene's\n"
                    "own law against DFSPH, interleaved, N frames (default 60), one thread:\n"
                    "volume ms, sub-steps a frame, iterations a sub-step, compression\n"
-                   "(printed only).\n"))
+                   "(printed only); --set KEY=VALUE overrides a scene key for both.\n"))
         return 0;
     for (int i = 1; i + 1 < argc; ++i)
         if (strcmp(argv[i], "--scene") == 0) {
@@ -247,7 +250,18 @@ int main(int argc, char **argv)
                 fprintf(stderr, "bench_dfsph: --frames must be at least 1\n");
                 return 1;
             }
-            return scene_mode(argv[i + 1], frames);
+            enum { MAXSET = 16 };
+            const char *set[MAXSET + 1];
+            int nset = 0;
+            for (int k = 1; k + 1 < argc; ++k)
+                if (strcmp(argv[k], "--set") == 0) {
+                    if (nset == MAXSET) {
+                        fprintf(stderr, "bench_dfsph: at most %d --set options\n", MAXSET);
+                        return 1;
+                    }
+                    set[nset++] = argv[++k];
+                }
+            return scene_mode(argv[i + 1], frames, nset, set);
         }
     const int quick = bench_quick(argc, argv);
     char machine[320], commit[64];
