@@ -155,17 +155,114 @@ static void compression(const ms_volume *v, double *avg, float *mx)
     *mx = m;
 }
 
+/* --scene FILE [--frames N]: a shipped scene as it is (its pressure law)
+ * and with volume.pressure "dfsph", one thread each, interleaved frame by
+ * frame (issue 12: switch a scene where DFSPH is faster at equal or better
+ * accuracy). Per law: the volume's ms a frame (ms_stats.volume_ms: SPH and
+ * interaction, no extraction), sub-steps a frame, DFSPH iterations a
+ * sub-step (density + divergence), average and maximum compression as
+ * above, and the ratio of the scene law's volume time to DFSPH's. Prints
+ * only (no CSV): a diagnosis, not one of the committed figures. --set
+ * KEY=VALUE (as `modesplit run --set`) applies to both, e.g. the ideal gas
+ * at DFSPH's accuracy: --set volume.gas_constant=3600. */
+static int scene_mode(const char *path, int frames, int nset, const char **set)
+{
+    /* set[0 .. nset) from --set, then room for the DFSPH key */
+    set[nset] = "volume.pressure=\"dfsph\"";
+    ms_scene *sc[2];
+    ms_sim *sim[2];
+    for (int l = 0; l < 2; ++l)
+        if (ms_scene_load_with_overrides(path, nset + l, set, &sc[l]) != MS_OK ||
+            ms_sim_create_from_scene(sc[l], 1, &sim[l]) != MS_OK) {
+            fprintf(stderr, "bench_dfsph: %s: %s\n", path, ms_last_error());
+            return 1;
+        }
+    if (!ms_sim_volume(sim[0])) {
+        fprintf(stderr, "bench_dfsph: %s has no volume\n", path);
+        return 1;
+    }
+    const float fdt = ms_scene_frame_dt(sc[0]);
+    double comp_sum[2] = {0, 0};
+    float comp_max[2] = {0, 0};
+    for (int f = 0; f < frames; ++f)
+        for (int l = 0; l < 2; ++l) {
+            if (ms_sim_step(sim[l], fdt) != MS_OK) {
+                fprintf(stderr, "bench_dfsph: %s: %s\n", path, ms_last_error());
+                return 1;
+            }
+            double avg;
+            float mx;
+            compression(ms_sim_volume(sim[l]), &avg, &mx);
+            comp_sum[l] += avg;
+            comp_max[l] = mx > comp_max[l] ? mx : comp_max[l];
+        }
+    ms_volume_desc d0 = ms_volume_get_desc(ms_sim_volume(sim[0]));
+    printf("scene %s, %d frames of %g s, one thread, interleaved frame by frame\n", path, frames,
+           (double)fdt);
+    printf("%10s %12s %12s %12s %10s %10s %9s\n", "law", "volume_ms/f", "substeps/f",
+           "iters/sub", "avg_comp%", "max_comp%", "x_dfsph");
+    double ms[2];
+    for (int l = 0; l < 2; ++l) {
+        ms_stats st = ms_stats_init();
+        ms_sim_get_stats(sim[l], &st);
+        ms[l] = st.volume_ms / frames;
+    }
+    for (int l = 0; l < 2; ++l) {
+        ms_volume_info in = ms_volume_info_init();
+        ms_volume_get_info(ms_sim_volume(sim[l]), &in);
+        const char *name = l == 1 ? "dfsph" : law_name[d0.pressure == MS_PRESSURE_TAIT ? 1 : 0];
+        printf("%10s %12.1f %12.2f %12.2f %10.3f %10.3f %9.2f\n", name, ms[l],
+               (double)in.substeps / frames,
+               in.substeps ? (double)(in.density_iterations_total +
+                                      in.divergence_iterations_total) / in.substeps
+                           : 0.0,
+               100.0 * comp_sum[l] / frames, 100.0 * comp_max[l], ms[l] / ms[1]);
+    }
+    for (int l = 0; l < 2; ++l) {
+        ms_sim_destroy(sim[l]);
+        ms_scene_destroy(sc[l]);
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
                    "usage: bench_dfsph [--csv-dir DIR] [--quick | --peer]\n"
+                   "       bench_dfsph --scene FILE [--frames N] [--set KEY=VALUE ...]\n"
                    "the same dam break with the ideal gas, Tait and DFSPH laws, interleaved, at\n"
                    "~2k, 32k and 128k particles, and the peer's scene (SPlisHSPlasH's\n"
                    "DamBreakModel: 32768 particles, its first 0.3 s); --quick: 2k and 32k, 3\n"
                    "frames; --peer: the peer's scene alone. Prints ms per simulated second,\n"
                    "sub-steps and iterations per simulated second, average and max compression,\n"
-                   "ratios; writes DIR/dfsph.csv (default DIR: bench).\n"))
+                   "ratios; writes DIR/dfsph.csv (default DIR: bench). --scene: a scene's\n"
+                   "own law against DFSPH, interleaved, N frames (default 60), one thread:\n"
+                   "volume ms, sub-steps a frame, iterations a sub-step, compression\n"
+                   "(printed only); --set KEY=VALUE overrides a scene key for both.\n"))
         return 0;
+    for (int i = 1; i + 1 < argc; ++i)
+        if (strcmp(argv[i], "--scene") == 0) {
+            int frames = 60;
+            for (int k = 1; k + 1 < argc; ++k)
+                if (strcmp(argv[k], "--frames") == 0)
+                    frames = atoi(argv[k + 1]);
+            if (frames < 1) {
+                fprintf(stderr, "bench_dfsph: --frames must be at least 1\n");
+                return 1;
+            }
+            enum { MAXSET = 16 };
+            const char *set[MAXSET + 1];
+            int nset = 0;
+            for (int k = 1; k + 1 < argc; ++k)
+                if (strcmp(argv[k], "--set") == 0) {
+                    if (nset == MAXSET) {
+                        fprintf(stderr, "bench_dfsph: at most %d --set options\n", MAXSET);
+                        return 1;
+                    }
+                    set[nset++] = argv[++k];
+                }
+            return scene_mode(argv[i + 1], frames, nset, set);
+        }
     const int quick = bench_quick(argc, argv);
     char machine[320], commit[64];
     bench_machine(machine, sizeof machine);
