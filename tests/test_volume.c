@@ -585,9 +585,9 @@ END_TEST
  * 7.6-11.1 % against 9.3-14.5 %); asserted: within 2 points of the ideal
  * gas's. The front Z(T) is NOT: RMS 0.290 against 0.197 (0.290-0.302
  * against 0.197-0.209 over those frames), its best time shift T0 0.236
- * against 0.174. The cause, measured: the bulk agrees (momentum, kinetic
- * energy and centre of mass within 1 % at every 10 ms to 0.2 s), the lead
- * is the front's first particles. Under DFSPH the eq. 15 wall field is off
+ * against 0.174. The cause, measured: the bulk agrees (kinetic energy
+ * within 1 %, centre of mass within 1 mm at every 10 ms to 0.2 s), the
+ * lead is the front's first particles. Under DFSPH the eq. 15 wall field is off
  * (volume.c: its stiffness would bound the step), so only the images hold
  * the liquid off the floor, and a particle short of neighbours (the free
  * surface) is not compressed, hence not pushed up, until its own image is
