@@ -487,83 +487,131 @@ END_TEST
 
 /* Dam break: a column a wide and 2a high released at the end of a tank
  * (a quasi-2D slab between frictionless walls). The surge front Z = x/a
- * against T = t sqrt(2 g / a) follows Martin & Moyce (1952). Measured RMS
- * error over their 15 points: 0.21 with 800 particles (a = 0.1 m, spacing
- * 0.01 m); the front runs slightly ahead of the experiment, as inviscid
- * simulations do (the experiment's gate and wall friction slow it). The
- * test asserts RMS < 0.3. MS_TEST_LONG=1 also runs 3200 particles. */
-static double dam_break_rms_law(float a, float s, ms_pressure law, int *count)
+ * against T = t sqrt(2 g / a) follows Martin & Moyce (1952, their Table
+ * 2): the RMS of Z - Z_exp over their 15 points; the residual column at
+ * the back wall H = height / 2a against tau = t sqrt(g / a) (their Table
+ * 6, the first 13 points, tau <= 3.06): the RMS of the relative error, as
+ * tools/modesplit/study_sph.c. The front runs slightly ahead of the
+ * experiment, as inviscid simulations do (the experiment's gate and wall
+ * friction slow it). MS_TEST_LONG=1 also runs 3200 particles. */
+typedef struct dam_result {
+    double z_rms; /* RMS of Z - Z_exp (Z in units of a) */
+    double h_rel; /* RMS of (H - H_exp) / H_exp */
+    int count;
+} dam_result;
+
+static dam_result dam_break_law(float a, float s, ms_pressure law)
 {
     static const double mm[15][2] = {
         {0.41, 1.11}, {0.84, 1.22}, {1.19, 1.44}, {1.43, 1.67}, {1.63, 1.89},
         {1.83, 2.11}, {1.98, 2.33}, {2.20, 2.56}, {2.32, 2.78}, {2.51, 3.00},
         {2.65, 3.22}, {2.83, 3.44}, {2.98, 3.67}, {3.11, 3.89}, {3.33, 4.11}};
+    static const double mmh[13][2] = {{0.56, 0.94}, {0.77, 0.89}, {0.93, 0.83}, {1.08, 0.78},
+                                      {1.28, 0.72}, {1.46, 0.67}, {1.66, 0.61}, {1.84, 0.56},
+                                      {2.00, 0.50}, {2.21, 0.44}, {2.45, 0.39}, {2.70, 0.33},
+                                      {3.06, 0.28}};
     ms_volume_desc d = box_desc(5.0f * a, 4.0f * s, 2.5f * a, s);
     d.viscosity = 1.0f;
     d.pressure = law;
     ms_volume *v = make(&d);
     ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){a, 4.0f * s, 2.0f * a});
-    *count = ms_volume_count(v);
-    const double tscale = sqrt(2.0 * 9.81 / a);
-    int k = 0;
-    double err2 = 0.0, tprev = 0.0, zprev = 1.0;
-    float *p = malloc(sizeof(float) * 3 * (size_t)*count);
-    while (k < 15) {
+    dam_result r = {.count = ms_volume_count(v)};
+    const double tscale = sqrt(2.0 * 9.81 / a), hscale = sqrt(9.81 / a);
+    int k = 0, kh = 0;
+    double err2 = 0.0, herr2 = 0.0, tprev = 0.0, zprev = 1.0, hprev = 1.0;
+    float *p = malloc(sizeof(float) * 3 * (size_t)r.count);
+    while (k < 15 || kh < 13) {
         step(v, 0.002f);
         ms_volume_get_particles(v, p, NULL);
-        double xf = 0.0;
-        for (int i = 0; i < *count; ++i)
+        /* the front: the farthest particle; the column: the highest of the
+         * layer at the back wall (x < s, its centres at s / 2) */
+        double xf = 0.0, zc = 0.0;
+        for (int i = 0; i < r.count; ++i) {
             xf = fmax(xf, p[3 * i]);
+            if (p[3 * i] < s)
+                zc = fmax(zc, p[3 * i + 2]);
+        }
         ms_volume_info in = ms_volume_info_init();
         ms_volume_get_info(v, &in);
-        double t = in.time * tscale, zf = (xf + 0.5 * s) / a;
-        while (k < 15 && t >= mm[k][0]) {
-            double zi = zprev + (zf - zprev) * (mm[k][0] - tprev) / (t - tprev);
+        double t = in.time, zf = (xf + 0.5 * s) / a, hc = (zc + 0.5 * s) / (2.0 * a);
+        while (k < 15 && t * tscale >= mm[k][0]) { /* linear between frames */
+            double f = (mm[k][0] / tscale - tprev) / (t - tprev);
+            double zi = zprev + (zf - zprev) * f;
             err2 += (zi - mm[k][1]) * (zi - mm[k][1]);
             k++;
         }
+        while (kh < 13 && t * hscale >= mmh[kh][0]) {
+            double f = (mmh[kh][0] / hscale - tprev) / (t - tprev);
+            double e = (hprev + (hc - hprev) * f - mmh[kh][1]) / mmh[kh][1];
+            herr2 += e * e;
+            kh++;
+        }
         tprev = t;
         zprev = zf;
+        hprev = hc;
         ck_assert(in.time < 1.0);
     }
     free(p);
     ms_volume_destroy(v);
-    return sqrt(err2 / 15.0);
+    r.z_rms = sqrt(err2 / 15.0);
+    r.h_rel = sqrt(herr2 / 13.0);
+    return r;
 }
 
-static double dam_break_rms(float a, float s, int *count)
-{
-    return dam_break_rms_law(a, s, MS_PRESSURE_IDEAL_GAS, count);
-}
-
+/* Measured: front RMS 0.197, column 10.4 % with 800 particles (a = 0.1 m,
+ * spacing 0.01 m); 0.276 and 6.2 % with 3200 (a = 0.2 m). */
 START_TEST(dam_break_follows_martin_and_moyce)
 {
     if (skip_under_tsan())
         MS_SKIP(TSAN_WHY);
-    int n;
-    double rms = dam_break_rms(0.1f, 0.01f, &n);
-    ck_assert_int_eq(n, 800);
-    ck_assert_msg(rms < 0.3, "RMS %.3f of Z against Martin & Moyce with %d particles", rms, n);
+    dam_result r = dam_break_law(0.1f, 0.01f, MS_PRESSURE_IDEAL_GAS);
+    ck_assert_int_eq(r.count, 800);
+    ck_assert_msg(r.z_rms < 0.3, "RMS %.3f of Z against Martin & Moyce with %d particles", r.z_rms,
+                  r.count);
+    ck_assert_msg(r.h_rel < 0.15, "column H %.3f off Martin & Moyce with %d particles", r.h_rel,
+                  r.count);
     if (long_tests()) {
-        rms = dam_break_rms(0.2f, 0.01f, &n);
-        ck_assert_msg(rms < 0.35, "RMS %.3f with %d particles", rms, n);
+        r = dam_break_law(0.2f, 0.01f, MS_PRESSURE_IDEAL_GAS);
+        ck_assert_msg(r.z_rms < 0.35, "RMS %.3f with %d particles", r.z_rms, r.count);
+        ck_assert_msg(r.h_rel < 0.1, "column H %.3f with %d particles", r.h_rel, r.count);
     }
 }
 END_TEST
 
-/* The same dam break with DFSPH. Measured RMS 0.30 against the ideal
- * gas law's 0.20 at the same 800 particles: the front runs further ahead
- * of Martin & Moyce (an incompressible column surges faster, and the
- * mirrored walls are frictionless). Not yet as close as the weakly
- * compressible law, as the issue asks; asserted: RMS < 0.35. */
+/* The same dam break with DFSPH against the ideal gas law at the same 800
+ * particles (issue 12: "at least as close as the weakly compressible
+ * solver"). The column H(tau) is: measured 10.3 % against 10.4 % (over
+ * frames of 1-4 ms, which resample both and change DFSPH's sub-steps,
+ * 7.6-11.1 % against 9.3-14.5 %); asserted: within 2 points of the ideal
+ * gas's. The front Z(T) is NOT: RMS 0.290 against 0.197 (0.290-0.302
+ * against 0.197-0.209 over those frames), its best time shift T0 0.236
+ * against 0.174. The cause, measured: the bulk agrees (kinetic energy
+ * within 1 %, centre of mass within 1 mm at every 10 ms to 0.2 s), the
+ * lead is the front's first particles. Under DFSPH the eq. 15 wall field is off
+ * (volume.c: its stiffness would bound the step), so only the images hold
+ * the liquid off the floor, and a particle short of neighbours (the free
+ * surface) is not compressed, hence not pushed up, until its own image is
+ * near: the leading particle slides at z = 1.7-3 mm (0.17-0.3 spacing,
+ * the ideal gas's 5-11 mm) with rho ~ rho0 from 5 real neighbours and 8-9
+ * images, and that compression's pressure, against neighbours all behind
+ * it, pushes it ahead: 1.64 m/s against 1.48 at t = 0.1 s. Turning the
+ * field back on takes the RMS to 0.190; the compressible release (its
+ * delay ~ 2a / c) is not it: the ideal gas's T0 is 0.174-0.176 at c = 20,
+ * 40 and 80 m/s. Asserted where it measures: RMS < 0.35 and within 0.12
+ * of the ideal gas's. */
 START_TEST(dam_break_follows_martin_and_moyce_dfsph)
 {
     if (skip_under_tsan())
         MS_SKIP(TSAN_WHY);
-    int n;
-    double rms = dam_break_rms_law(0.1f, 0.01f, MS_PRESSURE_DFSPH, &n);
-    ck_assert_int_eq(n, 800);
-    ck_assert_msg(rms < 0.35, "DFSPH: RMS %.3f of Z against Martin & Moyce", rms);
+    dam_result r = dam_break_law(0.1f, 0.01f, MS_PRESSURE_DFSPH);
+    dam_result w = dam_break_law(0.1f, 0.01f, MS_PRESSURE_IDEAL_GAS);
+    ck_assert_int_eq(r.count, 800);
+    ck_assert_int_eq(w.count, r.count);
+    ck_assert_msg(r.h_rel <= w.h_rel + 0.02, "DFSPH: column H %.3f off, the ideal gas %.3f",
+                  r.h_rel, w.h_rel);
+    ck_assert_msg(r.z_rms < 0.35 && r.z_rms <= w.z_rms + 0.12,
+                  "DFSPH: RMS %.3f of Z against Martin & Moyce, the ideal gas %.3f", r.z_rms,
+                  w.z_rms);
 }
 END_TEST
 
