@@ -4,8 +4,11 @@
  * pairs (r < h, wall images included) handled per second. Each measured
  * step is one sub-step at half the largest stable dt, after a warm-up of
  * 20 sub-steps that lets the column start to fall; the median and the
- * 10th/90th percentiles of the repeats are printed. Writes volume.csv. */
+ * 10th/90th percentiles of the repeats are printed. Writes volume.csv.
+ * --sizes N,N and --threads T run only those (an A/B of two builds runs
+ * them alternately, issue 12). */
 #include <math.h>
+#include <string.h>
 
 #include "bench_common.h"
 #include "modesplit/modesplit.h"
@@ -57,12 +60,37 @@ static double one_substep(ms_volume *v)
 int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
-                   "usage: bench_volume [--csv-dir DIR] [--quick]\n"
+                   "usage: bench_volume [--csv-dir DIR] [--quick] [--sizes N,N] [--threads T]\n"
         "ms per SPH sub-step of a dam break with ~2k, 8k, 32k and 128k particles on 1\n"
         "and 2 threads (median, 10th-90th percentile) and neighbour pairs per second;\n"
-        "writes DIR/volume.csv (default DIR: bench).\n"))
+        "writes DIR/volume.csv (default DIR: bench).\n"
+        "  --sizes N,N    only these particle counts (default 2000,8000,32000,128000)\n"
+        "  --threads T    only T threads (default 1 and 2)\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
+    int sizes[8] = {2000, 8000, 32000, 128000}, nsizes = 4, tlo = 1, thi = 2;
+    for (int a = 1; a + 1 < argc; ++a) {
+        if (strcmp(argv[a], "--sizes") == 0) {
+            nsizes = 0;
+            for (char *p = argv[a + 1]; *p && nsizes < 8;) {
+                char *end;
+                long n = strtol(p, &end, 10);
+                if (end == p || n < 100 || n > 4000000) {
+                    fprintf(stderr, "bench_volume: --sizes %s: want counts in [100, 4e6]\n",
+                            argv[a + 1]);
+                    return 1;
+                }
+                sizes[nsizes++] = (int)n;
+                p = *end == ',' ? end + 1 : end;
+            }
+        } else if (strcmp(argv[a], "--threads") == 0) {
+            tlo = thi = atoi(argv[a + 1]);
+            if (tlo < 1 || tlo > 64) {
+                fprintf(stderr, "bench_volume: --threads %s: want 1..64\n", argv[a + 1]);
+                return 1;
+            }
+        }
+    }
     char machine[320], commit[64];
     bench_machine(machine, sizeof machine);
     bench_commit(commit, sizeof commit);
@@ -77,9 +105,8 @@ int main(int argc, char **argv)
                                "pairs_per_step,Mpairs_per_s");
     if (!csv)
         return 1;
-    const int sizes[4] = {2000, 8000, 32000, 128000};
-    for (int k = 0; k < 4; ++k) {
-        for (int threads = 1; threads <= 2; ++threads) {
+    for (int k = 0; k < nsizes; ++k) {
+        for (int threads = tlo; threads <= thi; ++threads) {
             ms_volume *v = dam_break(sizes[k], threads);
             for (int w = 0; w < 20; ++w) /* warm-up: lists grown, column moving */
                 one_substep(v);
