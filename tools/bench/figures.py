@@ -132,7 +132,26 @@ def table_parts():
     return out
 
 
-TABLES = {"scenes": table_scenes, "parts": table_parts}
+def table_laws():
+    """The shipped scenes under each pressure law (bench_laws, issue 12)."""
+    rows = load("data/bench/laws.csv")
+    out = ["| scene | particles | law | frames/s, 1 thread (p10–p90) | over the scene's law | "
+           "volume ms a frame | sub-steps a frame | DFSPH iterations a frame | "
+           "max compression, median (largest) |",
+           "|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        law = r["law"] + (" (the scene's)" if r["law"] == r["scene_law"] else "")
+        out.append(f"| {r['scene']} | {r['particles']} | {law} | "
+                   f"{num(r, 'fps_median_per_s', 0)} ({num(r, 'fps_p10_per_s', 0)}–"
+                   f"{num(r, 'fps_p90_per_s', 0)}) | {num(r, 'fps_over_scene_law', 2)}× | "
+                   f"{num(r, 'volume_ms_per_frame', 2)} | {num(r, 'substeps_per_frame', 1)} | "
+                   f"{num(r, 'iterations_per_frame', 1)} | "
+                   f"{fmt(100 * float(r['max_compression_median']), 2)} % "
+                   f"({fmt(100 * float(r['max_compression_max']), 2)} %) |")
+    return out
+
+
+TABLES = {"scenes": table_scenes, "parts": table_parts, "laws": table_laws}
 
 
 def process(text, write):
