@@ -1328,22 +1328,26 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
 static void
-smooth_pass(const float *pad, const float *raw, const float *inv_w, float *out, int rw, int rh,
-            float f)
+smooth_pass(const float *restrict pad, const float *restrict raw, const float *restrict inv_w,
+            float *restrict out, int rw, int rh, float f)
 {
     const int px = rw + 2;
     for (int j = 0; j < rh; ++j) {
         const float *r0 = pad + (size_t)j * px, *r1 = r0 + px, *r2 = r1 + px;
         const float *rr = raw + (size_t)j * rw, *iw = inv_w + (size_t)j * rw;
         float *o = out + (size_t)j * rw;
-        if (f == 1.0f)
+        /* omp simd: -O2's cost model leaves a loop of unknown length
+         * scalar; element by element, so the same floats */
+        if (f == 1.0f) {
+#pragma omp simd
             for (int i = 0; i < rw; ++i) {
                 const float acc = (r0[i] + 2.0f * r0[i + 1] + r0[i + 2]) +
                                   (2.0f * r1[i] + 4.0f * r1[i + 1] + 2.0f * r1[i + 2]) +
                                   (r2[i] + 2.0f * r2[i + 1] + r2[i + 2]);
                 o[i] = rr[i] > 0.0f ? acc * iw[i] : o[i];
             }
-        else
+        } else {
+#pragma omp simd
             for (int i = 0; i < rw; ++i) {
                 const float acc = (r0[i] + 2.0f * r0[i + 1] + r0[i + 2]) +
                                   (2.0f * r1[i] + 4.0f * r1[i + 1] + 2.0f * r1[i + 2]) +
@@ -1351,6 +1355,7 @@ smooth_pass(const float *pad, const float *raw, const float *inv_w, float *out, 
                 const float smoothed = acc * iw[i];
                 o[i] = rr[i] > 0.0f ? o[i] + f * (smoothed - o[i]) : o[i];
             }
+        }
     }
 }
 
