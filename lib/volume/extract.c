@@ -738,7 +738,7 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
  * roots, the lane sum, the secant's division) that one column alone
  * leaves the core partly waiting on. The same steps in the same order on the
  * same floats as column_height: the same bytes. */
-enum { SEARCH_DONE, SEARCH_WALK, SEARCH_TOP, SEARCH_SECANT };
+enum { SEARCH_DONE, SEARCH_WALK, SEARCH_TOP, SEARCH_SECANT, SEARCH_CHECK };
 typedef struct search {
     float *cz, *ca;  /* this slot's candidates */
     int mc, col, state, found, steps, it;
@@ -840,7 +840,35 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
         q->fa = phi - T;
         q->found = q->fa < 0.0f;
         search_after_top(s, q);
-    } else { /* SEARCH_SECANT, column_height's loop body */
+    } else if (q->state == SEARCH_CHECK) {
+        /* the secant's last step fell under a quarter of tol, but near a
+         * sphere's rim phi's slope changes fast and such a step can
+         * underestimate the error (glass under DFSPH: 1.3 tol from a
+         * root): phi half a tol beyond the estimate zr, away from the
+         * last evaluated point zp (a bracket end, on the other side of
+         * the root's), must be on the root's far side. Then the root is
+         * within tol/2 of zr, which stands; else the bracket closes on
+         * the check point and the secant goes on. */
+        const float f = phi - T, zc = q->ze;
+        const int up = zc > q->zr;
+        if (up ? f < 0.0f : f >= 0.0f) {
+            q->it = 10;
+            search_secant_next(s, q);
+            return;
+        }
+        if (f >= 0.0f) {
+            q->zb = zc;
+            q->fb = f;
+        } else {
+            q->za = zc;
+            q->fa = f;
+        }
+        q->zp = zc;
+        q->fp = f;
+        q->zr = q->zb + (q->za - q->zb) * q->fb / (q->fb - q->fa);
+        q->it++;
+        search_secant_next(s, q);
+    } else { /* SEARCH_SECANT */
         const float tol = s->spacing / 256.0f, zr = q->zr, f = phi - T;
         if (f >= 0.0f) {
             q->zb = zr;
@@ -853,13 +881,24 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
         float zn = f != q->fp ? zr - f * (zr - q->zp) / (f - q->fp) : zr;
         if (!(zn > zb && zn < za))
             zn = zb + (za - zb) * fb / (fb - fa);
-        const int done = fabsf(zn - zr) < 0.25f * tol || za - zb < tol;
+        const int closed = za - zb < tol, small = fabsf(zn - zr) < 0.25f * tol;
         q->zp = zr;
         q->fp = f;
         q->zr = zn;
         q->it++;
-        if (done)
-            q->it = 10; /* column_height's break */
+        if (closed || (small && q->it >= 10)) {
+            q->it = 10; /* the estimate stands */
+        } else if (small) {
+            /* zn lies on the root's side of zr (now a bracket end) */
+            const float zc = zn > zr ? zn + 0.5f * tol : zn - 0.5f * tol;
+            if (zn > zr ? zc >= za : zc <= zb) {
+                q->it = 10; /* the bracket's far end is within tol/2 */
+            } else {
+                q->ze = zc;
+                q->state = SEARCH_CHECK;
+                return;
+            }
+        }
         search_secant_next(s, q);
     }
 }
