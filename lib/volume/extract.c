@@ -582,16 +582,16 @@ static inline __attribute__((always_inline)) int spray_search(const ms_extract_s
     return found;
 }
 
-/* The height (m above the domain floor, 0 if phi never reaches T) of a
- * column with candidates (cz, ca, mc): walk down from zmax in steps of
- * half a spacing until phi reaches T, and close in on the crossing: the
- * reference by regula falsi until the bracket is 1/256 of a spacing, the
- * default by secant steps (issue 12: ~2 evaluations where that took ~3.5;
- * test_volume checks it lands as near a root of eq. 17). */
+/* The reference search's height (m above the domain floor, 0 if phi
+ * never reaches T) of a column with candidates (cz, ca, mc): walk down
+ * from zmax in steps of half a spacing until phi reaches T, and close in
+ * on the crossing by regula falsi until the bracket is 1/256 of a spacing
+ * (ms_extract_snap.reference; the band search below takes secant steps
+ * instead, ~2 evaluations where this takes ~3.5, and test_volume checks it
+ * lands as near a root of eq. 17). */
 static inline __attribute__((always_inline)) float column_height(const ms_extract_snap *s,
                                                                  const float *cz, const float *ca,
-                                                                 int mc, float zmax, float zlow,
-                                                                 int reference)
+                                                                 int mc, float zmax, float zlow)
 {
     const float *lo = s->lo, *hi = s->hi;
     const float R = s->R, inv_r2 = 1.0f / (R * R);
@@ -622,7 +622,7 @@ static inline __attribute__((always_inline)) float column_height(const ms_extrac
             fa = phi_at(cz, ca, mc, za, inv_r2) - T;
             found = fa < 0.0f;
         }
-        if (found && reference) {
+        if (found) {
             /* the reference (ms_extract_snap.reference): regula falsi
              * (Illinois) until the bracket is 1/256 of a spacing wide */
             const float tol = s->spacing / 256.0f;
@@ -647,41 +647,6 @@ static inline __attribute__((always_inline)) float column_height(const ms_extrac
                 }
             }
             height = fminf(fmaxf(0.5f * (za + zb) - lo[2], 0.0f), ztop);
-        } else if (found) {
-            /* Secant steps inside the bracket [zb, za] (phi(zb) >= T >
-             * phi(za)), from the regula falsi point: superlinear where phi
-             * is smooth, so the step that falls under 1/256 of a spacing
-             * is taken without evaluating its end (2 evaluations a column
-             * where the bracket needed 4-5); a step that leaves the
-             * bracket (near a sphere's rim phi's slope is unbounded)
-             * falls back to regula falsi, then bisection. */
-            const float tol = s->spacing / 256.0f;
-            float zp = fb < -fa ? zb : za, fp = fb < -fa ? fb : fa;
-            float zr = zb + (za - zb) * fb / (fb - fa);
-            for (int it = 0; it < 10; ++it) {
-                if (!(zr > zb && zr < za))
-                    zr = 0.5f * (za + zb);
-                const float f = phi_at(cz, ca, mc, zr, inv_r2) - T;
-                if (f >= 0.0f) {
-                    zb = zr;
-                    fb = f;
-                } else {
-                    za = zr;
-                    fa = f;
-                }
-                float zn = f != fp ? zr - f * (zr - zp) / (f - fp) : zr;
-                if (!(zn > zb && zn < za))
-                    zn = zb + (za - zb) * fb / (fb - fa);
-                /* a quarter of tol: where phi's slope changes fast (a
-                 * sphere's rim) a secant step underestimates the error */
-                const int done = fabsf(zn - zr) < 0.25f * tol || za - zb < tol;
-                zp = zr;
-                fp = f;
-                zr = zn;
-                if (done)
-                    break;
-            }
-            height = fminf(fmaxf(zr - lo[2], 0.0f), ztop);
         }
     }
     return height;
@@ -704,7 +669,7 @@ static inline __attribute__((always_inline)) void columns_body(const column_ctx 
         }
         float zmax, zlow;
         const int mc = column_candidates(cc, i, j, reach, avx512, cz, ca, &zmax, &zlow);
-        cc->raw[col] = column_height(cc->s, cz, ca, mc, zmax, zlow, 1);
+        cc->raw[col] = column_height(cc->s, cz, ca, mc, zmax, zlow);
     }
 }
 
@@ -732,12 +697,16 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
     bst[ex] = k;
 }
 
-/* The band search's column_height (reference 0) as a machine that stops
- * before each phi evaluation (at ze), so that NSLOT columns' evaluations
- * run side by side: each is a chain of dependent latencies (square
- * roots, the lane sum, the secant's division) that one column alone
- * leaves the core partly waiting on. The same steps in the same order on the
- * same floats as column_height: the same bytes. */
+/* The band search's column height as a machine that stops before each
+ * phi evaluation (at ze), so that NSLOT columns' evaluations run side by
+ * side: each is a chain of dependent latencies (square roots, the lane
+ * sum, the secant's division) that one column alone leaves the core
+ * partly waiting on. The walk is column_height's; then secant steps inside
+ * the bracket [zb, za] (phi(zb) >= T > phi(za)) from the regula falsi
+ * point, superlinear where phi is smooth; a step that leaves the bracket
+ * (near a sphere's rim phi's slope is unbounded) falls back to regula
+ * falsi, then bisection; a step under a quarter of 1/256 of a spacing is
+ * checked (SEARCH_CHECK) before its estimate stands. */
 enum { SEARCH_DONE, SEARCH_WALK, SEARCH_TOP, SEARCH_SECANT, SEARCH_CHECK };
 typedef struct search {
     float *cz, *ca;  /* this slot's candidates */
