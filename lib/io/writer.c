@@ -357,8 +357,8 @@ static ms_status probe_path(const char *path, const char *shown, const ms_writer
         if (free_bytes < need)
             st = ms_fail(MS_ERR_IO,
                          "io: cannot create %s: its file system has %.2f MB free, the layout "
-                         "and a first frame need up to %.2f MB", shown, free_bytes / 1e6,
-                         need / 1e6);
+                         "and a first frame need up to %.2f MB",
+                         shown, free_bytes / 1e6, need / 1e6);
     }
     for (int i = 0; i < 16 && st == MS_OK; ++i)
         if (pwrite(fd, zeros, sizeof zeros, (off_t)i * (off_t)sizeof zeros) != (ssize_t)sizeof zeros)
@@ -428,8 +428,8 @@ static char *part_path_for(const char *path, int *oom)
     if (lstat(path, &sb) == 0 && (!S_ISREG(sb.st_mode) || access(path, W_OK) != 0))
         return NULL;
     const char *slash = strrchr(path, '/');
-    char *dir = slash ? ms_strndup(path, slash == path ? 1 : (size_t)(slash - path))
-                      : ms_strdup(".");
+    char *dir =
+        slash ? ms_strndup(path, slash == path ? 1 : (size_t)(slash - path)) : ms_strdup(".");
     if (!dir) {
         *oom = 1;
         return NULL;
@@ -440,10 +440,12 @@ static char *part_path_for(const char *path, int *oom)
         return NULL;
     size_t n = strlen(path);
     char *part = ms_malloc(n + 6);
-    if (!part)
+    if (!part) {
         *oom = 1;
-    else
-        memcpy(part, path, n), memcpy(part + n, ".part", 6);
+        return NULL;
+    }
+    memcpy(part, path, n);
+    memcpy(part + n, ".part", 6);
     return part;
 }
 
@@ -481,8 +483,7 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
         else if (write_layout(w, l) < 0)
             st = ms_h5_fail(MS_ERR_IO, "io: cannot write the layout of %s", path);
         else if (part && rename(part, path) != 0)
-            st = ms_fail(MS_ERR_IO, "io: cannot rename %s to %s: %s", part, path,
-                         strerror(errno));
+            st = ms_fail(MS_ERR_IO, "io: cannot rename %s to %s: %s", part, path, strerror(errno));
         else if (part) {
             ms_h5_atomic_renamed(w->file, path);
             made = path;

@@ -139,8 +139,7 @@ __attribute__((target("avx512f"))) static void mark_part_avx512(void *ctxp, int 
         int near = 0;
         for (int k = 0; k < n && !near; k += 16) {
             const int left = n - k;
-            const __mmask16 live =
-                left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
+            const __mmask16 live = left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
             const __m512i vi = _mm512_maskz_loadu_epi32(live, idx + k);
             const __mmask16 in =
                 _mm512_mask_cmp_ps_mask(live, _mm512_maskz_loadu_ps(live, r2 + k), vh2, _CMP_LT_OQ);
@@ -344,8 +343,8 @@ __attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
  * lanes, and ms_lanes_sum's tree on register halves, without the trip
  * of the accumulator through memory. */
 __attribute__((target("avx512f"))) static inline float phi_at_avx512(const float *restrict zc,
-                                                                     const float *restrict a,
-                                                                     int m, float z, float inv_r2)
+                                                                     const float *restrict a, int m,
+                                                                     float z, float inv_r2)
 {
     const __m512 vz = _mm512_set1_ps(z), vinv = _mm512_set1_ps(inv_r2);
     const __m512 zero = _mm512_setzero_ps();
@@ -366,9 +365,9 @@ __attribute__((target("avx512f"))) static inline float phi_at_avx512(const float
         q = _mm256_max_ps(q, _mm256_setzero_ps());
         lo = _mm256_add_ps(lo, _mm256_sqrt_ps(q));
     }
-    const __m256 t8 = _mm256_add_ps(lo, hi);                               /* (l, l + 8) */
+    const __m256 t8 = _mm256_add_ps(lo, hi); /* (l, l + 8) */
     const __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
-    const __m128 u = _mm_add_ps(t4, _mm_movehl_ps(t4, t4));        /* t0 + t2, t1 + t3 */
+    const __m128 u = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* t0 + t2, t1 + t3 */
     return _mm_cvtss_f32(_mm_add_ss(u, _mm_shuffle_ps(u, u, 1)));
 }
 
@@ -709,10 +708,10 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
  * checked (SEARCH_CHECK) before its estimate stands. */
 enum { SEARCH_DONE, SEARCH_WALK, SEARCH_TOP, SEARCH_SECANT, SEARCH_CHECK };
 typedef struct search {
-    float *cz, *ca;  /* this slot's candidates */
+    float *cz, *ca; /* this slot's candidates */
     int mc, col, state, found, steps, it;
-    float ze;        /* where phi is wanted next */
-    float z, zlow;   /* the walk */
+    float ze;      /* where phi is wanted next */
+    float z, zlow; /* the walk */
     float za, zb, fa, fb, zp, fp, zr;
     float height;
 } search;
@@ -763,8 +762,8 @@ static inline __attribute__((always_inline)) void search_after_walk(const ms_ext
     search_after_top(s, q);
 }
 
-static inline __attribute__((always_inline)) void search_start(const ms_extract_snap *s,
-                                                               search *q, float zmax, float zlow)
+static inline __attribute__((always_inline)) void search_start(const ms_extract_snap *s, search *q,
+                                                               float zmax, float zlow)
 {
     q->height = 0.0f;
     if (q->mc <= 0) {
@@ -785,8 +784,8 @@ static inline __attribute__((always_inline)) void search_start(const ms_extract_
 }
 
 /* phi = phi_at(q->ze): the next step. */
-static inline __attribute__((always_inline)) void search_step(const ms_extract_snap *s,
-                                                              search *q, float phi)
+static inline __attribute__((always_inline)) void search_step(const ms_extract_snap *s, search *q,
+                                                              float phi)
 {
     const float T = s->iso;
     if (q->state == SEARCH_WALK) {
@@ -943,8 +942,8 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                     cz[pad] = 0.0f;
                     ca[pad] = 0.0f;
                 }
-                q->mc = (mc + MS_VOLUME_LANES / 2 - 1) / (MS_VOLUME_LANES / 2) *
-                        (MS_VOLUME_LANES / 2);
+                q->mc =
+                    (mc + MS_VOLUME_LANES / 2 - 1) / (MS_VOLUME_LANES / 2) * (MS_VOLUME_LANES / 2);
                 q->col = col;
                 live++;
                 search_start(s, q, zmax, zlow);

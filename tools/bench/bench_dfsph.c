@@ -199,8 +199,8 @@ static int scene_mode(const char *path, int frames, int nset, const char **set)
     ms_volume_desc d0 = ms_volume_get_desc(ms_sim_volume(sim[0]));
     printf("scene %s, %d frames of %g s, one thread, interleaved frame by frame\n", path, frames,
            (double)fdt);
-    printf("%10s %12s %12s %12s %10s %10s %9s\n", "law", "volume_ms/f", "substeps/f",
-           "iters/sub", "avg_comp%", "max_comp%", "x_dfsph");
+    printf("%10s %12s %12s %12s %10s %10s %9s\n", "law", "volume_ms/f", "substeps/f", "iters/sub",
+           "avg_comp%", "max_comp%", "x_dfsph");
     double ms[2];
     for (int l = 0; l < 2; ++l) {
         ms_stats st = ms_stats_init();
@@ -213,9 +213,10 @@ static int scene_mode(const char *path, int frames, int nset, const char **set)
         const char *name = l == 1 ? "dfsph" : law_name[d0.pressure == MS_PRESSURE_TAIT ? 1 : 0];
         printf("%10s %12.1f %12.2f %12.2f %10.3f %10.3f %9.2f\n", name, ms[l],
                (double)in.substeps / frames,
-               in.substeps ? (double)(in.density_iterations_total +
-                                      in.divergence_iterations_total) / in.substeps
-                           : 0.0,
+               in.substeps
+                   ? (double)(in.density_iterations_total + in.divergence_iterations_total) /
+                         in.substeps
+                   : 0.0,
                100.0 * comp_sum[l] / frames, 100.0 * comp_max[l], ms[l] / ms[1]);
     }
     for (int l = 0; l < 2; ++l) {

@@ -21,9 +21,9 @@
 #include "bench_common.h"
 #include "modesplit/modesplit.h"
 
-static const char *const scenes[] = {"fig1",     "fig4c",     "fig9a", "fig9b", "fig10",
-                                     "default",  "glass",     "stir",  "fig1_x10",
-                                     "fig4c_x10", "fig10_x10"};
+static const char *const scenes[] = {"fig1",     "fig4c",     "fig9a",    "fig9b",
+                                     "fig10",    "default",   "glass",    "stir",
+                                     "fig1_x10", "fig4c_x10", "fig10_x10"};
 static const char *const laws[] = {"ideal_gas", "tait", "dfsph"};
 #define NLAWS 3
 #define MAX_REPEATS 64
@@ -140,18 +140,19 @@ static int timed_frames(law_run *run, float dt, int frames, int r)
 
 int main(int argc, char **argv)
 {
-    if (bench_help(argc, argv,
-                   "usage: bench_laws [--csv-dir DIR] [--quick] [--scenes fig1,fig4c] [--data DIR]\n"
-                   "                  [--repeats R]\n"
-                   "The shipped real-time scenes with a volume, 1 thread, simulation only, under\n"
-                   "the ideal gas, Tait and DFSPH laws (repeats interleaved): frames/s, volume ms,\n"
-                   "sub-steps and solver iterations a frame, compression; writes DIR/laws.csv.\n"))
+    if (bench_help(
+            argc, argv,
+            "usage: bench_laws [--csv-dir DIR] [--quick] [--scenes fig1,fig4c] [--data DIR]\n"
+            "                  [--repeats R]\n"
+            "The shipped real-time scenes with a volume, 1 thread, simulation only, under\n"
+            "the ideal gas, Tait and DFSPH laws (repeats interleaved): frames/s, volume ms,\n"
+            "sub-steps and solver iterations a frame, compression; writes DIR/laws.csv.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     const char *dir = arg_value(argc, argv, "--data", "data/scenes");
     const char *only = arg_value(argc, argv, "--scenes", NULL);
-    const int repeats = (int)fmax(1, fmin(MAX_REPEATS, atoi(arg_value(argc, argv, "--repeats",
-                                                                        quick ? "2" : "5"))));
+    const int repeats = (int)fmax(
+        1, fmin(MAX_REPEATS, atoi(arg_value(argc, argv, "--repeats", quick ? "2" : "5"))));
     const double target = quick ? 0.04 : 0.3;
     char machine[320], commit[64];
     bench_machine(machine, sizeof machine);
@@ -207,8 +208,8 @@ int main(int argc, char **argv)
             double over = own_fps > 0 ? fps.median / own_fps : 0.0;
             printf("%-10s %-9s %6d %6d %8.1f %8.1f %8.1f %8.3f %8.2f %8.2f %8.3f %% %8.3f %% "
                    "%7.3f\n",
-                   scenes[s], laws[k], run[k].particles, frames, fps.median, fps.p10, fps.p90,
-                   vol, sub, it, 100.0 * comp.median, 100.0 * comp_max, over);
+                   scenes[s], laws[k], run[k].particles, frames, fps.median, fps.p10, fps.p90, vol,
+                   sub, it, 100.0 * comp.median, 100.0 * comp_max, over);
             fprintf(csv, "%s,%s,%s,%s,%s,1,%d,%d,%d,%.3f,%.3f,%.3f,%.4f,%.3f,%.3f,%.6f,%.6f,%.3f\n",
                     commit, machine, scenes[s], laws[k], laws[own], run[k].particles, frames,
                     repeats, fps.median, fps.p10, fps.p90, vol, sub, it, comp.median, comp_max,

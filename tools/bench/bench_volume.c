@@ -61,11 +61,11 @@ int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
                    "usage: bench_volume [--csv-dir DIR] [--quick] [--sizes N,N] [--threads T]\n"
-        "ms per SPH sub-step of a dam break with ~2k, 8k, 32k and 128k particles on 1\n"
-        "and 2 threads (median, 10th-90th percentile) and neighbour pairs per second;\n"
-        "writes DIR/volume.csv (default DIR: bench).\n"
-        "  --sizes N,N    only these particle counts (default 2000,8000,32000,128000)\n"
-        "  --threads T    only T threads (default 1 and 2)\n"))
+                   "ms per SPH sub-step of a dam break with ~2k, 8k, 32k and 128k particles on 1\n"
+                   "and 2 threads (median, 10th-90th percentile) and neighbour pairs per second;\n"
+                   "writes DIR/volume.csv (default DIR: bench).\n"
+                   "  --sizes N,N    only these particle counts (default 2000,8000,32000,128000)\n"
+                   "  --threads T    only T threads (default 1 and 2)\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     int sizes[8] = {2000, 8000, 32000, 128000}, nsizes = 4, tlo = 1, thi = 2;
