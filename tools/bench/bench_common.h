@@ -144,6 +144,31 @@ static inline int bench_quick(int argc, char **argv)
     return 0;
 }
 
+/* The value after `key` on the command line, def when it is absent. */
+static inline const char *bench_arg_value(int argc, char **argv, const char *key, const char *def)
+{
+    for (int i = 1; i + 1 < argc; ++i)
+        if (strcmp(argv[i], key) == 0)
+            return argv[i + 1];
+    return def;
+}
+
+/* 1 when name is in the comma-separated list (--scenes a,b), or no list. */
+static inline int bench_wanted(const char *list, const char *name)
+{
+    if (!list)
+        return 1;
+    size_t n = strlen(name);
+    for (const char *p = list; *p;) {
+        const char *e = strchr(p, ',');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        if (len == n && strncmp(p, name, n) == 0)
+            return 1;
+        p += len + (e ? 1 : 0);
+    }
+    return 0;
+}
+
 /* Opens DIR/NAME for writing (creating DIR) and writes the header line. */
 static inline FILE *bench_csv_open(const char *dir, const char *name, const char *header)
 {

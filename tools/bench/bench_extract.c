@@ -32,29 +32,6 @@ static double thread_cpu_now(void)
 
 static const char *const scenes[] = {"fig1", "fig1_x10", "fig10", "glass"};
 
-static const char *arg_value(int argc, char **argv, const char *key, const char *def)
-{
-    for (int i = 1; i + 1 < argc; ++i)
-        if (strcmp(argv[i], key) == 0)
-            return argv[i + 1];
-    return def;
-}
-
-static int wanted(const char *list, const char *name)
-{
-    if (!list)
-        return 1;
-    size_t n = strlen(name);
-    for (const char *p = list; *p;) {
-        const char *e = strchr(p, ',');
-        size_t len = e ? (size_t)(e - p) : strlen(p);
-        if (len == n && strncmp(p, name, n) == 0)
-            return 1;
-        p += len + (e ? 1 : 0);
-    }
-    return 0;
-}
-
 int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
@@ -65,8 +42,8 @@ int main(int argc, char **argv)
                    "the 100 frames. Writes extract.csv.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
-    const char *dir = arg_value(argc, argv, "--data", "data/scenes");
-    const char *only = arg_value(argc, argv, "--scenes", NULL);
+    const char *dir = bench_arg_value(argc, argv, "--data", "data/scenes");
+    const char *only = bench_arg_value(argc, argv, "--scenes", NULL);
     char machine[300], commit[64];
     bench_machine(machine, sizeof machine);
     bench_commit(commit, sizeof commit);
@@ -82,7 +59,7 @@ int main(int argc, char **argv)
     printf("%-10s %3s %6s %9s %7s %9s %9s %9s %9s %9s %9s %6s %10s\n", "scene", "thr", "parts",
            "field", "gather", "search", "ms", "p10", "p90", "cpu_ms", "sim", "x", "max_dh");
     for (size_t s = 0; s < sizeof scenes / sizeof *scenes; ++s) {
-        if (!wanted(only, scenes[s]))
+        if (!bench_wanted(only, scenes[s]))
             continue;
         char path[1024];
         snprintf(path, sizeof path, "%s/%s.json", dir, scenes[s]);

@@ -40,29 +40,6 @@ typedef struct {
     int particles;
 } law_run;
 
-static const char *arg_value(int argc, char **argv, const char *key, const char *def)
-{
-    for (int i = 1; i + 1 < argc; ++i)
-        if (strcmp(argv[i], key) == 0)
-            return argv[i + 1];
-    return def;
-}
-
-static int wanted(const char *list, const char *name)
-{
-    if (!list)
-        return 1;
-    size_t n = strlen(name);
-    for (const char *p = list; *p;) {
-        const char *e = strchr(p, ',');
-        size_t len = e ? (size_t)(e - p) : strlen(p);
-        if (len == n && strncmp(p, name, n) == 0)
-            return 1;
-        p += len + (e ? 1 : 0);
-    }
-    return 0;
-}
-
 /* The scene's own law: the value of its "pressure" key (the scene format
  * has one, in its volume section), ideal gas when it has none. */
 static int scene_law(const char *path)
@@ -149,10 +126,10 @@ int main(int argc, char **argv)
             "sub-steps and solver iterations a frame, compression; writes DIR/laws.csv.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
-    const char *dir = arg_value(argc, argv, "--data", "data/scenes");
-    const char *only = arg_value(argc, argv, "--scenes", NULL);
+    const char *dir = bench_arg_value(argc, argv, "--data", "data/scenes");
+    const char *only = bench_arg_value(argc, argv, "--scenes", NULL);
     const int repeats = (int)fmax(
-        1, fmin(MAX_REPEATS, atoi(arg_value(argc, argv, "--repeats", quick ? "2" : "5"))));
+        1, fmin(MAX_REPEATS, atoi(bench_arg_value(argc, argv, "--repeats", quick ? "2" : "5"))));
     const double target = quick ? 0.04 : 0.3;
     char machine[320], commit[64];
     bench_machine(machine, sizeof machine);
@@ -172,7 +149,7 @@ int main(int argc, char **argv)
         return 1;
     int failed = 0;
     for (size_t s = 0; s < sizeof scenes / sizeof *scenes; ++s) {
-        if (!wanted(only, scenes[s]))
+        if (!bench_wanted(only, scenes[s]))
             continue;
         char path[1024];
         snprintf(path, sizeof path, "%s/%s.json", dir, scenes[s]);

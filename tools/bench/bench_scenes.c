@@ -43,29 +43,6 @@ typedef struct {
     ms_sim_info info;
 } result;
 
-static const char *arg_value(int argc, char **argv, const char *key, const char *def)
-{
-    for (int i = 1; i + 1 < argc; ++i)
-        if (strcmp(argv[i], key) == 0)
-            return argv[i + 1];
-    return def;
-}
-
-static int wanted(const char *list, const char *name)
-{
-    if (!list)
-        return 1;
-    size_t n = strlen(name);
-    for (const char *p = list; *p;) {
-        const char *e = strchr(p, ',');
-        size_t len = e ? (size_t)(e - p) : strlen(p);
-        if (len == n && strncmp(p, name, n) == 0)
-            return 1;
-        p += len + (e ? 1 : 0);
-    }
-    return 0;
-}
-
 /* A sim of the scene with `threads`, past its warm-up (the priming step
  * and two more); *per_frame: s per warm-up frame. */
 static ms_sim *warm_sim(const ms_scene *sc, int threads, double *per_frame)
@@ -156,11 +133,11 @@ int main(int argc, char **argv)
         "paper's figure; writes DIR/scenes.csv (default DIR: bench).\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
-    const char *dir = arg_value(argc, argv, "--data", "data/scenes");
-    const char *only = arg_value(argc, argv, "--scenes", NULL);
-    const int repeats = (int)fmax(1, fmin(64, atoi(arg_value(argc, argv, "--repeats",
+    const char *dir = bench_arg_value(argc, argv, "--data", "data/scenes");
+    const char *only = bench_arg_value(argc, argv, "--scenes", NULL);
+    const int repeats = (int)fmax(1, fmin(64, atoi(bench_arg_value(argc, argv, "--repeats",
                                                                quick ? "3" : "7"))));
-    const int frames_fixed = atoi(arg_value(argc, argv, "--frames", "0"));
+    const int frames_fixed = atoi(bench_arg_value(argc, argv, "--frames", "0"));
     const double target = quick ? 0.05 : 0.4; /* s per repeat */
     char machine[320], commit[64];
     bench_machine(machine, sizeof machine);
@@ -184,7 +161,7 @@ int main(int argc, char **argv)
         return 1;
     int failed = 0;
     for (size_t k = 0; k < sizeof rows / sizeof *rows; ++k) {
-        if (!wanted(only, rows[k].name))
+        if (!bench_wanted(only, rows[k].name))
             continue;
         char path[1024];
         snprintf(path, sizeof path, "%s/%s.json", dir, rows[k].name);
