@@ -135,8 +135,8 @@ int main(int argc, char **argv)
     const int quick = bench_quick(argc, argv);
     const char *dir = bench_arg_value(argc, argv, "--data", "data/scenes");
     const char *only = bench_arg_value(argc, argv, "--scenes", NULL);
-    const int repeats = (int)fmax(1, fmin(64, atoi(bench_arg_value(argc, argv, "--repeats",
-                                                               quick ? "3" : "7"))));
+    const int repeats =
+        (int)fmax(1, fmin(64, atoi(bench_arg_value(argc, argv, "--repeats", quick ? "3" : "7"))));
     const int frames_fixed = atoi(bench_arg_value(argc, argv, "--frames", "0"));
     const double target = quick ? 0.05 : 0.4; /* s per repeat */
     char machine[320], commit[64];
