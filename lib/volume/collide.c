@@ -33,6 +33,7 @@
  *    six walls get all of the above, and positions are clamped into it.
  */
 #include <math.h>
+#include <string.h>
 
 #include "shape/shape_internal.h"
 #include "volume/volume_internal.h"
@@ -191,6 +192,43 @@ void ms_volume_boundary(ms_volume *v, double tau)
     collide_ctx ctx = {.v = v, .tau = tau};
     view_colliders(&ctx, tau, v->K.h, 0.0f);
     ms_vpool_run(v->pool, boundary_part, &ctx, v->n);
+}
+
+/* Move a view at tau = 0 (its pose) to where the last step left the
+ * collider: origin e[0..2], rotation e[3..11]. Returns 0 (view untouched)
+ * when that is its pose bit for bit: a collider at rest, or one the
+ * caller has already put there. */
+static int view_at_end(collider_view *cv, const float e[12])
+{
+    float pos[3], vel[3];
+    ms_shape_get_pose(cv->s, pos, vel);
+    if (!memcmp(e, pos, sizeof pos) && (!cv->turned || !memcmp(e + 3, cv->s->rot, 9 * sizeof e[0])))
+        return 0;
+    for (int k = 0; k < 3; ++k) {
+        float shift = e[k] - pos[k];
+        cv->lo[k] += shift - cv->shift[k];
+        cv->hi[k] += shift - cv->shift[k];
+        cv->shift[k] = shift;
+    }
+    if (cv->turned)
+        for (int k = 0; k < 3; ++k) {
+            cv->o0[k] = cv->o1[k] = e[k];
+            for (int j = 0; j < 3; ++j)
+                cv->R0[3 * k + j] = cv->R1[3 * k + j] = e[3 + 3 * k + j];
+        }
+    return 1;
+}
+
+int ms_volume_boundary_after_step(ms_volume *v)
+{
+    collide_ctx ctx = {.v = v, .tau = 0.0};
+    view_colliders(&ctx, 0.0, v->K.h, 0.0f);
+    int moved = 0;
+    for (int c = 0; !v->in_step && c < ctx.ncol; ++c)
+        if (v->col_expect_valid[c])
+            moved |= view_at_end(&ctx.col[c], v->col_end[c]);
+    ms_vpool_run(v->pool, boundary_part, &ctx, v->n);
+    return moved;
 }
 
 static void damp_part(void *ctxp, int part, int b, int e)
@@ -426,13 +464,22 @@ void ms_volume_colliders_begin(ms_volume *v, float dt)
     v->in_step = 1;
 }
 
-void ms_volume_colliders_end(ms_volume *v, float dt)
+void ms_volume_colliders_end(ms_volume *v, float dt, double reached)
 {
     for (int c = 0; c < v->ncolliders; ++c) {
+        const ms_shape *s = v->colliders[c];
         float pos[3], vel[3];
-        ms_shape_get_pose(v->colliders[c], pos, vel);
-        for (int k = 0; k < 3; ++k)
+        ms_shape_get_pose(s, pos, vel);
+        for (int k = 0; k < 3; ++k) {
             v->col_expect[c][k] = pos[k] + vel[k] * dt;
+            /* where the step's views had it at tau = reached (the jump
+             * swept out by dt; less after a cancel) */
+            v->col_end[c][k] = pos[k] + ((float)(v->col_vel[c][k] * reached) - v->col_jump[c][k]);
+        }
+        if (s->turned)
+            ms_shape_rotation_at(s, (float)reached, v->col_end[c] + 3);
+        else
+            memcpy(v->col_end[c] + 3, s->rot, 9 * sizeof(float));
         v->col_expect_valid[c] = 1;
     }
     v->in_step = 0;

@@ -90,7 +90,8 @@ ms_status ms_volume_snapshot_io(ms_volume *v, ms_blob *b, int *recount)
         (st = MS_BLOB_IO(b, "vol.col_expect", v->col_expect)) ||
         (st = MS_BLOB_IO(b, "vol.col_valid", v->col_expect_valid)) ||
         (st = MS_BLOB_IO(b, "vol.col_vel", v->col_vel)) ||
-        (st = MS_BLOB_IO(b, "vol.col_jump", v->col_jump)))
+        (st = MS_BLOB_IO(b, "vol.col_jump", v->col_jump)) ||
+        (st = MS_BLOB_IO(b, "vol.col_end", v->col_end)))
         return st;
     int na = v->nactions;
     if ((st = ms_blob_count(b, "vol.nactions", &na, MS_VOLUME_MAX_ACTIONS)) ||

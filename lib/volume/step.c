@@ -254,7 +254,7 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         taken++;
     }
     if (dt > 0.0f)
-        ms_volume_colliders_end(v, dt);
+        ms_volume_colliders_end(v, dt, v->n > 0 ? tau : (double)dt);
     if (v->n == 0)
         v->time += dt;
     if (taken > 0 || v->n == 0)

@@ -527,6 +527,7 @@ ms_status ms_volume_remove_collider(ms_volume *v, ms_shape *shape)
             memmove(&v->col_expect[i], &v->col_expect[i + 1], rest * sizeof v->col_expect[0]);
             memmove(&v->col_expect_valid[i], &v->col_expect_valid[i + 1],
                     rest * sizeof v->col_expect_valid[0]);
+            memmove(&v->col_end[i], &v->col_end[i + 1], rest * sizeof v->col_end[0]);
             v->ncolliders--;
             v->pass_ready = 0; /* a new shape may come at the same address */
             return MS_OK;

@@ -156,8 +156,10 @@ struct ms_volume {
     unsigned char *mark;        /* extraction: 1 surface, 2 neighbour of one */
     int counts_valid;           /* nbr[] matches the current positions */
     /* issue 12: the pass of the last ms_volume_count_neighbours (grid,
-     * boundary terms at tau = 0, lists, density), which the next step's
-     * first sub-step takes as its own while counts_valid holds, the
+     * boundary terms, lists, density), offered only when it saw every
+     * collider at its pose (as the next step's tau = 0 does: none moving
+     * since the step, or the caller put it where the step left it), which
+     * the next step's first sub-step takes as its own while counts_valid holds, the
      * colliders are the same shapes at the same poses (pass_col,
      * pass_pose: pos, vel, orientation, omega) and none jumped. Cleared
      * by every step and by adding or removing a collider; the positions'
@@ -184,6 +186,11 @@ struct ms_volume {
     int col_expect_valid[MS_VOLUME_MAX_COLLIDERS];
     float col_vel[MS_VOLUME_MAX_COLLIDERS][3];
     float col_jump[MS_VOLUME_MAX_COLLIDERS][3];
+    /* where the particles left each collider at the end of the last step
+     * (valid with col_expect_valid): its origin (m, 0..2) and rotation
+     * (3..11, row-major), the pose + vel tau and R(tau) of the time tau the
+     * step reached; the passes between steps view it there (collide.c) */
+    float col_end[MS_VOLUME_MAX_COLLIDERS][12];
     int in_step;
     ms_action actions[MS_VOLUME_MAX_ACTIONS];
     int nactions;
@@ -392,13 +399,21 @@ void ms_volume_pair_direction(int a, int b, float u[3]);
  * is the time (s) since the start of the ms_volume_step (moving
  * colliders). */
 void ms_volume_boundary(ms_volume *v, double tau);
+/* The same between steps, with each collider where the last step left it
+ * (col_end) rather than at its pose, which is the step's start or where
+ * the caller has put it since. Returns 1 if a collider was viewed
+ * elsewhere than at its pose (the pass then differs from the next step's
+ * first at tau = 0). */
+int ms_volume_boundary_after_step(ms_volume *v);
 /* After the kick: implicit damping of the approach inside the field. */
 void ms_volume_collider_damp(ms_volume *v, double tau, float dt);
 /* Largest collider speed (m/s) in the current step, for the CFL bound. */
 float ms_volume_collider_speed(const ms_volume *v);
 /* At the start and end of a step of dt seconds (dt > 0). */
 void ms_volume_colliders_begin(ms_volume *v, float dt);
-void ms_volume_colliders_end(ms_volume *v, float dt);
+/* reached: the time into the step the particles got to (dt, or less
+ * after a cancel). */
+void ms_volume_colliders_end(ms_volume *v, float dt, double reached);
 /* After the drift from (x2, y2, z2) at tau to the positions at tau + dt:
  * no particle inside a collider (swept test in the collider's frame, so
  * none tunnels) or outside the domain. */
