@@ -396,8 +396,8 @@ END_TEST
  * of 4 sub-steps always read the same phase of it.
  * The compression at the positions each step ends with, max(rho/rho0 - 1,
  * 0), averages at most the desc's 0.1 % plus a tenth of it (measured
- * 0.098 %) and peaks below 1 % (measured 0.57 %), where the ideal gas law
- * at c = 20 m/s compresses 0.7 %. */
+ * 0.097-0.099 % at the seven viscosities) and peaks below 1 % (measured
+ * 0.57-0.72 %), where the ideal gas law at c = 20 m/s compresses 0.7 %. */
 static void hydrostatic_dfsph(float viscosity)
 {
     ms_volume_desc d = box_desc(0.2f, 0.2f, 0.4f, 0.02f);
