@@ -131,6 +131,9 @@ static void free_particles(ms_volume *v)
     ms_free(v->pk);
     ms_free(v->pub);
     v->pk = v->pub = NULL;
+    ms_free(v->df_div_sum); /* the DFSPH pressure read-out's (dfsph.c) */
+    ms_free(v->df_pmean);
+    v->df_div_sum = v->df_pmean = NULL;
     v->id = v->id2 = v->nbr = v->cell = NULL;
     v->nl_begin = v->nl_count = v->gl_begin = v->gl_count = NULL;
     v->mark = NULL;
@@ -213,6 +216,11 @@ ms_status ms_volume_reserve(ms_volume *v, int n)
     ok &= !v->pub_on || t.pub;
     ok &= t.id && t.id2 && t.nbr && t.nl_begin && t.nl_count && t.gl_begin && t.gl_count &&
           t.cell && t.mark && t.pk;
+    /* the DFSPH pressure read-out's (dfsph.c); its running mean restarts */
+    t.df_div_sum = ms_alloc_array(alloc, sizeof(float));
+    t.df_pmean = ms_alloc_array(alloc, sizeof(float));
+    t.df_pmean_n = -1;
+    ok &= t.df_div_sum && t.df_pmean;
     if (!ok) {
         free_particles(&t);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for %zu particles", cap);

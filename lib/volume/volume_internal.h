@@ -268,6 +268,20 @@ struct ms_volume {
      * entry of ghosts[part], 4 floats an entry, df_img_cap entries */
     float *df_img[MS_VOLUME_MAX_THREADS];
     size_t df_img_cap[MS_VOLUME_MAX_THREADS];
+    /* The pressure read-out (dfsph.c). Per particle, cell order: the
+     * divergence solve's total s of this sub-step (m^5 s / kg). By id: the
+     * pressure averaged over the step's sub-steps so far (Pa), over
+     * df_pmean_t seconds, valid while n == df_pmean_n, v->steps ==
+     * df_pmean_step and v->time == df_pmean_until (the end of the last
+     * sub-step it holds). */
+    float *df_div_sum, *df_pmean;
+    float df_pmean_t;
+    /* the mean gradient moment M of the particles inside the liquid,
+     * measured by this sub-step's factors pass (dfsph.c) */
+    float df_moment;
+    int df_pmean_n;
+    long df_pmean_step;
+    double df_pmean_until;
 };
 
 /* A surface particle: fewer neighbours (self and wall images included)
