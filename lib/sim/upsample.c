@@ -183,13 +183,35 @@ static void avg_flush(const ms_sim *sim, const avg_state *st, float *out)
     const float *acc = sim->wave_rowsum + (size_t)st->row * fnx;
     for (int c = 0; c < fnx; ++c) {
         const int count_x = st->r0[c + 1] - st->r0[c];
+        /* a column no wave cell centre falls in (a wave grid coarser than
+         * the SPH field) is 0, as the rows are, not 0 / 0 */
         out[(size_t)st->row * fnx + c] =
-            st->count_y ? acc[c] / (float)(st->count_y * count_x) : 0.0f;
+            st->count_y && count_x ? acc[c] / (float)(st->count_y * count_x) : 0.0f;
     }
 }
 
-static void avg_row(const ms_sim *sim, avg_state *st, int j, const float *restrict src,
-                    float *out)
+/* acc[c] += the k-th wave cell of run c, for every run at least k + 1
+ * long. No branch, so the loop over the SPH columns vectorises (gathers):
+ * a shorter run adds +0.0f, which leaves acc's bits as they are (acc starts
+ * at +0 and a sum is -0 only if both terms are), and reads src[0] instead
+ * of past its run. Each lane does the scalar operation, so every clone
+ * gives the same bits (target_clones as in lib/surface/wave.c). */
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__)
+__attribute__((target_clones("avx512f", "avx2", "default")))
+#endif
+static void run_sums_k(float *restrict acc, const float *restrict src, const int *restrict r0,
+                       int fnx, int k)
+{
+    const int *restrict r1 = r0 + 1;
+#pragma omp simd
+    for (int c = 0; c < fnx; ++c) {
+        const int i = r0[c] + k, in = i < r1[c];
+        const float x = src[i & -in];
+        acc[c] = acc[c] + (in ? x : 0.0f);
+    }
+}
+
+static void avg_row(const ms_sim *sim, avg_state *st, int j, const float *src, float *out)
 {
     const int fnx = sim->fnx;
     const int r = (int)(((2L * j + 1) * sim->fny) / (2L * sim->sny));
@@ -199,14 +221,9 @@ static void avg_row(const ms_sim *sim, avg_state *st, int j, const float *restri
         st->count_y = 0;
     }
     ++st->count_y;
-    float *restrict acc = sim->wave_rowsum + (size_t)r * fnx;
-    const int *restrict r0 = st->r0;
+    float *acc = sim->wave_rowsum + (size_t)r * fnx;
     for (int k = 0; k < st->longest; ++k)
-        for (int c = 0; c < fnx; ++c) {
-            const int i = r0[c] + k;
-            if (i < r0[c + 1])
-                acc[c] += src[i];
-        }
+        run_sums_k(acc, src, st->r0, fnx, k);
 }
 
 void ms_sim_average_waves(ms_sim *sim, const float *w, float *out)
