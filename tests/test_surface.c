@@ -734,6 +734,57 @@ START_TEST(moving_disturber_follows_its_path_and_leaves_a_wake)
 }
 END_TEST
 
+/* Issue 12: the sim's N_time steps of one sub-step each run as one fused
+ * sweep (ms_surface_step_calls); they must give the bytes and the clock of
+ * the N_time calls, with a moving disturber, an absorbing edge, 1 to 11
+ * calls (over the 8 steps a sweep fuses), and with rain (which falls
+ * between the calls, so those calls are not fused). */
+START_TEST(fused_step_calls_are_the_calls)
+{
+    for (int rain = 0; rain < 2; ++rain)
+        for (int calls = 1; calls <= 11; calls += 2) {
+            ms_surface *s[2];
+            for (int q = 0; q < 2; ++q) {
+                s[q] = make(61, 47, 0.01f, 0.5f, 0.9f, MS_BOUNDARY_ABSORB);
+                ck_assert_int_eq(ms_surface_add_drop(s[q], 0.2f, 0.15f, 0.04f, 0.01f), MS_OK);
+                ms_disturber_desc d = ms_disturber_desc_default();
+                d.x = 0.3f;
+                d.y = 0.2f;
+                d.vx = 0.2f;
+                d.radius = 0.05f;
+                int id;
+                ck_assert_int_eq(ms_surface_add_disturber(s[q], &d, &id), MS_OK);
+                if (rain) {
+                    ms_rain r = ms_rain_default();
+                    r.rate = 400.0f;
+                    ck_assert_int_eq(ms_surface_set_rain(s[q], &r), MS_OK);
+                }
+            }
+            ms_surface_info i0 = ms_surface_info_init(), i1 = ms_surface_info_init();
+            ms_surface_get_info(s[0], &i0);
+            const float dt = 0.9f * i0.max_dt; /* s: one sub-step a call */
+            for (int frame = 0; frame < 3; ++frame) {
+                for (int c = 0; c < calls; ++c)
+                    ck_assert_int_eq(ms_surface_step(s[0], dt), MS_OK);
+                ck_assert_int_eq(ms_surface_step_calls(s[1], dt, calls), MS_OK);
+            }
+            const float *h0 = ms_surface_height(s[0], NULL, NULL);
+            const float *h1 = ms_surface_height(s[1], NULL, NULL);
+            ck_assert_msg(memcmp(h0, h1, sizeof *h0 * 61 * 47) == 0, "rain %d calls %d", rain,
+                          calls);
+            ms_surface_get_info(s[0], &i0);
+            ms_surface_get_info(s[1], &i1);
+            ck_assert(i0.time == i1.time && i0.substeps == i1.substeps && i0.drops == i1.drops);
+            ck_assert(i0.time > 0 && (!rain || i0.drops > 1));
+            ms_surface_destroy(s[0]);
+            ms_surface_destroy(s[1]);
+        }
+    ms_surface *s = make(8, 8, 0.01f, 0.5f, 1.0f, MS_BOUNDARY_REFLECT);
+    MS_ASSERT_REFUSED(ms_surface_step_calls(s, 1e-3f, 0), MS_ERR_INVALID_ARGUMENT, "calls");
+    ms_surface_destroy(s);
+}
+END_TEST
+
 START_TEST(excite_sets_the_velocity)
 {
     /* an impulse dh on a flat surface at rest gives kinetic energy
@@ -856,6 +907,7 @@ static Suite *surface_suite(void)
     tcase_add_test(fx, still_disturber_settles_into_its_dent);
     tcase_add_test(fx, moving_disturber_follows_its_path_and_leaves_a_wake);
     tcase_add_test(fx, excite_sets_the_velocity);
+    tcase_add_test(fx, fused_step_calls_are_the_calls);
     tcase_add_test(fx, info_reports_memory_and_time);
     suite_add_tcase(s, fx);
     return s;

@@ -143,8 +143,8 @@ void ms_sim_surface_task(void *arg)
         st = scripted_effects(sim, sim->t_fields, t1);
         if (st == MS_OK && h && sim->hprev)
             st = couple_from_volume(sim, h, dt, dt_step);
-        for (int k = 0; st == MS_OK && k < n_time; ++k)
-            st = ms_surface_step(sim->surface, dt_step);
+        if (st == MS_OK) /* N_time steps, in fused sweeps (the same bytes) */
+            st = ms_surface_step_calls(sim->surface, dt_step, n_time);
         sim->wave_dt_last = dt_step;
     }
     double c1 = ms_now();

@@ -96,6 +96,9 @@ static inline size_t ms_surface_at(const ms_surface *s, int x, int y)
 void ms_surface_refresh_coefficients(ms_surface *s, float dt);
 /* wave.c */
 float ms_surface_stable_dt(const ms_surface *s);
+/* `calls` calls of ms_surface_step(s, dt), the same bytes (and the same
+ * clock): without rain and at one sub-step a call, in fused sweeps */
+ms_status ms_surface_step_calls(ms_surface *s, float dt, int calls);
 /* drops.c */
 void ms_surface_rain(ms_surface *s, float dt);
 /* disturber.c */

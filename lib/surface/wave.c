@@ -171,8 +171,10 @@ static void block(ms_surface *s, int K, const float *level_xy)
 
 /* Advance n sub-steps of dt: blocks of up to MAX_LEVELS fused steps. A
  * periodic grid needs its far edge before its near one, which no sweep
- * can give early, so it runs one step a sweep. */
-static ms_status advance(ms_surface *s, float dt, int n)
+ * can give early, so it runs one step a sweep. The clock advances by K dt
+ * a block, or with each_step by dt a step (the sum n calls of one sub-step
+ * make: ms_surface_step_calls). */
+static ms_status advance(ms_surface *s, float dt, int n, int each_step)
 {
     /* ms_surface_add_disturber grows level_xy with the disturbers: a step
      * allocates nothing (issue 15) */
@@ -193,7 +195,11 @@ static ms_status advance(ms_surface *s, float dt, int n)
         if (periodic)
             wrap_ghosts(s, s->h);
         block(s, K, level_xy);
-        s->time += (double)K * dt;
+        if (each_step)
+            for (int L = 0; L < K; ++L)
+                s->time += (double)dt;
+        else
+            s->time += (double)K * dt;
         s->substeps += K;
         n -= K;
     }
@@ -212,7 +218,8 @@ static void rescale_velocity(ms_surface *s, float dt)
     s->v_dt = dt;
 }
 
-ms_status ms_surface_step(ms_surface *s, float dt)
+/* calls sub-steps of dt each (ms_surface_step_calls) */
+static ms_status step_calls(ms_surface *s, float dt, int calls)
 {
     ms_status st;
     if ((st = ms_check_not_null(PART, "surface", s)))
@@ -241,14 +248,34 @@ ms_status ms_surface_step(ms_surface *s, float dt)
     const unsigned int csr = _mm_getcsr();
     _mm_setcsr(csr | 0x8040u); /* FTZ | DAZ */
 #endif
-    if (s->rain.rate > 0)
-        ms_surface_rain(s, dt);
-    ms_surface_refresh_coefficients(s, sub);
-    rescale_velocity(s, sub);
-    st = advance(s, sub, nsub);
+    /* Calls of one sub-step each without rain (which falls between calls)
+     * are one advance: its sweeps fuse up to MAX_LEVELS steps (block()),
+     * the same bits as one sweep per call (issue 12: N_time = 2 on fig1
+     * streamed the grid twice); the clock adds dt a step, as the calls do. */
+    const int fuse = nsub == 1 && !(s->rain.rate > 0);
+    st = MS_OK;
+    for (int c = 0; c < calls && st == MS_OK; c += fuse ? calls : 1) {
+        if (s->rain.rate > 0)
+            ms_surface_rain(s, dt);
+        ms_surface_refresh_coefficients(s, sub);
+        rescale_velocity(s, sub);
+        st = fuse ? advance(s, sub, calls, 1) : advance(s, sub, nsub, 0);
+    }
 #if defined(__SSE__)
     _mm_setcsr(csr);
 #endif
     s->view_dirty = 1;
     return st;
+}
+
+ms_status ms_surface_step(ms_surface *s, float dt)
+{
+    return step_calls(s, dt, 1);
+}
+
+ms_status ms_surface_step_calls(ms_surface *s, float dt, int calls)
+{
+    if (calls < 1)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "surface: %d step calls; at least 1", calls);
+    return step_calls(s, dt, calls);
 }
