@@ -342,7 +342,8 @@ START_TEST(average_is_bitwise_the_plain_loop)
         helper_sim(&sim, sizes[t][0], sizes[t][1], sizes[t][2], sizes[t][3]);
         const int fnx = sim.fnx, fny = sim.fny, snx = sim.snx, sny = sim.sny;
         float *w = malloc(sizeof *w * snx * sny), *out = malloc(sizeof *out * fnx * fny);
-        float *acc = calloc((size_t)fnx * fny, sizeof *acc), *ref = calloc((size_t)fnx * fny, sizeof *ref);
+        float *acc = calloc((size_t)fnx * fny, sizeof *acc),
+              *ref = calloc((size_t)fnx * fny, sizeof *ref);
         int *cx = calloc((size_t)fnx, sizeof *cx), *cy = calloc((size_t)fny, sizeof *cy);
         uint32_t seed = 12345u;
         for (int c = 0; c < snx * sny; ++c) {
@@ -359,7 +360,8 @@ START_TEST(average_is_bitwise_the_plain_loop)
             ++cx[sim.wave_colmap[i]];
         for (int r = 0; r < fny; ++r)
             for (int c = 0; c < fnx; ++c)
-                ref[r * fnx + c] = cy[r] && cx[c] ? acc[r * fnx + c] / (float)(cy[r] * cx[c]) : 0.0f;
+                ref[r * fnx + c] =
+                    cy[r] && cx[c] ? acc[r * fnx + c] / (float)(cy[r] * cx[c]) : 0.0f;
         ms_sim_average_waves(&sim, w, out);
         ck_assert_msg(memcmp(out, ref, sizeof *out * fnx * fny) == 0, "size %zu: bits differ", t);
         free(w);
@@ -441,7 +443,8 @@ START_TEST(excite_in_one_pass_is_surface_excite)
         ck_assert_int_eq(ms_sim_upsample_excite(&sim, e, s2), MS_OK);
         for (int q = 0; q < 2; ++q)
             ck_assert_int_eq(ms_surface_step(s[q], 0.01f), MS_OK); /* the velocity too */
-        const float *h1 = ms_surface_height(s1, NULL, NULL), *h2 = ms_surface_height(s2, NULL, NULL);
+        const float *h1 = ms_surface_height(s1, NULL, NULL),
+                    *h2 = ms_surface_height(s2, NULL, NULL);
         ck_assert(memcmp(h1, h2, sizeof *h1 * snx * sny) == 0);
     }
     e[fnx + 3] = NAN;

@@ -231,8 +231,8 @@ void ms_sim_average_waves(ms_sim *sim, const float *w, float *out)
  * averaged per SPH cell (ms_sim_average_waves) while each row is in L1.
  * The same operations per value as ms_sim_upsample_add(.., 0, ..) and
  * ms_sim_average_waves: the same bits. */
-void ms_sim_combine(ms_sim *sim, const float *field, const float *wave, size_t stride,
-                    float *out, float *avg)
+void ms_sim_combine(ms_sim *sim, const float *field, const float *wave, size_t stride, float *out,
+                    float *avg)
 {
     upsample_x(sim, field, sim->rowtmp);
     avg_state st;

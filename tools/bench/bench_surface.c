@@ -69,9 +69,8 @@ static void average_round8(ms_sim *sim, const float *w, float *out)
         int r = (int)(((2L * j + 1) * sim->fny) / (2L * sim->sny));
         if (r != row) {
             for (int c = 0; c < fnx; ++c)
-                out[(size_t)row * fnx + c] = count_y ? acc[(size_t)row * fnx + c] /
-                                                           (float)(count_y * count_x[c])
-                                                     : 0.0f;
+                out[(size_t)row * fnx + c] =
+                    count_y ? acc[(size_t)row * fnx + c] / (float)(count_y * count_x[c]) : 0.0f;
             row = r;
             count_y = 0;
         }
@@ -115,8 +114,8 @@ static int frame_side(ms_sim *sim, int now, float dt_step, int n_time, const flo
     if (st != MS_OK)
         return 0;
     if (now)
-        ms_sim_combine(sim, h, sf->h + ms_surface_at(sf, 0, 0), (size_t)sf->stride,
-                       sim->combined, avg);
+        ms_sim_combine(sim, h, sf->h + ms_surface_at(sf, 0, 0), (size_t)sf->stride, sim->combined,
+                       avg);
     else {
         const float *w = ms_surface_height(sf, NULL, NULL);
         ms_sim_upsample_add(sim, h, w, 0.0f, sim->rowtmp, sim->combined);
@@ -190,11 +189,11 @@ static int frame_bench(int argc, char **argv, const char *machine, const char *c
             bench_stats w = bench_summarise(tw[now], reps), c = bench_summarise(tc[now], reps);
             const char *name = now ? "now" : "round8";
             printf("%-9s %4dx%-4d %3dx%-3d %6d %7s %7.3f [%5.3f, %5.3f] %7.3f [%5.3f, %5.3f]\n",
-                   scenes[q], sim->snx, sim->sny, sim->fnx, sim->fny, n_time, name, w.median,
-                   w.p10, w.p90, c.median, c.p10, c.p90);
-            fprintf(csv, "%s,%s,1,%s,%dx%d,%dx%d,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n",
-                    commit, machine, scenes[q], sim->snx, sim->sny, sim->fnx, sim->fny, n_time,
-                    name, w.median, w.p10, w.p90, c.median, c.p10, c.p90, reps);
+                   scenes[q], sim->snx, sim->sny, sim->fnx, sim->fny, n_time, name, w.median, w.p10,
+                   w.p90, c.median, c.p10, c.p90);
+            fprintf(csv, "%s,%s,1,%s,%dx%d,%dx%d,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n", commit,
+                    machine, scenes[q], sim->snx, sim->sny, sim->fnx, sim->fny, n_time, name,
+                    w.median, w.p10, w.p90, c.median, c.p10, c.p90, reps);
         }
         free(e);
         ms_sim_destroy(sim);
@@ -208,11 +207,11 @@ int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
                    "usage: bench_surface [--csv-dir DIR] [--quick] [--data DIR]\n"
-        "ns per cell-update of the wave equation with speed and damping maps on grids\n"
-        "256^2 to 2048^2, one core (median, 10th-90th percentile), beside the memory\n"
-        "bandwidth; writes DIR/surface.csv (default DIR: bench). Then the surface side\n"
-        "of a sim frame on fig1 and fig1_x10 (--data DIR: the scenes), round eight's\n"
-        "sequence against today's, interleaved; writes DIR/surface_frame.csv.\n"))
+                   "ns per cell-update of the wave equation with speed and damping maps on grids\n"
+                   "256^2 to 2048^2, one core (median, 10th-90th percentile), beside the memory\n"
+                   "bandwidth; writes DIR/surface.csv (default DIR: bench). Then the surface side\n"
+                   "of a sim frame on fig1 and fig1_x10 (--data DIR: the scenes), round eight's\n"
+                   "sequence against today's, interleaved; writes DIR/surface_frame.csv.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     char machine[320], commit[64];
