@@ -9,7 +9,8 @@
  * round-eight sequence (up-sample into a scratch field +
  * ms_surface_excite, N_time ms_surface_step calls, the view copy,
  * up-sample + sum, the per-run average) against today's (one pass each,
- * fused sweeps), on the same sim, interleaved repeat by repeat, 1 thread.
+ * fused sweeps), on the same sim, interleaved repeat by repeat, 1 thread
+ * (both with today's wave kernel: the uniform rows speed either).
  * Writes surface_frame.csv. */
 #include <math.h>
 
