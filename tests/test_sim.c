@@ -297,6 +297,169 @@ START_TEST(waves_are_averaged_per_sph_cell)
 }
 END_TEST
 
+/* A minimal sim for the eq. 20 helpers: fnx x fny SPH cells, snx x sny
+ * wave cells (the taps, the column map and the scratch as create.c makes
+ * them). */
+static void helper_sim(ms_sim *sim, int fnx, int fny, int snx, int sny)
+{
+    memset(sim, 0, sizeof *sim);
+    sim->fnx = fnx;
+    sim->fny = fny;
+    sim->snx = snx;
+    sim->sny = sny;
+    ck_assert_int_eq(ms_sim_upsample_init(sim), MS_OK);
+    sim->wave_colmap = malloc(sizeof *sim->wave_colmap * snx);
+    sim->wave_rowsum = malloc(sizeof *sim->wave_rowsum * fnx * fny);
+    sim->excite = malloc(sizeof *sim->excite * snx * sny);
+    for (int i = 0; i < snx; ++i)
+        sim->wave_colmap[i] = (int)(((2L * i + 1) * fnx) / (2L * snx));
+}
+
+static void helper_sim_free(ms_sim *sim)
+{
+    ms_free(sim->ix0);
+    ms_free(sim->ix1);
+    ms_free(sim->iy0);
+    ms_free(sim->iy1);
+    ms_free(sim->wx);
+    ms_free(sim->wy);
+    ms_free(sim->rowtmp);
+    free(sim->wave_colmap);
+    free(sim->wave_rowsum);
+    free(sim->excite);
+}
+
+/* Issue 12: the average for the volume sums across SPH columns to be fast;
+ * per SPH cell it must make the additions of the plain loop (row by row,
+ * left to right) in the same order, so the volume sees the same bits, also
+ * where N_surf is not an integer (runs of unequal length) and where an SPH
+ * column holds no wave cell centre. */
+START_TEST(average_is_bitwise_the_plain_loop)
+{
+    static const int sizes[][4] = {{50, 50, 400, 400}, {7, 5, 37, 23}, {9, 4, 6, 11}};
+    for (size_t t = 0; t < sizeof sizes / sizeof *sizes; ++t) {
+        ms_sim sim;
+        helper_sim(&sim, sizes[t][0], sizes[t][1], sizes[t][2], sizes[t][3]);
+        const int fnx = sim.fnx, fny = sim.fny, snx = sim.snx, sny = sim.sny;
+        float *w = malloc(sizeof *w * snx * sny), *out = malloc(sizeof *out * fnx * fny);
+        float *acc = calloc((size_t)fnx * fny, sizeof *acc),
+              *ref = calloc((size_t)fnx * fny, sizeof *ref);
+        int *cx = calloc((size_t)fnx, sizeof *cx), *cy = calloc((size_t)fny, sizeof *cy);
+        uint32_t seed = 12345u;
+        for (int c = 0; c < snx * sny; ++c) {
+            seed = seed * 1664525u + 1013904223u;
+            w[c] = ((float)(seed >> 8) / 16777216.0f - 0.5f) * 0.02f; /* m, all bits used */
+        }
+        for (int j = 0; j < sny; ++j) {
+            const int r = (int)(((2L * j + 1) * fny) / (2L * sny));
+            ++cy[r];
+            for (int i = 0; i < snx; ++i)
+                acc[r * fnx + sim.wave_colmap[i]] += w[j * snx + i];
+        }
+        for (int i = 0; i < snx; ++i)
+            ++cx[sim.wave_colmap[i]];
+        for (int r = 0; r < fny; ++r)
+            for (int c = 0; c < fnx; ++c)
+                ref[r * fnx + c] =
+                    cy[r] && cx[c] ? acc[r * fnx + c] / (float)(cy[r] * cx[c]) : 0.0f;
+        ms_sim_average_waves(&sim, w, out);
+        ck_assert_msg(memcmp(out, ref, sizeof *out * fnx * fny) == 0, "size %zu: bits differ", t);
+        free(w);
+        free(out);
+        free(acc);
+        free(ref);
+        free(cx);
+        free(cy);
+        helper_sim_free(&sim);
+    }
+}
+END_TEST
+
+/* Issue 12: the combine in one pass over the solver's padded rows gives
+ * the bits of up-sampling + sum and of the average, done one after the
+ * other on a contiguous copy. */
+START_TEST(combine_in_one_pass_is_the_two_passes)
+{
+    ms_sim sim;
+    helper_sim(&sim, 7, 5, 37, 23);
+    const int fnx = sim.fnx, fny = sim.fny, snx = sim.snx, sny = sim.sny, stride = snx + 11;
+    float *f = malloc(sizeof *f * fnx * fny), *wp = malloc(sizeof *wp * stride * sny);
+    float *w = malloc(sizeof *w * snx * sny), *c1 = malloc(sizeof *c1 * snx * sny);
+    float *c2 = malloc(sizeof *c2 * snx * sny), *a1 = malloc(sizeof *a1 * fnx * fny);
+    float *a2 = malloc(sizeof *a2 * fnx * fny);
+    for (int c = 0; c < fnx * fny; ++c)
+        f[c] = 0.25f + 0.01f * sinf(1.7f * c);
+    for (int j = 0; j < sny; ++j)
+        for (int i = 0; i < stride; ++i)
+            wp[j * stride + i] = i < snx ? 0.003f * cosf(0.9f * i + 2.3f * j) : NAN; /* pad */
+    for (int j = 0; j < sny; ++j)
+        memcpy(w + j * snx, wp + j * stride, sizeof *w * snx);
+    ms_sim_upsample_add(&sim, f, w, 0.0f, sim.rowtmp, c1);
+    ms_sim_average_waves(&sim, w, a1);
+    ms_sim_combine(&sim, f, wp, (size_t)stride, c2, a2);
+    ck_assert(memcmp(c1, c2, sizeof *c1 * snx * sny) == 0);
+    ck_assert(memcmp(a1, a2, sizeof *a1 * fnx * fny) == 0);
+    ms_sim_combine(&sim, f, wp, (size_t)stride, c2, NULL); /* no volume<-surface coupling */
+    ck_assert(memcmp(c1, c2, sizeof *c1 * snx * sny) == 0);
+    free(f);
+    free(wp);
+    free(w);
+    free(c1);
+    free(c2);
+    free(a1);
+    free(a2);
+    helper_sim_free(&sim);
+}
+END_TEST
+
+/* Issue 12: the coupling's impulse added straight into the wave solver is
+ * ms_surface_excite(up(e), 1) bit for bit, obstacles included; an impulse
+ * that is not finite is still refused with the surface's sentence. */
+START_TEST(excite_in_one_pass_is_surface_excite)
+{
+    ms_sim sim;
+    helper_sim(&sim, 7, 5, 37, 23);
+    const int fnx = sim.fnx, fny = sim.fny, snx = sim.snx, sny = sim.sny;
+    ms_surface_desc d = ms_surface_desc_default();
+    d.nx = snx;
+    d.ny = sny;
+    ms_surface *s1, *s2;
+    ck_assert_int_eq(ms_surface_create(&d, &s1), MS_OK);
+    ck_assert_int_eq(ms_surface_create(&d, &s2), MS_OK);
+    unsigned char *mask = calloc((size_t)snx * sny, 1);
+    for (int c = 0; c < snx * sny; c += 7)
+        mask[c] = 1;
+    float *e = malloc(sizeof *e * fnx * fny), *up = malloc(sizeof *up * snx * sny);
+    for (int c = 0; c < fnx * fny; ++c)
+        e[c] = 0.002f * sinf(0.7f * c + 0.1f);
+    for (int k = 0; k < 2; ++k) {
+        ms_surface *s[2] = {s1, s2};
+        for (int q = 0; q < 2; ++q) {
+            ck_assert_int_eq(ms_surface_add_drop(s[q], 0.02f, 0.03f, 0.02f, 0.01f), MS_OK);
+            ck_assert_int_eq(ms_surface_set_obstacle_mask(s[q], k ? mask : NULL), MS_OK);
+        }
+        ms_sim_upsample(&sim, e, sim.rowtmp, up);
+        ck_assert_int_eq(ms_surface_excite(s1, up, 1.0f), MS_OK);
+        ck_assert_int_eq(ms_sim_upsample_excite(&sim, e, s2), MS_OK);
+        for (int q = 0; q < 2; ++q)
+            ck_assert_int_eq(ms_surface_step(s[q], 0.01f), MS_OK); /* the velocity too */
+        const float *h1 = ms_surface_height(s1, NULL, NULL),
+                    *h2 = ms_surface_height(s2, NULL, NULL);
+        ck_assert(memcmp(h1, h2, sizeof *h1 * snx * sny) == 0);
+    }
+    e[fnx + 3] = NAN;
+    MS_ASSERT_REFUSED(ms_sim_upsample_excite(&sim, e, s2), MS_ERR_INVALID_ARGUMENT, "finite");
+    e[fnx + 3] = 1e31f; /* finite, but its up-sampled neighbours need not be */
+    ck_assert_int_eq(ms_sim_upsample_excite(&sim, e, s2), MS_OK);
+    free(mask);
+    free(e);
+    free(up);
+    ms_surface_destroy(s1);
+    ms_surface_destroy(s2);
+    helper_sim_free(&sim);
+}
+END_TEST
+
 /* Eq. 20: combined = up-sampled SPH field + wave field, bit for bit. */
 START_TEST(combined_is_upsampled_volume_plus_waves)
 {
@@ -974,6 +1137,9 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, upsampling_is_exact_for_linear_fields);
     tcase_add_test(tc, combined_is_upsampled_volume_plus_waves);
     tcase_add_test(tc, waves_are_averaged_per_sph_cell);
+    tcase_add_test(tc, average_is_bitwise_the_plain_loop);
+    tcase_add_test(tc, combine_in_one_pass_is_the_two_passes);
+    tcase_add_test(tc, excite_in_one_pass_is_surface_excite);
     tcase_add_test(tc, fields_lag_one_frame);
     tcase_add_test(tc, split_extraction_is_the_volumes_bytes);
     tcase_add_test(tc, volume_makes_waves_without_adding_water);

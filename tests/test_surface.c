@@ -734,6 +734,117 @@ START_TEST(moving_disturber_follows_its_path_and_leaves_a_wake)
 }
 END_TEST
 
+/* Issue 12: the sim's N_time steps of one sub-step each run as one fused
+ * sweep (ms_surface_step_calls); they must give the bytes and the clock of
+ * the N_time calls, with a moving disturber, an absorbing edge, 1 to 11
+ * calls (over the 8 steps a sweep fuses), and with rain (which falls
+ * between the calls, so those calls are not fused). */
+START_TEST(fused_step_calls_are_the_calls)
+{
+    for (int rain = 0; rain < 2; ++rain)
+        for (int calls = 1; calls <= 11; calls += 2) {
+            ms_surface *s[2];
+            for (int q = 0; q < 2; ++q) {
+                s[q] = make(61, 47, 0.01f, 0.5f, 0.9f, MS_BOUNDARY_ABSORB);
+                ck_assert_int_eq(ms_surface_add_drop(s[q], 0.2f, 0.15f, 0.04f, 0.01f), MS_OK);
+                ms_disturber_desc d = ms_disturber_desc_default();
+                d.x = 0.3f;
+                d.y = 0.2f;
+                d.vx = 0.2f;
+                d.radius = 0.05f;
+                int id;
+                ck_assert_int_eq(ms_surface_add_disturber(s[q], &d, &id), MS_OK);
+                if (rain) {
+                    ms_rain r = ms_rain_default();
+                    r.rate = 400.0f;
+                    ck_assert_int_eq(ms_surface_set_rain(s[q], &r), MS_OK);
+                }
+            }
+            ms_surface_info i0 = ms_surface_info_init(), i1 = ms_surface_info_init();
+            ms_surface_get_info(s[0], &i0);
+            const float dt = 0.9f * i0.max_dt; /* s: one sub-step a call */
+            for (int frame = 0; frame < 3; ++frame) {
+                for (int c = 0; c < calls; ++c)
+                    ck_assert_int_eq(ms_surface_step(s[0], dt), MS_OK);
+                ck_assert_int_eq(ms_surface_step_calls(s[1], dt, calls), MS_OK);
+            }
+            const float *h0 = ms_surface_height(s[0], NULL, NULL);
+            const float *h1 = ms_surface_height(s[1], NULL, NULL);
+            ck_assert_msg(memcmp(h0, h1, sizeof *h0 * 61 * 47) == 0, "rain %d calls %d", rain,
+                          calls);
+            ms_surface_get_info(s[0], &i0);
+            ms_surface_get_info(s[1], &i1);
+            ck_assert(i0.time == i1.time && i0.substeps == i1.substeps && i0.drops == i1.drops);
+            ck_assert(i0.time > 0 && (!rain || i0.drops > 1));
+            ms_surface_destroy(s[0]);
+            ms_surface_destroy(s[1]);
+        }
+    ms_surface *s = make(8, 8, 0.01f, 0.5f, 1.0f, MS_BOUNDARY_REFLECT);
+    MS_ASSERT_REFUSED(ms_surface_step_calls(s, 1e-3f, 0), MS_ERR_INVALID_ARGUMENT, "calls");
+    ms_surface_destroy(s);
+}
+END_TEST
+
+/* Issue 12: where every cell has the same a and delta (no speed or damping
+ * map, no obstacle, not absorbing), the interior rows are stepped with a0
+ * and d0 in registers instead of the per-cell arrays: the same bits as the
+ * arrays' rows, for reflecting and periodic edges, a moving disturber and
+ * fused sweeps; a map or an obstacle turns it off, a snapshot's restore
+ * makes the solver look again. */
+START_TEST(uniform_rows_are_the_general_rows)
+{
+    static const ms_boundary edges[2] = {MS_BOUNDARY_REFLECT, MS_BOUNDARY_PERIODIC};
+    for (int b = 0; b < 2; ++b) {
+        ms_surface *s[2];
+        for (int q = 0; q < 2; ++q) {
+            s[q] = make(53, 41, 0.01f, 0.5f, 0.8f, edges[b]);
+            ck_assert_int_eq(ms_surface_add_drop(s[q], 0.1f, 0.12f, 0.05f, 0.01f), MS_OK);
+            ck_assert_int_eq(ms_surface_add_drop(s[q], 0.5f, 0.38f, 0.03f, -0.01f), MS_OK);
+            ms_disturber_desc d = ms_disturber_desc_default();
+            d.x = 0.2f;
+            d.y = 0.3f;
+            d.vx = 0.15f;
+            int id;
+            ck_assert_int_eq(ms_surface_add_disturber(s[q], &d, &id), MS_OK);
+        }
+        ms_surface_info info = ms_surface_info_init();
+        ms_surface_get_info(s[0], &info);
+        const float dt = 5.5f * info.max_dt; /* s: 6 sub-steps a call, fused */
+        for (int q = 0; q < 2; ++q)
+            ck_assert_int_eq(ms_surface_step(s[q], dt), MS_OK);
+        ck_assert_int_eq(s[0]->uniform, 1);
+        s[1]->uniform = 0; /* the arrays' rows (the coefficients stay for this dt) */
+        for (int k = 0; k < 20; ++k)
+            for (int q = 0; q < 2; ++q)
+                ck_assert_int_eq(ms_surface_step(s[q], dt), MS_OK);
+        ck_assert_int_eq(s[1]->uniform, 0);
+        const float *h0 = ms_surface_height(s[0], NULL, NULL);
+        const float *h1 = ms_surface_height(s[1], NULL, NULL);
+        ck_assert_msg(memcmp(h0, h1, sizeof *h0 * 53 * 41) == 0, "edge %d", b);
+        ck_assert(ms_surface_energy(s[0]) > 0);
+        ms_surface_destroy(s[0]);
+        ms_surface_destroy(s[1]);
+    }
+    /* an obstacle or a speed map: not uniform */
+    ms_surface *s = make(20, 20, 0.01f, 0.5f, 1.0f, MS_BOUNDARY_REFLECT);
+    ck_assert_int_eq(ms_surface_step(s, 1e-3f), MS_OK);
+    ck_assert_int_eq(s->uniform, 1);
+    unsigned char mask[400] = {0};
+    mask[210] = 1;
+    ck_assert_int_eq(ms_surface_set_obstacle_mask(s, mask), MS_OK);
+    ck_assert_int_eq(ms_surface_step(s, 1e-3f), MS_OK);
+    ck_assert_int_eq(s->uniform, 0);
+    ck_assert_int_eq(ms_surface_set_obstacle_mask(s, NULL), MS_OK);
+    float c[400];
+    for (int i = 0; i < 400; ++i)
+        c[i] = i == 37 ? 0.4f : 0.5f;
+    ck_assert_int_eq(ms_surface_set_speed_map(s, c), MS_OK);
+    ck_assert_int_eq(ms_surface_step(s, 1e-3f), MS_OK);
+    ck_assert_int_eq(s->uniform, 0);
+    ms_surface_destroy(s);
+}
+END_TEST
+
 START_TEST(excite_sets_the_velocity)
 {
     /* an impulse dh on a flat surface at rest gives kinetic energy
@@ -856,6 +967,8 @@ static Suite *surface_suite(void)
     tcase_add_test(fx, still_disturber_settles_into_its_dent);
     tcase_add_test(fx, moving_disturber_follows_its_path_and_leaves_a_wake);
     tcase_add_test(fx, excite_sets_the_velocity);
+    tcase_add_test(fx, fused_step_calls_are_the_calls);
+    tcase_add_test(fx, uniform_rows_are_the_general_rows);
     tcase_add_test(fx, info_reports_memory_and_time);
     suite_add_tcase(s, fx);
     return s;

@@ -183,6 +183,12 @@ void ms_sim_upsample(const ms_sim *sim, const float *field, float *rowtmp, float
 /* out = up(field) + wave */
 void ms_sim_upsample_add(const ms_sim *sim, const float *field, const float *wave, float add,
                          float *rowtmp, float *out);
+/* ms_surface_excite(s, up(e), 1) in one pass, into the solver's rows */
+ms_status ms_sim_upsample_excite(ms_sim *sim, const float *e, ms_surface *s);
+/* out = up(field) + wave (rows stride floats apart) and, if avg is not
+ * NULL, ms_sim_average_waves of it, in one pass */
+void ms_sim_combine(ms_sim *sim, const float *field, const float *wave, size_t stride, float *out,
+                    float *avg);
 
 /* volume_task.c / surface_task.c */
 /* Place s (the volume's or the surface's twin of sh) where sh is at time

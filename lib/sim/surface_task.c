@@ -8,6 +8,7 @@
 
 #include "modesplit/surface.h"
 #include "sim/sim_internal.h"
+#include "surface/surface_internal.h"
 
 /* Obstacle mask at time t: the static footprints and the moving ones. */
 static ms_status update_mask(ms_sim *sim, double t)
@@ -106,50 +107,7 @@ static ms_status couple_from_volume(ms_sim *sim, const float *h, float dt_frame,
         e[c] = (u - up[c]) * dref;                                 /* m */
         up[c] = u;
     }
-    ms_sim_upsample(sim, e, sim->rowtmp, sim->excite);
-    return ms_surface_excite(sim->surface, sim->excite, 1.0f);
-}
-
-/* The wave field averaged over each SPH cell (box filter; each wave cell
- * counts in the SPH cell holding its centre), in a fixed order. */
-void ms_sim_average_waves(ms_sim *sim, const float *w, float *out)
-{
-    const int snx = sim->snx, fnx = sim->fnx;
-    size_t nf = (size_t)fnx * sim->fny;
-    float *restrict acc = sim->wave_rowsum;
-    memset(acc, 0, nf * sizeof *acc);
-    memset(out, 0, nf * sizeof *out); /* SPH cells no wave cell centre falls in */
-    int count_x[4096] = {0}, count_y = 0, row = 0;
-    for (int i = 0; i < snx; ++i)
-        ++count_x[sim->wave_colmap[i]];
-    for (int j = 0; j < sim->sny; ++j) {
-        int r = (int)(((2L * j + 1) * sim->fny) / (2L * sim->sny));
-        if (r != row) {
-            for (int c = 0; c < fnx; ++c)
-                out[(size_t)row * fnx + c] = count_y ? acc[(size_t)row * fnx + c] /
-                                                           (float)(count_y * count_x[c])
-                                                     : 0.0f;
-            row = r;
-            count_y = 0;
-        }
-        ++count_y;
-        const float *restrict src = w + (size_t)j * snx;
-        float *restrict dst = acc + (size_t)r * fnx;
-        /* a run of wave columns in one SPH cell sums in a register: the
-         * same additions in the same order as dst[map[i]] += src[i], without
-         * a store-to-load chain through dst (issue 12: the combine) */
-        const int *restrict map = sim->wave_colmap;
-        for (int i = 0; i < snx;) {
-            const int c = map[i];
-            float t = dst[c];
-            for (; i < snx && map[i] == c; ++i)
-                t += src[i];
-            dst[c] = t;
-        }
-    }
-    for (int c = 0; c < fnx; ++c)
-        out[(size_t)row * fnx + c] =
-            count_y ? acc[(size_t)row * fnx + c] / (float)(count_y * count_x[c]) : 0.0f;
+    return ms_sim_upsample_excite(sim, e, sim->surface);
 }
 
 void ms_sim_surface_task(void *arg)
@@ -185,31 +143,37 @@ void ms_sim_surface_task(void *arg)
         st = scripted_effects(sim, sim->t_fields, t1);
         if (st == MS_OK && h && sim->hprev)
             st = couple_from_volume(sim, h, dt, dt_step);
-        for (int k = 0; st == MS_OK && k < n_time; ++k)
-            st = ms_surface_step(sim->surface, dt_step);
+        if (st == MS_OK) /* N_time steps, in fused sweeps (the same bytes) */
+            st = ms_surface_step_calls(sim->surface, dt_step, n_time);
         sim->wave_dt_last = dt_step;
     }
     double c1 = ms_now();
-    int nx, ny;
-    const float *w = st == MS_OK ? ms_surface_height(sim->surface, &nx, &ny) : NULL;
-    if (w) {
+    if (st == MS_OK) {
+        /* the wave field in the solver's own rows: the view
+         * (ms_surface_height) is copied only when someone reads it */
+        const ms_surface *sf = sim->surface;
+        const float *w = sf->h + ms_surface_at(sf, 0, 0);
+        float *avg = sim->wave_snap[n % 2];
         if (h)
-            ms_sim_upsample_add(sim, h, w, 0.0f, sim->rowtmp, sim->combined);
+            ms_sim_combine(sim, h, w, (size_t)sf->stride, sim->combined, avg);
         else {
-            size_t ns = (size_t)nx * ny;
-            float *restrict out = sim->combined;
             const float lvl = sim->level;
+            for (int j = 0; j < sim->sny; ++j) {
+                const float *restrict src = w + (size_t)j * sf->stride;
+                float *restrict out = sim->combined + (size_t)j * sim->snx;
 #pragma omp simd
-            for (size_t c = 0; c < ns; ++c)
-                out[c] = w[c] + lvl;
+                for (int i = 0; i < sim->snx; ++i)
+                    out[i] = src[i] + lvl;
+            }
+            if (avg)
+                ms_sim_average_waves(sim, ms_surface_height(sim->surface, NULL, NULL), avg);
         }
-        if (sim->wave_snap[n % 2])
-            ms_sim_average_waves(sim, w, sim->wave_snap[n % 2]);
         if (sim->hprev)
             memcpy(sim->hprev, h, (size_t)sim->fnx * sim->fny * sizeof *h);
         if (sim->nfloaters) {
+            const float *wv = ms_surface_height(sim->surface, NULL, NULL);
             if (m >= 1)
-                ms_sim_floaters_step(sim, h ? sim->flow[slot] : NULL, w, sim->dt_prev);
+                ms_sim_floaters_step(sim, h ? sim->flow[slot] : NULL, wv, sim->dt_prev);
             ms_sim_floaters_height(sim);
         }
     }

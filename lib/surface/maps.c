@@ -3,6 +3,7 @@
  * combination with a damping map the damping according to e.g. the type of
  * ground can be described"; obstacles reflect waves), and the per-cell
  * coefficients of the leapfrog step that follow from them. */
+#include <stdint.h>
 #include <string.h>
 
 #include "surface/surface_internal.h"
@@ -108,6 +109,31 @@ void ms_surface_refresh_coefficients(ms_surface *s, float dt)
         }
     }
     s->coef_dt = dt;
+    ms_surface_find_uniform(s);
+}
+
+/* The same bits, not only equal values (+0 and -0 compare equal). */
+static int same_bits(float x, float y)
+{
+    uint32_t a, b;
+    memcpy(&a, &x, sizeof a);
+    memcpy(&b, &y, sizeof b);
+    return a == b;
+}
+
+void ms_surface_find_uniform(ms_surface *s)
+{
+    const size_t c0 = ms_surface_at(s, 0, 0);
+    const float a0 = s->a[c0], d0 = s->delta[c0];
+    int same = 1;
+    for (int y = 0; y < s->ny && same; ++y) {
+        const size_t i0 = ms_surface_at(s, 0, y);
+        for (int x = 0; x < s->nx; ++x)
+            same &= same_bits(s->a[i0 + x], a0) & same_bits(s->delta[i0 + x], d0);
+    }
+    s->uniform = same;
+    s->a0 = a0;
+    s->d0 = d0;
 }
 
 ms_status ms_surface_set_speed_map(ms_surface *s, const float *c)

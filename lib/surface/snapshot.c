@@ -98,6 +98,7 @@ ms_status ms_surface_snapshot_io(ms_surface *s, ms_blob *b)
         (st = MS_BLOB_IO(b, "sf.rain", s->rain)) ||
         (st = MS_BLOB_IO(b, "sf.next_id", s->next_id)))
         return st;
+    s->uniform = -1; /* a and delta as read: wave.c looks again */
     if ((st = disturbers_io(s, b)))
         return st;
     if (b->reading) {

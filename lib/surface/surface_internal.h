@@ -59,6 +59,9 @@ struct ms_surface {
     int view_dirty;
 
     float coef_dt;        /* s, the dt `a` and `delta` hold; 0 = stale */
+    int uniform;          /* 1: every interior cell's a is a0 and delta d0
+                             (wave.c's uniform rows); 0: not; -1: unknown */
+    float a0, d0;
     float max_speed;      /* m/s, fastest cell */
     float v_dt;           /* s, the sub-step v belongs to; 0 = none yet */
     double time;          /* s */
@@ -94,8 +97,13 @@ static inline size_t ms_surface_at(const ms_surface *s, int x, int y)
 
 /* maps.c */
 void ms_surface_refresh_coefficients(ms_surface *s, float dt);
+/* s->uniform, a0, d0 from the coefficients a and delta */
+void ms_surface_find_uniform(ms_surface *s);
 /* wave.c */
 float ms_surface_stable_dt(const ms_surface *s);
+/* `calls` calls of ms_surface_step(s, dt), the same bytes (and the same
+ * clock): without rain and at one sub-step a call, in fused sweeps */
+ms_status ms_surface_step_calls(ms_surface *s, float dt, int calls);
 /* drops.c */
 void ms_surface_rain(ms_surface *s, float dt);
 /* disturber.c */

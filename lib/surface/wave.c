@@ -75,6 +75,28 @@ velocity_row(float *restrict v, const float *restrict h, const float *restrict a
     }
 }
 
+/* velocity_row where every cell of the row and its four neighbours has
+ * a = a0 and delta = d0 (ms_surface_find_uniform): the same operations on
+ * the same values, so the same bits, without loading the five a and the
+ * delta of each cell (fig1's 400^2 step: 1.6x faster, measured). */
+static inline __attribute__((always_inline)) void velocity_row_uniform(float *restrict v,
+                                                                       const float *restrict h,
+                                                                       float a0, float d0,
+                                                                       ptrdiff_t W, int nx)
+{
+    const float *restrict hn = h - W + 1, *restrict hs = h + W + 1;
+    const float *restrict hw = h, *restrict he = h + 2;
+    float *restrict vc = v + 1;
+    const float *restrict hc = h + 1;
+#pragma omp simd
+    for (int i = 0; i < nx; ++i) {
+        const float c = hc[i];
+        const float flux =
+            a0 * (he[i] - c) + a0 * (hw[i] - c) + a0 * (hs[i] - c) + a0 * (hn[i] - c);
+        vc[i] = d0 * vc[i] + (0.5f + 0.5f * d0) * a0 * flux;
+    }
+}
+
 /* h_i <- h_i + v_i over one row: f^{n+1} = f^n + (f^{n+1} - f^n). */
 static inline __attribute__((always_inline)) void
 height_row(float *restrict h, const float *restrict v, int nx)
@@ -149,12 +171,25 @@ static void block(ms_surface *s, int K, const float *level_xy)
     float *h = s->h, *v = s->v;
     const float *a = s->a, *d = s->delta;
     const int last = ny + 2 * (K - 1) + 1;
+    const int uniform = s->uniform == 1 && nx >= 3;
     for (int t = 1; t <= last; ++t) {
         for (int L = 0; L < K; ++L) {
             const int yv = t - 2 * L, yh = yv - 1;
             if (yv >= 1 && yv <= ny) {
                 const size_t o = ms_surface_row(s, yv);
-                velocity_row(v + o, h + o, a + o, d + o, W, nx);
+                if (uniform && yv >= 2 && yv <= ny - 1) {
+                    /* the whole row from its aligned start, then the two
+                     * edge cells again from their old v with the general
+                     * row (they see the ghosts' a) */
+                    const size_t e = o + (size_t)nx - 1;
+                    const float v0 = v[o + 1], v1 = v[e + 1];
+                    velocity_row_uniform(v + o, h + o, s->a0, s->d0, W, nx);
+                    v[o + 1] = v0;
+                    v[e + 1] = v1;
+                    velocity_row(v + o, h + o, a + o, d + o, W, 1);
+                    velocity_row(v + e, h + e, a + e, d + e, W, 1);
+                } else
+                    velocity_row(v + o, h + o, a + o, d + o, W, nx);
                 if (s->ndist)
                     ms_surface_disturbers_force_row(s, yv - 1, v + o,
                                                     level_xy + (size_t)L * 2 * s->ndist);
@@ -171,13 +206,17 @@ static void block(ms_surface *s, int K, const float *level_xy)
 
 /* Advance n sub-steps of dt: blocks of up to MAX_LEVELS fused steps. A
  * periodic grid needs its far edge before its near one, which no sweep
- * can give early, so it runs one step a sweep. */
-static ms_status advance(ms_surface *s, float dt, int n)
+ * can give early, so it runs one step a sweep. The clock advances by K dt
+ * a block, or with each_step by dt a step (the sum n calls of one sub-step
+ * make: ms_surface_step_calls). */
+static ms_status advance(ms_surface *s, float dt, int n, int each_step)
 {
     /* ms_surface_add_disturber grows level_xy with the disturbers: a step
      * allocates nothing (issue 15) */
     assert(s->ndist <= s->level_cap);
     float *level_xy = s->level_xy;
+    if (s->uniform < 0)
+        ms_surface_find_uniform(s);
     const int periodic = s->desc.boundary == MS_BOUNDARY_PERIODIC;
     while (n > 0) {
         if (atomic_exchange(&s->cancel, 0))
@@ -193,7 +232,11 @@ static ms_status advance(ms_surface *s, float dt, int n)
         if (periodic)
             wrap_ghosts(s, s->h);
         block(s, K, level_xy);
-        s->time += (double)K * dt;
+        if (each_step)
+            for (int L = 0; L < K; ++L)
+                s->time += (double)dt;
+        else
+            s->time += (double)K * dt;
         s->substeps += K;
         n -= K;
     }
@@ -212,7 +255,8 @@ static void rescale_velocity(ms_surface *s, float dt)
     s->v_dt = dt;
 }
 
-ms_status ms_surface_step(ms_surface *s, float dt)
+/* calls sub-steps of dt each (ms_surface_step_calls) */
+static ms_status step_calls(ms_surface *s, float dt, int calls)
 {
     ms_status st;
     if ((st = ms_check_not_null(PART, "surface", s)))
@@ -241,14 +285,34 @@ ms_status ms_surface_step(ms_surface *s, float dt)
     const unsigned int csr = _mm_getcsr();
     _mm_setcsr(csr | 0x8040u); /* FTZ | DAZ */
 #endif
-    if (s->rain.rate > 0)
-        ms_surface_rain(s, dt);
-    ms_surface_refresh_coefficients(s, sub);
-    rescale_velocity(s, sub);
-    st = advance(s, sub, nsub);
+    /* Calls of one sub-step each without rain (which falls between calls)
+     * are one advance: its sweeps fuse up to MAX_LEVELS steps (block()),
+     * the same bits as one sweep per call (issue 12: N_time = 2 on fig1
+     * streamed the grid twice); the clock adds dt a step, as the calls do. */
+    const int fuse = nsub == 1 && !(s->rain.rate > 0);
+    st = MS_OK;
+    for (int c = 0; c < calls && st == MS_OK; c += fuse ? calls : 1) {
+        if (s->rain.rate > 0)
+            ms_surface_rain(s, dt);
+        ms_surface_refresh_coefficients(s, sub);
+        rescale_velocity(s, sub);
+        st = fuse ? advance(s, sub, calls, 1) : advance(s, sub, nsub, 0);
+    }
 #if defined(__SSE__)
     _mm_setcsr(csr);
 #endif
     s->view_dirty = 1;
     return st;
+}
+
+ms_status ms_surface_step(ms_surface *s, float dt)
+{
+    return step_calls(s, dt, 1);
+}
+
+ms_status ms_surface_step_calls(ms_surface *s, float dt, int calls)
+{
+    if (calls < 1)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "surface: %d step calls; at least 1", calls);
+    return step_calls(s, dt, calls);
 }

@@ -1,11 +1,23 @@
 /* Surface-solver benchmark: ns per cell-update of the leapfrog step
  * (speed and damping maps on) for grids 256^2 .. 2048^2 on one core, next
  * to the memory bandwidth measured in the same run and the bound it puts
- * on a step that streams its fields from memory. Writes surface.csv. */
+ * on a step that streams its fields from memory. Writes surface.csv.
+ *
+ * Then the surface side of a sim's frame (issue 12, round nine) on fig1
+ * and fig1_x10: the coupling's impulse, N_time wave steps ("waves") and
+ * eq. 20 with the average the volume reads ("combine"), ms a frame, the
+ * round-eight sequence (up-sample into a scratch field +
+ * ms_surface_excite, N_time ms_surface_step calls, the view copy,
+ * up-sample + sum, the per-run average) against today's (one pass each,
+ * fused sweeps), on the same sim, interleaved repeat by repeat, 1 thread
+ * (both with today's wave kernel: the uniform rows speed either).
+ * Writes surface_frame.csv. */
 #include <math.h>
 
 #include "bench_common.h"
 #include "modesplit/modesplit.h"
+#include "sim/sim_internal.h"
+#include "surface/surface_internal.h"
 
 /* Bytes one cell-update moves when nothing stays in cache: reads h, v,
  * a, delta; writes v, h (4-byte floats). */
@@ -42,13 +54,165 @@ static ms_surface *make_pool(int n)
     return s;
 }
 
+/* Round eight's average (lib/sim/surface_task.c at 68f9f84): a run of
+ * wave columns summed in a register, one run after the other. */
+static void average_round8(ms_sim *sim, const float *w, float *out)
+{
+    const int snx = sim->snx, fnx = sim->fnx;
+    size_t nf = (size_t)fnx * sim->fny;
+    float *restrict acc = sim->wave_rowsum;
+    memset(acc, 0, nf * sizeof *acc);
+    memset(out, 0, nf * sizeof *out);
+    int count_x[4096] = {0}, count_y = 0, row = 0;
+    for (int i = 0; i < snx; ++i)
+        ++count_x[sim->wave_colmap[i]];
+    for (int j = 0; j < sim->sny; ++j) {
+        int r = (int)(((2L * j + 1) * sim->fny) / (2L * sim->sny));
+        if (r != row) {
+            for (int c = 0; c < fnx; ++c)
+                out[(size_t)row * fnx + c] =
+                    count_y ? acc[(size_t)row * fnx + c] / (float)(count_y * count_x[c]) : 0.0f;
+            row = r;
+            count_y = 0;
+        }
+        ++count_y;
+        const float *restrict src = w + (size_t)j * snx;
+        float *restrict dst = acc + (size_t)r * fnx;
+        const int *restrict map = sim->wave_colmap;
+        for (int i = 0; i < snx;) {
+            const int c = map[i];
+            float t = dst[c];
+            for (; i < snx && map[i] == c; ++i)
+                t += src[i];
+            dst[c] = t;
+        }
+    }
+    for (int c = 0; c < fnx; ++c)
+        out[(size_t)row * fnx + c] =
+            count_y ? acc[(size_t)row * fnx + c] / (float)(count_y * count_x[c]) : 0.0f;
+}
+
+/* One frame's surface side by either sequence: ms of waves and combine. */
+static int frame_side(ms_sim *sim, int now, float dt_step, int n_time, const float *e,
+                      double *waves_ms, double *combine_ms)
+{
+    ms_surface *sf = sim->surface;
+    const float *h = sim->hfield[0];
+    float *avg = sim->wave_snap[0];
+    ms_status st = MS_OK;
+    double t0 = bench_now();
+    if (now) {
+        st = ms_sim_upsample_excite(sim, e, sf);
+        if (st == MS_OK)
+            st = ms_surface_step_calls(sf, dt_step, n_time);
+    } else {
+        ms_sim_upsample(sim, e, sim->rowtmp, sim->excite);
+        st = ms_surface_excite(sf, sim->excite, 1.0f);
+        for (int k = 0; st == MS_OK && k < n_time; ++k)
+            st = ms_surface_step(sf, dt_step);
+    }
+    double t1 = bench_now();
+    if (st != MS_OK)
+        return 0;
+    if (now)
+        ms_sim_combine(sim, h, sf->h + ms_surface_at(sf, 0, 0), (size_t)sf->stride, sim->combined,
+                       avg);
+    else {
+        const float *w = ms_surface_height(sf, NULL, NULL);
+        ms_sim_upsample_add(sim, h, w, 0.0f, sim->rowtmp, sim->combined);
+        if (avg)
+            average_round8(sim, w, avg);
+    }
+    double t2 = bench_now();
+    *waves_ms = (t1 - t0) * 1e3;
+    *combine_ms = (t2 - t1) * 1e3;
+    return 1;
+}
+
+static int frame_bench(int argc, char **argv, const char *machine, const char *commit, int quick)
+{
+    const char *dir = bench_arg_value(argc, argv, "--data", "data/scenes");
+    FILE *csv = bench_csv_open(bench_csv_dir(argc, argv), "surface_frame.csv",
+                               "commit,machine,threads,scene,wave_grid,field,n_time,path,"
+                               "waves_ms_median,waves_ms_p10,waves_ms_p90,combine_ms_median,"
+                               "combine_ms_p10,combine_ms_p90,repeats");
+    if (!csv)
+        return 1;
+    printf("\nsurface side of a sim frame (issue 12): ms a frame, median [p10, p90], the\n"
+           "round-eight sequence and today's interleaved on the same sim, 1 thread\n");
+    printf("%-9s %9s %6s %6s %7s %20s %20s\n", "scene", "grid", "field", "n_time", "path",
+           "waves ms", "combine ms");
+    static const char *const scenes[] = {"fig1", "fig1_x10"};
+    for (int q = 0; q < 2; ++q) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/%s.json", dir, scenes[q]);
+        ms_scene *sc = NULL;
+        ms_sim *sim = NULL;
+        if (ms_scene_load(path, &sc) != MS_OK || ms_sim_create_from_scene(sc, 1, &sim) != MS_OK) {
+            fprintf(stderr, "bench_surface: %s\n", ms_last_error());
+            return 1;
+        }
+        const float frame_dt = ms_scene_frame_dt(sc);
+        for (int f = 0; f < 3; ++f) /* the pipeline primed, N_time known */
+            if (ms_sim_step(sim, frame_dt) != MS_OK) {
+                fprintf(stderr, "bench_surface: %s\n", ms_last_error());
+                return 1;
+            }
+        const int n_time = sim->n_time_last;
+        const float dt_step = frame_dt / (float)n_time;
+        const size_t nf = (size_t)sim->fnx * sim->fny;
+        float *e = malloc(nf * sizeof *e);
+        if (!e || !sim->excite)
+            return 1;
+        for (size_t c = 0; c < nf; ++c) /* an impulse of a few micrometres */
+            e[c] = 2e-6f * sinf(0.37f * (float)c);
+        const int reps = quick ? 5 : 21, frames = quick ? 5 : 20;
+        double tw[2][64], tc[2][64];
+        double wm, cm;
+        for (int r = -1; r < reps; ++r) /* r = -1: warm-up */
+            for (int k = 0; k < 2; ++k) {
+                const int now = (r + k) % 2 != 0; /* the order alternates */
+                double sw = 0, sc2 = 0;
+                for (int f = 0; f < frames; ++f) {
+                    if (!frame_side(sim, now, dt_step, n_time, e, &wm, &cm)) {
+                        fprintf(stderr, "bench_surface: %s\n", ms_last_error());
+                        return 1;
+                    }
+                    sw += wm;
+                    sc2 += cm;
+                }
+                if (r >= 0) {
+                    tw[now][r] = sw / frames;
+                    tc[now][r] = sc2 / frames;
+                }
+            }
+        for (int now = 0; now < 2; ++now) {
+            bench_stats w = bench_summarise(tw[now], reps), c = bench_summarise(tc[now], reps);
+            const char *name = now ? "now" : "round8";
+            printf("%-9s %4dx%-4d %3dx%-3d %6d %7s %7.3f [%5.3f, %5.3f] %7.3f [%5.3f, %5.3f]\n",
+                   scenes[q], sim->snx, sim->sny, sim->fnx, sim->fny, n_time, name, w.median, w.p10,
+                   w.p90, c.median, c.p10, c.p90);
+            fprintf(csv, "%s,%s,1,%s,%dx%d,%dx%d,%d,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%d\n", commit,
+                    machine, scenes[q], sim->snx, sim->sny, sim->fnx, sim->fny, n_time, name,
+                    w.median, w.p10, w.p90, c.median, c.p10, c.p90, reps);
+        }
+        free(e);
+        ms_sim_destroy(sim);
+        ms_scene_destroy(sc);
+    }
+    fclose(csv);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (bench_help(argc, argv,
-                   "usage: bench_surface [--csv-dir DIR] [--quick]\n"
-        "ns per cell-update of the wave equation with speed and damping maps on grids\n"
-        "256^2 to 2048^2, one core (median, 10th-90th percentile), beside the memory\n"
-        "bandwidth; writes DIR/surface.csv (default DIR: bench).\n"))
+                   "usage: bench_surface [--csv-dir DIR] [--quick] [--data DIR]\n"
+                   "ns per cell-update of the wave equation with speed and damping maps on grids\n"
+                   "256^2 to 2048^2, one core (median, 10th-90th percentile), beside the memory\n"
+                   "bandwidth; writes DIR/surface.csv (default DIR: bench). Then the surface side\n"
+                   "of a sim frame on fig1 and fig1_x10 (--data DIR: the scenes), round eight's\n"
+                   "sequence against today's, interleaved; writes DIR/surface_frame.csv.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     char machine[320], commit[64];
@@ -99,5 +263,5 @@ int main(int argc, char **argv)
         ms_surface_destroy(s);
     }
     fclose(csv);
-    return 0;
+    return frame_bench(argc, argv, machine, commit, quick);
 }
