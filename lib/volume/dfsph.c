@@ -304,10 +304,10 @@ static inline MS_DFSPH_INLINE void factors_of(ms_volume *v, const ms_nlist *lst,
         for (int k = 0; k < gn; ++k) {
             const int j = gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
             const unsigned f = (unsigned)gidx[k] >> MS_VOLUME_IMAGE_SHIFT;
-            float pj[3], uj[3];
-            image_of(v, i, gidx[k], wall, pj, uj);
-            const float g = grad_factor(gr2[k], h, eps);
-            const float d[3] = {xi - pj[0], yi - pj[1], zi - pj[2]};
+            /* the image's g and x_i - x_j' as the first loop stored them
+             * (the same values; image_of and grad_factor once an image) */
+            const float g = c[4 * k];
+            const float d[3] = {c[4 * k + 1], c[4 * k + 2], c[4 * k + 3]};
             float u[3];
             float w;
             if (j == i) { /* i's own image moves as M dv_i */
