@@ -56,9 +56,9 @@
  * iteration reads them: no square root, division, position gather or
  * mirroring of a position per pair and iteration (round six: the images'
  * recomputed terms were a fifth of a 32k dam break's DFSPH time). The
- * AVX-512 loops read the neighbours' s and velocity as 16-byte records of
- * the packed copy v->pk instead of gathers, and sum their lanes in
- * registers; the values and the order of the sums are the C loops', so the
+ * AVX-512 error loops read the neighbours' velocity as 16-byte records of
+ * the packed copy v->pk instead of gathers (the update loop gathers s:
+ * see apply_real_avx512), and sum their lanes in registers; the values and the order of the sums are the C loops', so the
  * bits are too. Measured together (peer scene, first 0.15 s, loaded
  * machine, CPU time of the whole run): 1.41 s -> 1.13 s.
  *
@@ -269,6 +269,12 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
  * underestimated several times over and a tank at rest blew up.
  * Returns sum_k g_ik r_ik^2 over the same entries: the trace of i's
  * gradient moment in units of 1 / (m G) (the pressure read-out's M). */
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target("avx512f"))) static void factors_real_avx512(
+    const float *pk, const int *idx, const float *r2s, int n, float h, float eps, float xi,
+    float yi, float zi, float *cgx, float *cgy, float *cgz, float out[5]);
+#endif
+
 static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst,
                                                const ms_nlist *gst, float *restrict cgx,
                                                float *restrict cgy, float *restrict cgz,
@@ -283,25 +289,42 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
     cgx += v->nl_begin[i];
     cgy += v->nl_begin[i];
     cgz += v->nl_begin[i];
-    float sx[LANES] = {0}, sy[LANES] = {0}, sz[LANES] = {0}, sq[LANES] = {0}, sm[LANES] = {0};
-    for (int k = 0; k < n; k += LANES)
-        for (int l = 0; l < LANES; ++l) {
-            const int j = idx[k + l];
-            float g = grad_factor(r2s[k + l], h, eps);
-            const float dx = g * (xi - x[j]), dy = g * (yi - y[j]), dz = g * (zi - z[j]);
-            cgx[k + l] = dx;
-            cgy[k + l] = dy;
-            cgz[k + l] = dz;
-            sx[l] += dx;
-            sy[l] += dy;
-            sz[l] += dz;
-            sq[l] += g * g * r2s[k + l];
-            sm[l] += g * r2s[k + l];
-        }
-    /* in units of (m G)^2: grad W = -G g d */
-    float gx = ms_lanes_sum(sx), gy = ms_lanes_sum(sy), gz = ms_lanes_sum(sz);
-    float q = ms_lanes_sum(sq);
-    float mom = ms_lanes_sum(sm); /* sum_j g r^2: the gradient moment's trace */
+    float gx, gy, gz, q; /* in units of (m G)^2: grad W = -G g d */
+    float mom;           /* sum_j g r^2: the gradient moment's trace */
+#if MS_VOLUME_HAVE_AVX512
+    if (v->isa == MS_VOLUME_ISA_AVX512) {
+        float o[5];
+        factors_real_avx512(v->pk, idx, r2s, n, h, eps, xi, yi, zi, cgx, cgy, cgz, o);
+        gx = o[0];
+        gy = o[1];
+        gz = o[2];
+        q = o[3];
+        mom = o[4];
+    } else
+#endif
+    {
+        float sx[LANES] = {0}, sy[LANES] = {0}, sz[LANES] = {0}, sq[LANES] = {0},
+              sm[LANES] = {0};
+        for (int k = 0; k < n; k += LANES)
+            for (int l = 0; l < LANES; ++l) {
+                const int j = idx[k + l];
+                float g = grad_factor(r2s[k + l], h, eps);
+                const float dx = g * (xi - x[j]), dy = g * (yi - y[j]), dz = g * (zi - z[j]);
+                cgx[k + l] = dx;
+                cgy[k + l] = dy;
+                cgz[k + l] = dz;
+                sx[l] += dx;
+                sy[l] += dy;
+                sz[l] += dz;
+                sq[l] += g * g * r2s[k + l];
+                sm[l] += g * r2s[k + l];
+            }
+        gx = ms_lanes_sum(sx);
+        gy = ms_lanes_sum(sy);
+        gz = ms_lanes_sum(sz);
+        q = ms_lanes_sum(sq);
+        mom = ms_lanes_sum(sm);
+    }
     if (v->coincident > 0)
         for (int k = 0; k < v->nl_count[i]; ++k) {
             float w[3];
@@ -340,10 +363,10 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
         for (int k = 0; k < gn; ++k) {
             const int j = gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
             const unsigned f = (unsigned)gidx[k] >> MS_VOLUME_IMAGE_SHIFT;
-            float pj[3], uj[3];
-            image_of(v, i, gidx[k], wall, pj, uj);
-            const float g = grad_factor(gr2[k], h, eps);
-            const float d[3] = {xi - pj[0], yi - pj[1], zi - pj[2]};
+            /* the image's g and x_i - x_j' as the first loop stored them
+             * (the same values; image_of and grad_factor once an image) */
+            const float g = c[4 * k];
+            const float d[3] = {c[4 * k + 1], c[4 * k + 2], c[4 * k + 3]};
             float u[3];
             float w;
             if (j == i) { /* i's own image moves as M dv_i */
@@ -377,9 +400,9 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
 /* The real-neighbour loops of divergence_sum and apply_of in AVX-512
  * intrinsics: the same operations per lane in the same order, no fused
  * multiply-adds, into the same lane accumulators, so the same bits as the
- * C loops. During the solves the packed copy v->pk holds (s, vx, vy, vz)
- * at floats 3..6 of each 8-float record (pk[3] is the pressure slot, 0
- * under DFSPH until the density solve's end), so the 16 neighbours' data
+ * C loops. During the solves the packed copy v->pk holds (p, vx, vy, vz)
+ * at floats 3..6 of each 8-float record (pk[3], the pressure slot, is not
+ * read here: round nine, the update pass gathers s), so the 16 neighbours' data
  * are sixteen 16-byte loads and a 4 x 4 transpose in each 128-bit lane, in
  * place of gathers (AVX-512 gathers were 35 % of a 32k dam break's
  * sub-step; forces.c measured the same technique). Vector a[k] holds the
@@ -392,10 +415,9 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
             _mm512_insertf32x4(_mm512_castps128_ps512(MS_DFSPH_REC(k)), MS_DFSPH_REC((k) + 4), 1), \
             MS_DFSPH_REC((k) + 8), 2),                                                             \
         MS_DFSPH_REC((k) + 12), 3)
-__attribute__((target("avx512f"), always_inline)) static inline void load_svel(
-    const float *pk, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
+__attribute__((target("avx512f"), always_inline)) static inline void load_rec(
+    const float *b, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
 {
-    const float *b = pk + 3;
     const __m512 a0 = MS_DFSPH_ROW(0), a1 = MS_DFSPH_ROW(1), a2 = MS_DFSPH_ROW(2),
                  a3 = MS_DFSPH_ROW(3);
     const __m512 t0 = _mm512_unpacklo_ps(a0, a1), t1 = _mm512_unpackhi_ps(a0, a1);
@@ -408,6 +430,14 @@ __attribute__((target("avx512f"), always_inline)) static inline void load_svel(
 #undef MS_DFSPH_ROW
 #undef MS_DFSPH_REC
 
+/* s (the slot, unused), vx, vy, vz of the 16 neighbours j[0..15] */
+__attribute__((target("avx512f"), always_inline)) static inline void load_svel(
+    const float *pk, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
+{
+    load_rec(pk + 3, j, s, u, w, t);
+}
+
+
 /* ms_lanes_sum in registers (the same tree order, so the same bits): the
  * store and sixteen scalar reloads cost more than the sums. */
 __attribute__((target("avx512f"), always_inline)) static inline float hsum(__m512 a)
@@ -417,6 +447,46 @@ __attribute__((target("avx512f"), always_inline)) static inline float hsum(__m51
     __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
     __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
     return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
+}
+
+/* factors_of's real-neighbour loop: the same operations per lane as the C
+ * loop (IEEE square root and division, no fused multiply-adds), the
+ * neighbours' positions as the 16-byte records x, y, z, p of v->pk (which
+ * the density pass filled from the positions the solves use) in place of
+ * three gathers: the same bits. */
+__attribute__((target("avx512f"))) static void factors_real_avx512(
+    const float *pk, const int *idx, const float *r2s, int n, float h, float eps, float xi,
+    float yi, float zi, float *cgx, float *cgy, float *cgz, float out[5])
+{
+    const __m512 hv = _mm512_set1_ps(h), ev = _mm512_set1_ps(eps), zero = _mm512_setzero_ps();
+    const __m512 xv = _mm512_set1_ps(xi), yv = _mm512_set1_ps(yi), zv = _mm512_set1_ps(zi);
+    __m512 sx = zero, sy = zero, sz = zero, sq = zero, sm = zero;
+    for (int k = 0; k < n; k += LANES) {
+        __m512 xj, yj, zj, pj;
+        load_rec(pk, idx + k, &xj, &yj, &zj, &pj);
+        const __m512 r2 = _mm512_loadu_ps(r2s + k);
+        const __m512 r = _mm512_sqrt_ps(r2);
+        __m512 hr = _mm512_sub_ps(hv, r);
+        hr = _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(hr, zero, _CMP_GT_OQ), hr);
+        const __m512 g = _mm512_maskz_div_ps(_mm512_cmp_ps_mask(r, ev, _CMP_GT_OQ),
+                                             _mm512_mul_ps(hr, hr), r);
+        const __m512 dx = _mm512_mul_ps(g, _mm512_sub_ps(xv, xj)),
+                     dy = _mm512_mul_ps(g, _mm512_sub_ps(yv, yj)),
+                     dz = _mm512_mul_ps(g, _mm512_sub_ps(zv, zj));
+        _mm512_storeu_ps(cgx + k, dx);
+        _mm512_storeu_ps(cgy + k, dy);
+        _mm512_storeu_ps(cgz + k, dz);
+        sx = _mm512_add_ps(sx, dx);
+        sy = _mm512_add_ps(sy, dy);
+        sz = _mm512_add_ps(sz, dz);
+        sq = _mm512_add_ps(sq, _mm512_mul_ps(_mm512_mul_ps(g, g), r2));
+        sm = _mm512_add_ps(sm, _mm512_mul_ps(g, r2));
+    }
+    out[0] = hsum(sx);
+    out[1] = hsum(sy);
+    out[2] = hsum(sz);
+    out[3] = hsum(sq);
+    out[4] = hsum(sm);
 }
 
 __attribute__((target("avx512f"))) static float divergence_real_avx512(
@@ -436,7 +506,13 @@ __attribute__((target("avx512f"))) static float divergence_real_avx512(
     return hsum(a);
 }
 
-__attribute__((target("avx512f"))) static void apply_real_avx512(const float *pk, const int *idx,
+/* The update pass reads only s of each neighbour: one gather of 16 floats
+ * (from v->df_s, which pk[3] copies) in place of sixteen 16-byte record
+ * loads and their transpose, three of whose four values it never used.
+ * Measured in one process, the two alternating on the same state (fig1
+ * under DFSPH, 2500 update passes, loaded machine): 0.88x the time of
+ * the record loads. Values are moved, never computed: the same bits. */
+__attribute__((target("avx512f"))) static void apply_real_avx512(const float *s, const int *idx,
                                                                  const float *gx, const float *gy,
                                                                  const float *gz, int n, float si,
                                                                  float out[3])
@@ -444,8 +520,7 @@ __attribute__((target("avx512f"))) static void apply_real_avx512(const float *pk
     const __m512 sv = _mm512_set1_ps(si);
     __m512 a = _mm512_setzero_ps(), b = a, c = a;
     for (int k = 0; k < n; k += LANES) {
-        __m512 sj, uj, wj, tj;
-        load_svel(pk, idx + k, &sj, &uj, &wj, &tj);
+        const __m512 sj = _mm512_i32gather_ps(_mm512_loadu_si512(idx + k), s, 4);
         const __m512 f = _mm512_add_ps(sv, sj);
         a = _mm512_add_ps(a, _mm512_mul_ps(f, _mm512_loadu_ps(gx + k)));
         b = _mm512_add_ps(b, _mm512_mul_ps(f, _mm512_loadu_ps(gy + k)));
@@ -518,7 +593,7 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
     float sum[3];
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512)
-        apply_real_avx512(v->pk, idx, cgx, cgy, cgz, n, si, sum);
+        apply_real_avx512(s, idx, cgx, cgy, cgz, n, si, sum);
     else
 #endif
     {
@@ -702,15 +777,6 @@ static void sum_add(void *ctxp, int part, int b, int e)
     }
 }
 
-/* After a pass that set s: s into the packed copy (see sum_add). */
-static void pack_s(void *ctxp, int part, int b, int e)
-{
-    (void)part;
-    ms_volume *v = ((dfsph_ctx *)ctxp)->v;
-    for (int i = b; i < e; ++i)
-        v->pk[8 * (size_t)i + 3] = v->df_s[i];
-}
-
 /* One pass of kind over all particles; the average error of an error pass. */
 static float run(ms_volume *v, dfsph_ctx *ctx, pass_kind kind)
 {
@@ -722,8 +788,6 @@ static float run(ms_volume *v, dfsph_ctx *ctx, pass_kind kind)
     ms_vpool_run(v->pool, dfsph_part, ctx, v->n);
     if (kind == F_APPLY)
         ms_vpool_run(v->pool, sum_add, ctx, v->n);
-    else if (kind != F_PRESSURE)
-        ms_vpool_run(v->pool, pack_s, ctx, v->n);
     int64_t err = 0;
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) /* integers: order-free */
         err += ctx->err[p];
@@ -761,8 +825,10 @@ static void repack(void *ctxp, int part, int b, int e)
     }
 }
 
-/* The packed copy's pressure slot back from s to the pressure density.c
- * wrote (0 under DFSPH), for the force pass after the divergence solve. */
+/* The packed copy's pressure slot set to prs for the force pass after the
+ * divergence solve. Until round nine the passes kept s there; they no
+ * longer write it, so this only restates prs (one cheap per-particle pass,
+ * kept so the force pass never depends on what last wrote the slot). */
 static void unpack_s(void *ctxp, int part, int b, int e)
 {
     (void)part;
@@ -806,18 +872,38 @@ static ms_status reserve_terms(ms_volume *v)
 
 /* The Jacobi loop shared by both solves: error and update passes until
  * the average error is at most eta after at least least iterations, or
- * the cap. first: the first error pass is done already (its average). */
+ * the cap. first: the first error pass is done already (its average).
+ *
+ * An update whose error (the one it was computed from) already met eta
+ * ends the solve once the minimum is done, with no error pass after it:
+ * that pass would only confirm what the error before it said, the
+ * update moving the iterate towards the solution. Measured (round nine,
+ * the error before and after each iteration, 120 frames a scene): the
+ * divergence solve's first error met eta before its one obligatory
+ * update in 90 % of fig1's sub-steps (69 % stir, 41 % fig4c), the
+ * density solve's second in 57 % (99 % stir, 95 % fig4c); over about
+ * 4000 such solves (150 frames each of fig1, fig4c, fig9a, fig10,
+ * default, glass, stir) every confirming pass met eta too, so the
+ * updates, and the bytes, are those of the loop with the check. Each was
+ * one of the 9 neighbour passes of a sub-step: about 1.5 fewer a
+ * sub-step on those scenes. What the check would catch and this does
+ * not: an update that raises the average error past eta again (a
+ * Jacobi step can overshoot); none was seen. *reached is then the error
+ * before the last update. */
 static int solve(ms_volume *v, dfsph_ctx *ctx, pass_kind error, float eta, int least, int cap,
                  const float *first, float *reached)
 {
     int it = 0;
+    float avg = first ? *first : run(v, ctx, error);
     for (;;) {
-        float avg = first && it == 0 ? *first : run(v, ctx, error);
         *reached = avg;
         if ((avg <= eta && it >= least) || it >= cap)
             break;
         run(v, ctx, F_APPLY);
         it++;
+        if (avg <= eta && it >= least)
+            break; /* met before this update: no confirming pass */
+        avg = run(v, ctx, error);
     }
     return it;
 }
