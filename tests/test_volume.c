@@ -1036,6 +1036,11 @@ static uint64_t run_dam_law(int threads, int isa, ms_pressure law)
         memcpy(&b, &hf[c], 4);
         hsh = (hsh ^ b) * 1099511628211ull;
     }
+    for (int i = 0; i < v->n; ++i) { /* the pressure output too (DFSPH's read-out) */
+        uint32_t b;
+        memcpy(&b, &v->prs[i], 4);
+        hsh = (hsh ^ b) * 1099511628211ull;
+    }
     ms_volume_destroy(v);
     return hsh;
 }
