@@ -81,8 +81,9 @@ static inline float cube(float a)
 #if MS_VOLUME_HAVE_AVX512
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
-static float weight_sum(const ms_volume *v, const float *restrict r2, int n,
-                        const float *restrict g2, int gn, int *coincident)
+static float
+weight_sum(const ms_volume *v, const float *restrict r2, int n, const float *restrict g2, int gn,
+           int *coincident)
 {
     const float h = v->K.h, h2 = v->K.h2, eps2 = v->eps2;
     float acc[LANES] = {0}, cl[LANES] = {0};

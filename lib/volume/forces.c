@@ -153,9 +153,9 @@ static pair_sums lanes_sum(const pair_lanes *a)
  * (reflection as 2 wall - x and a sign flip, IEEE sqrt and division, no
  * fused multiply-adds), so the same seven terms, bit for bit, added to
  * the lane accumulators a[0..7) (entry k + l to lane l, as the C loop). */
-__attribute__((target("avx512f,avx512dq"), always_inline)) static inline void
-image_terms_avx512(const ms_volume *v, const int *restrict gidx, const float *restrict gr2, int i,
-                   const float wall[3], __m512 a[7])
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline void image_terms_avx512(
+    const ms_volume *v, const int *restrict gidx, const float *restrict gr2, int i,
+    const float wall[3], __m512 a[7])
 {
     const float *pi8 = v->pk + 8 * (size_t)i;
     const __m512 zero = _mm512_setzero_ps(), h = _mm512_set1_ps(v->K.h);
@@ -198,10 +198,10 @@ image_terms_avx512(const ms_volume *v, const int *restrict gidx, const float *re
  * gn entries (padded to 16) are added here when gn > 0; with out, the
  * lanes are stored there instead of summed (the C loop then adds shape
  * images). */
-__attribute__((target("avx512f,avx512dq"))) static pair_sums
-sums_avx512(const ms_volume *v, const int *restrict idx, const float *restrict r2s, int n, int i,
-            const int *restrict gidx, const float *restrict gr2, int gn, const float wall[3],
-            pair_lanes *out)
+__attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
+    const ms_volume *v, const int *restrict idx, const float *restrict r2s, int n, int i,
+    const int *restrict gidx, const float *restrict gr2, int gn, const float wall[3],
+    pair_lanes *out)
 {
     const float *pi8 = v->pk + 8 * (size_t)i;
     const __m512 xi = _mm512_set1_ps(pi8[0]), yi = _mm512_set1_ps(pi8[1]),
