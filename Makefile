@@ -407,3 +407,14 @@ bench-commit:
 .PHONY: format-check
 format-check:
 	@tools/format_check.sh
+
+# ---- issue 12, round nine: a one-process A/B of two library builds ----
+# build/bin/volume_ab A.so B.so dam N REPS | scene FILE REPS: both builds
+# dlmopen'ed, sub-steps or frames in turn (tools/ab/volume_ab.c). Not part
+# of `all` or `bench`: `make volume-ab`.
+.PHONY: volume-ab
+volume-ab: $(BUILD)/bin/volume_ab
+$(BUILD)/bin/volume_ab: tools/ab/volume_ab.c include/modesplit/volume.h
+	@mkdir -p $(@D)
+	@echo "  CC      $@"
+	$(Q)$(CC) -Iinclude $(BASEFLAGS) -D_GNU_SOURCE $(CFLAGS) -o $@ $< $(LDSAN) $(SYS_LIBS)

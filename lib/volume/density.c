@@ -70,15 +70,20 @@ static inline float cube(float a)
     return a * a * a;
 }
 
-/* Sum of the kernel weights of entries r2[0..n), n a multiple of the lanes
- * (padding has r^2 = h^2: weight 0), in lanes, summed in ms_lanes_sum's
- * fixed order; the coincident pairs (r^2 < eps^2) are counted. Built for
- * AVX-512, AVX2 and the baseline (no FMA contraction with -std=c11: the
- * same bits on each). */
+/* Sum of the kernel weights of a particle's real run r2[0..n) and then
+ * its image run g2[0..gn) (n, gn multiples of the lanes; padding has
+ * r^2 = h^2: weight 0), entry k of each run in lane k % 16, the lanes
+ * summed once in ms_lanes_sum's fixed order; the coincident real pairs
+ * (r^2 < eps^2) are counted. Built for AVX-512, AVX2 and the baseline
+ * (no FMA contraction with -std=c11: the same bits on each). Issue 12,
+ * round nine: the image run used to be summed on its own and added to
+ * the real run's sum (float round-off only). */
 #if MS_VOLUME_HAVE_AVX512
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
-static float weight_sum(const ms_volume *v, const float *restrict r2, int n, int *coincident)
+static float
+weight_sum(const ms_volume *v, const float *restrict r2, int n, const float *restrict g2, int gn,
+           int *coincident)
 {
     const float h = v->K.h, h2 = v->K.h2, eps2 = v->eps2;
     float acc[LANES] = {0}, cl[LANES] = {0};
@@ -89,6 +94,9 @@ static float weight_sum(const ms_volume *v, const float *restrict r2, int n, int
                 acc[l] += cube(h2 - q);
                 cl[l] += q < eps2 ? 1.0f : 0.0f;
             }
+        for (int k = 0; k < gn; k += LANES)
+            for (int l = 0; l < LANES; ++l)
+                acc[l] += cube(h2 - g2[k + l]);
     } else {
         for (int k = 0; k < n; k += LANES)
             for (int l = 0; l < LANES; ++l) {
@@ -96,6 +104,11 @@ static float weight_sum(const ms_volume *v, const float *restrict r2, int n, int
                 float t = h - sqrtf(q);
                 acc[l] += t * t * t;
                 cl[l] += q < eps2 ? 1.0f : 0.0f;
+            }
+        for (int k = 0; k < gn; k += LANES)
+            for (int l = 0; l < LANES; ++l) {
+                float t = h - sqrtf(g2[k + l]);
+                acc[l] += t * t * t;
             }
     }
     *coincident = (int)ms_lanes_sum(cl);
@@ -108,6 +121,7 @@ static void density_part(void *ctxp, int part, int b, int e)
     ms_volume *v = ctx->v;
     ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
     const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
+    const int dfsph = v->desc.pressure == MS_PRESSURE_DFSPH;
     const float mw = v->mass * (poly6 ? v->K.poly6 : v->K.spiky);
     const float rho0 = v->desc.rest_density;
     int coincident = 0, surface = 0;
@@ -125,10 +139,18 @@ static void density_part(void *ctxp, int part, int b, int e)
         }
         const int nreal = v->nl_count[i], nghost = v->gl_count[i];
         const size_t begin = (size_t)v->nl_begin[i], gbegin = (size_t)v->gl_begin[i];
-        int close = 0, gclose = 0;
-        float sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), &close);
-        if (nghost)
-            sum += weight_sum(v, G->r2 + gbegin, (int)(G->len - gbegin), &gclose);
+        int close = 0;
+        const float *g2 = nghost ? G->r2 + gbegin : NULL; /* an image run, if any */
+        const int gn = nghost ? (int)(G->len - gbegin) : 0;
+        float sum;
+        if (!dfsph) {
+            sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), g2, gn, &close);
+        } else { /* round eight's order: see forces.c's image_serial_c */
+            int unused;
+            sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), NULL, 0, &close);
+            if (gn)
+                sum += weight_sum(v, g2, gn, NULL, 0, &unused);
+        }
         v->nbr[i] = nreal + nghost;
         coincident += close - 1; /* itself */
         pairs += nreal - 1 + nghost;
