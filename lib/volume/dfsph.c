@@ -270,9 +270,11 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
  * Returns sum_k g_ik r_ik^2 over the same entries: the trace of i's
  * gradient moment in units of 1 / (m G) (the pressure read-out's M). */
 #if MS_VOLUME_HAVE_AVX512
-__attribute__((target("avx512f"))) static void factors_real_avx512(
-    const float *pk, const int *idx, const float *r2s, int n, float h, float eps, float xi,
-    float yi, float zi, float *cgx, float *cgy, float *cgz, float out[5]);
+__attribute__((target("avx512f"))) static void factors_real_avx512(const float *pk, const int *idx,
+                                                                   const float *r2s, int n, float h,
+                                                                   float eps, float xi, float yi,
+                                                                   float zi, float *cgx, float *cgy,
+                                                                   float *cgz, float out[5]);
 #endif
 
 static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst,
@@ -303,8 +305,7 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
     } else
 #endif
     {
-        float sx[LANES] = {0}, sy[LANES] = {0}, sz[LANES] = {0}, sq[LANES] = {0},
-              sm[LANES] = {0};
+        float sx[LANES] = {0}, sy[LANES] = {0}, sz[LANES] = {0}, sq[LANES] = {0}, sm[LANES] = {0};
         for (int k = 0; k < n; k += LANES)
             for (int l = 0; l < LANES; ++l) {
                 const int j = idx[k + l];
@@ -415,8 +416,10 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
             _mm512_insertf32x4(_mm512_castps128_ps512(MS_DFSPH_REC(k)), MS_DFSPH_REC((k) + 4), 1), \
             MS_DFSPH_REC((k) + 8), 2),                                                             \
         MS_DFSPH_REC((k) + 12), 3)
-__attribute__((target("avx512f"), always_inline)) static inline void load_rec(
-    const float *b, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
+__attribute__((target("avx512f"), always_inline)) static inline void load_rec(const float *b,
+                                                                              const int *restrict j,
+                                                                              __m512 *s, __m512 *u,
+                                                                              __m512 *w, __m512 *t)
 {
     const __m512 a0 = MS_DFSPH_ROW(0), a1 = MS_DFSPH_ROW(1), a2 = MS_DFSPH_ROW(2),
                  a3 = MS_DFSPH_ROW(3);
@@ -437,7 +440,6 @@ __attribute__((target("avx512f"), always_inline)) static inline void load_svel(
     load_rec(pk + 3, j, s, u, w, t);
 }
 
-
 /* ms_lanes_sum in registers (the same tree order, so the same bits): the
  * store and sixteen scalar reloads cost more than the sums. */
 __attribute__((target("avx512f"), always_inline)) static inline float hsum(__m512 a)
@@ -454,9 +456,11 @@ __attribute__((target("avx512f"), always_inline)) static inline float hsum(__m51
  * neighbours' positions as the 16-byte records x, y, z, p of v->pk (which
  * the density pass filled from the positions the solves use) in place of
  * three gathers: the same bits. */
-__attribute__((target("avx512f"))) static void factors_real_avx512(
-    const float *pk, const int *idx, const float *r2s, int n, float h, float eps, float xi,
-    float yi, float zi, float *cgx, float *cgy, float *cgz, float out[5])
+__attribute__((target("avx512f"))) static void factors_real_avx512(const float *pk, const int *idx,
+                                                                   const float *r2s, int n, float h,
+                                                                   float eps, float xi, float yi,
+                                                                   float zi, float *cgx, float *cgy,
+                                                                   float *cgz, float out[5])
 {
     const __m512 hv = _mm512_set1_ps(h), ev = _mm512_set1_ps(eps), zero = _mm512_setzero_ps();
     const __m512 xv = _mm512_set1_ps(xi), yv = _mm512_set1_ps(yi), zv = _mm512_set1_ps(zi);
@@ -468,8 +472,8 @@ __attribute__((target("avx512f"))) static void factors_real_avx512(
         const __m512 r = _mm512_sqrt_ps(r2);
         __m512 hr = _mm512_sub_ps(hv, r);
         hr = _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(hr, zero, _CMP_GT_OQ), hr);
-        const __m512 g = _mm512_maskz_div_ps(_mm512_cmp_ps_mask(r, ev, _CMP_GT_OQ),
-                                             _mm512_mul_ps(hr, hr), r);
+        const __m512 g =
+            _mm512_maskz_div_ps(_mm512_cmp_ps_mask(r, ev, _CMP_GT_OQ), _mm512_mul_ps(hr, hr), r);
         const __m512 dx = _mm512_mul_ps(g, _mm512_sub_ps(xv, xj)),
                      dy = _mm512_mul_ps(g, _mm512_sub_ps(yv, yj)),
                      dz = _mm512_mul_ps(g, _mm512_sub_ps(zv, zj));
