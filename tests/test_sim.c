@@ -317,13 +317,7 @@ static void helper_sim(ms_sim *sim, int fnx, int fny, int snx, int sny)
 
 static void helper_sim_free(ms_sim *sim)
 {
-    ms_free(sim->ix0);
-    ms_free(sim->ix1);
-    ms_free(sim->iy0);
-    ms_free(sim->iy1);
-    ms_free(sim->wx);
-    ms_free(sim->wy);
-    ms_free(sim->rowtmp);
+    ms_sim_upsample_free(sim);
     free(sim->wave_colmap);
     free(sim->wave_rowsum);
     free(sim->excite);

@@ -445,13 +445,7 @@ void ms_sim_destroy(ms_sim *sim)
     ms_free(sim->u_prev);
     ms_free(sim->excite);
     ms_free(sim->combined);
-    ms_free(sim->ix0);
-    ms_free(sim->ix1);
-    ms_free(sim->iy0);
-    ms_free(sim->iy1);
-    ms_free(sim->wx);
-    ms_free(sim->wy);
-    ms_free(sim->rowtmp);
+    ms_sim_upsample_free(sim);
     ms_free(sim->mask_static);
     ms_free(sim->mask);
     ms_free(sim->drop_order);

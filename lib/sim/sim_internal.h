@@ -179,6 +179,8 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc);
 
 /* upsample.c: up[j*snx + i] = bilinear(f at the wave cell centre) (eq. 20) */
 ms_status ms_sim_upsample_init(ms_sim *sim);
+/* Frees what ms_sim_upsample_init made. */
+void ms_sim_upsample_free(ms_sim *sim);
 void ms_sim_upsample(const ms_sim *sim, const float *field, float *rowtmp, float *out);
 /* out = up(field) + wave */
 void ms_sim_upsample_add(const ms_sim *sim, const float *field, const float *wave, float add,

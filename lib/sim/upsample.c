@@ -54,6 +54,17 @@ ms_status ms_sim_upsample_init(ms_sim *sim)
     return st;
 }
 
+void ms_sim_upsample_free(ms_sim *sim)
+{
+    ms_free(sim->ix0);
+    ms_free(sim->ix1);
+    ms_free(sim->iy0);
+    ms_free(sim->iy1);
+    ms_free(sim->wx);
+    ms_free(sim->wy);
+    ms_free(sim->rowtmp);
+}
+
 /* xrows[j*snx + i] = the SPH row j at wave column i. */
 static void upsample_x(const ms_sim *sim, const float *field, float *restrict xrows)
 {
