@@ -121,7 +121,6 @@ static void density_part(void *ctxp, int part, int b, int e)
     ms_volume *v = ctx->v;
     ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
     const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
-    const int dfsph = v->desc.pressure == MS_PRESSURE_DFSPH;
     const float mw = v->mass * (poly6 ? v->K.poly6 : v->K.spiky);
     const float rho0 = v->desc.rest_density;
     int coincident = 0, surface = 0;
@@ -142,15 +141,7 @@ static void density_part(void *ctxp, int part, int b, int e)
         int close = 0;
         const float *g2 = nghost ? G->r2 + gbegin : NULL; /* an image run, if any */
         const int gn = nghost ? (int)(G->len - gbegin) : 0;
-        float sum;
-        if (!dfsph) {
-            sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), g2, gn, &close);
-        } else { /* round eight's order: see forces.c's image_serial_c */
-            int unused;
-            sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), NULL, 0, &close);
-            if (gn)
-                sum += weight_sum(v, g2, gn, NULL, 0, &unused);
-        }
+        float sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), g2, gn, &close);
         v->nbr[i] = nreal + nghost;
         coincident += close - 1; /* itself */
         pairs += nreal - 1 + nghost;

@@ -339,28 +339,6 @@ static void image_lanes_c(const ms_volume *v, const int *restrict gidx, const fl
     }
 }
 
-/* DFSPH keeps round eight's order (the real run's lane sums, then the
- * images one by one; the C terms are those of the AVX-512 code bit for
- * bit): its hydrostatic test's worst slab sits at a knife edge of the
- * solver's iteration counts (2.3 % off with the new order, over its 2 %
- * bar; test_volume.c says why), and r9-dfsph tunes that solver against
- * these bytes. */
-static void image_serial_c(const ms_volume *v, const int *restrict gidx, const float *restrict gr2,
-                           int gn, int i, const float wall[3], pair_sums *s)
-{
-    for (int k = 0; k < gn; ++k) {
-        float t[7];
-        image_term(v, gidx[k], gr2[k], i, wall, t);
-        s->px += t[0];
-        s->py += t[1];
-        s->pz += t[2];
-        s->vx += t[3];
-        s->vy += t[4];
-        s->vz += t[5];
-        s->d += t[6];
-    }
-}
-
 static pair_sums sums_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
 {
     const int *restrict idx = lst->idx + v->nl_begin[i];
@@ -376,21 +354,6 @@ static pair_sums sums_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist
     if (gn)
         ms_volume_walls_near(v, v->x[i], v->y[i], v->z[i], wall);
     pair_lanes a;
-    if (v->desc.pressure == MS_PRESSURE_DFSPH) { /* round eight's order (image_serial_c) */
-        pair_sums s;
-#if MS_VOLUME_HAVE_AVX512
-        if (v->isa == MS_VOLUME_ISA_AVX512)
-            s = sums_avx512(v, idx, r2s, n, i, gidx, gr2, 0, wall, NULL);
-        else
-#endif
-        {
-            memset(&a, 0, sizeof a);
-            real_lanes_c(v, idx, r2s, n, i, &a);
-            s = lanes_sum(&a);
-        }
-        image_serial_c(v, gidx, gr2, v->gl_count[i], i, wall, &s);
-        return s;
-    }
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512) {
         if (!gn || !(v->c_d[i] < v->K.h)) /* wall images only */
