@@ -110,7 +110,7 @@
  * every viscosity (the lattice's moment); now, at viscosities 0.5-8 and
  * with the depth counted as the liquid above (tests/test_volume.c), every
  * layer deeper than 2 h is within 1.7 % of rho0 g d, every slab h thick
- * deeper than h within 1.4 %, the slope of p within 0.8 % of rho0 g.
+ * below the first layer within 1.4 %, the slope of p within 0.8 % of rho0 g.
  * Next to the free surface single layers alternate (1.5 spacings down
  * 2.9-4.7 % high, 2.5 down 1.6-3.5 % low) as under the weakly compressible
  * laws, whose pressure is their density's (ideal gas +6.1 / -2.5 %): the
