@@ -309,7 +309,11 @@ END_TEST
  * the settling of the liquid below as depth: measured on the settled
  * 0.28 m column, the layer 2.5 spacings down sits 0.7-0.8 mm below its
  * lattice height under DFSPH (1.5 mm under the ideal gas, c = 20 m/s),
- * 1.5-3 % of its depth, the top layer 3.6 mm (sunk into the second). */
+ * 1.5-3 % of its depth, the top layer 3.6 mm (sunk into the second: its
+ * kernel lacks its upper half, so it is pushed only once it sits closer
+ * to the layer below than a spacing). So
+ * the top layer's centres + spacing/2 would put the surface 3.6 mm low
+ * and the layer 2.5 spacings down 2.9-3.6 % high under DFSPH. */
 typedef struct {
     float z;
     int i;
