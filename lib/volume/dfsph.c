@@ -50,6 +50,41 @@
  * prediction) and 3.9 (inside). The divergence solve is not warm-started:
  * it stops after 1 iteration (SPlisHSPlasH's minimum) on the shipped flows.
  *
+ * The density iterations swing sub-step by sub-step at rest (round ten,
+ * measured on a settled 0.28 m tank at viscosity 3: 2, 18, 2, 19, 2, 15
+ * ...; 8.3 a sub-step, up to 19; the peer's scene 2, 7, 2, 5, 2, 11).
+ * Not the dt rescaling (the tank's sub-step is a constant 1/240 s). The
+ * cause: the liquid sits at the bound (its average compression at each
+ * sub-step's start 0.086-0.1 %, eta 0.1 %), and half a warm start leaves
+ * half the hydrostatic pressure, the column-wide smooth mode Jacobi
+ * converges slowest on, to be rebuilt every sub-step: the first error
+ * (0.108-0.151 %) lies just above eta, and whether 2 or 18 iterations
+ * bring it under hinges on that small difference; an under-solved
+ * sub-step (a total pressure 0.5-0.8 of the mean) leaves too small a warm
+ * start for the next, which over-solves (1.4x), and so on. A larger share
+ * steadies it (one share inside; density iterations a sub-step mean / max
+ * at viscosities 5 and 3, the settled tank's fastest particle on
+ * average): 0.5: 8.8 / 18, 8.3 / 19, 0.04 m/s; 0.7: 5.2 / 16, 5.1 / 13,
+ * 0.05; 0.8: 3.5 / 11, 3.5 / 11, 0.06; 0.9: 2.3 / 11, 2.3 / 10, 0.11; 1:
+ * 2 / 2, 0.25 m/s (the 2-iteration minimum then only ever adds pressure:
+ * it ratchets up and the liquid expands). Not kept: 0.8 everywhere inside
+ * ran the Martin & Moyce front ahead (RMS 0.335 against the bar's 0.327);
+ * 0.8 at 95 % of a full neighbourhood and 0.5 elsewhere inside (the tank
+ * 4.7 iterations a sub-step, the peer's scene 3.8 against 4.6, fig1 3.03
+ * against 3.22) left the hydrostatic test's largest compression at 1.098 %
+ * (its bar 1 %) and glass in a state whose extraction band search misses
+ * a root by 4.4e-4 m (extract.c; 0.75 and 0.65 deep: the deepest slab's
+ * pressure 2.2 % low, the swing back); one density iteration at least
+ * (2 passes fewer where the minimum binds: fig1, stir, glass): the
+ * deepest slab 2.04 % low (bar 2 %). Branch i12-dfsph-wip holds the 0.8 /
+ * 0.5 shares. Also tried: a warm start from the mean of the last two
+ * sub-steps' totals (no change at one half), SPlisHSPlasH's gate on the
+ * predicted compression (a pass more, 7.4 iterations on the tank), and a
+ * projected Jacobi that may lower the total towards 0, so that a full
+ * warm start can be taken back: unstable without relaxation (fig1
+ * compressed 344 %), with a relaxation of 1/4 on the lowering updates the
+ * settled tank's fastest particle at 0.25 m/s.
+ *
  * The warm start costs no neighbour pass of its own (round ten; it was
  * one of a sub-step's 9): its velocity change, dt / dt_last^2 m G sum_j
  * (w_i + w_j) g_ij (x_i - x_j) with w the share of the last total s,
