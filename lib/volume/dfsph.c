@@ -50,6 +50,51 @@
  * prediction) and 3.9 (inside). The divergence solve is not warm-started:
  * it stops after 1 iteration (SPlisHSPlasH's minimum) on the shipped flows.
  *
+ * The density iterations swing sub-step by sub-step at rest (round ten,
+ * measured on a settled 0.28 m tank at viscosity 3: 2, 18, 2, 19, 2, 15
+ * ...; 8.3 a sub-step, up to 19; the peer's scene 2, 7, 2, 5, 2, 11).
+ * Not the dt rescaling (the tank's sub-step is a constant 1/240 s). The
+ * cause: the liquid sits at the bound (its average compression at each
+ * sub-step's start 0.086-0.1 %, eta 0.1 %), and half a warm start leaves
+ * half the hydrostatic pressure, the column-wide smooth mode Jacobi
+ * converges slowest on, to be rebuilt every sub-step: the first error
+ * (0.108-0.151 %) lies just above eta, and whether 2 or 18 iterations
+ * bring it under hinges on that small difference; an under-solved
+ * sub-step (a total pressure 0.5-0.8 of the mean) leaves too small a warm
+ * start for the next, which over-solves (1.4x), and so on. A larger share
+ * steadies it (one share inside; density iterations a sub-step mean / max
+ * at viscosities 5 and 3, the settled tank's fastest particle on
+ * average): 0.5: 8.8 / 18, 8.3 / 19, 0.04 m/s; 0.7: 5.2 / 16, 5.1 / 13,
+ * 0.05; 0.8: 3.5 / 11, 3.5 / 11, 0.06; 0.9: 2.3 / 11, 2.3 / 10, 0.11; 1:
+ * 2 / 2, 0.25 m/s (the 2-iteration minimum then only ever adds pressure:
+ * it ratchets up and the liquid expands). Not kept: 0.8 everywhere inside
+ * ran the Martin & Moyce front ahead (RMS 0.335 against the bar's 0.327);
+ * 0.8 at 95 % of a full neighbourhood and 0.5 elsewhere inside (the tank
+ * 4.7 iterations a sub-step, the peer's scene 3.8 against 4.6, fig1 3.03
+ * against 3.22) left the hydrostatic test's largest compression at 1.098 %
+ * (its bar 1 %) and glass in a state whose extraction band search misses
+ * a root by 4.4e-4 m (extract.c; 0.75 and 0.65 deep: the deepest slab's
+ * pressure 2.2 % low, the swing back); one density iteration at least
+ * (2 passes fewer where the minimum binds: fig1, stir, glass): the
+ * deepest slab 2.04 % low (bar 2 %). Branch i12-dfsph-wip holds the 0.8 /
+ * 0.5 shares. Also tried: a warm start from the mean of the last two
+ * sub-steps' totals (no change at one half), SPlisHSPlasH's gate on the
+ * predicted compression (a pass more, 7.4 iterations on the tank), and a
+ * projected Jacobi that may lower the total towards 0, so that a full
+ * warm start can be taken back: unstable without relaxation (fig1
+ * compressed 344 %), with a relaxation of 1/4 on the lowering updates the
+ * settled tank's fastest particle at 0.25 m/s.
+ *
+ * The warm start costs no neighbour pass of its own (round ten; it was
+ * one of a sub-step's 9): its velocity change, dt / dt_last^2 m G sum_j
+ * (w_i + w_j) g_ij (x_i - x_j) with w the share of the last total s,
+ * depends on the positions alone, so the factors pass sums it with the
+ * pair terms it computes anyway, and the density solve adds it to v*
+ * (warm_kick, a per-particle pass: the same cap on the speed as an
+ * update). Before, it was an update pass of its own on s = share (dt /
+ * dt_last)^2 S after the kick: the same sum in another order of
+ * operations (the bytes change by round-off).
+ *
  * Each sub-step computes the pair terms g_ij (x_i - x_j) of every real
  * neighbour, and g and x_i - x_j' of every image, once (the factors pass,
  * which also takes the divergence solve's first error) and every
@@ -140,14 +185,15 @@ enum { LANES = MS_VOLUME_LANES };
 enum { MIN_DENSITY_ITERATIONS = 2, MIN_DIVERGENCE_ITERATIONS = 1 };
 #define WARM_FACTOR 0.5f
 
-typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSURE, F_WARM } pass_kind;
+typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSURE } pass_kind;
 
 typedef struct dfsph_ctx {
     ms_volume *v;
     pass_kind kind;
     float dt;       /* s, the sub-step (density) or the error's scale (divergence) */
-    float scale;    /* F_APPLY: 1/dt (density) or 1 (divergence), 1/s or 1; F_WARM: the
-                       last solve's s rescaled to this dt, (dt / dt_last)^2 */
+    float scale;    /* F_APPLY: 1/dt (density) or 1 (divergence), 1/s or 1; warm_kick:
+                       the last solve's s rescaled to this dt, (dt / dt_last)^2 */
+    float warm;     /* warm_kick: dt / dt_last^2 m G, the factor of df_wx..z */
     int64_t err[MS_VOLUME_MAX_THREADS]; /* sum of e_i / rho0 (or dt e_i / rho0), 2^-32 units */
     /* F_FACTORS: the gradient moments of the particles inside the liquid
      * (2^-32 units) and their count; F_PRESSURE: the moment M, the weight
@@ -262,6 +308,13 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
     }
 }
 
+/* Particle i's share of its last total s in the warm start (see the
+ * header): 0 at the surface, WARM_FACTOR inside. */
+static inline float warm_share(const ms_volume *v, int i)
+{
+    return ms_volume_is_surface(v, i) ? 0.0f : WARM_FACTOR;
+}
+
 /* The Jacobi diagonal of particle i: how much rho*_i falls per unit of s_i
  * when i moves by -(s_i/dt) G_i (G_i = sum_k m grad W_ik over the real
  * neighbours and the images) and each real neighbour j answers with
@@ -274,13 +327,13 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
  * them a particle in a corner (seven images of itself) had its diagonal
  * underestimated several times over and a tank at rest blew up.
  * Returns sum_k g_ik r_ik^2 over the same entries: the trace of i's
- * gradient moment in units of 1 / (m G) (the pressure read-out's M). */
+ * gradient moment in units of 1 / (m G) (the pressure read-out's M).
+ * Also sums the warm start's sum_k (w_i + w_k) g_ik (x_i - x_k) into
+ * df_wx..z (w: df_sum, set by warm_weights; the header). */
 #if MS_VOLUME_HAVE_AVX512
-__attribute__((target("avx512f"))) static void factors_real_avx512(const float *pk, const int *idx,
-                                                                   const float *r2s, int n, float h,
-                                                                   float eps, float xi, float yi,
-                                                                   float zi, float *cgx, float *cgy,
-                                                                   float *cgz, float out[5]);
+__attribute__((target("avx512f"))) static void factors_real_avx512(
+    const float *pk, const int *idx, const float *r2s, int n, float h, float eps, float xi,
+    float yi, float zi, float *cgx, float *cgy, float *cgz, float wi, float out[8]);
 #endif
 
 static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst,
@@ -297,21 +350,28 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
     cgx += v->nl_begin[i];
     cgy += v->nl_begin[i];
     cgz += v->nl_begin[i];
+    const float *restrict w = v->df_sum; /* the warm start's s (warm_weights) */
+    const float wi = w[i];
     float gx, gy, gz, q; /* in units of (m G)^2: grad W = -G g d */
     float mom;           /* sum_j g r^2: the gradient moment's trace */
+    float ax, ay, az;    /* the warm start's sum */
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512) {
-        float o[5];
-        factors_real_avx512(v->pk, idx, r2s, n, h, eps, xi, yi, zi, cgx, cgy, cgz, o);
+        float o[8];
+        factors_real_avx512(v->pk, idx, r2s, n, h, eps, xi, yi, zi, cgx, cgy, cgz, wi, o);
         gx = o[0];
         gy = o[1];
         gz = o[2];
         q = o[3];
         mom = o[4];
+        ax = o[5];
+        ay = o[6];
+        az = o[7];
     } else
 #endif
     {
         float sx[LANES] = {0}, sy[LANES] = {0}, sz[LANES] = {0}, sq[LANES] = {0}, sm[LANES] = {0};
+        float wx[LANES] = {0}, wy[LANES] = {0}, wz[LANES] = {0};
         for (int k = 0; k < n; k += LANES)
             for (int l = 0; l < LANES; ++l) {
                 const int j = idx[k + l];
@@ -325,24 +385,35 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
                 sz[l] += dz;
                 sq[l] += g * g * r2s[k + l];
                 sm[l] += g * r2s[k + l];
+                const float f = wi + w[j];
+                wx[l] += f * dx;
+                wy[l] += f * dy;
+                wz[l] += f * dz;
             }
         gx = ms_lanes_sum(sx);
         gy = ms_lanes_sum(sy);
         gz = ms_lanes_sum(sz);
         q = ms_lanes_sum(sq);
         mom = ms_lanes_sum(sm);
+        ax = ms_lanes_sum(wx);
+        ay = ms_lanes_sum(wy);
+        az = ms_lanes_sum(wz);
     }
     if (v->coincident > 0)
         for (int k = 0; k < v->nl_count[i]; ++k) {
-            float w[3];
-            if (coincident(v, i, idx[k], r2s[k], w)) {
-                cgx[k] = w[0]; /* the cached pair term of the solves' passes */
-                cgy[k] = w[1];
-                cgz[k] = w[2];
-                gx += w[0];
-                gy += w[1];
-                gz += w[2];
+            float u[3];
+            if (coincident(v, i, idx[k], r2s[k], u)) {
+                cgx[k] = u[0]; /* the cached pair term of the solves' passes */
+                cgy[k] = u[1];
+                cgz[k] = u[2];
+                gx += u[0];
+                gy += u[1];
+                gz += u[2];
                 q += h2 * h2;
+                const float f = wi + w[idx[k]];
+                ax += f * u[0];
+                ay += f * u[1];
+                az += f * u[2];
             }
         }
     float qm = 0.0f; /* the images' mirror terms */
@@ -364,6 +435,11 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
             gx += g * (xi - pj[0]);
             gy += g * (yi - pj[1]);
             gz += g * (zi - pj[2]);
+            /* the warm start's term as apply_of takes an image's */
+            const float f = (wi + w[gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1)]) * g;
+            ax += f * c[4 * k + 1];
+            ay += f * c[4 * k + 2];
+            az += f * c[4 * k + 3];
             mom += g * (c[4 * k + 1] * c[4 * k + 1] + c[4 * k + 2] * c[4 * k + 2] +
                         c[4 * k + 3] * c[4 * k + 3]);
         }
@@ -375,12 +451,12 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
             const float g = c[4 * k];
             const float d[3] = {c[4 * k + 1], c[4 * k + 2], c[4 * k + 3]};
             float u[3];
-            float w;
+            float wt;
             if (j == i) { /* i's own image moves as M dv_i */
                 u[0] = gx;
                 u[1] = gy;
                 u[2] = gz;
-                w = -1.0f;
+                wt = -1.0f;
             } else { /* j answers to i, and to i's image in j's list */
                 u[0] = xi - x[j];
                 u[1] = yi - y[j];
@@ -388,10 +464,10 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
                 float r2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
                 if (!(r2 < h2))
                     continue;
-                w = 2.0f * grad_factor(r2, h, eps);
+                wt = 2.0f * grad_factor(r2, h, eps);
             }
             mirror(v, i, f, u);
-            qm += w * g * (u[0] * d[0] + u[1] * d[1] + u[2] * d[2]);
+            qm += wt * g * (u[0] * d[0] + u[1] * d[1] + u[2] * d[2]);
         }
     }
     const float mg = v->mass * v->K.spiky_grad;
@@ -400,6 +476,9 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
      * shrink it towards 0 and blow the update up */
     float den = mg * mg * (gx * gx + gy * gy + gz * gz + q + (qm > 0.0f ? qm : 0.0f));
     v->df_inv_diag[i] = den > 0.0f ? 1.0f / den : 0.0f;
+    v->df_wx[i] = ax;
+    v->df_wy[i] = ay;
+    v->df_wz[i] = az;
     return mom;
 }
 
@@ -461,16 +540,16 @@ __attribute__((target("avx512f"), always_inline)) static inline float hsum(__m51
  * loop (IEEE square root and division, no fused multiply-adds), the
  * neighbours' positions as the 16-byte records x, y, z, p of v->pk (which
  * the density pass filled from the positions the solves use) in place of
- * three gathers: the same bits. */
-__attribute__((target("avx512f"))) static void factors_real_avx512(const float *pk, const int *idx,
-                                                                   const float *r2s, int n, float h,
-                                                                   float eps, float xi, float yi,
-                                                                   float zi, float *cgx, float *cgy,
-                                                                   float *cgz, float out[5])
+ * three gathers: the same bits. The fourth float of each record holds the
+ * warm start's s then (warm_weights), summed as the C loop sums w_j. */
+__attribute__((target("avx512f"))) static void factors_real_avx512(
+    const float *pk, const int *idx, const float *r2s, int n, float h, float eps, float xi,
+    float yi, float zi, float *cgx, float *cgy, float *cgz, float wi, float out[8])
 {
     const __m512 hv = _mm512_set1_ps(h), ev = _mm512_set1_ps(eps), zero = _mm512_setzero_ps();
     const __m512 xv = _mm512_set1_ps(xi), yv = _mm512_set1_ps(yi), zv = _mm512_set1_ps(zi);
-    __m512 sx = zero, sy = zero, sz = zero, sq = zero, sm = zero;
+    const __m512 wv = _mm512_set1_ps(wi);
+    __m512 sx = zero, sy = zero, sz = zero, sq = zero, sm = zero, wx = zero, wy = zero, wz = zero;
     for (int k = 0; k < n; k += LANES) {
         __m512 xj, yj, zj, pj;
         load_rec(pk, idx + k, &xj, &yj, &zj, &pj);
@@ -491,12 +570,21 @@ __attribute__((target("avx512f"))) static void factors_real_avx512(const float *
         sz = _mm512_add_ps(sz, dz);
         sq = _mm512_add_ps(sq, _mm512_mul_ps(_mm512_mul_ps(g, g), r2));
         sm = _mm512_add_ps(sm, _mm512_mul_ps(g, r2));
+        /* the warm start's w_j, the records' fourth float (warm_weights
+         * put it there: no gather) */
+        const __m512 f = _mm512_add_ps(wv, pj);
+        wx = _mm512_add_ps(wx, _mm512_mul_ps(f, dx));
+        wy = _mm512_add_ps(wy, _mm512_mul_ps(f, dy));
+        wz = _mm512_add_ps(wz, _mm512_mul_ps(f, dz));
     }
     out[0] = hsum(sx);
     out[1] = hsum(sy);
     out[2] = hsum(sz);
     out[3] = hsum(sq);
     out[4] = hsum(sm);
+    out[5] = hsum(wx);
+    out[6] = hsum(wy);
+    out[7] = hsum(wz);
 }
 
 __attribute__((target("avx512f"))) static float divergence_real_avx512(
@@ -763,10 +851,6 @@ static void dfsph_part(void *ctxp, int part, int b, int e)
         }
         break;
     }
-    case F_WARM:
-        for (int i = b; i < e; ++i)
-            v->df_s[i] = ms_volume_is_surface(v, i) ? 0.0f : ctx->scale * v->df_warm[v->id[i]];
-        break;
     }
     ctx->err[part] = err;
 }
@@ -814,6 +898,59 @@ static void keep_div(void *ctxp, int part, int b, int e)
         v->df_div_sum[i] = v->df_sum[i];
 }
 
+/* Before the factors pass: each particle's warm-start s at the last
+ * sub-step's dt (its share of the last total s; 0 with no warm start)
+ * into df_sum, which the factors pass reads (the divergence solve
+ * zeroes it after), and into the packed copy's pressure slot, which the
+ * AVX-512 factors loop loads with each neighbour's position (the density
+ * pass wrote prs there and unpack_s writes it back before the force pass:
+ * nothing reads the slot in between). */
+static void warm_weights(void *ctxp, int part, int b, int e)
+{
+    (void)part;
+    ms_volume *v = ((dfsph_ctx *)ctxp)->v;
+    for (int i = b; i < e; ++i) {
+        v->df_sum[i] = v->df_warm_on ? warm_share(v, i) * v->df_warm[v->id[i]] : 0.0f;
+        v->pk[8 * (size_t)i + 3] = v->df_sum[i]; /* until unpack_s: the AVX-512 loop's */
+    }
+}
+
+/* The warm start, after the kick (the header): v += dt / dt_last^2 m G
+ * times the factors pass's sum, capped as an update (apply_of); the
+ * density solve's running total starts at the warm s rescaled to this
+ * dt; the packed copy's velocities for the AVX-512 loops. */
+static void warm_kick(void *ctxp, int part, int b, int e)
+{
+    (void)part;
+    const dfsph_ctx *ctx = ctxp;
+    ms_volume *v = ctx->v;
+    const float c = ctx->warm, r2 = ctx->scale;
+    for (int i = b; i < e; ++i) {
+        if (v->df_warm_on) {
+            const float ux = v->vx[i], uy = v->vy[i], uz = v->vz[i];
+            float nx = ux + c * v->df_wx[i], ny = uy + c * v->df_wy[i], nz = uz + c * v->df_wz[i];
+            const float n2 = nx * nx + ny * ny + nz * nz, o2 = ux * ux + uy * uy + uz * uz;
+            const float lim2 = o2 > v->c0 * v->c0 ? o2 : v->c0 * v->c0;
+            if (n2 > lim2) {
+                const float f = sqrtf(lim2 / n2);
+                nx *= f;
+                ny *= f;
+                nz *= f;
+            }
+            v->vx[i] = nx;
+            v->vy[i] = ny;
+            v->vz[i] = nz;
+            v->df_sum[i] = r2 * (warm_share(v, i) * v->df_warm[v->id[i]]);
+        } else {
+            v->df_sum[i] = 0.0f;
+        }
+        float *pk = v->pk + 8 * (size_t)i;
+        pk[4] = v->vx[i];
+        pk[5] = v->vy[i];
+        pk[6] = v->vz[i];
+    }
+}
+
 static void zero_sum(void *ctxp, int part, int b, int e)
 {
     (void)part;
@@ -822,23 +959,9 @@ static void zero_sum(void *ctxp, int part, int b, int e)
         v->df_sum[i] = 0.0f;
 }
 
-/* The packed copy's velocities (forces.c's AVX-512 path reads them) after
- * the divergence solve changed them: every path sees the same v. */
-static void repack(void *ctxp, int part, int b, int e)
-{
-    (void)part;
-    ms_volume *v = ((dfsph_ctx *)ctxp)->v;
-    for (int i = b; i < e; ++i) {
-        v->pk[8 * (size_t)i + 4] = v->vx[i];
-        v->pk[8 * (size_t)i + 5] = v->vy[i];
-        v->pk[8 * (size_t)i + 6] = v->vz[i];
-    }
-}
-
 /* The packed copy's pressure slot set to prs for the force pass after the
- * divergence solve. Until round nine the passes kept s there; they no
- * longer write it, so this only restates prs (one cheap per-particle pass,
- * kept so the force pass never depends on what last wrote the slot). */
+ * divergence solve: the factors pass read the warm start's s there
+ * (warm_weights). */
 static void unpack_s(void *ctxp, int part, int b, int e)
 {
     (void)part;
@@ -925,6 +1048,10 @@ ms_status ms_volume_dfsph_divergence(ms_volume *v, float dt_scale)
         return MS_OK;
     MS_TRY(reserve_terms(v));
     dfsph_ctx ctx = {.v = v, .dt = dt_scale, .scale = 1.0f};
+    /* the warm start of this sub-step's density solve (the last one's
+     * pressure, kept by id) is summed by the factors pass */
+    v->df_warm_on = v->df_warm_n == v->n && v->df_warm_dt > 0.0f;
+    ms_vpool_run(v->pool, warm_weights, &ctx, v->n);
     const float first = run(v, &ctx, F_FACTORS);
     int64_t mom = 0; /* integers: order-free */
     long nmom = 0;
@@ -959,17 +1086,19 @@ void ms_volume_dfsph_density(ms_volume *v, float dt)
     if (v->n == 0 || !(dt > 0.0f))
         return;
     dfsph_ctx ctx = {.v = v, .dt = dt, .scale = 1.0f / dt};
-    ms_vpool_run(v->pool, zero_sum, &ctx, v->n);
-    ms_vpool_run(v->pool, repack, &ctx, v->n); /* the kick changed v */
-    if (v->df_warm_n == v->n && v->df_warm_dt > 0.0f) {
-        /* warm start (2017, section 4.4): the last sub-step's pressure,
-         * kappa_i = s_i rho_i / dt^2 kept, applied before the first error */
+    /* warm start (2017, section 4.4): the last sub-step's pressure,
+     * kappa_i = s_i rho_i / dt^2 kept, applied before the first error;
+     * its sum over the neighbours came with the factors (the header).
+     * With none, the running total starts at 0. Either way the packed
+     * copy takes the velocities the kick changed. */
+    if (v->df_warm_on) {
         const float r = dt / v->df_warm_dt;
-        ctx.scale = WARM_FACTOR * r * r;
-        run(v, &ctx, F_WARM);
-        ctx.scale = 1.0f / dt;
-        run(v, &ctx, F_APPLY);
+        ctx.scale = r * r;
+        ctx.warm = dt / (v->df_warm_dt * v->df_warm_dt) * v->mass * v->K.spiky_grad;
     }
+    ms_vpool_run(v->pool, warm_kick, &ctx, v->n);
+    v->df_warm_on = 0;
+    ctx.scale = 1.0f / dt;
     float reached = 0.0f;
     int it = solve(v, &ctx, F_DENSITY_ERROR, v->desc.max_density_error,
                    MIN_DENSITY_ITERATIONS, v->desc.max_density_iterations, NULL, &reached);

@@ -109,12 +109,13 @@ ms_status ms_volume_create(const ms_volume_desc *d, ms_volume **out)
 
 static void free_particles(ms_volume *v)
 {
-    float **f[] = {&v->x,  &v->y,   &v->z,       &v->vx, &v->vy, &v->vz, &v->x2,
-                   &v->y2, &v->z2,  &v->vx2,     &v->vy2, &v->vz2, &v->rho, &v->prs,
-                   &v->inv_rho, &v->ax, &v->ay, &v->az, &v->visc_rate, &v->b_ax,
-                   &v->b_ay, &v->b_az, &v->c_d, &v->c_w, &v->c_nx, &v->c_ny, &v->c_nz,
-                   &v->c_vx, &v->c_vy, &v->c_vz, &v->df_inv_diag, &v->df_s, &v->df_sum,
-                   &v->df_warm};
+    float **f[] = {&v->x,           &v->y,    &v->z,       &v->vx,      &v->vy,    &v->vz,
+                   &v->x2,          &v->y2,   &v->z2,      &v->vx2,     &v->vy2,   &v->vz2,
+                   &v->rho,         &v->prs,  &v->inv_rho, &v->ax,      &v->ay,    &v->az,
+                   &v->visc_rate,   &v->b_ax, &v->b_ay,    &v->b_az,    &v->c_d,   &v->c_w,
+                   &v->c_nx,        &v->c_ny, &v->c_nz,    &v->c_vx,    &v->c_vy,  &v->c_vz,
+                   &v->df_inv_diag, &v->df_s, &v->df_sum,  &v->df_warm, &v->df_wx, &v->df_wy,
+                   &v->df_wz};
     for (size_t k = 0; k < sizeof f / sizeof f[0]; ++k) {
         ms_free(*f[k]);
         *f[k] = NULL;
@@ -181,11 +182,11 @@ ms_status ms_volume_reserve(ms_volume *v, int n)
     size_t alloc = cap + MS_VOLUME_LANES; /* padding of the pair loops */
     ms_volume t = *v;
     float **state[] = {&t.x, &t.y, &t.z, &t.vx, &t.vy, &t.vz};
-    float **other[] = {&t.x2,  &t.y2, &t.z2, &t.vx2, &t.vy2, &t.vz2, &t.rho,
-                       &t.prs, &t.inv_rho, &t.ax, &t.ay, &t.az, &t.visc_rate,
-                       &t.b_ax, &t.b_ay, &t.b_az, &t.c_d, &t.c_w, &t.c_nx, &t.c_ny, &t.c_nz,
-                       &t.c_vx, &t.c_vy, &t.c_vz, &t.df_inv_diag, &t.df_s, &t.df_sum,
-                       &t.df_warm};
+    float **other[] = {
+        &t.x2,          &t.y2,   &t.z2,     &t.vx2,     &t.vy2,       &t.vz2,   &t.rho,  &t.prs,
+        &t.inv_rho,     &t.ax,   &t.ay,     &t.az,      &t.visc_rate, &t.b_ax,  &t.b_ay, &t.b_az,
+        &t.c_d,         &t.c_w,  &t.c_nx,   &t.c_ny,    &t.c_nz,      &t.c_vx,  &t.c_vy, &t.c_vz,
+        &t.df_inv_diag, &t.df_s, &t.df_sum, &t.df_warm, &t.df_wx,     &t.df_wy, &t.df_wz};
     t.df_warm_n = -1; /* the warm start's values are not copied */
     int ok = 1;
     for (size_t k = 0; k < sizeof state / sizeof state[0]; ++k) {
@@ -464,7 +465,7 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
     out->count = v->n;
     out->surface_count = v->surface_count;
     out->pairs = v->pairs;
-    size_t per = 42 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
+    size_t per = 45 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
     out->bytes = sizeof *v + (size_t)v->cap * per +
                  ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
                  v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int) +

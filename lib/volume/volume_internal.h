@@ -282,6 +282,13 @@ struct ms_volume {
     int df_pmean_n;
     long df_pmean_step;
     double df_pmean_until;
+    /* The warm start folded into the factors pass (dfsph.c, round ten).
+     * Per particle, cell order, valid during a sub-step while df_warm_on:
+     * sum_j (w_i + w_j) g_ij (x_i - x_j) over the real neighbours and the
+     * images, w the warm start's s at the last sub-step's dt (m^5/kg times
+     * m^-1: the density solve adds dt / dt_last^2 m G times it to v) */
+    float *df_wx, *df_wy, *df_wz;
+    int df_warm_on;
 };
 
 /* A surface particle: fewer neighbours (self and wall images included)
