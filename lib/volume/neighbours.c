@@ -6,7 +6,6 @@
  * by ms_volume_pick_isa) give the same lists. Moved here from density.c,
  * which now only sums them (review).
  */
-#include <math.h>
 #include <string.h>
 
 #include "volume/volume_internal.h"
@@ -365,13 +364,14 @@ static void cell_box(const ms_volume *v, int i, long c, float lo[3], float hi[3]
     lo[0] = hi[0] = v->x[i];
     lo[1] = hi[1] = v->y[i];
     lo[2] = hi[2] = v->z[i];
+    /* comparisons, not fminf (a call here): a NaN position is passed over,
+     * a NaN first one makes the box NaN and every candidate kept */
     for (int k = i + 1; k < v->n && v->cell[k] == c; ++k) {
-        lo[0] = fminf(lo[0], v->x[k]);
-        hi[0] = fmaxf(hi[0], v->x[k]);
-        lo[1] = fminf(lo[1], v->y[k]);
-        hi[1] = fmaxf(hi[1], v->y[k]);
-        lo[2] = fminf(lo[2], v->z[k]);
-        hi[2] = fmaxf(hi[2], v->z[k]);
+        const float q[3] = {v->x[k], v->y[k], v->z[k]};
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = q[a] < lo[a] ? q[a] : lo[a];
+            hi[a] = q[a] > hi[a] ? q[a] : hi[a];
+        }
     }
 }
 #endif
