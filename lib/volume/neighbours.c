@@ -285,9 +285,10 @@ static void rows_of(const ms_volume *v, long c, ms_rows *r)
 
 /* Copy the candidates of the rows r (positions and indices, in row
  * order) into part's run; its length, or -1 if the run could not grow.
- * The particles of a cell share it: each then filters one run of about
- * 14 full blocks instead of nine short rows (18 blocks, half of them
- * part-empty, and a mispredicted loop exit per row).
+ * The particles of a cell share it: each then filters one run (about 14
+ * full blocks; 5-6 since the pruning below) instead of nine short rows
+ * (18 blocks, half of them part-empty, and a mispredicted loop exit per
+ * row).
  * Issue 12, round ten: only the candidates that may lie within h of one
  * of the cell's particles are copied: box [lo, hi] holds the positions
  * of the particles that share the run, and a candidate whose per-axis
@@ -302,8 +303,9 @@ static void rows_of(const ms_volume *v, long c, ms_rows *r)
  * gap keeps the candidate (the filter decides). */
 #if MS_VOLUME_HAVE_AVX512
 __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static long cand_of(ms_volume *v, int part,
-                                                               const ms_rows *r, const float lo[3],
-                                                               const float hi[3])
+                                                                       const ms_rows *r,
+                                                                       const float lo[3],
+                                                                       const float hi[3])
 {
     size_t need = r->cand + LANES;
     if (need > v->cand_cap[part]) {
@@ -337,12 +339,12 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static long cand_of(ms_volume
             const __m512 yj = _mm512_maskz_loadu_ps(m, v->y + j);
             const __m512 zj = _mm512_maskz_loadu_ps(m, v->z + j);
             /* max(0, t): a NaN t is the second operand and stays NaN */
-            const __m512 gx = _mm512_max_ps(
-                zero, _mm512_max_ps(_mm512_sub_ps(lox, xj), _mm512_sub_ps(xj, hix)));
-            const __m512 gy = _mm512_max_ps(
-                zero, _mm512_max_ps(_mm512_sub_ps(loy, yj), _mm512_sub_ps(yj, hiy)));
-            const __m512 gz = _mm512_max_ps(
-                zero, _mm512_max_ps(_mm512_sub_ps(loz, zj), _mm512_sub_ps(zj, hiz)));
+            const __m512 gx =
+                _mm512_max_ps(zero, _mm512_max_ps(_mm512_sub_ps(lox, xj), _mm512_sub_ps(xj, hix)));
+            const __m512 gy =
+                _mm512_max_ps(zero, _mm512_max_ps(_mm512_sub_ps(loy, yj), _mm512_sub_ps(yj, hiy)));
+            const __m512 gz =
+                _mm512_max_ps(zero, _mm512_max_ps(_mm512_sub_ps(loz, zj), _mm512_sub_ps(zj, hiz)));
             const __m512 g2 = _mm512_add_ps(
                 _mm512_add_ps(_mm512_mul_ps(gx, gx), _mm512_mul_ps(gy, gy)), _mm512_mul_ps(gz, gz));
             const __mmask16 keep = _mm512_mask_cmp_ps_mask(m, g2, hh, _CMP_NGE_UQ);
