@@ -285,12 +285,27 @@ static void rows_of(const ms_volume *v, long c, ms_rows *r)
 
 /* Copy the candidates of the rows r (positions and indices, in row
  * order) into part's run; its length, or -1 if the run could not grow.
- * The particles of a cell share it: each then filters one run of about
- * 14 full blocks instead of nine short rows (18 blocks, half of them
- * part-empty, and a mispredicted loop exit per row). */
+ * The particles of a cell share it: each then filters one run (about 14
+ * full blocks; 5-6 since the pruning below) instead of nine short rows
+ * (18 blocks, half of them part-empty, and a mispredicted loop exit per
+ * row).
+ * Issue 12, round ten: only the candidates that may lie within h of one
+ * of the cell's particles are copied: box [lo, hi] holds the positions
+ * of the particles that share the run, and a candidate whose per-axis
+ * gaps to it (g = max(lo - x, x - hi, 0)) give g2 = (gx^2 + gy^2) + gz^2
+ * >= h^2 is left out. The filter's r^2 of such a candidate is >= g2 for
+ * every particle in the box, computed in float: rounding is monotonic,
+ * so |fl(p - x)| >= fl(lo - x) (or fl(x - hi)) for lo <= p <= hi, and
+ * the filter squares and sums in the same order; it would not have kept
+ * it. So the lists are the same, entry for entry (same bytes), from
+ * fewer candidates: the box of a cell's particles is smaller than the
+ * cell, and the 27 cells reach beyond h of it (at the corners). A NaN
+ * gap keeps the candidate (the filter decides). */
 #if MS_VOLUME_HAVE_AVX512
-__attribute__((target("avx512f,bmi,bmi2"))) static long cand_of(ms_volume *v, int part,
-                                                               const ms_rows *r)
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static long cand_of(ms_volume *v, int part,
+                                                                       const ms_rows *r,
+                                                                       const float lo[3],
+                                                                       const float hi[3])
 {
     size_t need = r->cand + LANES;
     if (need > v->cand_cap[part]) {
@@ -309,21 +324,57 @@ __attribute__((target("avx512f,bmi,bmi2"))) static long cand_of(ms_volume *v, in
     float *restrict cx = v->cand[part], *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
     int *restrict ci = v->cand_idx[part];
     const __m512i iota = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+    const __m512 zero = _mm512_setzero_ps(), hh = _mm512_set1_ps(v->K.h2);
+    const __m512 lox = _mm512_set1_ps(lo[0]), loy = _mm512_set1_ps(lo[1]),
+                 loz = _mm512_set1_ps(lo[2]);
+    const __m512 hix = _mm512_set1_ps(hi[0]), hiy = _mm512_set1_ps(hi[1]),
+                 hiz = _mm512_set1_ps(hi[2]);
     size_t n = 0;
     for (int k = 0; k < 9; ++k) {
-        const int lo = r->lo[k], hi = r->hi[k];
-        for (int j = lo; j < hi; j += 16, n += 16) {
-            unsigned rem = (unsigned)(hi - j);
+        const int rlo = r->lo[k], rhi = r->hi[k];
+        for (int j = rlo; j < rhi; j += 16) {
+            unsigned rem = (unsigned)(rhi - j);
             __mmask16 m = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
-            _mm512_mask_storeu_ps(cx + n, m, _mm512_maskz_loadu_ps(m, v->x + j));
-            _mm512_mask_storeu_ps(cy + n, m, _mm512_maskz_loadu_ps(m, v->y + j));
-            _mm512_mask_storeu_ps(cz + n, m, _mm512_maskz_loadu_ps(m, v->z + j));
-            _mm512_mask_storeu_epi32(ci + n, m, _mm512_add_epi32(_mm512_set1_epi32(j), iota));
-            if (rem < 16u)
-                n -= 16u - rem;
+            const __m512 xj = _mm512_maskz_loadu_ps(m, v->x + j);
+            const __m512 yj = _mm512_maskz_loadu_ps(m, v->y + j);
+            const __m512 zj = _mm512_maskz_loadu_ps(m, v->z + j);
+            /* max(0, t): a NaN t is the second operand and stays NaN */
+            const __m512 gx =
+                _mm512_max_ps(zero, _mm512_max_ps(_mm512_sub_ps(lox, xj), _mm512_sub_ps(xj, hix)));
+            const __m512 gy =
+                _mm512_max_ps(zero, _mm512_max_ps(_mm512_sub_ps(loy, yj), _mm512_sub_ps(yj, hiy)));
+            const __m512 gz =
+                _mm512_max_ps(zero, _mm512_max_ps(_mm512_sub_ps(loz, zj), _mm512_sub_ps(zj, hiz)));
+            const __m512 g2 = _mm512_add_ps(
+                _mm512_add_ps(_mm512_mul_ps(gx, gx), _mm512_mul_ps(gy, gy)), _mm512_mul_ps(gz, gz));
+            const __mmask16 keep = _mm512_mask_cmp_ps_mask(m, g2, hh, _CMP_NGE_UQ);
+            const __m512i id = _mm512_add_epi32(_mm512_set1_epi32(j), iota);
+            _mm512_storeu_ps(cx + n, _mm512_maskz_compress_ps(keep, xj));
+            _mm512_storeu_ps(cy + n, _mm512_maskz_compress_ps(keep, yj));
+            _mm512_storeu_ps(cz + n, _mm512_maskz_compress_ps(keep, zj));
+            _mm512_storeu_si512((void *)(ci + n), _mm512_maskz_compress_epi32(keep, id));
+            n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(keep));
         }
     }
     return (long)n;
+}
+
+/* The box of the positions of the particles from i on that share cell c
+ * (a run of the sorted arrays: those that will use c's candidates). */
+static void cell_box(const ms_volume *v, int i, long c, float lo[3], float hi[3])
+{
+    lo[0] = hi[0] = v->x[i];
+    lo[1] = hi[1] = v->y[i];
+    lo[2] = hi[2] = v->z[i];
+    /* comparisons, not fminf (a call here): a NaN position is passed over,
+     * a NaN first one makes the box NaN and every candidate kept */
+    for (int k = i + 1; k < v->n && v->cell[k] == c; ++k) {
+        const float q[3] = {v->x[k], v->y[k], v->z[k]};
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = q[a] < lo[a] ? q[a] : lo[a];
+            hi[a] = q[a] > hi[a] ? q[a] : hi[a];
+        }
+    }
 }
 #endif
 
@@ -490,8 +541,11 @@ int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *n
     if (v->cell[i] != own->cell) { /* the particles of a cell share their rows */
         rows_of(v, v->cell[i], own);
 #if MS_VOLUME_HAVE_AVX512
-        if (run)
-            *ncand = cand_of(v, part, own);
+        if (run) {
+            float lo[3], hi[3];
+            cell_box(v, i, own->cell, lo, hi);
+            *ncand = cand_of(v, part, own, lo, hi);
+        }
 #endif
         if (*ncand < 0) {
             return -1;
