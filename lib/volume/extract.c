@@ -94,18 +94,27 @@ static ms_status scratch(void **p, size_t *cap, size_t need, size_t size)
 
 typedef struct mark_ctx {
     ms_volume *v;
+    const unsigned char *near; /* per grid cell: a surface particle in it or a neighbour cell */
 } mark_ctx;
 
 /* mark[i] = 1 surface particle, 2 within h of one, 0 neither: a gather
  * over the neighbour lists of the last density pass (real neighbours; the
- * wall images are the particle's own neighbours mirrored). */
+ * wall images are the particle's own neighbours mirrored). A particle's
+ * neighbours lie in the 27 cells around its cell (neighbours.c's rows), so
+ * where none of those holds a surface particle (near = 0: the deep
+ * liquid) the list is not read: the same marks. */
 static void mark_part(void *ctxp, int part, int b, int e)
 {
     ms_volume *v = ((mark_ctx *)ctxp)->v;
+    const unsigned char *near_cell = ((mark_ctx *)ctxp)->near;
     const ms_nlist *L = &v->lists[part];
     for (int i = b; i < e; ++i) {
         if (ms_volume_is_surface(v, i)) {
             v->mark[i] = 1;
+            continue;
+        }
+        if (!near_cell[v->cell[i]]) {
+            v->mark[i] = 0;
             continue;
         }
         const int *idx = L->idx + v->nl_begin[i];
@@ -125,12 +134,17 @@ static void mark_part(void *ctxp, int part, int b, int e)
 __attribute__((target("avx512f"))) static void mark_part_avx512(void *ctxp, int part, int b, int e)
 {
     ms_volume *v = ((mark_ctx *)ctxp)->v;
+    const unsigned char *near_cell = ((mark_ctx *)ctxp)->near;
     const ms_nlist *L = &v->lists[part];
     const __m512 vh2 = _mm512_set1_ps(v->K.h2), vsn = _mm512_set1_ps(v->surface_nbrs);
     const __m512i none = _mm512_setzero_si512();
     for (int i = b; i < e; ++i) {
         if (ms_volume_is_surface(v, i)) {
             v->mark[i] = 1;
+            continue;
+        }
+        if (!near_cell[v->cell[i]]) {
+            v->mark[i] = 0;
             continue;
         }
         const int *idx = L->idx + v->nl_begin[i];
@@ -1026,7 +1040,35 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
         if (st != MS_OK)
             return st;
     }
-    mark_ctx mc = {.v = v};
+    /* the cells within one of a cell holding a surface particle: a 3 x 3
+     * x 3 dilation, one axis at a time (a particle's cell is never on the
+     * grid's padding, so the neighbours of the cells read exist) */
+    const size_t nc = (size_t)v->ncells;
+    if (2 * nc > s->cells_cap) {
+        unsigned char *c = ms_alloc_array(2 * nc, 1);
+        if (!c)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for height extraction");
+        ms_free(s->cells);
+        s->cells = c;
+        s->cells_cap = 2 * nc;
+    }
+    unsigned char *flag = s->cells, *t = s->cells + nc;
+    memset(flag, 0, nc);
+    for (int i = 0; i < v->n; ++i)
+        flag[v->cell[i]] |= (unsigned char)ms_volume_is_surface(v, i);
+    const size_t sx = 1, sy = (size_t)v->gx, sz = (size_t)v->gx * (size_t)v->gy;
+    const size_t step[3] = {sx, sy, sz};
+    for (int axis = 0; axis < 3; ++axis) {
+        /* flag -> t -> flag -> t: the last into t */
+        const unsigned char *src = axis == 1 ? t : flag;
+        unsigned char *dst = axis == 1 ? flag : t;
+        const size_t d = step[axis];
+        memset(dst, 0, d);
+        memset(dst + nc - d, 0, d);
+        for (size_t c = d; c < nc - d; ++c)
+            dst[c] = src[c - d] | src[c] | src[c + d];
+    }
+    mark_ctx mc = {.v = v, .near = t};
     ms_vpool_fn *mark = mark_part;
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512)
@@ -1079,6 +1121,7 @@ ms_status ms_volume_share_loops(ms_volume *v)
 void ms_extract_snap_free(ms_extract_snap *s)
 {
     ms_free(s->x);
+    ms_free(s->cells);
     memset(s, 0, sizeof *s);
 }
 
@@ -1093,7 +1136,7 @@ void ms_extract_work_free(ms_extract_work *w)
 
 size_t ms_extract_snap_bytes(const ms_extract_snap *s)
 {
-    return (size_t)s->cap * 3 * sizeof(float);
+    return (size_t)s->cap * 3 * sizeof(float) + s->cells_cap;
 }
 
 size_t ms_extract_work_bytes(const ms_extract_work *w)
