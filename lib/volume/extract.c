@@ -94,26 +94,28 @@ static ms_status scratch(void **p, size_t *cap, size_t need, size_t size)
 
 typedef struct mark_ctx {
     ms_volume *v;
-    const unsigned char *near; /* per grid cell: a surface particle in it or a neighbour cell */
+    const float *low; /* per grid cell: the lowest surface particle in it and its neighbours */
+    float reach;      /* h and a margin far above float round-off */
 } mark_ctx;
 
 /* mark[i] = 1 surface particle, 2 within h of one, 0 neither: a gather
  * over the neighbour lists of the last density pass (real neighbours; the
  * wall images are the particle's own neighbours mirrored). A particle's
  * neighbours lie in the 27 cells around its cell (neighbours.c's rows), so
- * where none of those holds a surface particle (near = 0: the deep
- * liquid) the list is not read: the same marks. */
+ * one more than h below the lowest surface particle of those (or with none
+ * there: the deep liquid) has no surface neighbour and its list is not
+ * read: the same marks. */
 static void mark_part(void *ctxp, int part, int b, int e)
 {
     ms_volume *v = ((mark_ctx *)ctxp)->v;
-    const unsigned char *near_cell = ((mark_ctx *)ctxp)->near;
+    const float *low = ((mark_ctx *)ctxp)->low, reach = ((mark_ctx *)ctxp)->reach;
     const ms_nlist *L = &v->lists[part];
     for (int i = b; i < e; ++i) {
         if (ms_volume_is_surface(v, i)) {
             v->mark[i] = 1;
             continue;
         }
-        if (!near_cell[v->cell[i]]) {
+        if (!(v->z[i] >= low[v->cell[i]] - reach)) {
             v->mark[i] = 0;
             continue;
         }
@@ -134,7 +136,7 @@ static void mark_part(void *ctxp, int part, int b, int e)
 __attribute__((target("avx512f"))) static void mark_part_avx512(void *ctxp, int part, int b, int e)
 {
     ms_volume *v = ((mark_ctx *)ctxp)->v;
-    const unsigned char *near_cell = ((mark_ctx *)ctxp)->near;
+    const float *low = ((mark_ctx *)ctxp)->low, reach = ((mark_ctx *)ctxp)->reach;
     const ms_nlist *L = &v->lists[part];
     const __m512 vh2 = _mm512_set1_ps(v->K.h2), vsn = _mm512_set1_ps(v->surface_nbrs);
     const __m512i none = _mm512_setzero_si512();
@@ -143,7 +145,7 @@ __attribute__((target("avx512f"))) static void mark_part_avx512(void *ctxp, int 
             v->mark[i] = 1;
             continue;
         }
-        if (!near_cell[v->cell[i]]) {
+        if (!(v->z[i] >= low[v->cell[i]] - reach)) {
             v->mark[i] = 0;
             continue;
         }
@@ -1074,36 +1076,43 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
         if (st != MS_OK)
             return st;
     }
-    /* the cells within one of a cell holding a surface particle: a 3 x 3
-     * x 3 dilation, one axis at a time (a particle's cell is never on the
-     * grid's padding, so the neighbours of the cells read exist) */
+    /* per cell the lowest surface particle in it or the cells around it:
+     * a 3 x 3 x 3 minimum, one axis at a time (a particle's cell is never
+     * on the grid's padding, so the neighbours of the cells read exist) */
     const size_t nc = (size_t)v->ncells;
     if (2 * nc > s->cells_cap) {
-        unsigned char *c = ms_alloc_array(2 * nc, 1);
+        float *c = ms_alloc_array(2 * nc, sizeof(float));
         if (!c)
             return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for height extraction");
         ms_free(s->cells);
         s->cells = c;
         s->cells_cap = 2 * nc;
     }
-    unsigned char *flag = s->cells, *t = s->cells + nc;
-    memset(flag, 0, nc);
-    for (int i = 0; i < v->n; ++i)
-        flag[v->cell[i]] |= (unsigned char)ms_volume_is_surface(v, i);
+    float *low = s->cells, *t = s->cells + nc;
+    for (size_t c = 0; c < nc; ++c)
+        low[c] = INFINITY;
+    for (int i = 0; i < v->n; ++i) {
+        const int c = v->cell[i];
+        if (ms_volume_is_surface(v, i) && v->z[i] < low[c])
+            low[c] = v->z[i];
+    }
     const size_t sx = 1, sy = (size_t)v->gx, sz = (size_t)v->gx * (size_t)v->gy;
     const size_t step[3] = {sx, sy, sz};
     for (int axis = 0; axis < 3; ++axis) {
-        /* flag -> t -> flag -> t: the last into t */
-        const unsigned char *src = axis == 1 ? t : flag;
-        unsigned char *dst = axis == 1 ? flag : t;
+        /* low -> t -> low -> t: the last into t */
+        const float *src = axis == 1 ? t : low;
+        float *dst = axis == 1 ? low : t;
         const size_t d = step[axis];
-        memset(dst, 0, d);
-        memset(dst + nc - d, 0, d);
+        for (size_t c = 0; c < d; ++c)
+            dst[c] = dst[nc - d + c] = INFINITY;
 #pragma omp simd
-        for (size_t c = d; c < nc - d; ++c)
-            dst[c] = src[c - d] | src[c] | src[c + d];
+        for (size_t c = d; c < nc - d; ++c) {
+            const float m = src[c - d] < src[c] ? src[c - d] : src[c];
+            dst[c] = src[c + d] < m ? src[c + d] : m;
+        }
     }
-    mark_ctx mc = {.v = v, .near = t};
+    /* |dz| <= r for a neighbour at r < h: h and a 64th */
+    mark_ctx mc = {.v = v, .low = t, .reach = v->K.h * (1.0f + 1.0f / 64.0f)};
     ms_vpool_fn *mark = mark_part;
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512)
@@ -1171,7 +1180,7 @@ void ms_extract_work_free(ms_extract_work *w)
 
 size_t ms_extract_snap_bytes(const ms_extract_snap *s)
 {
-    return (size_t)s->cap * 3 * sizeof(float) + s->cells_cap;
+    return ((size_t)s->cap * 3 + s->cells_cap) * sizeof(float);
 }
 
 size_t ms_extract_work_bytes(const ms_extract_work *w)
