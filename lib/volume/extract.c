@@ -94,18 +94,29 @@ static ms_status scratch(void **p, size_t *cap, size_t need, size_t size)
 
 typedef struct mark_ctx {
     ms_volume *v;
+    const float *low; /* per grid cell: the lowest surface particle in it and its neighbours */
+    float reach;      /* h and a margin far above float round-off */
 } mark_ctx;
 
 /* mark[i] = 1 surface particle, 2 within h of one, 0 neither: a gather
  * over the neighbour lists of the last density pass (real neighbours; the
- * wall images are the particle's own neighbours mirrored). */
+ * wall images are the particle's own neighbours mirrored). A particle's
+ * neighbours lie in the 27 cells around its cell (neighbours.c's rows), so
+ * one more than h below the lowest surface particle of those (or with none
+ * there: the deep liquid) has no surface neighbour and its list is not
+ * read: the same marks. */
 static void mark_part(void *ctxp, int part, int b, int e)
 {
     ms_volume *v = ((mark_ctx *)ctxp)->v;
+    const float *low = ((mark_ctx *)ctxp)->low, reach = ((mark_ctx *)ctxp)->reach;
     const ms_nlist *L = &v->lists[part];
     for (int i = b; i < e; ++i) {
         if (ms_volume_is_surface(v, i)) {
             v->mark[i] = 1;
+            continue;
+        }
+        if (!(v->z[i] >= low[v->cell[i]] - reach)) {
+            v->mark[i] = 0;
             continue;
         }
         const int *idx = L->idx + v->nl_begin[i];
@@ -125,12 +136,17 @@ static void mark_part(void *ctxp, int part, int b, int e)
 __attribute__((target("avx512f"))) static void mark_part_avx512(void *ctxp, int part, int b, int e)
 {
     ms_volume *v = ((mark_ctx *)ctxp)->v;
+    const float *low = ((mark_ctx *)ctxp)->low, reach = ((mark_ctx *)ctxp)->reach;
     const ms_nlist *L = &v->lists[part];
     const __m512 vh2 = _mm512_set1_ps(v->K.h2), vsn = _mm512_set1_ps(v->surface_nbrs);
     const __m512i none = _mm512_setzero_si512();
     for (int i = b; i < e; ++i) {
         if (ms_volume_is_surface(v, i)) {
             v->mark[i] = 1;
+            continue;
+        }
+        if (!(v->z[i] >= low[v->cell[i]] - reach)) {
+            v->mark[i] = 0;
             continue;
         }
         const int *idx = L->idx + v->nl_begin[i];
@@ -227,15 +243,14 @@ static void row_reaches(const column_ctx *cc, int j, int *reach)
     }
 }
 
-/* The start of the downward walk and the lowest sphere bottom of the
- * candidates (cz, ca, mc > 0): the highest sphere top, but no higher than
- * a spacing above the highest centre (a still lattice's phi there is
- * ~0.6 T: the top crossing lies below). Maxima and minima in lanes: exact
+/* What the downward walk starts from, of the candidates (cz, ca, mc > 0):
+ * the highest sphere top (*ztop_out), the highest centre (*zcen_out) and
+ * the lowest sphere bottom (*zlow_out). Maxima and minima in lanes: exact
  * in any order, so vectorisable. */
 static inline __attribute__((always_inline)) void column_span(const float *restrict cz,
                                                               const float *restrict ca, int mc,
-                                                              float R, float spacing, float *zstart,
-                                                              float *zlow_out)
+                                                              float R, float *ztop_out,
+                                                              float *zcen_out, float *zlow_out)
 {
     enum { L = MS_VOLUME_LANES };
     float top[L], cmax[L], low[L];
@@ -264,8 +279,17 @@ static inline __attribute__((always_inline)) void column_span(const float *restr
         zc = cmax[l] > zc ? cmax[l] : zc;
         zlow = low[l] < zlow ? low[l] : zlow;
     }
-    *zstart = zmax < zc + spacing ? zmax : zc + spacing;
+    *ztop_out = zmax;
+    *zcen_out = zc;
     *zlow_out = zlow;
+}
+
+/* The reference walk's start: the highest sphere top, but no higher than a
+ * spacing above the highest centre (a still lattice's phi there is ~0.6 T:
+ * the top crossing lies below). */
+static inline float walk_start(float ztop, float zcen, float spacing)
+{
+    return ztop < zcen + spacing ? ztop : zcen + spacing;
 }
 
 #if MS_VOLUME_HAVE_AVX512
@@ -306,10 +330,10 @@ __attribute__((target("avx512f,popcnt"))) static int gather_avx512(const float *
 /* gather_avx512 for the band search with column_span folded in: the
  * kept lanes' maxima of z + R sqrt(a) and z and minimum of z - R as it
  * gathers (maxima and minima are exact in any order: column_span's
- * values). Returns the count; *zstart, *zlow as column_span's (mc > 0). */
+ * values). Returns the count; *ztop, *zcen, *zlow as column_span's (mc > 0). */
 __attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
     const float *bx, const float *by, const float *bz, int k0, int k1, float px, float py,
-    float inv_r2, float R, float spacing, float *cz, float *ca, float *zstart, float *zlow)
+    float inv_r2, float R, float *cz, float *ca, float *ztop, float *zcen, float *zlow)
 {
     const __m512 vpx = _mm512_set1_ps(px), vpy = _mm512_set1_ps(py);
     const __m512 vinv = _mm512_set1_ps(inv_r2), one = _mm512_set1_ps(1.0f);
@@ -333,8 +357,8 @@ __attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
         _mm512_storeu_ps(cz + mc, _mm512_maskz_compress_ps(keep, z));
         mc += __builtin_popcount(keep);
     }
-    const float zmax = _mm512_reduce_max_ps(top), zc = _mm512_reduce_max_ps(cmax);
-    *zstart = zmax < zc + spacing ? zmax : zc + spacing;
+    *ztop = _mm512_reduce_max_ps(top);
+    *zcen = _mm512_reduce_max_ps(cmax);
     *zlow = _mm512_reduce_min_ps(low);
     return mc;
 }
@@ -515,8 +539,11 @@ static inline __attribute__((always_inline)) int column_candidates(const column_
         }
     }
     float zmax = -INFINITY, zlow = INFINITY;
-    if (mc > 0)
-        column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
+    if (mc > 0) {
+        float ztop, zcen;
+        column_span(cz, ca, mc, R, &ztop, &zcen, &zlow);
+        zmax = walk_start(ztop, zcen, s->spacing);
+    }
     for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
         cz[pad] = 0.0f;
         ca[pad] = 0.0f;
@@ -700,7 +727,10 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
  * phi evaluation (at ze), so that NSLOT columns' evaluations run side by
  * side: each is a chain of dependent latencies (square roots, the lane
  * sum, the secant's division) that one column alone leaves the core
- * partly waiting on. The walk is column_height's; then secant steps inside
+ * partly waiting on. The walk is column_height's, but a calm column's
+ * starts half a spacing lower and goes up while phi reaches T (SEARCH_TOP;
+ * the reference returns 0 there if phi reaches T half a spacing above its
+ * start too, a column dry under a dense splash); then secant steps inside
  * the bracket [zb, za] (phi(zb) >= T > phi(za)) from the regula falsi
  * point, superlinear where phi is smooth; a step that leaves the bracket
  * (near a sphere's rim phi's slope is unbounded) falls back to regula
@@ -710,6 +740,7 @@ enum { SEARCH_DONE, SEARCH_WALK, SEARCH_TOP, SEARCH_SECANT, SEARCH_CHECK };
 typedef struct search {
     float *cz, *ca; /* this slot's candidates */
     int mc, col, state, found, steps, it;
+    int walk_max;  /* steps down before the spray search */
     float ze;      /* where phi is wanted next */
     float z, zlow; /* the walk */
     float za, zb, fa, fb, zp, fp, zr;
@@ -799,13 +830,21 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
         }
         q->z -= 0.5f * s->spacing;
         q->steps++;
-        if (q->z >= q->zlow && q->steps < 6 && !q->found) {
+        if (q->z >= q->zlow && q->steps < q->walk_max && !q->found) {
             q->ze = q->z;
             return;
         }
         search_after_walk(s, q);
     } else if (q->state == SEARCH_TOP) {
         q->fa = phi - T;
+        if (q->fa >= 0.0f && q->steps < 12) { /* phi reaches T there too: up again */
+            q->zb = q->za;
+            q->fb = q->fa;
+            q->za = q->zb + 0.5f * s->spacing;
+            q->ze = q->za;
+            q->steps++;
+            return;
+        }
         q->found = q->fa < 0.0f;
         search_after_top(s, q);
     } else if (q->state == SEARCH_CHECK) {
@@ -918,13 +957,13 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                 const int k0 = bst[i], k1 = bst[i + 2 * cc->rx + 1];
                 float *cz = q->cz, *ca = q->ca;
                 int mc = 0;
-                float zmax = -INFINITY, zlow = INFINITY;
+                float ztop = -INFINITY, zcen = -INFINITY, zlow = INFINITY;
 #if MS_VOLUME_HAVE_AVX512
                 if (avx512) {
-                    mc = gather_span_avx512(tx, ty, tz, k0, k1, px, py, inv_r2, R, s->spacing, cz,
-                                            ca, &zmax, &zlow);
+                    mc = gather_span_avx512(tx, ty, tz, k0, k1, px, py, inv_r2, R, cz, ca, &ztop,
+                                            &zcen, &zlow);
                     if (mc == 0)
-                        zmax = -INFINITY, zlow = INFINITY;
+                        ztop = zcen = -INFINITY, zlow = INFINITY;
                 } else
 #endif
                 {
@@ -936,8 +975,19 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                         mc += a > 0.0f;
                     }
                     if (mc > 0)
-                        column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
+                        column_span(cz, ca, mc, R, &ztop, &zcen, &zlow);
                 }
+                /* the reference's start, or half a spacing lower where that
+                 * is a spacing above the highest centre (a calm column):
+                 * a still lattice's phi is T there (the iso-level's
+                 * definition), so two evaluations bracket the root, and the
+                 * walk goes up if phi reaches T (SEARCH_TOP); five steps
+                 * down, not six, so it ends where the reference's does and
+                 * a spray search looks at the same heights */
+                const float zfull = walk_start(ztop, zcen, s->spacing);
+                const int calm = ztop >= zcen + s->spacing;
+                const float zmax = calm ? zcen + 0.5f * s->spacing : zfull;
+                q->walk_max = calm ? 5 : 6;
                 for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
                     cz[pad] = 0.0f;
                     ca[pad] = 0.0f;
@@ -1026,7 +1076,43 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
         if (st != MS_OK)
             return st;
     }
-    mark_ctx mc = {.v = v};
+    /* per cell the lowest surface particle in it or the cells around it:
+     * a 3 x 3 x 3 minimum, one axis at a time (a particle's cell is never
+     * on the grid's padding, so the neighbours of the cells read exist) */
+    const size_t nc = (size_t)v->ncells;
+    if (2 * nc > s->cells_cap) {
+        float *c = ms_alloc_array(2 * nc, sizeof(float));
+        if (!c)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for height extraction");
+        ms_free(s->cells);
+        s->cells = c;
+        s->cells_cap = 2 * nc;
+    }
+    float *low = s->cells, *t = s->cells + nc;
+    for (size_t c = 0; c < nc; ++c)
+        low[c] = INFINITY;
+    for (int i = 0; i < v->n; ++i) {
+        const int c = v->cell[i];
+        if (ms_volume_is_surface(v, i) && v->z[i] < low[c])
+            low[c] = v->z[i];
+    }
+    const size_t sx = 1, sy = (size_t)v->gx, sz = (size_t)v->gx * (size_t)v->gy;
+    const size_t step[3] = {sx, sy, sz};
+    for (int axis = 0; axis < 3; ++axis) {
+        /* low -> t -> low -> t: the last into t */
+        const float *src = axis == 1 ? t : low;
+        float *dst = axis == 1 ? low : t;
+        const size_t d = step[axis];
+        for (size_t c = 0; c < d; ++c)
+            dst[c] = dst[nc - d + c] = INFINITY;
+#pragma omp simd
+        for (size_t c = d; c < nc - d; ++c) {
+            const float m = src[c - d] < src[c] ? src[c - d] : src[c];
+            dst[c] = src[c + d] < m ? src[c + d] : m;
+        }
+    }
+    /* |dz| <= r for a neighbour at r < h: h and a 64th */
+    mark_ctx mc = {.v = v, .low = t, .reach = v->K.h * (1.0f + 1.0f / 64.0f)};
     ms_vpool_fn *mark = mark_part;
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512)
@@ -1079,6 +1165,7 @@ ms_status ms_volume_share_loops(ms_volume *v)
 void ms_extract_snap_free(ms_extract_snap *s)
 {
     ms_free(s->x);
+    ms_free(s->cells);
     memset(s, 0, sizeof *s);
 }
 
@@ -1093,7 +1180,7 @@ void ms_extract_work_free(ms_extract_work *w)
 
 size_t ms_extract_snap_bytes(const ms_extract_snap *s)
 {
-    return (size_t)s->cap * 3 * sizeof(float);
+    return ((size_t)s->cap * 3 + s->cells_cap) * sizeof(float);
 }
 
 size_t ms_extract_work_bytes(const ms_extract_work *w)

@@ -33,6 +33,8 @@ typedef struct ms_extract_snap {
     int isa;             /* MS_VOLUME_ISA_*: phase B's gather (any gives the same bytes) */
     int reference;       /* 1: the root search of 663cc3c (bracket to 1/256 of a spacing),
                           * the yardstick of bench_extract and test_volume; 0: secant */
+    float *cells;        /* phase A's scratch: 2 floats a cell of the volume's grid */
+    size_t cells_cap;
 } ms_extract_snap;
 
 /* Phase B's scratch (one per thread that runs it). */
