@@ -243,14 +243,15 @@ static void row_reaches(const column_ctx *cc, int j, int *reach)
     }
 }
 
-/* What the downward walk starts from, of the candidates (cz, ca, mc > 0):
- * the highest sphere top (*ztop_out), the highest centre (*zcen_out) and
- * the lowest sphere bottom (*zlow_out). Maxima and minima in lanes: exact
+/* The start of the downward walk and the lowest sphere bottom of the
+ * candidates (cz, ca, mc > 0): the highest sphere top, but no higher than
+ * a spacing above the highest centre (a still lattice's phi there is
+ * ~0.6 T: the top crossing lies below). Maxima and minima in lanes: exact
  * in any order, so vectorisable. */
 static inline __attribute__((always_inline)) void column_span(const float *restrict cz,
                                                               const float *restrict ca, int mc,
-                                                              float R, float *ztop_out,
-                                                              float *zcen_out, float *zlow_out)
+                                                              float R, float spacing, float *zstart,
+                                                              float *zlow_out)
 {
     enum { L = MS_VOLUME_LANES };
     float top[L], cmax[L], low[L];
@@ -279,17 +280,8 @@ static inline __attribute__((always_inline)) void column_span(const float *restr
         zc = cmax[l] > zc ? cmax[l] : zc;
         zlow = low[l] < zlow ? low[l] : zlow;
     }
-    *ztop_out = zmax;
-    *zcen_out = zc;
+    *zstart = zmax < zc + spacing ? zmax : zc + spacing;
     *zlow_out = zlow;
-}
-
-/* The reference walk's start: the highest sphere top, but no higher than a
- * spacing above the highest centre (a still lattice's phi there is ~0.6 T:
- * the top crossing lies below). */
-static inline float walk_start(float ztop, float zcen, float spacing)
-{
-    return ztop < zcen + spacing ? ztop : zcen + spacing;
 }
 
 #if MS_VOLUME_HAVE_AVX512
@@ -330,10 +322,10 @@ __attribute__((target("avx512f,popcnt"))) static int gather_avx512(const float *
 /* gather_avx512 for the band search with column_span folded in: the
  * kept lanes' maxima of z + R sqrt(a) and z and minimum of z - R as it
  * gathers (maxima and minima are exact in any order: column_span's
- * values). Returns the count; *ztop, *zcen, *zlow as column_span's (mc > 0). */
+ * values). Returns the count; *zstart, *zlow as column_span's (mc > 0). */
 __attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
     const float *bx, const float *by, const float *bz, int k0, int k1, float px, float py,
-    float inv_r2, float R, float *cz, float *ca, float *ztop, float *zcen, float *zlow)
+    float inv_r2, float R, float spacing, float *cz, float *ca, float *zstart, float *zlow)
 {
     const __m512 vpx = _mm512_set1_ps(px), vpy = _mm512_set1_ps(py);
     const __m512 vinv = _mm512_set1_ps(inv_r2), one = _mm512_set1_ps(1.0f);
@@ -357,8 +349,8 @@ __attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
         _mm512_storeu_ps(cz + mc, _mm512_maskz_compress_ps(keep, z));
         mc += __builtin_popcount(keep);
     }
-    *ztop = _mm512_reduce_max_ps(top);
-    *zcen = _mm512_reduce_max_ps(cmax);
+    const float zmax = _mm512_reduce_max_ps(top), zc = _mm512_reduce_max_ps(cmax);
+    *zstart = zmax < zc + spacing ? zmax : zc + spacing;
     *zlow = _mm512_reduce_min_ps(low);
     return mc;
 }
@@ -539,11 +531,8 @@ static inline __attribute__((always_inline)) int column_candidates(const column_
         }
     }
     float zmax = -INFINITY, zlow = INFINITY;
-    if (mc > 0) {
-        float ztop, zcen;
-        column_span(cz, ca, mc, R, &ztop, &zcen, &zlow);
-        zmax = walk_start(ztop, zcen, s->spacing);
-    }
+    if (mc > 0)
+        column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
     for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
         cz[pad] = 0.0f;
         ca[pad] = 0.0f;
@@ -727,10 +716,7 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
  * phi evaluation (at ze), so that NSLOT columns' evaluations run side by
  * side: each is a chain of dependent latencies (square roots, the lane
  * sum, the secant's division) that one column alone leaves the core
- * partly waiting on. The walk is column_height's, but a calm column's
- * starts half a spacing lower and goes up while phi reaches T (SEARCH_TOP;
- * the reference returns 0 there if phi reaches T half a spacing above its
- * start too, a column dry under a dense splash); then secant steps inside
+ * partly waiting on. The walk is column_height's; then secant steps inside
  * the bracket [zb, za] (phi(zb) >= T > phi(za)) from the regula falsi
  * point, superlinear where phi is smooth; a step that leaves the bracket
  * (near a sphere's rim phi's slope is unbounded) falls back to regula
@@ -740,7 +726,6 @@ enum { SEARCH_DONE, SEARCH_WALK, SEARCH_TOP, SEARCH_SECANT, SEARCH_CHECK };
 typedef struct search {
     float *cz, *ca; /* this slot's candidates */
     int mc, col, state, found, steps, it;
-    int walk_max;  /* steps down before the spray search */
     float ze;      /* where phi is wanted next */
     float z, zlow; /* the walk */
     float za, zb, fa, fb, zp, fp, zr;
@@ -830,21 +815,13 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
         }
         q->z -= 0.5f * s->spacing;
         q->steps++;
-        if (q->z >= q->zlow && q->steps < q->walk_max && !q->found) {
+        if (q->z >= q->zlow && q->steps < 6 && !q->found) {
             q->ze = q->z;
             return;
         }
         search_after_walk(s, q);
     } else if (q->state == SEARCH_TOP) {
         q->fa = phi - T;
-        if (q->fa >= 0.0f && q->steps < 12) { /* phi reaches T there too: up again */
-            q->zb = q->za;
-            q->fb = q->fa;
-            q->za = q->zb + 0.5f * s->spacing;
-            q->ze = q->za;
-            q->steps++;
-            return;
-        }
         q->found = q->fa < 0.0f;
         search_after_top(s, q);
     } else if (q->state == SEARCH_CHECK) {
@@ -957,13 +934,13 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                 const int k0 = bst[i], k1 = bst[i + 2 * cc->rx + 1];
                 float *cz = q->cz, *ca = q->ca;
                 int mc = 0;
-                float ztop = -INFINITY, zcen = -INFINITY, zlow = INFINITY;
+                float zmax = -INFINITY, zlow = INFINITY;
 #if MS_VOLUME_HAVE_AVX512
                 if (avx512) {
-                    mc = gather_span_avx512(tx, ty, tz, k0, k1, px, py, inv_r2, R, cz, ca, &ztop,
-                                            &zcen, &zlow);
+                    mc = gather_span_avx512(tx, ty, tz, k0, k1, px, py, inv_r2, R, s->spacing, cz,
+                                            ca, &zmax, &zlow);
                     if (mc == 0)
-                        ztop = zcen = -INFINITY, zlow = INFINITY;
+                        zmax = -INFINITY, zlow = INFINITY;
                 } else
 #endif
                 {
@@ -975,19 +952,8 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                         mc += a > 0.0f;
                     }
                     if (mc > 0)
-                        column_span(cz, ca, mc, R, &ztop, &zcen, &zlow);
+                        column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
                 }
-                /* the reference's start, or half a spacing lower where that
-                 * is a spacing above the highest centre (a calm column):
-                 * a still lattice's phi is T there (the iso-level's
-                 * definition), so two evaluations bracket the root, and the
-                 * walk goes up if phi reaches T (SEARCH_TOP); five steps
-                 * down, not six, so it ends where the reference's does and
-                 * a spray search looks at the same heights */
-                const float zfull = walk_start(ztop, zcen, s->spacing);
-                const int calm = ztop >= zcen + s->spacing;
-                const float zmax = calm ? zcen + 0.5f * s->spacing : zfull;
-                q->walk_max = calm ? 5 : 6;
                 for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
                     cz[pad] = 0.0f;
                     ca[pad] = 0.0f;
