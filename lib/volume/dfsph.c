@@ -675,6 +675,30 @@ static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_
     return s;
 }
 
+/* v_i = (nx, ny, nz), an update of the pressure solve or the warm start.
+ * The pressure makes no particle faster than the sound speed (or than it
+ * was): a liquid of sound speed c0 expands from a compression at about
+ * c0, never faster. Measured: without it a box packed at twice rest
+ * density (every particle's target out of reach in one sub-step) reached
+ * 150 m/s, then non-finite velocities; with it the kinetic energy stays
+ * below the elastic energy of the compression. Only binds far from any
+ * state the shipped scenes reach. */
+static inline void set_capped(ms_volume *v, int i, float nx, float ny, float nz)
+{
+    const float ux = v->vx[i], uy = v->vy[i], uz = v->vz[i];
+    const float n2 = nx * nx + ny * ny + nz * nz, o2 = ux * ux + uy * uy + uz * uz;
+    const float lim2 = o2 > v->c0 * v->c0 ? o2 : v->c0 * v->c0;
+    if (n2 > lim2) {
+        const float f = sqrtf(lim2 / n2);
+        nx *= f;
+        ny *= f;
+        nz *= f;
+    }
+    v->vx[i] = nx;
+    v->vy[i] = ny;
+    v->vz[i] = nz;
+}
+
 /* v_i += scale m G sum_j (s_i + s_j) g_ij (x_i - x_j): the pressure term. */
 static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
                                             const float *restrict cgx, const float *restrict cgy,
@@ -722,26 +746,7 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
         }
     }
     const float c = scale * v->mass * v->K.spiky_grad;
-    const float ux = v->vx[i], uy = v->vy[i], uz = v->vz[i];
-    float nx = ux + c * sx, ny = uy + c * sy, nz = uz + c * sz;
-    /* The pressure makes no particle faster than the sound speed (or than
-     * it was): a liquid of sound speed c0 expands from a compression at
-     * about c0, never faster. Measured: without it a box packed at twice
-     * rest density (every particle's target out of reach in one sub-step)
-     * reached 150 m/s, then non-finite velocities; with it the kinetic
-     * energy stays below the elastic energy of the compression. Only
-     * binds far from any state the shipped scenes reach. */
-    const float n2 = nx * nx + ny * ny + nz * nz, o2 = ux * ux + uy * uy + uz * uz;
-    const float lim2 = o2 > v->c0 * v->c0 ? o2 : v->c0 * v->c0;
-    if (n2 > lim2) {
-        const float f = sqrtf(lim2 / n2);
-        nx *= f;
-        ny *= f;
-        nz *= f;
-    }
-    v->vx[i] = nx;
-    v->vy[i] = ny;
-    v->vz[i] = nz;
+    set_capped(v, i, v->vx[i] + c * sx, v->vy[i] + c * sy, v->vz[i] + c * sz);
 }
 
 /* e / rho0 in units of 2^-32, clamped to [0, 64] (NaN counts as 64) so
@@ -927,19 +932,8 @@ static void warm_kick(void *ctxp, int part, int b, int e)
     const float c = ctx->warm, r2 = ctx->scale;
     for (int i = b; i < e; ++i) {
         if (v->df_warm_on) {
-            const float ux = v->vx[i], uy = v->vy[i], uz = v->vz[i];
-            float nx = ux + c * v->df_wx[i], ny = uy + c * v->df_wy[i], nz = uz + c * v->df_wz[i];
-            const float n2 = nx * nx + ny * ny + nz * nz, o2 = ux * ux + uy * uy + uz * uz;
-            const float lim2 = o2 > v->c0 * v->c0 ? o2 : v->c0 * v->c0;
-            if (n2 > lim2) {
-                const float f = sqrtf(lim2 / n2);
-                nx *= f;
-                ny *= f;
-                nz *= f;
-            }
-            v->vx[i] = nx;
-            v->vy[i] = ny;
-            v->vz[i] = nz;
+            set_capped(v, i, v->vx[i] + c * v->df_wx[i], v->vy[i] + c * v->df_wy[i],
+                       v->vz[i] + c * v->df_wz[i]);
             v->df_sum[i] = r2 * (warm_share(v, i) * v->df_warm[v->id[i]]);
         } else {
             v->df_sum[i] = 0.0f;
