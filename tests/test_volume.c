@@ -1067,6 +1067,73 @@ START_TEST(the_band_search_finds_the_reference_surface)
 }
 END_TEST
 
+/* Issue 12: a glass column under DFSPH (acceleration-bound factor 0.5)
+ * whose phi dips under T between two layers below its surface: the secant
+ * stalled at the bracket's lower end for ten steps and its estimate stood
+ * 0.15 mm (7.7 tol/2) from the nearest root (main 914c088). Its spheres (z, 1 - d^2 / R^2) as
+ * phase B gathered them, placed around one column of a wide domain: the
+ * band's height is within tol/2 = spacing / 512 of a root of phi = T. */
+START_TEST(a_stalled_secant_still_ends_within_half_a_tolerance)
+{
+    static const float sph[][2] = {
+        {0.0307387281f, 0.21976459f},   {0.0489525609f, 0.0407658815f},
+        {0.0587471165f, 0.0418227911f}, {0.0213956796f, 0.139305532f},
+        {0.0627828315f, 0.259481788f},  {0.0116637209f, 0.753078818f},
+        {0.0237290971f, 0.339695632f},  {0.0342858844f, 0.412444472f},
+        {0.0461708084f, 0.444905639f},  {0.0613659248f, 0.393671751f},
+        {0.0148955584f, 0.615630984f},  {0.0190534201f, 0.881979823f},
+        {0.0471156277f, 0.64890486f},   {0.0592163615f, 0.708055735f},
+        {0.0145474123f, 0.490791619f},  {0.027922811f, 0.335661352f},
+        {0.0506237708f, 0.679645181f},  {0.0632346869f, 0.155081451f},
+        {0.0120235933f, 0.95950073f},   {0.0253163669f, 0.929774106f},
+        {0.0484441221f, 0.943423092f},  {0.0417936891f, 0.944848061f},
+        {0.0611290187f, 0.983473122f},  {0.0651021972f, 0.941908181f},
+        {0.0158481933f, 0.435009122f},  {0.018985074f, 0.86237371f},
+        {0.0312563106f, 0.901762784f},  {0.0240688194f, 0.50581336f},
+        {0.0517242067f, 0.707154155f},  {0.056913808f, 0.535070419f},
+        {0.0320819952f, 0.346229136f},  {0.0445261747f, 0.412760139f},
+        {0.0601904616f, 0.633765101f},  {0.0137000093f, 0.273264885f},
+        {0.0557337441f, 0.0400726795f},
+    };
+    enum { N = sizeof sph / sizeof *sph };
+    float x[N], y[N], z[N];
+    const float R = 0.02f, c = 0.1f;
+    for (int k = 0; k < N; ++k) { /* at 1 - a of R^2 from the centre, spread in angle */
+        const double d = R * sqrt(1.0 - sph[k][1]), t = 2.399963 * k;
+        x[k] = (float)(c + d * cos(t));
+        y[k] = (float)(c + d * sin(t));
+        z[k] = sph[k][0];
+    }
+    ms_extract_snap s = {0};
+    s.m = s.cap = N;
+    s.x = x;
+    s.y = y;
+    s.z = z;
+    s.iso = 10.0393515f;
+    s.R = R;
+    s.spacing = 0.01f;
+    s.hi[0] = s.hi[1] = 2.0f * c;
+    s.hi[2] = 0.25f;
+    for (int isa = MS_VOLUME_ISA_C; isa <= MS_VOLUME_ISA_AVX512; isa += MS_VOLUME_ISA_AVX512) {
+        ms_extract_work w = {0};
+        float h[2];
+        s.isa = isa;
+        for (int ref = 0; ref <= 1; ++ref) {
+            s.reference = ref;
+            ck_assert_int_eq(ms_extract_field(&s, &w, NULL, 1, 1, &h[ref]), MS_OK);
+        }
+        const double rb = root_distance(&s, c, c, h[0]), ra = root_distance(&s, c, c, h[1]);
+        fprintf(
+            stderr,
+            "stalled column (isa %d): band %.9g m, %.3g m from a root; reference %.9g m, %.3g m\n",
+            isa, (double)h[0], rb, (double)h[1], ra);
+        ck_assert_msg(rb <= s.spacing / 512.0, "band %g m, %g m from a root (tol/2 %g m)",
+                      (double)h[0], rb, s.spacing / 512.0);
+        ms_extract_work_free(&w);
+    }
+}
+END_TEST
+
 START_TEST(adaptive_smoothing_keeps_turbulent_liquid_detailed)
 {
     ms_volume_desc d = box_desc(0.4f, 0.4f, 0.4f, 0.02f);
@@ -1609,6 +1676,7 @@ static Suite *volume_suite(void)
     tcase_add_test(ex, adaptive_smoothing_keeps_turbulent_liquid_detailed);
     tcase_add_test(ex, every_instruction_set_path_extracts_the_same_field);
     tcase_add_test(ex, the_band_search_finds_the_reference_surface);
+    tcase_add_test(ex, a_stalled_secant_still_ends_within_half_a_tolerance);
     suite_add_tcase(s, ex);
 
     TCase *hard = tcase_create("hard");

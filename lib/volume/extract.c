@@ -721,8 +721,14 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
  * point, superlinear where phi is smooth; a step that leaves the bracket
  * (near a sphere's rim phi's slope is unbounded) falls back to regula
  * falsi, then bisection; a step under a quarter of 1/256 of a spacing is
- * checked (SEARCH_CHECK) before its estimate stands. */
-enum { SEARCH_DONE, SEARCH_WALK, SEARCH_TOP, SEARCH_SECANT, SEARCH_CHECK };
+ * checked (SEARCH_CHECK) before its estimate stands. An estimate stands
+ * only where the bracket proves it within tol/2 of a root (tol = 1/256
+ * of a spacing), or within tol (the bracket closed under tol around it);
+ * ten steps without such a proof (a secant stalled on one side of a root
+ * where phi dips under T below the surface: on glass under DFSPH it
+ * ended 7.7 tol/2 from a root) hand the bracket to bisection
+ * (SEARCH_BISECT) until it is under tol, its midpoint the height. */
+enum { SEARCH_DONE, SEARCH_WALK, SEARCH_TOP, SEARCH_SECANT, SEARCH_CHECK, SEARCH_BISECT };
 typedef struct search {
     float *cz, *ca; /* this slot's candidates */
     int mc, col, state, found, steps, it;
@@ -732,12 +738,33 @@ typedef struct search {
     float height;
 } search;
 
+/* zr stands (proven within tol/2 or tol of a root, see above). */
+static inline __attribute__((always_inline)) void search_done(const ms_extract_snap *s, search *q)
+{
+    q->height = fminf(fmaxf(q->zr - s->lo[2], 0.0f), s->hi[2] - s->lo[2]);
+    q->state = SEARCH_DONE;
+}
+
+/* The bracket's midpoint next, or (under tol wide, or no float between
+ * its ends) the height. */
+static inline __attribute__((always_inline)) void search_bisect_next(const ms_extract_snap *s,
+                                                                     search *q)
+{
+    const float zm = 0.5f * (q->za + q->zb);
+    if (q->za - q->zb < s->spacing / 256.0f || !(zm > q->zb && zm < q->za)) {
+        q->zr = zm;
+        search_done(s, q);
+        return;
+    }
+    q->ze = zm;
+    q->state = SEARCH_BISECT;
+}
+
 static inline __attribute__((always_inline)) void search_secant_next(const ms_extract_snap *s,
                                                                      search *q)
 {
-    if (q->it >= 10) {
-        q->height = fminf(fmaxf(q->zr - s->lo[2], 0.0f), s->hi[2] - s->lo[2]);
-        q->state = SEARCH_DONE;
+    if (q->it >= 10) { /* no proof in ten steps */
+        search_bisect_next(s, q);
         return;
     }
     if (!(q->zr > q->zb && q->zr < q->za))
@@ -836,8 +863,7 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
         const float f = phi - T, zc = q->ze;
         const int up = zc > q->zr;
         if (up ? f < 0.0f : f >= 0.0f) {
-            q->it = 10;
-            search_secant_next(s, q);
+            search_done(s, q);
             return;
         }
         if (f >= 0.0f) {
@@ -852,6 +878,15 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
         q->zr = q->zb + (q->za - q->zb) * q->fb / (q->fb - q->fa);
         q->it++;
         search_secant_next(s, q);
+    } else if (q->state == SEARCH_BISECT) {
+        if (phi >= T) {
+            q->zb = q->ze;
+            q->fb = phi - T;
+        } else {
+            q->za = q->ze;
+            q->fa = phi - T;
+        }
+        search_bisect_next(s, q);
     } else { /* SEARCH_SECANT */
         const float tol = s->spacing / 256.0f, zr = q->zr, f = phi - T;
         if (f >= 0.0f) {
@@ -870,13 +905,20 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
         q->fp = f;
         q->zr = zn;
         q->it++;
-        if (closed || (small && q->it >= 10)) {
-            q->it = 10; /* the estimate stands */
-        } else if (small) {
+        if (closed) {
+            /* the root is in [zb, za], under tol wide, and so is zn (the
+             * midpoint would be within tol/2: it moved test_sim's
+             * two_way_coupling_stays_bounded's 100-frame wave peaks from
+             * decaying to 0.0305, 0.0316 m) */
+            search_done(s, q);
+            return;
+        }
+        if (small) {
             /* zn lies on the root's side of zr (now a bracket end) */
             const float zc = zn > zr ? zn + 0.5f * tol : zn - 0.5f * tol;
             if (zn > zr ? zc >= za : zc <= zb) {
-                q->it = 10; /* the bracket's far end is within tol/2 */
+                search_done(s, q); /* the bracket's far end is within tol/2 */
+                return;
             } else {
                 q->ze = zc;
                 q->state = SEARCH_CHECK;
