@@ -97,11 +97,15 @@ int ms_vpool_parts(const ms_vpool *p);
  * j | image << MS_VOLUME_IMAGE_SHIFT (bit k < 3 of the image: reflected
  * across the nearer domain wall of axis k; MS_VOLUME_IMAGE_SHAPE: across
  * the tangent plane of the particle's nearest shape collider). Rebuilt by
- * every density pass. */
+ * every density pass. A list has a cache line of its own: each thread
+ * bumps its part's `len` once a particle, and with the parts' lists
+ * sharing a line that line went back and forth between the two cores
+ * (issue 12, round twelve: bench_volume's 31k sub-step took 5.4 ms on 2
+ * threads against 4.8 on 1 on the Intel VM; 3.3 with the line apart). */
 #define MS_VOLUME_IMAGE_SHIFT 24
 #define MS_VOLUME_IMAGE_SHAPE 8u
 typedef struct ms_nlist {
-    int *idx;
+    _Alignas(64) int *idx;
     float *r2;  /* m^2 */
     size_t cap; /* entries */
     size_t len;
