@@ -627,7 +627,7 @@ START_TEST(two_way_coupling_stays_bounded)
         steps(sim, 1, 1.0f / 60);
         double m;
         wave_sum(sim, &m);
-        /* finite and low: measured at most 0.061 m (frame 0-99) from a
+        /* finite and low: measured at most 0.042 m (frame 0-99) from a
          * 0.2 m dam; 0.1 m is half the dam's water column */
         ck_assert_msg(isfinite(m) && m < 0.1, "frame %d: max |wave| %g m", f, m);
         peak[f / 100] = fmax(peak[f / 100], m);
@@ -637,8 +637,13 @@ START_TEST(two_way_coupling_stays_bounded)
     }
     /* no feedback loop between the two couplings: a loop would grow
      * geometrically; the damped waves decay once the dam has broken
-     * (measured peaks 0.061, 0.039, 0.033 m: each 100 frames lower) */
-    ck_assert_msg(peak[0] > 1e-2 && peak[2] < peak[1] && peak[1] < peak[0],
+     * (measured peaks 0.042, 0.035, 0.031 m). The last two windows are
+     * near the sloshing's floor, where their order is not the physics'
+     * (a change of the extraction's root search within its tolerance
+     * once gave 0.0305, 0.0316 m): both must stay under the first, and
+     * the last may not grow by a fifth over the second */
+    ck_assert_msg(peak[0] > 1e-2 && peak[1] < peak[0] && peak[2] < peak[0] &&
+                      peak[2] < 1.2 * peak[1],
                   "max |wave| %g m, %g m, %g m", peak[0], peak[1], peak[2]);
     ms_sim_destroy(sim);
     ms_scene_destroy(sc);
