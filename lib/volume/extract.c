@@ -352,6 +352,10 @@ __attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
     const float zmax = _mm512_reduce_max_ps(top), zc = _mm512_reduce_max_ps(cmax);
     *zstart = zmax < zc + spacing ? zmax : zc + spacing;
     *zlow = _mm512_reduce_min_ps(low);
+    /* weight-0 lanes to the next multiple of 8 (a store, not a loop of
+     * 0 to 7 turns, whose end mispredicts) */
+    _mm256_storeu_ps(ca + mc, _mm256_setzero_ps());
+    _mm256_storeu_ps(cz + mc, _mm256_setzero_ps());
     return mc;
 }
 
@@ -712,6 +716,32 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
     bst[ex] = k;
 }
 
+#if MS_VOLUME_HAVE_AVX512
+/* band_build copying 16 floats at a time under a mask: a run is a few
+ * particles, and a loop of varying length mispredicts its end. */
+__attribute__((target("avx512f"))) static void band_build_avx512(const column_ctx *cc, int j,
+                                                                 float *tx, float *ty, float *tz,
+                                                                 int *bst)
+{
+    const int ex = cc->ex, ey = cc->ey, span = 2 * cc->ry + 1;
+    const int *cstart = cc->cstart;
+    int k = 0;
+    for (int ix = 0; ix < ex; ++ix) {
+        const int q0 = cstart[ix * ey + j], n = cstart[ix * ey + j + span] - q0;
+        bst[ix] = k;
+        for (int q = 0; q < n; q += 16) {
+            const int left = n - q;
+            const __mmask16 live = left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
+            _mm512_mask_storeu_ps(tx + k + q, live, _mm512_maskz_loadu_ps(live, cc->bx + q0 + q));
+            _mm512_mask_storeu_ps(ty + k + q, live, _mm512_maskz_loadu_ps(live, cc->by + q0 + q));
+            _mm512_mask_storeu_ps(tz + k + q, live, _mm512_maskz_loadu_ps(live, cc->bz + q0 + q));
+        }
+        k += n;
+    }
+    bst[ex] = k;
+}
+#endif
+
 /* The band search's column height as a machine that stops before each
  * phi evaluation (at ze), so that NSLOT columns' evaluations run side by
  * side: each is a chain of dependent latencies (square roots, the lane
@@ -968,7 +998,12 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                 const int col = next++;
                 const int i = cc->i0 + col % cc->rw, j = cc->j0 + col / cc->rw;
                 if (j != band_j) { /* columns go row by row: once a row */
-                    band_build(cc, j, tx, ty, tz, bst);
+#if MS_VOLUME_HAVE_AVX512
+                    if (avx512)
+                        band_build_avx512(cc, j, tx, ty, tz, bst);
+                    else
+#endif
+                        band_build(cc, j, tx, ty, tz, bst);
                     band_j = j;
                 }
                 const float px = s->lo[0] + ((float)i + 0.5f) * cc->dxe;
@@ -995,10 +1030,10 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                     }
                     if (mc > 0)
                         column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
-                }
-                for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
-                    cz[pad] = 0.0f;
-                    ca[pad] = 0.0f;
+                    for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
+                        cz[pad] = 0.0f;
+                        ca[pad] = 0.0f;
+                    }
                 }
                 q->mc =
                     (mc + MS_VOLUME_LANES / 2 - 1) / (MS_VOLUME_LANES / 2) * (MS_VOLUME_LANES / 2);
