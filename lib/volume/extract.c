@@ -983,6 +983,8 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
         slot[k].col = -1;
     }
     int next = b, live = 0;
+    /* next's column and row, stepped along (no division a column) */
+    int next_i = b % cc->rw, next_j = b / cc->rw;
     for (;;) {
         /* a finished slot stores its height and takes the next column */
         for (int k = 0; k < NSLOT; ++k) {
@@ -996,7 +998,9 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                 if (next >= e)
                     break;
                 const int col = next++;
-                const int i = cc->i0 + col % cc->rw, j = cc->j0 + col / cc->rw;
+                const int i = cc->i0 + next_i, j = cc->j0 + next_j;
+                next_j += next_i + 1 == cc->rw;
+                next_i = next_i + 1 == cc->rw ? 0 : next_i + 1;
                 if (j != band_j) { /* columns go row by row: once a row */
 #if MS_VOLUME_HAVE_AVX512
                     if (avx512)
