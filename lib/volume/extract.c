@@ -359,30 +359,38 @@ __attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
     return mc;
 }
 
-/* phi_at in AVX-512 (the band search): the same floats in the same
- * lanes, and ms_lanes_sum's tree on register halves, without the trip
- * of the accumulator through memory. */
+/* phi_at for the band search on an AVX-512 machine: the same floats in
+ * the same lanes, and ms_lanes_sum's tree in registers, without the trip
+ * of the accumulator through memory. In 8-float halves, lanes 0-7 and
+ * 8-15 of a block apart: the evaluations are a chain of latencies
+ * (columns_band_body), and an 8-float square root has about 2/3 of a
+ * 16-float one's latency on Intel cores at half the work, and the tree's
+ * first level is then an add of the two halves, not an extract and an
+ * add. */
 __attribute__((target("avx512f"))) static inline float phi_at_avx512(const float *restrict zc,
                                                                      const float *restrict a, int m,
                                                                      float z, float inv_r2)
 {
-    const __m512 vz = _mm512_set1_ps(z), vinv = _mm512_set1_ps(inv_r2);
-    const __m512 zero = _mm512_setzero_ps();
-    __m512 acc = zero;
+    const __m256 vz = _mm256_set1_ps(z), vinv = _mm256_set1_ps(inv_r2);
+    const __m256 zero = _mm256_setzero_ps();
+    __m256 lo = zero, hi = zero;
     int k = 0;
     for (; k + 16 <= m; k += 16) {
-        const __m512 d = _mm512_sub_ps(vz, _mm512_loadu_ps(zc + k));
-        __m512 q = _mm512_sub_ps(_mm512_loadu_ps(a + k), _mm512_mul_ps(_mm512_mul_ps(d, d), vinv));
-        q = _mm512_max_ps(q, zero); /* +0 for q <= 0, as q > 0 ? q : 0 */
-        acc = _mm512_add_ps(acc, _mm512_sqrt_ps(q));
+        const __m256 dl = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + k));
+        const __m256 dh = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + k + 8));
+        __m256 ql =
+            _mm256_sub_ps(_mm256_loadu_ps(a + k), _mm256_mul_ps(_mm256_mul_ps(dl, dl), vinv));
+        __m256 qh =
+            _mm256_sub_ps(_mm256_loadu_ps(a + k + 8), _mm256_mul_ps(_mm256_mul_ps(dh, dh), vinv));
+        ql = _mm256_max_ps(ql, zero); /* +0 for q <= 0, as q > 0 ? q : 0 */
+        qh = _mm256_max_ps(qh, zero);
+        lo = _mm256_add_ps(lo, _mm256_sqrt_ps(ql));
+        hi = _mm256_add_ps(hi, _mm256_sqrt_ps(qh));
     }
-    __m256 lo = _mm512_castps512_ps256(acc);
-    const __m256 hi = _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(acc), 1));
     if (k < m) { /* a half block: the low lanes */
-        const __m256 d = _mm256_sub_ps(_mm512_castps512_ps256(vz), _mm256_loadu_ps(zc + k));
-        __m256 q = _mm256_sub_ps(_mm256_loadu_ps(a + k),
-                                 _mm256_mul_ps(_mm256_mul_ps(d, d), _mm512_castps512_ps256(vinv)));
-        q = _mm256_max_ps(q, _mm256_setzero_ps());
+        const __m256 d = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + k));
+        __m256 q = _mm256_sub_ps(_mm256_loadu_ps(a + k), _mm256_mul_ps(_mm256_mul_ps(d, d), vinv));
+        q = _mm256_max_ps(q, zero);
         lo = _mm256_add_ps(lo, _mm256_sqrt_ps(q));
     }
     const __m256 t8 = _mm256_add_ps(lo, hi); /* (l, l + 8) */
@@ -1050,6 +1058,7 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
             break;
         /* the slots' evaluations, independent of each other */
         float phi[NSLOT];
+#pragma GCC unroll 4
         for (int k = 0; k < NSLOT; ++k) {
             const search *q = &slot[k];
             phi[k] = 0.0f;
@@ -1063,6 +1072,7 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
 #endif
             phi[k] = phi_at(q->cz, q->ca, q->mc, q->ze, inv_r2);
         }
+#pragma GCC unroll 4
         for (int k = 0; k < NSLOT; ++k)
             if (slot[k].state != SEARCH_DONE)
                 search_step(s, &slot[k], phi[k]);
