@@ -375,6 +375,17 @@ __attribute__((target("avx512f"))) static inline float phi_at_avx512(const float
     const __m256 zero = _mm256_setzero_ps();
     __m256 lo = zero, hi = zero;
     int k = 0;
+    if (m >= 16) { /* the first block starts the sums: +0 + x = x for x >= +0 */
+        const __m256 dl = _mm256_sub_ps(vz, _mm256_loadu_ps(zc));
+        const __m256 dh = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + 8));
+        const __m256 ql =
+            _mm256_sub_ps(_mm256_loadu_ps(a), _mm256_mul_ps(_mm256_mul_ps(dl, dl), vinv));
+        const __m256 qh =
+            _mm256_sub_ps(_mm256_loadu_ps(a + 8), _mm256_mul_ps(_mm256_mul_ps(dh, dh), vinv));
+        lo = _mm256_sqrt_ps(_mm256_max_ps(ql, zero));
+        hi = _mm256_sqrt_ps(_mm256_max_ps(qh, zero));
+        k = 16;
+    }
     for (; k + 16 <= m; k += 16) {
         const __m256 dl = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + k));
         const __m256 dh = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + k + 8));
