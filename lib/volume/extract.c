@@ -1398,53 +1398,55 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     memset(cfill, 0, ecells * sizeof *cfill);
     /* the bin of a particle or image: the particles' clamped to the field
      * as the reference's, the images' to the extension */
+    /* the keys and the positions in particle order (the band's scratch,
+     * 3 x icap floats or more, holds the positions until the columns),
+     * then a counting sort: stable, so a bin holds its particles and
+     * images in that order */
+    float *ux = band, *uy = ux + icap, *uz = uy + icap;
     int mi = 0;
-    for (int pass = 0; pass < 2; ++pass) {
-        int q = 0;
-        for (int k = 0; k < m; ++k) {
-            const float x = s->x[k], y = s->y[k];
-            /* the image in the wall within R (a domain narrower than 2 R:
-             * the low wall's) */
-            const int nxm = x - lo[0] < R || hi[0] - x < R ? 2 : 1;
-            const int nym = y - lo[1] < R || hi[1] - y < R ? 2 : 1;
-            const float xs[2] = {x, 2.0f * (x - lo[0] < R ? lo[0] : hi[0]) - x};
-            const float ys[2] = {y, 2.0f * (y - lo[1] < R ? lo[1] : hi[1]) - y};
-            for (int my = 0; my < nym; ++my)
-                for (int mx = 0; mx < nxm; ++mx) {
-                    int ix, iy;
-                    if (mx == 0)
-                        ix = (int)clampf((x - lo[0]) / dxe, 0.0f, (float)(nx - 1));
-                    else
-                        ix = (int)clampf(floorf((xs[1] - lo[0]) / dxe), (float)-rx,
-                                         (float)(nx + rx - 1));
-                    if (my == 0)
-                        iy = (int)clampf((y - lo[1]) / dye, 0.0f, (float)(ny - 1));
-                    else
-                        iy = (int)clampf(floorf((ys[1] - lo[1]) / dye), (float)-ry,
-                                         (float)(ny + ry - 1));
-                    /* x-major: a bin column's rows are one run (band_build) */
-                    const int key = (ix + rx) * ey + iy + ry;
-                    if (pass == 0) {
-                        ckey[q++] = key;
-                        cfill[key]++;
-                    } else {
-                        const int d = cfill[ckey[q++]]++;
-                        bx[d] = mx ? xs[1] : x;
-                        by[d] = my ? ys[1] : y;
-                        bz[d] = s->z[k];
-                    }
-                }
-        }
-        if (pass == 0) {
-            mi = q;
-            int sum = 0;
-            for (size_t c = 0; c < ecells; ++c) {
-                cstart[c] = sum;
-                sum += cfill[c];
-                cfill[c] = cstart[c];
+    for (int k = 0; k < m; ++k) {
+        const float x = s->x[k], y = s->y[k];
+        /* the image in the wall within R (a domain narrower than 2 R:
+         * the low wall's) */
+        const int nxm = x - lo[0] < R || hi[0] - x < R ? 2 : 1;
+        const int nym = y - lo[1] < R || hi[1] - y < R ? 2 : 1;
+        const float xs[2] = {x, 2.0f * (x - lo[0] < R ? lo[0] : hi[0]) - x};
+        const float ys[2] = {y, 2.0f * (y - lo[1] < R ? lo[1] : hi[1]) - y};
+        for (int my = 0; my < nym; ++my)
+            for (int mx = 0; mx < nxm; ++mx) {
+                int ix, iy;
+                if (mx == 0)
+                    ix = (int)clampf((x - lo[0]) / dxe, 0.0f, (float)(nx - 1));
+                else
+                    ix = (int)clampf(floorf((xs[1] - lo[0]) / dxe), (float)-rx,
+                                     (float)(nx + rx - 1));
+                if (my == 0)
+                    iy = (int)clampf((y - lo[1]) / dye, 0.0f, (float)(ny - 1));
+                else
+                    iy = (int)clampf(floorf((ys[1] - lo[1]) / dye), (float)-ry,
+                                     (float)(ny + ry - 1));
+                /* x-major: a bin column's rows are one run (band_build) */
+                const int key = (ix + rx) * ey + iy + ry;
+                ckey[mi] = key;
+                cfill[key]++;
+                ux[mi] = mx ? xs[1] : x;
+                uy[mi] = my ? ys[1] : y;
+                uz[mi] = s->z[k];
+                mi++;
             }
-            cstart[ecells] = sum;
-        }
+    }
+    int sum = 0;
+    for (size_t c = 0; c < ecells; ++c) {
+        cstart[c] = sum;
+        sum += cfill[c];
+        cfill[c] = cstart[c];
+    }
+    cstart[ecells] = sum;
+    for (int q = 0; q < mi; ++q) {
+        const int d = cfill[ckey[q]]++;
+        bx[d] = ux[q];
+        by[d] = uy[q];
+        bz[d] = uz[q];
     }
     assert((size_t)mi <= icap);
     (void)mi;
@@ -1556,11 +1558,15 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
         for (int j = 0; j < rh; ++j) {
             const float *r0 = pad + (size_t)j * px, *r1 = r0 + px, *r2 = r1 + px;
             float *iw = inv_w + (size_t)j * rw;
+            /* vectorised (omp simd: -O2 leaves it scalar); wt is 0 or a
+             * sum of weights >= 1, so 1 / max(wt, 1) is 1 / wt where it
+             * is kept, and no lane divides by 0 */
+#pragma omp simd
             for (int i = 0; i < rw; ++i) {
                 const float wt = (r0[i] + 2.0f * r0[i + 1] + r0[i + 2]) +
                                  (2.0f * r1[i] + 4.0f * r1[i + 1] + 2.0f * r1[i + 2]) +
                                  (r2[i] + 2.0f * r2[i + 1] + r2[i + 2]);
-                iw[i] = wt > 0.0f ? 1.0f / wt : 0.0f;
+                iw[i] = wt > 0.0f ? 1.0f / (wt > 1.0f ? wt : 1.0f) : 0.0f;
             }
         }
     }
