@@ -981,8 +981,9 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
 /* Columns [b, e) of the rectangle by the band: one run of candidates a
  * column (images are particles of the extended bins), then the secant
  * root search, NSLOT columns at a time (search): two measured 1.09-1.14x
- * faster than one on fig1 (same process, interleaved), three and four
- * no faster than two. Per instruction set as columns_body. */
+ * faster than one on fig1 (same process, interleaved; 1.32x on an Intel
+ * Xeon in round twelve), three and four no faster than two (slower on
+ * that Xeon). Per instruction set as columns_body. */
 enum { NSLOT = 2 };
 static inline __attribute__((always_inline)) void columns_band_body(const column_ctx *cc, int part,
                                                                     int b, int e, int avx512)
