@@ -790,9 +790,7 @@ typedef struct search {
 /* zr stands (proven within tol/2 or tol of a root, see above). */
 static inline __attribute__((always_inline)) void search_done(const ms_extract_snap *s, search *q)
 {
-    /* clampf: fminf(fmaxf(..)) without the library calls, which made the
-     * column loop save and restore its registers once a column */
-    q->height = clampf(q->zr - s->lo[2], 0.0f, s->hi[2] - s->lo[2]);
+    q->height = fminf(fmaxf(q->zr - s->lo[2], 0.0f), s->hi[2] - s->lo[2]);
     q->state = SEARCH_DONE;
 }
 
