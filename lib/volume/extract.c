@@ -352,33 +352,56 @@ __attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
     const float zmax = _mm512_reduce_max_ps(top), zc = _mm512_reduce_max_ps(cmax);
     *zstart = zmax < zc + spacing ? zmax : zc + spacing;
     *zlow = _mm512_reduce_min_ps(low);
+    /* weight-0 lanes to the next multiple of 8 (a store, not a loop of
+     * 0 to 7 turns, whose end mispredicts) */
+    _mm256_storeu_ps(ca + mc, _mm256_setzero_ps());
+    _mm256_storeu_ps(cz + mc, _mm256_setzero_ps());
     return mc;
 }
 
-/* phi_at in AVX-512 (the band search): the same floats in the same
- * lanes, and ms_lanes_sum's tree on register halves, without the trip
- * of the accumulator through memory. */
+/* phi_at for the band search on an AVX-512 machine: the same floats in
+ * the same lanes, and ms_lanes_sum's tree in registers, without the trip
+ * of the accumulator through memory. In 8-float halves, lanes 0-7 and
+ * 8-15 of a block apart: the evaluations are a chain of latencies
+ * (columns_band_body), and an 8-float square root has about 2/3 of a
+ * 16-float one's latency on Intel cores at half the work, and the tree's
+ * first level is then an add of the two halves, not an extract and an
+ * add. */
 __attribute__((target("avx512f"))) static inline float phi_at_avx512(const float *restrict zc,
                                                                      const float *restrict a, int m,
                                                                      float z, float inv_r2)
 {
-    const __m512 vz = _mm512_set1_ps(z), vinv = _mm512_set1_ps(inv_r2);
-    const __m512 zero = _mm512_setzero_ps();
-    __m512 acc = zero;
+    const __m256 vz = _mm256_set1_ps(z), vinv = _mm256_set1_ps(inv_r2);
+    const __m256 zero = _mm256_setzero_ps();
+    __m256 lo = zero, hi = zero;
     int k = 0;
-    for (; k + 16 <= m; k += 16) {
-        const __m512 d = _mm512_sub_ps(vz, _mm512_loadu_ps(zc + k));
-        __m512 q = _mm512_sub_ps(_mm512_loadu_ps(a + k), _mm512_mul_ps(_mm512_mul_ps(d, d), vinv));
-        q = _mm512_max_ps(q, zero); /* +0 for q <= 0, as q > 0 ? q : 0 */
-        acc = _mm512_add_ps(acc, _mm512_sqrt_ps(q));
+    if (m >= 16) { /* the first block starts the sums: +0 + x = x for x >= +0 */
+        const __m256 dl = _mm256_sub_ps(vz, _mm256_loadu_ps(zc));
+        const __m256 dh = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + 8));
+        const __m256 ql =
+            _mm256_sub_ps(_mm256_loadu_ps(a), _mm256_mul_ps(_mm256_mul_ps(dl, dl), vinv));
+        const __m256 qh =
+            _mm256_sub_ps(_mm256_loadu_ps(a + 8), _mm256_mul_ps(_mm256_mul_ps(dh, dh), vinv));
+        lo = _mm256_sqrt_ps(_mm256_max_ps(ql, zero));
+        hi = _mm256_sqrt_ps(_mm256_max_ps(qh, zero));
+        k = 16;
     }
-    __m256 lo = _mm512_castps512_ps256(acc);
-    const __m256 hi = _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(acc), 1));
+    for (; k + 16 <= m; k += 16) {
+        const __m256 dl = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + k));
+        const __m256 dh = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + k + 8));
+        __m256 ql =
+            _mm256_sub_ps(_mm256_loadu_ps(a + k), _mm256_mul_ps(_mm256_mul_ps(dl, dl), vinv));
+        __m256 qh =
+            _mm256_sub_ps(_mm256_loadu_ps(a + k + 8), _mm256_mul_ps(_mm256_mul_ps(dh, dh), vinv));
+        ql = _mm256_max_ps(ql, zero); /* +0 for q <= 0, as q > 0 ? q : 0 */
+        qh = _mm256_max_ps(qh, zero);
+        lo = _mm256_add_ps(lo, _mm256_sqrt_ps(ql));
+        hi = _mm256_add_ps(hi, _mm256_sqrt_ps(qh));
+    }
     if (k < m) { /* a half block: the low lanes */
-        const __m256 d = _mm256_sub_ps(_mm512_castps512_ps256(vz), _mm256_loadu_ps(zc + k));
-        __m256 q = _mm256_sub_ps(_mm256_loadu_ps(a + k),
-                                 _mm256_mul_ps(_mm256_mul_ps(d, d), _mm512_castps512_ps256(vinv)));
-        q = _mm256_max_ps(q, _mm256_setzero_ps());
+        const __m256 d = _mm256_sub_ps(vz, _mm256_loadu_ps(zc + k));
+        __m256 q = _mm256_sub_ps(_mm256_loadu_ps(a + k), _mm256_mul_ps(_mm256_mul_ps(d, d), vinv));
+        q = _mm256_max_ps(q, zero);
         lo = _mm256_add_ps(lo, _mm256_sqrt_ps(q));
     }
     const __m256 t8 = _mm256_add_ps(lo, hi); /* (l, l + 8) */
@@ -712,6 +735,32 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
     bst[ex] = k;
 }
 
+#if MS_VOLUME_HAVE_AVX512
+/* band_build copying 16 floats at a time under a mask: a run is a few
+ * particles, and a loop of varying length mispredicts its end. */
+__attribute__((target("avx512f"))) static void band_build_avx512(const column_ctx *cc, int j,
+                                                                 float *tx, float *ty, float *tz,
+                                                                 int *bst)
+{
+    const int ex = cc->ex, ey = cc->ey, span = 2 * cc->ry + 1;
+    const int *cstart = cc->cstart;
+    int k = 0;
+    for (int ix = 0; ix < ex; ++ix) {
+        const int q0 = cstart[ix * ey + j], n = cstart[ix * ey + j + span] - q0;
+        bst[ix] = k;
+        for (int q = 0; q < n; q += 16) {
+            const int left = n - q;
+            const __mmask16 live = left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
+            _mm512_mask_storeu_ps(tx + k + q, live, _mm512_maskz_loadu_ps(live, cc->bx + q0 + q));
+            _mm512_mask_storeu_ps(ty + k + q, live, _mm512_maskz_loadu_ps(live, cc->by + q0 + q));
+            _mm512_mask_storeu_ps(tz + k + q, live, _mm512_maskz_loadu_ps(live, cc->bz + q0 + q));
+        }
+        k += n;
+    }
+    bst[ex] = k;
+}
+#endif
+
 /* The band search's column height as a machine that stops before each
  * phi evaluation (at ze), so that NSLOT columns' evaluations run side by
  * side: each is a chain of dependent latencies (square roots, the lane
@@ -932,8 +981,9 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
 /* Columns [b, e) of the rectangle by the band: one run of candidates a
  * column (images are particles of the extended bins), then the secant
  * root search, NSLOT columns at a time (search): two measured 1.09-1.14x
- * faster than one on fig1 (same process, interleaved), three and four
- * no faster than two. Per instruction set as columns_body. */
+ * faster than one on fig1 (same process, interleaved; 1.32x on an Intel
+ * Xeon in round twelve), three and four no faster than two (slower on
+ * that Xeon). Per instruction set as columns_body. */
 enum { NSLOT = 2 };
 static inline __attribute__((always_inline)) void columns_band_body(const column_ctx *cc, int part,
                                                                     int b, int e, int avx512)
@@ -953,6 +1003,8 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
         slot[k].col = -1;
     }
     int next = b, live = 0;
+    /* next's column and row, stepped along (no division a column) */
+    int next_i = b % cc->rw, next_j = b / cc->rw;
     for (;;) {
         /* a finished slot stores its height and takes the next column */
         for (int k = 0; k < NSLOT; ++k) {
@@ -966,9 +1018,16 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                 if (next >= e)
                     break;
                 const int col = next++;
-                const int i = cc->i0 + col % cc->rw, j = cc->j0 + col / cc->rw;
+                const int i = cc->i0 + next_i, j = cc->j0 + next_j;
+                next_j += next_i + 1 == cc->rw;
+                next_i = next_i + 1 == cc->rw ? 0 : next_i + 1;
                 if (j != band_j) { /* columns go row by row: once a row */
-                    band_build(cc, j, tx, ty, tz, bst);
+#if MS_VOLUME_HAVE_AVX512
+                    if (avx512)
+                        band_build_avx512(cc, j, tx, ty, tz, bst);
+                    else
+#endif
+                        band_build(cc, j, tx, ty, tz, bst);
                     band_j = j;
                 }
                 const float px = s->lo[0] + ((float)i + 0.5f) * cc->dxe;
@@ -995,10 +1054,10 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                     }
                     if (mc > 0)
                         column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
-                }
-                for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
-                    cz[pad] = 0.0f;
-                    ca[pad] = 0.0f;
+                    for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
+                        cz[pad] = 0.0f;
+                        ca[pad] = 0.0f;
+                    }
                 }
                 q->mc =
                     (mc + MS_VOLUME_LANES / 2 - 1) / (MS_VOLUME_LANES / 2) * (MS_VOLUME_LANES / 2);
@@ -1011,6 +1070,7 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
             break;
         /* the slots' evaluations, independent of each other */
         float phi[NSLOT];
+#pragma GCC unroll 4
         for (int k = 0; k < NSLOT; ++k) {
             const search *q = &slot[k];
             phi[k] = 0.0f;
@@ -1024,6 +1084,7 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
 #endif
             phi[k] = phi_at(q->cz, q->ca, q->mc, q->ze, inv_r2);
         }
+#pragma GCC unroll 4
         for (int k = 0; k < NSLOT; ++k)
             if (slot[k].state != SEARCH_DONE)
                 search_step(s, &slot[k], phi[k]);
@@ -1338,53 +1399,55 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     memset(cfill, 0, ecells * sizeof *cfill);
     /* the bin of a particle or image: the particles' clamped to the field
      * as the reference's, the images' to the extension */
+    /* the keys and the positions in particle order (the band's scratch,
+     * 3 x icap floats or more, holds the positions until the columns),
+     * then a counting sort: stable, so a bin holds its particles and
+     * images in that order */
+    float *ux = band, *uy = ux + icap, *uz = uy + icap;
     int mi = 0;
-    for (int pass = 0; pass < 2; ++pass) {
-        int q = 0;
-        for (int k = 0; k < m; ++k) {
-            const float x = s->x[k], y = s->y[k];
-            /* the image in the wall within R (a domain narrower than 2 R:
-             * the low wall's) */
-            const int nxm = x - lo[0] < R || hi[0] - x < R ? 2 : 1;
-            const int nym = y - lo[1] < R || hi[1] - y < R ? 2 : 1;
-            const float xs[2] = {x, 2.0f * (x - lo[0] < R ? lo[0] : hi[0]) - x};
-            const float ys[2] = {y, 2.0f * (y - lo[1] < R ? lo[1] : hi[1]) - y};
-            for (int my = 0; my < nym; ++my)
-                for (int mx = 0; mx < nxm; ++mx) {
-                    int ix, iy;
-                    if (mx == 0)
-                        ix = (int)clampf((x - lo[0]) / dxe, 0.0f, (float)(nx - 1));
-                    else
-                        ix = (int)clampf(floorf((xs[1] - lo[0]) / dxe), (float)-rx,
-                                         (float)(nx + rx - 1));
-                    if (my == 0)
-                        iy = (int)clampf((y - lo[1]) / dye, 0.0f, (float)(ny - 1));
-                    else
-                        iy = (int)clampf(floorf((ys[1] - lo[1]) / dye), (float)-ry,
-                                         (float)(ny + ry - 1));
-                    /* x-major: a bin column's rows are one run (band_build) */
-                    const int key = (ix + rx) * ey + iy + ry;
-                    if (pass == 0) {
-                        ckey[q++] = key;
-                        cfill[key]++;
-                    } else {
-                        const int d = cfill[ckey[q++]]++;
-                        bx[d] = mx ? xs[1] : x;
-                        by[d] = my ? ys[1] : y;
-                        bz[d] = s->z[k];
-                    }
-                }
-        }
-        if (pass == 0) {
-            mi = q;
-            int sum = 0;
-            for (size_t c = 0; c < ecells; ++c) {
-                cstart[c] = sum;
-                sum += cfill[c];
-                cfill[c] = cstart[c];
+    for (int k = 0; k < m; ++k) {
+        const float x = s->x[k], y = s->y[k];
+        /* the image in the wall within R (a domain narrower than 2 R:
+         * the low wall's) */
+        const int nxm = x - lo[0] < R || hi[0] - x < R ? 2 : 1;
+        const int nym = y - lo[1] < R || hi[1] - y < R ? 2 : 1;
+        const float xs[2] = {x, 2.0f * (x - lo[0] < R ? lo[0] : hi[0]) - x};
+        const float ys[2] = {y, 2.0f * (y - lo[1] < R ? lo[1] : hi[1]) - y};
+        for (int my = 0; my < nym; ++my)
+            for (int mx = 0; mx < nxm; ++mx) {
+                int ix, iy;
+                if (mx == 0)
+                    ix = (int)clampf((x - lo[0]) / dxe, 0.0f, (float)(nx - 1));
+                else
+                    ix = (int)clampf(floorf((xs[1] - lo[0]) / dxe), (float)-rx,
+                                     (float)(nx + rx - 1));
+                if (my == 0)
+                    iy = (int)clampf((y - lo[1]) / dye, 0.0f, (float)(ny - 1));
+                else
+                    iy = (int)clampf(floorf((ys[1] - lo[1]) / dye), (float)-ry,
+                                     (float)(ny + ry - 1));
+                /* x-major: a bin column's rows are one run (band_build) */
+                const int key = (ix + rx) * ey + iy + ry;
+                ckey[mi] = key;
+                cfill[key]++;
+                ux[mi] = mx ? xs[1] : x;
+                uy[mi] = my ? ys[1] : y;
+                uz[mi] = s->z[k];
+                mi++;
             }
-            cstart[ecells] = sum;
-        }
+    }
+    int sum = 0;
+    for (size_t c = 0; c < ecells; ++c) {
+        cstart[c] = sum;
+        sum += cfill[c];
+        cfill[c] = cstart[c];
+    }
+    cstart[ecells] = sum;
+    for (int q = 0; q < mi; ++q) {
+        const int d = cfill[ckey[q]]++;
+        bx[d] = ux[q];
+        by[d] = uy[q];
+        bz[d] = uz[q];
     }
     assert((size_t)mi <= icap);
     (void)mi;
@@ -1496,11 +1559,15 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
         for (int j = 0; j < rh; ++j) {
             const float *r0 = pad + (size_t)j * px, *r1 = r0 + px, *r2 = r1 + px;
             float *iw = inv_w + (size_t)j * rw;
+            /* vectorised (omp simd: -O2 leaves it scalar); wt is 0 or a
+             * sum of weights >= 1, so 1 / max(wt, 1) is 1 / wt where it
+             * is kept, and no lane divides by 0 */
+#pragma omp simd
             for (int i = 0; i < rw; ++i) {
                 const float wt = (r0[i] + 2.0f * r0[i + 1] + r0[i + 2]) +
                                  (2.0f * r1[i] + 4.0f * r1[i + 1] + 2.0f * r1[i + 2]) +
                                  (r2[i] + 2.0f * r2[i + 1] + r2[i + 2]);
-                iw[i] = wt > 0.0f ? 1.0f / wt : 0.0f;
+                iw[i] = wt > 0.0f ? 1.0f / (wt > 1.0f ? wt : 1.0f) : 0.0f;
             }
         }
     }
