@@ -607,7 +607,7 @@ __attribute__((target("avx512f"))) static void factors_real_avx512(
     out[7] = hsum(wz);
 }
 
-__attribute__((target("avx512f"))) static float divergence_real_avx512(
+__attribute__((target("avx512f"))) static inline float divergence_real_avx512(
     const ms_volume *v, const int *idx, const float *gx, const float *gy, const float *gz, int n,
     float ui, float wi, float ti)
 {
@@ -633,11 +633,16 @@ __attribute__((target("avx512f"))) static float divergence_real_avx512(
  * loads and their transpose, three of whose four values it never used.
  * Measured in one process, the two alternating on the same state (fig1
  * under DFSPH, 2500 update passes, loaded machine): 0.88x the time of
- * the record loads. Values are moved, never computed: the same bits. */
-__attribute__((target("avx512f"))) static void apply_real_avx512(const float *s, const int *idx,
-                                                                 const float *gx, const float *gy,
-                                                                 const float *gz, int n, float si,
-                                                                 float out[3])
+ * the record loads. Values are moved, never computed: the same bits.
+ * Inline (round twelve): GCC then inlines it into dfsph_part's AVX-512
+ * clone (it cannot into the others), which made the density solve 0.96x
+ * on the peer's scene (thread CPU of the phase, six alternated runs);
+ * divergence_real_avx512 likewise, though GCC keeps calling it, and a
+ * density error loop of its own with it forced inline measured no
+ * better. */
+__attribute__((target("avx512f"))) static inline void apply_real_avx512(
+    const float *s, const int *idx, const float *gx, const float *gy, const float *gz, int n,
+    float si, float out[3])
 {
     const __m512 sv = _mm512_set1_ps(si);
     __m512 a = _mm512_setzero_ps(), b = a, c = a;
