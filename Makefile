@@ -409,8 +409,10 @@ format-check:
 	@tools/format_check.sh
 
 # ---- issue 12, round nine: a one-process A/B of two library builds ----
-# build/bin/volume_ab A.so B.so dam N REPS | scene FILE REPS: both builds
-# dlmopen'ed, sub-steps or frames in turn (tools/ab/volume_ab.c). Not part
+# build/bin/volume_ab A.so B.so dam N REPS | scene FILE REPS | peer FRAMES
+# REPS (round twelve: bench_dfsph --peer's DFSPH scene, whole runs in
+# turn): both builds dlmopen'ed, sub-steps, frames or runs in turn
+# (tools/ab/volume_ab.c). Not part
 # of `all` or `bench`: `make volume-ab`.
 .PHONY: volume-ab
 volume-ab: $(BUILD)/bin/volume_ab

@@ -174,6 +174,24 @@
 #endif
 
 enum { LANES = MS_VOLUME_LANES };
+/* The AVX-512 pair loops prefetch their streamed per-pair data (the
+ * neighbour indices, and the pair terms or r^2) this many entries ahead:
+ * a sub-step's pair terms (19 MB on the peer's scene) live in the shared
+ * cache, not the core's, and the hardware prefetchers did not keep up
+ * (round twelve: an error pass's pair loop took 0.84 ms, 0.63-0.70 ms
+ * with its data in L2). Measured on the peer's scene's 0.3 s, thread CPU
+ * of the phases, three alternated runs: the density solve 0.96-0.97x at
+ * 128, 256 and 512 entries (1024: no gain), the factors and divergence
+ * solve 0.97x with the factors loop's too. Hints only: the same bits. */
+enum { PF = 512 };
+#if MS_VOLUME_HAVE_AVX512
+/* the 4-byte entries PF after p (as an integer: that address may lie past
+ * the array, where a prefetch does nothing) */
+static inline void ahead(const void *p)
+{
+    _mm_prefetch((const char *)((uintptr_t)p + PF * sizeof(float)), _MM_HINT_T0);
+}
+#endif
 
 /* The pair loops are inlined into each clone of dfsph_part, so they are
  * compiled for its instruction set. */
@@ -331,7 +349,7 @@ static inline float warm_share(const ms_volume *v, int i)
  * Also sums the warm start's sum_k (w_i + w_k) g_ik (x_i - x_k) into
  * df_wx..z (w: df_sum, set by warm_weights; the header). */
 #if MS_VOLUME_HAVE_AVX512
-__attribute__((target("avx512f"))) static void factors_real_avx512(
+__attribute__((target("avx512f"))) static inline void factors_real_avx512(
     const float *pk, const int *idx, const float *r2s, int n, float h, float eps, float xi,
     float yi, float zi, float *cgx, float *cgy, float *cgz, float wi, float out[8]);
 #endif
@@ -542,7 +560,7 @@ __attribute__((target("avx512f"), always_inline)) static inline float hsum(__m51
  * the density pass filled from the positions the solves use) in place of
  * three gathers: the same bits. The fourth float of each record holds the
  * warm start's s then (warm_weights), summed as the C loop sums w_j. */
-__attribute__((target("avx512f"))) static void factors_real_avx512(
+__attribute__((target("avx512f"))) static inline void factors_real_avx512(
     const float *pk, const int *idx, const float *r2s, int n, float h, float eps, float xi,
     float yi, float zi, float *cgx, float *cgy, float *cgz, float wi, float out[8])
 {
@@ -552,6 +570,8 @@ __attribute__((target("avx512f"))) static void factors_real_avx512(
     __m512 sx = zero, sy = zero, sz = zero, sq = zero, sm = zero, wx = zero, wy = zero, wz = zero;
     for (int k = 0; k < n; k += LANES) {
         __m512 xj, yj, zj, pj;
+        ahead(r2s + k);
+        ahead(idx + k);
         load_rec(pk, idx + k, &xj, &yj, &zj, &pj);
         const __m512 r2 = _mm512_loadu_ps(r2s + k);
         const __m512 r = _mm512_sqrt_ps(r2);
@@ -587,7 +607,7 @@ __attribute__((target("avx512f"))) static void factors_real_avx512(
     out[7] = hsum(wz);
 }
 
-__attribute__((target("avx512f"))) static float divergence_real_avx512(
+__attribute__((target("avx512f"))) static inline float divergence_real_avx512(
     const ms_volume *v, const int *idx, const float *gx, const float *gy, const float *gz, int n,
     float ui, float wi, float ti)
 {
@@ -595,6 +615,10 @@ __attribute__((target("avx512f"))) static float divergence_real_avx512(
     __m512 a = _mm512_setzero_ps();
     for (int k = 0; k < n; k += LANES) {
         __m512 sj, uj, wj, tj;
+        ahead(gx + k);
+        ahead(gy + k);
+        ahead(gz + k);
+        ahead(idx + k);
         load_svel(v->pk, idx + k, &sj, &uj, &wj, &tj);
         __m512 d = _mm512_mul_ps(_mm512_sub_ps(u, uj), _mm512_loadu_ps(gx + k));
         d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(w, wj), _mm512_loadu_ps(gy + k)));
@@ -609,15 +633,22 @@ __attribute__((target("avx512f"))) static float divergence_real_avx512(
  * loads and their transpose, three of whose four values it never used.
  * Measured in one process, the two alternating on the same state (fig1
  * under DFSPH, 2500 update passes, loaded machine): 0.88x the time of
- * the record loads. Values are moved, never computed: the same bits. */
-__attribute__((target("avx512f"))) static void apply_real_avx512(const float *s, const int *idx,
-                                                                 const float *gx, const float *gy,
-                                                                 const float *gz, int n, float si,
-                                                                 float out[3])
+ * the record loads. Values are moved, never computed: the same bits.
+ * Inline (round twelve): GCC then inlined it into dfsph_part's AVX-512
+ * clone (it cannot into the others): the density solve 0.96x on the
+ * peer's scene (thread CPU of the phase, six alternated runs); dfsph_part
+ * is now flattened, which inlines all of them there. */
+__attribute__((target("avx512f"))) static inline void apply_real_avx512(
+    const float *s, const int *idx, const float *gx, const float *gy, const float *gz, int n,
+    float si, float out[3])
 {
     const __m512 sv = _mm512_set1_ps(si);
     __m512 a = _mm512_setzero_ps(), b = a, c = a;
     for (int k = 0; k < n; k += LANES) {
+        ahead(gx + k);
+        ahead(gy + k);
+        ahead(gz + k);
+        ahead(idx + k);
         const __m512 sj = _mm512_i32gather_ps(_mm512_loadu_si512(idx + k), s, 4);
         const __m512 f = _mm512_add_ps(sv, sj);
         a = _mm512_add_ps(a, _mm512_mul_ps(f, _mm512_loadu_ps(gx + k)));
@@ -779,11 +810,18 @@ static inline MS_DFSPH_INLINE int64_t divergence_error_of(ms_volume *v, const ms
 
 /* Built for AVX-512, AVX2 and the baseline as density.c's weight_sum: the
  * lanes loops vectorise (gathers), with no fused multiply-adds under
- * -std=c11 and IEEE sqrt and division, so every clone gives the same bits. */
+ * -std=c11 and IEEE sqrt and division, so every clone gives the same bits.
+ * Flattened (round twelve): the AVX-512 clone inlines the AVX-512 pair
+ * loops (the other clones cannot, and call them), so no call per
+ * particle and the loops' constants stay in registers; measured on the
+ * peer's scene (thread CPU of the phases, four alternated runs, against
+ * the update loop alone inlined): the factors and divergence solve 0.945x,
+ * the density solve 0.98x; the same bits. */
 #if MS_VOLUME_HAVE_AVX512
-__attribute__((target_clones("avx512f", "avx2", "default")))
+__attribute__((target_clones("avx512f", "avx2", "default"), flatten))
 #endif
-static void dfsph_part(void *ctxp, int part, int b, int e)
+static void
+dfsph_part(void *ctxp, int part, int b, int e)
 {
     dfsph_ctx *ctx = ctxp;
     ms_volume *v = ctx->v;

@@ -115,6 +115,34 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void lo
 }
 #undef TRANSPOSE4
 
+/* The 16-byte halves pk[8 j + 4 ..] (vx, vy, vz, 1/rho) of the 16
+ * records: what the viscosity alone reads (DFSPH: see sums_avx512).
+ * Sixteen 16-byte loads and a 4 x 4 transpose in each 128-bit lane
+ * (dfsph.c's load_rec): vector a[k] holds j[k], j[k+4], j[k+8], j[k+12],
+ * so that the transpose leaves the lanes in order. Values are moved, never
+ * computed: the same bits as load_records' vectors 4..7. */
+#define MS_FORCES_REC(k) _mm_loadu_ps(pk + 8 * (size_t)j[k] + 4)
+#define MS_FORCES_ROW(k)                                                                \
+    _mm512_insertf32x4(                                                                 \
+        _mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(MS_FORCES_REC(k)), \
+                                              MS_FORCES_REC((k) + 4), 1),               \
+                           MS_FORCES_REC((k) + 8), 2),                                  \
+        MS_FORCES_REC((k) + 12), 3)
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline void load_velocities(
+    const float *pk, const int *restrict j, __m512 *o4, __m512 *o5, __m512 *o6, __m512 *o7)
+{
+    const __m512 a0 = MS_FORCES_ROW(0), a1 = MS_FORCES_ROW(1), a2 = MS_FORCES_ROW(2),
+                 a3 = MS_FORCES_ROW(3);
+    const __m512 t0 = _mm512_unpacklo_ps(a0, a1), t1 = _mm512_unpackhi_ps(a0, a1);
+    const __m512 t2 = _mm512_unpacklo_ps(a2, a3), t3 = _mm512_unpackhi_ps(a2, a3);
+    *o4 = _mm512_shuffle_ps(t0, t2, 0x44);
+    *o5 = _mm512_shuffle_ps(t0, t2, 0xee);
+    *o6 = _mm512_shuffle_ps(t1, t3, 0x44);
+    *o7 = _mm512_shuffle_ps(t1, t3, 0xee);
+}
+#undef MS_FORCES_ROW
+#undef MS_FORCES_REC
+
 /* ms_lanes_sum in registers: the same tree order. */
 __attribute__((target("avx512f,avx512dq"))) static inline float hsum_avx512(__m512 v)
 {
@@ -155,7 +183,7 @@ static pair_sums lanes_sum(const pair_lanes *a)
  * the lane accumulators a[0..7) (entry k + l to lane l, as the C loop). */
 __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void image_terms_avx512(
     const ms_volume *v, const int *restrict gidx, const float *restrict gr2, int i,
-    const float wall[3], __m512 a[7])
+    const float wall[3], int pressure, __m512 a[7])
 {
     const float *pi8 = v->pk + 8 * (size_t)i;
     const __m512 zero = _mm512_setzero_ps(), h = _mm512_set1_ps(v->K.h);
@@ -181,12 +209,14 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void im
     __m512 r = _mm512_sqrt_ps(_mm512_loadu_ps(gr2));
     __m512 hr = _mm512_max_ps(_mm512_sub_ps(h, r), zero);
     __m512 fv = _mm512_mul_ps(irj, hr);
-    __m512 fp = _mm512_div_ps(_mm512_mul_ps(_mm512_mul_ps(_mm512_add_ps(pi, pj), fv), hr),
-                              _mm512_max_ps(r, eps));
-    for (int k = 0; k < 3; ++k) {
-        a[k] = _mm512_add_ps(a[k], _mm512_mul_ps(fp, d[k]));
-        a[3 + k] = _mm512_add_ps(a[3 + k], _mm512_mul_ps(fv, du[k]));
+    if (pressure) { /* see sums_avx512 */
+        __m512 fp = _mm512_div_ps(_mm512_mul_ps(_mm512_mul_ps(_mm512_add_ps(pi, pj), fv), hr),
+                                  _mm512_max_ps(r, eps));
+        for (int k = 0; k < 3; ++k)
+            a[k] = _mm512_add_ps(a[k], _mm512_mul_ps(fp, d[k]));
     }
+    for (int k = 0; k < 3; ++k)
+        a[3 + k] = _mm512_add_ps(a[3 + k], _mm512_mul_ps(fv, du[k]));
     a[6] = _mm512_add_ps(a[6], fv);
 }
 
@@ -197,12 +227,22 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void im
  * particle), sixteen records at a time by load_records. The wall images'
  * gn entries (padded to 16) are added here when gn > 0; with out, the
  * lanes are stored there instead of summed (the C loop then adds shape
- * images). */
+ * images).
+ *
+ * Under DFSPH (pressure 0) the pressure terms are skipped: the law's p is
+ * 0 in this pass (ms_volume_pressure; the solves of dfsph.c act on the
+ * velocities), so each term fp (x_i - x_j) is +0 or -0 and the lanes stay
+ * +0 (they start at +0, and +0 + -0 = +0): skipping them gives the same
+ * bits, without the pass's only division, and the real neighbours' loop
+ * loads the records' velocity halves alone (load_velocities: 16-byte
+ * loads, a 4 x 4 transpose instead of 8 x 8; round twelve, issue 12).
+ * The C loops still compute them (the same +0). */
 __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
     const ms_volume *v, const int *restrict idx, const float *restrict r2s, int n, int i,
     const int *restrict gidx, const float *restrict gr2, int gn, const float wall[3],
     pair_lanes *out)
 {
+    const int pressure = v->desc.pressure != MS_PRESSURE_DFSPH;
     const float *pi8 = v->pk + 8 * (size_t)i;
     const __m512 xi = _mm512_set1_ps(pi8[0]), yi = _mm512_set1_ps(pi8[1]),
                  zi = _mm512_set1_ps(pi8[2]);
@@ -211,7 +251,23 @@ __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
     const __m512 pi = _mm512_set1_ps(pi8[3]), h = _mm512_set1_ps(v->K.h);
     const __m512 eps = _mm512_set1_ps(sqrtf(v->eps2)), zero = _mm512_setzero_ps();
     __m512 a[7] = {zero, zero, zero, zero, zero, zero, zero};
-    for (int k = 0; k < n; k += MS_VOLUME_LANES) {
+    for (int k = 0; k < n && !pressure; k += MS_VOLUME_LANES) { /* DFSPH: the viscosity */
+        __m512 uxj, uyj, uzj, irj;
+        /* the streamed r^2 and indices 512 entries ahead, as dfsph.c's
+         * loops (hints: the same bits; the phase 0.96x on the peer's
+         * scene, three alternated runs) */
+        _mm_prefetch((const char *)((uintptr_t)(r2s + k) + 2048), _MM_HINT_T0);
+        _mm_prefetch((const char *)((uintptr_t)(idx + k) + 2048), _MM_HINT_T0);
+        load_velocities(v->pk, idx + k, &uxj, &uyj, &uzj, &irj);
+        __m512 r = _mm512_sqrt_ps(_mm512_loadu_ps(r2s + k));
+        __m512 hr = _mm512_max_ps(_mm512_sub_ps(h, r), zero);
+        __m512 fv = _mm512_mul_ps(irj, hr);
+        a[3] = _mm512_add_ps(a[3], _mm512_mul_ps(fv, _mm512_sub_ps(uxj, uxi)));
+        a[4] = _mm512_add_ps(a[4], _mm512_mul_ps(fv, _mm512_sub_ps(uyj, uyi)));
+        a[5] = _mm512_add_ps(a[5], _mm512_mul_ps(fv, _mm512_sub_ps(uzj, uzi)));
+        a[6] = _mm512_add_ps(a[6], fv);
+    }
+    for (int k = 0; k < n && pressure; k += MS_VOLUME_LANES) {
         __m512 xj, yj, zj, pj, uxj, uyj, uzj, irj;
         load_records(v->pk, idx + k, &xj, &yj, &zj, &pj, &uxj, &uyj, &uzj, &irj);
         __m512 dx = _mm512_sub_ps(xi, xj);
@@ -231,7 +287,7 @@ __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
         a[6] = _mm512_add_ps(a[6], fv);
     }
     for (int k = 0; k < gn; k += MS_VOLUME_LANES) /* the image list is padded to 16 */
-        image_terms_avx512(v, gidx + k, gr2 + k, i, wall, a);
+        image_terms_avx512(v, gidx + k, gr2 + k, i, wall, pressure, a);
     if (out) {
         float *const dst[7] = {out->px, out->py, out->pz, out->vx, out->vy, out->vz, out->d};
         for (int q = 0; q < 7; ++q)

@@ -9,6 +9,9 @@
  *
  *   build/bin/volume_ab A.so B.so dam N REPS      (N particles, REPS sub-steps)
  *   build/bin/volume_ab A.so B.so scene FILE REPS (REPS frames after 10)
+ *   build/bin/volume_ab A.so B.so peer FRAMES REPS (bench_dfsph --peer's
+ *       scene under DFSPH: FRAMES frames of 1/60 s from the release, taken
+ *       REPS times; prints the medians of the runs' totals)
  *
  * A speed tool, not a benchmark of record (make bench): no CSV. */
 #include <dlfcn.h>
@@ -25,6 +28,7 @@ typedef struct build {
     ms_status (*create)(const ms_volume_desc *, ms_volume **);
     ms_status (*fill)(ms_volume *, const float[3], const float[3]);
     ms_status (*step)(ms_volume *, float);
+    void (*destroy)(ms_volume *);
     void (*info)(const ms_volume *, ms_volume_info *);
     const char *(*last_error)(void);
     ms_status (*scene_load)(const char *, ms_scene **);
@@ -57,6 +61,7 @@ static build load(const char *path)
     BIND(h, b, create, "ms_volume_create");
     BIND(h, b, fill, "ms_volume_fill_box");
     BIND(h, b, step, "ms_volume_step");
+    BIND(h, b, destroy, "ms_volume_destroy");
     BIND(h, b, info, "ms_volume_get_info");
     BIND(h, b, last_error, "ms_last_error");
     BIND(h, b, scene_load, "ms_scene_load");
@@ -105,6 +110,27 @@ static ms_volume *dam_break(const build *b, int target)
     return v;
 }
 
+/* bench_dfsph --peer's scene (SPlisHSPlasH's DamBreakModel as issue 12
+ * timed it): a 32^3 block of spacing 0.0303 m in a 4 x 3 x 1.5 m box,
+ * DFSPH. */
+static ms_volume *peer_scene(const build *b)
+{
+    const float s = 0.0303f;
+    ms_volume_desc d = b->desc_default();
+    d.domain_max[0] = 4.0f;
+    d.domain_max[1] = 3.0f;
+    d.domain_max[2] = 1.5f;
+    d.spacing = s;
+    d.smoothing_length = 2.0f * s;
+    d.threads = 1;
+    d.max_particles = 65536;
+    d.pressure = MS_PRESSURE_DFSPH;
+    ms_volume *v = NULL;
+    check(b, b->create(&d, &v));
+    check(b, b->fill(v, (float[3]){0, 0, 0}, (float[3]){32 * s, 32 * s, 32 * s}));
+    return v;
+}
+
 /* One sub-step at half the largest stable dt (bench_volume's); CPU s. */
 static double one_substep(const build *b, ms_volume *v)
 {
@@ -117,9 +143,10 @@ static double one_substep(const build *b, ms_volume *v)
 
 int main(int argc, char **argv)
 {
-    if (argc != 6 || (strcmp(argv[3], "dam") && strcmp(argv[3], "scene"))) {
+    if (argc != 6 ||
+        (strcmp(argv[3], "dam") && strcmp(argv[3], "scene") && strcmp(argv[3], "peer"))) {
         fprintf(stderr, "usage: volume_ab A.so B.so dam N REPS | volume_ab A.so B.so scene FILE "
-                        "REPS\n");
+                        "REPS | volume_ab A.so B.so peer FRAMES REPS\n");
         return 2;
     }
     const int reps = atoi(argv[5]);
@@ -131,7 +158,33 @@ int main(int argc, char **argv)
     double *t[2] = {malloc(sizeof(double) * (size_t)reps), malloc(sizeof(double) * (size_t)reps)};
     if (!t[0] || !t[1])
         return 1;
-    if (!strcmp(argv[3], "dam")) {
+    if (!strcmp(argv[3], "peer")) {
+        /* whole runs in turn (a frame's cost changes along the run), each
+         * from a fresh volume; the sums of the frames' thread CPU */
+        const int frames = atoi(argv[4]);
+        if (frames < 1 || frames > 6000) {
+            fprintf(stderr, "volume_ab: FRAMES %s is outside [1, 6000]\n", argv[4]);
+            return 2;
+        }
+        for (int r = 0; r < reps; ++r)
+            for (int o = 0; o < 2; ++o) {
+                const int k = (o + r) % 2;
+                ms_volume *v = peer_scene(&b[k]);
+                double sum = 0.0;
+                for (int f = 0; f < frames; ++f) {
+                    const double t0 = cpu_now();
+                    check(&b[k], b[k].step(v, 1.0f / 60));
+                    sum += cpu_now() - t0;
+                }
+                ms_volume_info in = ms_volume_info_init();
+                b[k].info(v, &in);
+                printf("run %d %c: %.1f ms, %ld sub-steps, %ld + %ld iterations\n", r, "AB"[k],
+                       1e3 * sum, (long)in.substeps, (long)in.density_iterations_total,
+                       (long)in.divergence_iterations_total);
+                t[k][r] = sum;
+                b[k].destroy(v);
+            }
+    } else if (!strcmp(argv[3], "dam")) {
         const int n = atoi(argv[4]);
         if (n < 100 || n > 4000000) {
             fprintf(stderr, "volume_ab: N %s is outside [100, 4e6]\n", argv[4]);
