@@ -171,6 +171,8 @@
 
 #if MS_VOLUME_HAVE_AVX512
 #include <immintrin.h>
+
+#include "volume/records_avx512.h"
 #endif
 
 enum { LANES = MS_VOLUME_LANES };
@@ -511,36 +513,14 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
  * place of gathers (AVX-512 gathers were 35 % of a 32k dam break's
  * sub-step; forces.c measured the same technique). Vector a[k] holds the
  * records of j[k], j[k+4], j[k+8], j[k+12], so that the transpose leaves
- * the lanes in order. Values are moved, never computed: the same bits. */
-#define MS_DFSPH_REC(k) _mm_loadu_ps(b + 8 * (size_t)j[k])
-#define MS_DFSPH_ROW(k)                                                                            \
-    _mm512_insertf32x4(                                                                            \
-        _mm512_insertf32x4(                                                                        \
-            _mm512_insertf32x4(_mm512_castps128_ps512(MS_DFSPH_REC(k)), MS_DFSPH_REC((k) + 4), 1), \
-            MS_DFSPH_REC((k) + 8), 2),                                                             \
-        MS_DFSPH_REC((k) + 12), 3)
-__attribute__((target("avx512f"), always_inline)) static inline void load_rec(const float *b,
-                                                                              const int *restrict j,
-                                                                              __m512 *s, __m512 *u,
-                                                                              __m512 *w, __m512 *t)
-{
-    const __m512 a0 = MS_DFSPH_ROW(0), a1 = MS_DFSPH_ROW(1), a2 = MS_DFSPH_ROW(2),
-                 a3 = MS_DFSPH_ROW(3);
-    const __m512 t0 = _mm512_unpacklo_ps(a0, a1), t1 = _mm512_unpackhi_ps(a0, a1);
-    const __m512 t2 = _mm512_unpacklo_ps(a2, a3), t3 = _mm512_unpackhi_ps(a2, a3);
-    *s = _mm512_shuffle_ps(t0, t2, 0x44);
-    *u = _mm512_shuffle_ps(t0, t2, 0xee);
-    *w = _mm512_shuffle_ps(t1, t3, 0x44);
-    *t = _mm512_shuffle_ps(t1, t3, 0xee);
-}
-#undef MS_DFSPH_ROW
-#undef MS_DFSPH_REC
+ * the lanes in order. Values are moved, never computed: the same bits
+ * (ms_load_quads, records_avx512.h). */
 
 /* s (the slot, unused), vx, vy, vz of the 16 neighbours j[0..15] */
 __attribute__((target("avx512f"), always_inline)) static inline void load_svel(
     const float *pk, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
 {
-    load_rec(pk + 3, j, s, u, w, t);
+    ms_load_quads(pk + 3, j, s, u, w, t);
 }
 
 /* ms_lanes_sum in registers (the same tree order, so the same bits): the
@@ -572,7 +552,7 @@ __attribute__((target("avx512f"))) static inline void factors_real_avx512(
         __m512 xj, yj, zj, pj;
         ahead(r2s + k);
         ahead(idx + k);
-        load_rec(pk, idx + k, &xj, &yj, &zj, &pj);
+        ms_load_quads(pk, idx + k, &xj, &yj, &zj, &pj);
         const __m512 r2 = _mm512_loadu_ps(r2s + k);
         const __m512 r = _mm512_sqrt_ps(r2);
         __m512 hr = _mm512_sub_ps(hv, r);

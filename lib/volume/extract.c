@@ -1268,11 +1268,33 @@ static int smooth_passes(const ms_extract_snap *s, int *full, float *frac)
     return *full + (*frac > 0.0f);
 }
 
+/* The counting sort's second half: cfill[c] holds bin c's count; cstart
+ * gets the bins' starts (cstart[cells] the total) and the m positions
+ * (x, y, z)[q] of keys ckey[q] go to (bx, by, bz) in bin order, stable. */
+static void bin_scatter(const int *ckey, int m, size_t cells, const float *x, const float *y,
+                        const float *z, int *cstart, int *cfill, float *bx, float *by, float *bz)
+{
+    int sum = 0;
+    for (size_t c = 0; c < cells; ++c) {
+        cstart[c] = sum;
+        sum += cfill[c];
+        cfill[c] = cstart[c];
+    }
+    cstart[cells] = sum;
+    for (int q = 0; q < m; ++q) {
+        const int d = cfill[ckey[q]]++;
+        bx[d] = x[q];
+        by[d] = y[q];
+        bz[d] = z[q];
+    }
+}
+
 /* Phase B on the rectangle [i0, i0 + rw) x [j0, j0 + rh) of the nx x ny
  * field, into out (rw x rh). The columns are the field's; the smoothing
  * sees dry cells beyond the rectangle, so a cell's value is the field's
  * when the rectangle holds every cell within the passes of it (or the
  * field ends there): the 3 x 3 filter reaches one cell further per pass. */
+
 /* The columns of the reference (663cc3c's code, bytes unchanged): bins of
  * the field, a run per bin row trimmed to R, the wall images computed per
  * column, the bracketing root search. Into *raw_out (rw x rh in buf);
@@ -1318,19 +1340,7 @@ static ms_status columns_reference(const ms_extract_snap *s, ms_extract_work *w,
         ckey[k] = iy * nx + ix;
         cfill[ckey[k]]++;
     }
-    int sum = 0;
-    for (size_t c = 0; c < cells; ++c) {
-        cstart[c] = sum;
-        sum += cfill[c];
-        cfill[c] = cstart[c];
-    }
-    cstart[cells] = sum;
-    for (int k = 0; k < m; ++k) {
-        int d = cfill[ckey[k]]++;
-        bx[d] = s->x[k];
-        by[d] = s->y[k];
-        bz[d] = s->z[k];
-    }
+    bin_scatter(ckey, m, cells, s->x, s->y, s->z, cstart, cfill, bx, by, bz);
 
     /* the topmost crossing of phi = T in every column, columns split among
      * the threads (each column on its own: the same bytes for any split) */
@@ -1436,19 +1446,7 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
                 mi++;
             }
     }
-    int sum = 0;
-    for (size_t c = 0; c < ecells; ++c) {
-        cstart[c] = sum;
-        sum += cfill[c];
-        cfill[c] = cstart[c];
-    }
-    cstart[ecells] = sum;
-    for (int q = 0; q < mi; ++q) {
-        const int d = cfill[ckey[q]]++;
-        bx[d] = ux[q];
-        by[d] = uy[q];
-        bz[d] = uz[q];
-    }
+    bin_scatter(ckey, mi, ecells, ux, uy, uz, cstart, cfill, bx, by, bz);
     assert((size_t)mi <= icap);
     (void)mi;
     column_ctx cc = {.s = s,

@@ -45,6 +45,8 @@
 
 #if MS_VOLUME_HAVE_AVX512
 #include <immintrin.h>
+
+#include "volume/records_avx512.h"
 #endif
 
 typedef struct forces_ctx {
@@ -114,34 +116,6 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void lo
     *o7 = _mm512_shuffle_f32x4(s3, s7, 0xdd);
 }
 #undef TRANSPOSE4
-
-/* The 16-byte halves pk[8 j + 4 ..] (vx, vy, vz, 1/rho) of the 16
- * records: what the viscosity alone reads (DFSPH: see sums_avx512).
- * Sixteen 16-byte loads and a 4 x 4 transpose in each 128-bit lane
- * (dfsph.c's load_rec): vector a[k] holds j[k], j[k+4], j[k+8], j[k+12],
- * so that the transpose leaves the lanes in order. Values are moved, never
- * computed: the same bits as load_records' vectors 4..7. */
-#define MS_FORCES_REC(k) _mm_loadu_ps(pk + 8 * (size_t)j[k] + 4)
-#define MS_FORCES_ROW(k)                                                                \
-    _mm512_insertf32x4(                                                                 \
-        _mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(MS_FORCES_REC(k)), \
-                                              MS_FORCES_REC((k) + 4), 1),               \
-                           MS_FORCES_REC((k) + 8), 2),                                  \
-        MS_FORCES_REC((k) + 12), 3)
-__attribute__((target("avx512f,avx512dq"), always_inline)) static inline void load_velocities(
-    const float *pk, const int *restrict j, __m512 *o4, __m512 *o5, __m512 *o6, __m512 *o7)
-{
-    const __m512 a0 = MS_FORCES_ROW(0), a1 = MS_FORCES_ROW(1), a2 = MS_FORCES_ROW(2),
-                 a3 = MS_FORCES_ROW(3);
-    const __m512 t0 = _mm512_unpacklo_ps(a0, a1), t1 = _mm512_unpackhi_ps(a0, a1);
-    const __m512 t2 = _mm512_unpacklo_ps(a2, a3), t3 = _mm512_unpackhi_ps(a2, a3);
-    *o4 = _mm512_shuffle_ps(t0, t2, 0x44);
-    *o5 = _mm512_shuffle_ps(t0, t2, 0xee);
-    *o6 = _mm512_shuffle_ps(t1, t3, 0x44);
-    *o7 = _mm512_shuffle_ps(t1, t3, 0xee);
-}
-#undef MS_FORCES_ROW
-#undef MS_FORCES_REC
 
 /* ms_lanes_sum in registers: the same tree order. */
 __attribute__((target("avx512f,avx512dq"))) static inline float hsum_avx512(__m512 v)
@@ -234,7 +208,7 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void im
  * velocities), so each term fp (x_i - x_j) is +0 or -0 and the lanes stay
  * +0 (they start at +0, and +0 + -0 = +0): skipping them gives the same
  * bits, without the pass's only division, and the real neighbours' loop
- * loads the records' velocity halves alone (load_velocities: 16-byte
+ * loads the records' velocity halves alone (ms_load_quads: 16-byte
  * loads, a 4 x 4 transpose instead of 8 x 8; round twelve, issue 12).
  * The C loops still compute them (the same +0). */
 __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
@@ -258,7 +232,7 @@ __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
          * scene, three alternated runs) */
         _mm_prefetch((const char *)((uintptr_t)(r2s + k) + 2048), _MM_HINT_T0);
         _mm_prefetch((const char *)((uintptr_t)(idx + k) + 2048), _MM_HINT_T0);
-        load_velocities(v->pk, idx + k, &uxj, &uyj, &uzj, &irj);
+        ms_load_quads(v->pk + 4, idx + k, &uxj, &uyj, &uzj, &irj); /* vx, vy, vz, 1/rho */
         __m512 r = _mm512_sqrt_ps(_mm512_loadu_ps(r2s + k));
         __m512 hr = _mm512_max_ps(_mm512_sub_ps(h, r), zero);
         __m512 fv = _mm512_mul_ps(irj, hr);

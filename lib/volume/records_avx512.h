@@ -1,0 +1,38 @@
+/* Sixteen neighbours' 4-float quads out of the packed 8-float records
+ * (v->pk): what the force pass (forces.c, under DFSPH) and the DFSPH
+ * solves (dfsph.c) read of each neighbour. Sixteen 16-byte loads and a
+ * 4 x 4 transpose in each 128-bit lane, in place of gathers (AVX-512
+ * gathers were 35 % of a 32k dam break's sub-step). Vector a[k] holds the
+ * quads of j[k], j[k+4], j[k+8], j[k+12], so that the transpose leaves
+ * the lanes in order. Values are moved, never computed: the same bits as
+ * the C loops' loads. Include only where MS_VOLUME_HAVE_AVX512. */
+#ifndef MS_VOLUME_RECORDS_AVX512_H
+#define MS_VOLUME_RECORDS_AVX512_H
+
+#include <immintrin.h>
+#include <stddef.h>
+
+#define MS_RECORDS_QUAD(k) _mm_loadu_ps(b + 8 * (size_t)j[k])
+#define MS_RECORDS_ROW(k)                                                                 \
+    _mm512_insertf32x4(                                                                   \
+        _mm512_insertf32x4(_mm512_insertf32x4(_mm512_castps128_ps512(MS_RECORDS_QUAD(k)), \
+                                              MS_RECORDS_QUAD((k) + 4), 1),               \
+                           MS_RECORDS_QUAD((k) + 8), 2),                                  \
+        MS_RECORDS_QUAD((k) + 12), 3)
+/* Floats b[8 j + 0..3] of the 16 records j[0..15], one float a vector. */
+__attribute__((target("avx512f"), always_inline)) static inline void ms_load_quads(
+    const float *b, const int *restrict j, __m512 *s, __m512 *u, __m512 *w, __m512 *t)
+{
+    const __m512 a0 = MS_RECORDS_ROW(0), a1 = MS_RECORDS_ROW(1), a2 = MS_RECORDS_ROW(2),
+                 a3 = MS_RECORDS_ROW(3);
+    const __m512 t0 = _mm512_unpacklo_ps(a0, a1), t1 = _mm512_unpackhi_ps(a0, a1);
+    const __m512 t2 = _mm512_unpacklo_ps(a2, a3), t3 = _mm512_unpackhi_ps(a2, a3);
+    *s = _mm512_shuffle_ps(t0, t2, 0x44);
+    *u = _mm512_shuffle_ps(t0, t2, 0xee);
+    *w = _mm512_shuffle_ps(t1, t3, 0x44);
+    *t = _mm512_shuffle_ps(t1, t3, 0xee);
+}
+#undef MS_RECORDS_ROW
+#undef MS_RECORDS_QUAD
+
+#endif
