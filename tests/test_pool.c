@@ -93,6 +93,38 @@ START_TEST(a_lent_helper_runs_chunks_and_the_values_are_one_threads)
 }
 END_TEST
 
+/* A volume of desc.threads 2 in a sim of 2 threads: the sim offers its
+ * second thread (open, help, close) to a pool with a helper thread of its
+ * own. That is a no-op: the offered thread returns at once (it would
+ * otherwise claim chunks until a close), and after the close the pool's
+ * own helper still takes chunk 1 while the caller holds chunk 0 (round
+ * twelve's pool once let the close send its helpers away). */
+START_TEST(a_pool_with_threads_of_its_own_ignores_a_lent_helper)
+{
+    caller = pthread_self();
+    static loop_ctx one, own;
+    body(&one, 0, 0, N);
+    ms_vpool *p = NULL;
+    ck_assert_int_eq(ms_vpool_create(2, &p), MS_OK);
+    ck_assert_int_eq(ms_vpool_threads(p), 2);
+    ms_vpool_help_open(p);
+    pthread_t t;
+    ck_assert_int_eq(pthread_create(&t, NULL, helper, p), 0);
+    ck_assert_int_eq(pthread_join(t, NULL), 0); /* returned at once */
+    ms_vpool_help_close(p);
+    own.wait_for_part1 = 1;
+    for (int k = 0; k < 3; ++k) {
+        ms_vpool_run(p, body, &own, N);
+        ck_assert(!pthread_equal(own.part1_thread, caller));
+        atomic_store(&own.part1_done, 0);
+    }
+    ck_assert_int_eq(atomic_load(&own.runs[0]), 3);
+    ck_assert_int_eq(atomic_load(&own.runs[1]), 3);
+    ck_assert_mem_eq(own.out, one.out, sizeof one.out);
+    ms_vpool_destroy(p);
+}
+END_TEST
+
 /* Round five: chunks are claimed with an atomic add, a helper spins a
  * little between loops and then sleeps. Many loops of odd sizes with a
  * lent helper: every chunk of every loop runs exactly once, on its own
@@ -523,6 +555,7 @@ static Suite *pool_suite(void)
     TCase *tc = tcase_create("pool");
     tcase_set_timeout(tc, 180); /* TSan: the sim and grid cases run ~20 s each */
     tcase_add_test(tc, a_lent_helper_runs_chunks_and_the_values_are_one_threads);
+    tcase_add_test(tc, a_pool_with_threads_of_its_own_ignores_a_lent_helper);
     tcase_add_test(tc, every_chunk_of_every_loop_runs_once_with_a_lent_helper);
     tcase_add_test(tc, the_caller_claims_from_the_front_and_a_helper_from_the_back);
     tcase_add_test(tc, an_idle_lent_helper_sleeps_instead_of_spinning);

@@ -76,7 +76,6 @@ struct ms_vpool {
      * `claim` (seq_cst) and read only after a chunk of it was claimed; the
      * caller writes the next loop's only once `done` says every chunk of
      * this one ran. */
-    int shared;
     int own; /* threads - 1 helper threads of its own (ms_vpool_create) */
     _Atomic uint64_t claim;                   /* generation << 32 | back << 16 | front */
     _Atomic int done;                         /* chunks of the current loop finished */
@@ -120,61 +119,6 @@ static void chunk(int n, int parts, int part, int *b, int *e)
     *e = (int)(nn * (part + 1) / parts);
 }
 
-/* A helper thread of a pool's own: claims chunks from the back of each
- * loop (ms_vpool_help) until the pool is closed. */
-static void *worker(void *argp)
-{
-    ms_vpool_help(argp);
-    return NULL;
-}
-
-static void stop_workers(ms_vpool *p)
-{
-    ms_vpool_help_close(p);
-    for (int t = 1; t <= p->started; ++t)
-        pthread_join(p->tid[t], NULL);
-    p->started = 0;
-}
-
-static ms_status start_workers(ms_vpool *p)
-{
-    ms_vpool_help_open(p);
-    for (int t = 1; t < p->threads; ++t) {
-        if (pthread_create(&p->tid[t], NULL, worker, p) != 0) {
-            stop_workers(p);
-            return ms_fail(MS_ERR_OUT_OF_MEMORY,
-                           "volume: could not start worker thread %d of %d", t, p->threads);
-        }
-        p->started = t;
-    }
-    return MS_OK;
-}
-
-/* A pool with threads - 1 helper threads of its own (a volume's
- * desc.threads). Its loops are shared loops (run_shared) whose helpers
- * never leave: each spins MS_VPOOL_SPIN_US for the next loop before it
- * sleeps, so a step's loops, microseconds apart, cost no wake-up (issue
- * 12, round twelve: the condition variable it waited on before woke a
- * worker for every loop, and with 2 threads bench_volume's 2000-particle
- * sub-step took 0.78 ms against 1 thread's 0.33 on the Intel VM). The
- * split is the same chunks, so the same bytes. */
-ms_status ms_vpool_create(int threads, ms_vpool **out)
-{
-    *out = NULL;
-    if (threads <= 1)
-        return MS_OK; /* a NULL pool runs loops inline */
-    ms_status st = ms_vpool_create_shared(threads, out);
-    if (st != MS_OK)
-        return st;
-    (*out)->own = 1;
-    st = start_workers(*out);
-    if (st != MS_OK) {
-        ms_vpool_destroy(*out);
-        *out = NULL;
-    }
-    return st;
-}
-
 ms_status ms_vpool_create_shared(int parts, ms_vpool **out)
 {
     *out = NULL;
@@ -182,7 +126,6 @@ ms_status ms_vpool_create_shared(int parts, ms_vpool **out)
     if (!p)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for the thread pool");
     p->threads = parts;
-    p->shared = 1;
     atomic_init(&p->claim, (uint64_t)parts); /* generation 0: all taken from the front */
     atomic_init(&p->done, parts);
     atomic_init(&p->help_open, 0);
@@ -238,27 +181,23 @@ static int open_chunks(ms_vpool *p)
     return CLAIM_FRONT(w) + CLAIM_BACK(w) < p->threads;
 }
 
-void ms_vpool_help_open(ms_vpool *p)
+static void open_help(ms_vpool *p)
 {
-    if (!p || !p->shared)
-        return;
     atomic_store(&p->help_open, 1);
 }
 
-void ms_vpool_help_close(ms_vpool *p)
+static void close_help(ms_vpool *p)
 {
-    if (!p || !p->shared)
-        return;
     atomic_store(&p->help_open, 0);
     pthread_mutex_lock(&p->lock);
     pthread_cond_broadcast(&p->go);
     pthread_mutex_unlock(&p->lock);
 }
 
-void ms_vpool_help(ms_vpool *p)
+/* Claims chunks from the back until the help is closed: a lent helper,
+ * or a pool's own helper thread (worker). */
+static void help_loop(ms_vpool *p)
 {
-    if (!p || !p->shared)
-        return;
     while (atomic_load(&p->help_open)) {
         claim_chunks(p, 1);
         /* nothing open: spin a while for the next loop, then sleep */
@@ -275,6 +214,82 @@ void ms_vpool_help(ms_vpool *p)
         atomic_fetch_sub(&p->helper_sleeps, 1);
         pthread_mutex_unlock(&p->lock);
     }
+}
+
+/* The lent helper's calls (lib/sim): no-ops on a pool with threads of its
+ * own (a volume of desc.threads > 1), whose help stays open while its
+ * threads run, as on a NULL pool. */
+void ms_vpool_help_open(ms_vpool *p)
+{
+    if (p && !p->own)
+        open_help(p);
+}
+
+void ms_vpool_help(ms_vpool *p)
+{
+    if (p && !p->own)
+        help_loop(p);
+}
+
+void ms_vpool_help_close(ms_vpool *p)
+{
+    if (p && !p->own)
+        close_help(p);
+}
+
+/* A helper thread of a pool's own: claims chunks from the back of each
+ * loop (help_loop) until the pool is stopped. */
+static void *worker(void *argp)
+{
+    help_loop(argp);
+    return NULL;
+}
+
+static void stop_workers(ms_vpool *p)
+{
+    close_help(p);
+    for (int t = 1; t <= p->started; ++t)
+        pthread_join(p->tid[t], NULL);
+    p->started = 0;
+}
+
+static ms_status start_workers(ms_vpool *p)
+{
+    open_help(p);
+    for (int t = 1; t < p->threads; ++t) {
+        if (pthread_create(&p->tid[t], NULL, worker, p) != 0) {
+            stop_workers(p);
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: could not start worker thread %d of %d",
+                           t, p->threads);
+        }
+        p->started = t;
+    }
+    return MS_OK;
+}
+
+/* A pool with threads - 1 helper threads of its own (a volume's
+ * desc.threads). Its loops are shared loops (run_shared) whose helpers
+ * never leave: each spins MS_VPOOL_SPIN_US for the next loop before it
+ * sleeps, so a step's loops, microseconds apart, cost no wake-up (issue
+ * 12, round twelve: the condition variable it waited on before woke a
+ * worker for every loop, and with 2 threads bench_volume's 2000-particle
+ * sub-step took 0.78 ms against 1 thread's 0.33 on the Intel VM). The
+ * split is the same chunks, so the same bytes. */
+ms_status ms_vpool_create(int threads, ms_vpool **out)
+{
+    *out = NULL;
+    if (threads <= 1)
+        return MS_OK; /* a NULL pool runs loops inline */
+    ms_status st = ms_vpool_create_shared(threads, out);
+    if (st != MS_OK)
+        return st;
+    (*out)->own = 1;
+    st = start_workers(*out);
+    if (st != MS_OK) {
+        ms_vpool_destroy(*out);
+        *out = NULL;
+    }
+    return st;
 }
 
 /* A shared pool's engine task: the chunks of the current loop still open
