@@ -177,23 +177,15 @@
 
 enum { LANES = MS_VOLUME_LANES };
 /* The AVX-512 pair loops prefetch their streamed per-pair data (the
- * neighbour indices, and the pair terms or r^2) this many entries ahead:
- * a sub-step's pair terms (19 MB on the peer's scene) live in the shared
- * cache, not the core's, and the hardware prefetchers did not keep up
- * (round twelve: an error pass's pair loop took 0.84 ms, 0.63-0.70 ms
- * with its data in L2). Measured on the peer's scene's 0.3 s, thread CPU
- * of the phases, three alternated runs: the density solve 0.96-0.97x at
- * 128, 256 and 512 entries (1024: no gain), the factors and divergence
- * solve 0.97x with the factors loop's too. Hints only: the same bits. */
-enum { PF = 512 };
-#if MS_VOLUME_HAVE_AVX512
-/* the 4-byte entries PF after p (as an integer: that address may lie past
- * the array, where a prefetch does nothing) */
-static inline void ahead(const void *p)
-{
-    _mm_prefetch((const char *)((uintptr_t)p + PF * sizeof(float)), _MM_HINT_T0);
-}
-#endif
+ * neighbour indices, and the pair terms or r^2) MS_PREFETCH_ENTRIES
+ * entries ahead (ms_prefetch_ahead, records_avx512.h): a sub-step's pair
+ * terms (19 MB on the peer's scene) live in the shared cache, not the
+ * core's, and the hardware prefetchers did not keep up (round twelve: an
+ * error pass's pair loop took 0.84 ms, 0.63-0.70 ms with its data in L2).
+ * Measured on the peer's scene's 0.3 s, thread CPU of the phases, three
+ * alternated runs: the density solve 0.96-0.97x at 128, 256 and 512
+ * entries (1024: no gain), the factors and divergence solve 0.97x with
+ * the factors loop's too. Hints only: the same bits. */
 
 /* The pair loops are inlined into each clone of dfsph_part, so they are
  * compiled for its instruction set. */
@@ -550,8 +542,8 @@ __attribute__((target("avx512f"))) static inline void factors_real_avx512(
     __m512 sx = zero, sy = zero, sz = zero, sq = zero, sm = zero, wx = zero, wy = zero, wz = zero;
     for (int k = 0; k < n; k += LANES) {
         __m512 xj, yj, zj, pj;
-        ahead(r2s + k);
-        ahead(idx + k);
+        ms_prefetch_ahead(r2s + k);
+        ms_prefetch_ahead(idx + k);
         ms_load_quads(pk, idx + k, &xj, &yj, &zj, &pj);
         const __m512 r2 = _mm512_loadu_ps(r2s + k);
         const __m512 r = _mm512_sqrt_ps(r2);
@@ -595,10 +587,10 @@ __attribute__((target("avx512f"))) static inline float divergence_real_avx512(
     __m512 a = _mm512_setzero_ps();
     for (int k = 0; k < n; k += LANES) {
         __m512 sj, uj, wj, tj;
-        ahead(gx + k);
-        ahead(gy + k);
-        ahead(gz + k);
-        ahead(idx + k);
+        ms_prefetch_ahead(gx + k);
+        ms_prefetch_ahead(gy + k);
+        ms_prefetch_ahead(gz + k);
+        ms_prefetch_ahead(idx + k);
         load_svel(v->pk, idx + k, &sj, &uj, &wj, &tj);
         __m512 d = _mm512_mul_ps(_mm512_sub_ps(u, uj), _mm512_loadu_ps(gx + k));
         d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(w, wj), _mm512_loadu_ps(gy + k)));
@@ -625,10 +617,10 @@ __attribute__((target("avx512f"))) static inline void apply_real_avx512(
     const __m512 sv = _mm512_set1_ps(si);
     __m512 a = _mm512_setzero_ps(), b = a, c = a;
     for (int k = 0; k < n; k += LANES) {
-        ahead(gx + k);
-        ahead(gy + k);
-        ahead(gz + k);
-        ahead(idx + k);
+        ms_prefetch_ahead(gx + k);
+        ms_prefetch_ahead(gy + k);
+        ms_prefetch_ahead(gz + k);
+        ms_prefetch_ahead(idx + k);
         const __m512 sj = _mm512_i32gather_ps(_mm512_loadu_si512(idx + k), s, 4);
         const __m512 f = _mm512_add_ps(sv, sj);
         a = _mm512_add_ps(a, _mm512_mul_ps(f, _mm512_loadu_ps(gx + k)));

@@ -230,8 +230,8 @@ __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
         /* the streamed r^2 and indices 512 entries ahead, as dfsph.c's
          * loops (hints: the same bits; the phase 0.96x on the peer's
          * scene, three alternated runs) */
-        _mm_prefetch((const char *)((uintptr_t)(r2s + k) + 2048), _MM_HINT_T0);
-        _mm_prefetch((const char *)((uintptr_t)(idx + k) + 2048), _MM_HINT_T0);
+        ms_prefetch_ahead(r2s + k);
+        ms_prefetch_ahead(idx + k);
         ms_load_quads(v->pk + 4, idx + k, &uxj, &uyj, &uzj, &irj); /* vx, vy, vz, 1/rho */
         __m512 r = _mm512_sqrt_ps(_mm512_loadu_ps(r2s + k));
         __m512 hr = _mm512_max_ps(_mm512_sub_ps(h, r), zero);

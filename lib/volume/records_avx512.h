@@ -1,16 +1,19 @@
-/* Sixteen neighbours' 4-float quads out of the packed 8-float records
- * (v->pk): what the force pass (forces.c, under DFSPH) and the DFSPH
- * solves (dfsph.c) read of each neighbour. Sixteen 16-byte loads and a
- * 4 x 4 transpose in each 128-bit lane, in place of gathers (AVX-512
- * gathers were 35 % of a 32k dam break's sub-step). Vector a[k] holds the
- * quads of j[k], j[k+4], j[k+8], j[k+12], so that the transpose leaves
- * the lanes in order. Values are moved, never computed: the same bits as
- * the C loops' loads. Include only where MS_VOLUME_HAVE_AVX512. */
+/* The AVX-512 pair loops' shared pieces (forces.c, dfsph.c): the
+ * prefetch of their per-pair streams, and sixteen neighbours' 4-float
+ * quads out of the packed 8-float records (v->pk), what the force pass
+ * (under DFSPH) and the DFSPH solves read of each neighbour: sixteen
+ * 16-byte loads and a 4 x 4 transpose in each 128-bit lane, in place of
+ * gathers (AVX-512 gathers were 35 % of a 32k dam break's sub-step).
+ * Vector a[k] holds the quads of j[k], j[k+4], j[k+8], j[k+12], so that
+ * the transpose leaves the lanes in order. Values are moved, never
+ * computed: the same bits as the C loops' loads. Include only where
+ * MS_VOLUME_HAVE_AVX512. */
 #ifndef MS_VOLUME_RECORDS_AVX512_H
 #define MS_VOLUME_RECORDS_AVX512_H
 
 #include <immintrin.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #define MS_RECORDS_QUAD(k) _mm_loadu_ps(b + 8 * (size_t)j[k])
 #define MS_RECORDS_ROW(k)                                                                 \
@@ -34,5 +37,18 @@ __attribute__((target("avx512f"), always_inline)) static inline void ms_load_qua
 }
 #undef MS_RECORDS_ROW
 #undef MS_RECORDS_QUAD
+
+/* The AVX-512 pair loops prefetch their streamed per-pair data (indices,
+ * r^2, pair terms: 4-byte entries) this many entries ahead (dfsph.c says
+ * how it was measured). Hints only: the same bits. */
+enum { MS_PREFETCH_ENTRIES = 512 };
+
+/* The 4-byte entry MS_PREFETCH_ENTRIES after p (as an integer: that
+ * address may lie past the array, where a prefetch does nothing). */
+__attribute__((target("avx512f"), always_inline)) static inline void ms_prefetch_ahead(
+    const void *p)
+{
+    _mm_prefetch((const char *)((uintptr_t)p + MS_PREFETCH_ENTRIES * sizeof(float)), _MM_HINT_T0);
+}
 
 #endif
