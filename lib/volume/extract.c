@@ -1274,13 +1274,7 @@ static int smooth_passes(const ms_extract_snap *s, int *full, float *frac)
 static void bin_scatter(const int *ckey, int m, size_t cells, const float *x, const float *y,
                         const float *z, int *cstart, int *cfill, float *bx, float *by, float *bz)
 {
-    int sum = 0;
-    for (size_t c = 0; c < cells; ++c) {
-        cstart[c] = sum;
-        sum += cfill[c];
-        cfill[c] = cstart[c];
-    }
-    cstart[cells] = sum;
+    ms_counts_to_starts(cstart, cfill, cells);
     for (int q = 0; q < m; ++q) {
         const int d = cfill[ckey[q]]++;
         bx[d] = x[q];
@@ -1294,7 +1288,6 @@ static void bin_scatter(const int *ckey, int m, size_t cells, const float *x, co
  * sees dry cells beyond the rectangle, so a cell's value is the field's
  * when the rectangle holds every cell within the passes of it (or the
  * field ends there): the 3 x 3 filter reaches one cell further per pass. */
-
 /* The columns of the reference (663cc3c's code, bytes unchanged): bins of
  * the field, a run per bin row trimmed to R, the wall images computed per
  * column, the bracketing root search. Into *raw_out (rw x rh in buf);

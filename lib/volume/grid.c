@@ -138,6 +138,17 @@ static int grid_build_pooled(ms_volume *v)
     return 1;
 }
 
+void ms_counts_to_starts(int *start, int *fill, size_t cells)
+{
+    int sum = 0;
+    for (size_t c = 0; c < cells; ++c) {
+        start[c] = sum;
+        sum += fill[c];
+        fill[c] = start[c];
+    }
+    start[cells] = sum;
+}
+
 /* The sorted copies become the particle arrays. */
 static void swap_sorted(ms_volume *v)
 {
@@ -169,13 +180,7 @@ void ms_volume_grid_build(ms_volume *v)
         key[i] = (int)c;
         fill[c]++;
     }
-    int sum = 0;
-    for (long c = 0; c < nc; ++c) {
-        start[c] = sum;
-        sum += fill[c];
-        fill[c] = start[c];
-    }
-    start[nc] = sum;
+    ms_counts_to_starts(start, fill, (size_t)nc);
     place_range(v, 0, n, fill, key);
     swap_sorted(v);
 }

@@ -331,6 +331,10 @@ void ms_volume_publish(ms_volume *v);
 
 /* grid.c: sort the particles into cell order; fills cell[] and cell_start. */
 void ms_volume_grid_build(ms_volume *v);
+/* A counting sort's middle (grid.c): fill[c] holds bin c's count; start
+ * gets the bins' first slots (start[cells] the total) and fill a copy of
+ * them, the next free slot of each bin. Also the extraction's bins. */
+void ms_counts_to_starts(int *start, int *fill, size_t cells);
 /* The grid's shape, copied out of the volume for the loops that store
  * ints (an int store may alias v->gx, and the compiler then reloads). */
 typedef struct ms_grid_shape {
