@@ -108,8 +108,18 @@
  * column 9.7 -> 8.6 %. The long share 0.75, 0.85 and 0.9 pass the same
  * bars (0.9: largest compression 0.97 %; 1: 1.01 %, fails); a constant
  * 0.7 inside (3.2 density iterations a sub-step on the peer's scene)
- * passes but 0.66 and 0.72 leave the deepest layer 2.2 % low (bar 2 %),
- * and 0.8 constant runs the Martin & Moyce front ahead (RMS 0.343).
+ * passes but 0.66 and 0.72 leave the deepest layer 2.2-2.3 % low (bar
+ * 2 %), and 0.8 constant runs the Martin & Moyce front ahead (RMS 0.343).
+ * Also tried and not kept: half after a minimum solve replaced by 0.6
+ * (251 density iterations on the peer's 0.3 s) or 0.4 with 0.9 (274), the
+ * long share only after more than 3 iterations (300), a share rising 0.1
+ * or 0.15 an iteration to 0.9 (267, 260), 0.3 to 0.95 (240): each leaves
+ * the deepest layer 2.2-2.6 % low at one of the test's viscosities; a
+ * minimum of 1 density iteration with these shares 257 (and 81
+ * divergence iterations against 79: the hydrostatic and dam-break tests
+ * pass; not SPlisHSPlasH's minimum, for 6 % fewer iterations), with the
+ * long share after 2 or more iterations 198 but the largest compression
+ * 1.09 %.
  *
  * The warm start costs no neighbour pass of its own (round ten; it was
  * one of a sub-step's 9): its velocity change, dt / dt_last^2 m G sum_j
