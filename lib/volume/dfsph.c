@@ -115,11 +115,12 @@
  * long share only after more than 3 iterations (300), a share rising 0.1
  * or 0.15 an iteration to 0.9 (267, 260), 0.3 to 0.95 (240): each leaves
  * the deepest layer 2.2-2.6 % low at one of the test's viscosities; a
- * minimum of 1 density iteration with these shares 257 (and 81
- * divergence iterations against 79: the hydrostatic and dam-break tests
- * pass; not SPlisHSPlasH's minimum, for 6 % fewer iterations), with the
- * long share after 2 or more iterations 198 but the largest compression
- * 1.09 %.
+ * minimum of 1 density iteration with these shares 258 (and 83
+ * divergence iterations against 79; every bar passes): the peer's 0.3 s
+ * 0.974x, glass 0.988x, fig1 under DFSPH 0.992x (volume_ab), but glass's
+ * largest compression 1.6 -> 4.8 % and the peer's 2.1 -> 2.7 %; with the
+ * long share after 2 or more iterations 198, the hydrostatic tank's
+ * largest compression 1.09 % (bar 1 %).
  *
  * The warm start costs no neighbour pass of its own (round ten; it was
  * one of a sub-step's 9): its velocity change, dt / dt_last^2 m G sum_j
