@@ -37,6 +37,10 @@
 
 #include "volume/volume_internal.h"
 
+#if MS_VOLUME_HAVE_AVX512
+#include <immintrin.h>
+#endif
+
 float ms_volume_pressure(const ms_volume *v, float rho)
 {
     float rho0 = v->desc.rest_density;
@@ -115,9 +119,62 @@ weight_sum(const ms_volume *v, const float *restrict r2, int n, const float *res
     return ms_lanes_sum(acc);
 }
 
-static void density_part(void *ctxp, int part, int b, int e)
+#if MS_VOLUME_HAVE_AVX512
+/* ms_lanes_sum of a vector, in registers: the same tree order. */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float lanes_sum16(__m512 a)
 {
-    density_ctx *ctx = ctxp;
+    __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(a), _mm512_extractf32x8_ps(a, 1));
+    __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
+    __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
+    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
+}
+
+/* The kernel weight of 16 entries r^2: (h - r)^3 (spiky) or (h^2 - r^2)^3
+ * (poly6), the C loop's operations in its order. */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 weight16(__m512 q,
+                                                                                         int poly6,
+                                                                                         __m512 h,
+                                                                                         __m512 h2)
+{
+    const __m512 t = poly6 ? _mm512_sub_ps(h2, q) : _mm512_sub_ps(h, _mm512_sqrt_ps(q));
+    return _mm512_mul_ps(_mm512_mul_ps(t, t), t);
+}
+
+/* weight_sum in AVX-512 intrinsics, inlined into the density pass
+ * (issue 12, round thirteen: the clone was called once a particle, and
+ * its lanes went through the stack to ms_lanes_sum): the same terms in the
+ * same lanes and the same lane sum, so the same bits; the coincident
+ * count is a popcount (the C loop's float count of small integers is
+ * exact). */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float weight_sum_avx512(
+    const ms_volume *v, const float *restrict r2, int n, const float *restrict g2, int gn,
+    int *coincident)
+{
+    const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
+    const __m512 h = _mm512_set1_ps(v->K.h), h2 = _mm512_set1_ps(v->K.h2);
+    const __m512 eps2 = _mm512_set1_ps(v->eps2);
+    __m512 acc = _mm512_setzero_ps();
+    int close = 0;
+    for (int k = 0; k < n; k += LANES) {
+        const __m512 q = _mm512_loadu_ps(r2 + k);
+        acc = _mm512_add_ps(acc, weight16(q, poly6, h, h2));
+        close += _mm_popcnt_u32(_cvtmask16_u32(_mm512_cmp_ps_mask(q, eps2, _CMP_LT_OQ)));
+    }
+    for (int k = 0; k < gn; k += LANES)
+        acc = _mm512_add_ps(acc, weight16(_mm512_loadu_ps(g2 + k), poly6, h, h2));
+    *coincident = close;
+    return lanes_sum16(acc);
+}
+#endif
+
+typedef float weight_fn(const ms_volume *v, const float *restrict r2, int n,
+                        const float *restrict g2, int gn, int *coincident);
+
+/* density_part's loop over particles [b, e), with the weight sum w (a
+ * constant at each call site, inlined). */
+__attribute__((always_inline)) static inline void density_range(density_ctx *ctx, int part, int b,
+                                                                int e, weight_fn *w)
+{
     ms_volume *v = ctx->v;
     ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
     const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
@@ -141,7 +198,7 @@ static void density_part(void *ctxp, int part, int b, int e)
         int close = 0;
         const float *g2 = nghost ? G->r2 + gbegin : NULL; /* an image run, if any */
         const int gn = nghost ? (int)(G->len - gbegin) : 0;
-        float sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), g2, gn, &close);
+        float sum = w(v, L->r2 + begin, (int)(L->len - begin), g2, gn, &close);
         v->nbr[i] = nreal + nghost;
         coincident += close - 1; /* itself */
         pairs += nreal - 1 + nghost;
@@ -165,6 +222,26 @@ static void density_part(void *ctxp, int part, int b, int e)
     ctx->surface[part] = surface;
     ctx->max_err[part] = max_err;
     ctx->pairs[part] = pairs;
+}
+
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target("avx512f,avx512dq"))) static void density_range_avx512(density_ctx *ctx,
+                                                                             int part, int b, int e)
+{
+    density_range(ctx, part, b, e, weight_sum_avx512);
+}
+#endif
+
+static void density_part(void *ctxp, int part, int b, int e)
+{
+    density_ctx *ctx = ctxp;
+#if MS_VOLUME_HAVE_AVX512
+    if (ctx->v->isa == MS_VOLUME_ISA_AVX512) {
+        density_range_avx512(ctx, part, b, e);
+        return;
+    }
+#endif
+    density_range(ctx, part, b, e, weight_sum);
 }
 
 /* The packed copy's positions and velocities (v->pk: x, y, z, -, vx, vy,
