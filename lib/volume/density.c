@@ -41,7 +41,17 @@
 #include <immintrin.h>
 #endif
 
-float ms_volume_pressure(const ms_volume *v, float rho)
+/* max(p, 0) as fmaxf(p, 0.0f) gives it (a NaN p: 0), without the call
+ * to libm that fmaxf is at -O2 (issue 12, round thirteen: once a particle
+ * in the density pass). p = -0 cannot occur (k, B > 0; x - x = +0). */
+static inline float clamp_positive(float p)
+{
+    return p > 0.0f ? p : 0.0f;
+}
+
+/* The law's pressure (ms_volume_pressure), inlined into the density
+ * pass: no call a particle. */
+static inline float pressure_of(const ms_volume *v, float rho)
 {
     float rho0 = v->desc.rest_density;
     if (v->desc.pressure == MS_PRESSURE_DFSPH)
@@ -50,13 +60,17 @@ float ms_volume_pressure(const ms_volume *v, float rho)
         float r = rho / rho0;
         if (r <= 2.0f) {
             float r2 = r * r, r3 = r2 * r;
-            return fmaxf(v->tait_b * (r3 * r3 * r - 1.0f), 0.0f);
+            return clamp_positive(v->tait_b * (r3 * r3 * r - 1.0f));
         }
         return v->tait_b * (127.0f + 448.0f * (r - 2.0f)); /* 2^7 - 1, 7 * 2^6 */
     }
-    return fmaxf(v->desc.gas_constant * (rho - rho0), 0.0f);
+    return clamp_positive(v->desc.gas_constant * (rho - rho0));
 }
 
+float ms_volume_pressure(const ms_volume *v, float rho)
+{
+    return pressure_of(v, rho);
+}
 
 typedef struct density_ctx {
     ms_volume *v;
@@ -207,7 +221,7 @@ __attribute__((always_inline)) static inline void density_range(density_ctx *ctx
         float rho = mw * sum;
         v->rho[i] = rho;
         v->inv_rho[i] = 1.0f / rho;
-        v->prs[i] = ms_volume_pressure(v, rho);
+        v->prs[i] = pressure_of(v, rho);
         float *restrict pk = v->pk + 8 * (size_t)i; /* pack_part wrote the rest */
         pk[3] = v->prs[i];
         pk[7] = v->inv_rho[i];
