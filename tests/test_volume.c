@@ -1250,14 +1250,16 @@ START_TEST(every_instruction_set_path_gives_the_same_bytes)
 }
 END_TEST
 
-/* The same with the poly6 density kernel and a moving sphere in the
- * liquid (its shape images take the force pass's C loop on every path;
- * the wall field, damping and weight sums have AVX-512 loops of their
- * own since round thirteen): every path gives the same bytes. */
-static uint64_t run_ball_isa(int isa)
+/* The same with the poly6 density kernel, the ideal gas and Tait laws
+ * and a moving sphere in the liquid (its shape images take the force
+ * pass's C loop on every path; the wall field, damping, weight sums and
+ * pressure laws have AVX-512 loops of their own since round thirteen):
+ * every path gives the same bytes. */
+static uint64_t run_ball_isa(int isa, ms_pressure law)
 {
     ms_volume_desc d = box_desc(0.5f, 0.1f, 0.25f, 0.01f);
     d.density_kernel = MS_DENSITY_POLY6;
+    d.pressure = law;
     d.viscosity = 2.0f;
     ms_volume *v = make(&d);
     v->isa = isa;
@@ -1281,9 +1283,13 @@ START_TEST(every_instruction_set_path_gives_the_same_bytes_with_poly6_and_a_shap
     if (skip_under_tsan())
         MS_SKIP(TSAN_WHY);
     const int best = ms_volume_pick_isa();
-    const uint64_t ref = run_ball_isa(MS_VOLUME_ISA_C);
-    for (int isa = MS_VOLUME_ISA_C + 1; isa <= best; ++isa)
-        ck_assert_msg(run_ball_isa(isa) == ref, "instruction set %d differs from plain C", isa);
+    const ms_pressure laws[2] = {MS_PRESSURE_IDEAL_GAS, MS_PRESSURE_TAIT};
+    for (int k = 0; k < 2; ++k) {
+        const uint64_t ref = run_ball_isa(MS_VOLUME_ISA_C, laws[k]);
+        for (int isa = MS_VOLUME_ISA_C + 1; isa <= best; ++isa)
+            ck_assert_msg(run_ball_isa(isa, laws[k]) == ref,
+                          "law %d: instruction set %d differs from plain C", (int)laws[k], isa);
+    }
 }
 END_TEST
 

@@ -33,6 +33,7 @@
  * cohesion of the surface layer and nothing else.
  */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "volume/volume_internal.h"
@@ -184,19 +185,102 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline float w
 typedef float weight_fn(const ms_volume *v, const float *restrict r2, int n,
                         const float *restrict g2, int gn, int *coincident);
 
+/* What the density gives particles [b, e) once rho is summed: 1/rho, the
+ * law's pressure, the packed copy's p and 1/rho; returns the largest
+ * compression rho/rho0 - 1 (at least 0). */
+typedef float finish_fn(ms_volume *v, int b, int e);
+
+static inline void finish_one(ms_volume *v, int i)
+{
+    const float rho = v->rho[i];
+    v->inv_rho[i] = 1.0f / rho;
+    v->prs[i] = pressure_of(v, rho);
+    float *restrict pk = v->pk + 8 * (size_t)i; /* pack_part wrote the rest */
+    pk[3] = v->prs[i];
+    pk[7] = v->inv_rho[i];
+}
+
+static float finish_c(ms_volume *v, int b, int e)
+{
+    const float rho0 = v->desc.rest_density;
+    float max_err = 0.0f;
+    for (int i = b; i < e; ++i) {
+        finish_one(v, i);
+        float err = v->rho[i] / rho0 - 1.0f; /* compression */
+        max_err = err > max_err ? err : max_err;
+    }
+    return max_err;
+}
+
+#if MS_VOLUME_HAVE_AVX512
+/* pressure_of in 16 lanes: the same operations per lane (the Tait law's
+ * two branches blended), so the same bits. */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 pressure16(
+    const ms_volume *v, __m512 rho)
+{
+    const __m512 rho0 = _mm512_set1_ps(v->desc.rest_density), zero = _mm512_setzero_ps();
+    __m512 p;
+    if (v->desc.pressure == MS_PRESSURE_DFSPH)
+        return zero;
+    if (v->desc.pressure == MS_PRESSURE_TAIT) {
+        const __m512 b = _mm512_set1_ps(v->tait_b), r = _mm512_div_ps(rho, rho0);
+        const __m512 r2 = _mm512_mul_ps(r, r), r3 = _mm512_mul_ps(r2, r);
+        const __m512 lo = _mm512_mul_ps(
+            b, _mm512_sub_ps(_mm512_mul_ps(_mm512_mul_ps(r3, r3), r), _mm512_set1_ps(1.0f)));
+        const __m512 hi =
+            _mm512_mul_ps(b, _mm512_add_ps(_mm512_set1_ps(127.0f),
+                                           _mm512_mul_ps(_mm512_set1_ps(448.0f),
+                                                         _mm512_sub_ps(r, _mm512_set1_ps(2.0f)))));
+        const __mmask16 low = _mm512_cmp_ps_mask(r, _mm512_set1_ps(2.0f), _CMP_LE_OQ);
+        const __mmask16 pos = _mm512_cmp_ps_mask(lo, zero, _CMP_GT_OQ);
+        /* r <= 2: clamp_positive(lo); else (NaN r too) hi */
+        return _mm512_mask_blend_ps(low, hi, _mm512_maskz_mov_ps(pos, lo));
+    }
+    p = _mm512_mul_ps(_mm512_set1_ps(v->desc.gas_constant), _mm512_sub_ps(rho, rho0));
+    return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(p, zero, _CMP_GT_OQ), p);
+}
+
+/* finish_c in 16 lanes (issue 12, round thirteen: two scalar divisions a
+ * particle in the density loop, beside its square roots): the same
+ * operations per lane; the maximum (max_ps(a, m) = a > m ? a : m, the C
+ * test, from +0) does not depend on the order. The packed copy's p and
+ * 1/rho are stored lane by lane. */
+__attribute__((target("avx512f,avx512dq,bmi2"), always_inline)) static inline float finish_avx512(
+    ms_volume *v, int b, int e)
+{
+    const __m512 one = _mm512_set1_ps(1.0f), rho0 = _mm512_set1_ps(v->desc.rest_density);
+    __m512 m = _mm512_setzero_ps();
+    for (int i = b; i < e; i += 16) {
+        const unsigned rem = (unsigned)(e - i), n = rem < 16u ? rem : 16u;
+        const __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, n);
+        const __m512 rho = _mm512_maskz_loadu_ps(valid, v->rho + i);
+        const __m512 inv = _mm512_maskz_div_ps(valid, one, rho);
+        const __m512 p = pressure16(v, rho);
+        _mm512_mask_storeu_ps(v->inv_rho + i, valid, inv);
+        _mm512_mask_storeu_ps(v->prs + i, valid, p);
+        const __m512 err = _mm512_sub_ps(_mm512_maskz_div_ps(valid, rho, rho0), one);
+        m = _mm512_mask_max_ps(m, valid, err, m);
+        float *restrict pk = v->pk + 8 * (size_t)i;
+        for (unsigned l = 0; l < n; ++l) {
+            pk[8 * l + 3] = v->prs[i + (int)l];
+            pk[8 * l + 7] = v->inv_rho[i + (int)l];
+        }
+    }
+    return _mm512_reduce_max_ps(m);
+}
+#endif
+
 /* density_part's loop over particles [b, e), with the weight sum w (a
  * constant at each call site, inlined). */
 __attribute__((always_inline)) static inline void density_range(density_ctx *ctx, int part, int b,
-                                                                int e, weight_fn *w)
+                                                                int e, weight_fn *w, finish_fn *fin)
 {
     ms_volume *v = ctx->v;
     ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
     const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
     const float mw = v->mass * (poly6 ? v->K.poly6 : v->K.spiky);
-    const float rho0 = v->desc.rest_density;
     int coincident = 0, surface = 0;
-    float max_err = 0.0f;
-    double pairs = 0.0;
+    int64_t pairs = 0; /* exact: the double it was summed the same integers */
     L->len = 0;
     G->len = 0;
     v->list_failed[part] = 0;
@@ -218,16 +302,9 @@ __attribute__((always_inline)) static inline void density_range(density_ctx *ctx
         pairs += nreal - 1 + nghost;
         int is_surface = ms_volume_is_surface(v, i);
         surface += is_surface;
-        float rho = mw * sum;
-        v->rho[i] = rho;
-        v->inv_rho[i] = 1.0f / rho;
-        v->prs[i] = pressure_of(v, rho);
-        float *restrict pk = v->pk + 8 * (size_t)i; /* pack_part wrote the rest */
-        pk[3] = v->prs[i];
-        pk[7] = v->inv_rho[i];
-        float err = rho / rho0 - 1.0f; /* compression */
-        max_err = err > max_err ? err : max_err;
+        v->rho[i] = mw * sum;
     }
+    const float max_err = fin(v, b, e);
     if (!v->lists_reserved && !ms_volume_lists_headroom(v, part)) {
         v->list_failed[part] = 1;
         return;
@@ -235,14 +312,15 @@ __attribute__((always_inline)) static inline void density_range(density_ctx *ctx
     ctx->coincident[part] = coincident;
     ctx->surface[part] = surface;
     ctx->max_err[part] = max_err;
-    ctx->pairs[part] = pairs;
+    ctx->pairs[part] = (double)pairs;
 }
 
 #if MS_VOLUME_HAVE_AVX512
-__attribute__((target("avx512f,avx512dq"))) static void density_range_avx512(density_ctx *ctx,
-                                                                             int part, int b, int e)
+__attribute__((target("avx512f,avx512dq,bmi2"))) static void density_range_avx512(density_ctx *ctx,
+                                                                                  int part, int b,
+                                                                                  int e)
 {
-    density_range(ctx, part, b, e, weight_sum_avx512);
+    density_range(ctx, part, b, e, weight_sum_avx512, finish_avx512);
 }
 #endif
 
@@ -255,7 +333,7 @@ static void density_part(void *ctxp, int part, int b, int e)
         return;
     }
 #endif
-    density_range(ctx, part, b, e, weight_sum);
+    density_range(ctx, part, b, e, weight_sum, finish_c);
 }
 
 /* The packed copy's positions and velocities (v->pk: x, y, z, -, vx, vy,
