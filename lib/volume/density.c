@@ -272,6 +272,35 @@ __attribute__((target("avx512f,avx512dq,bmi2"), always_inline)) static inline fl
 
 /* density_part's loop over particles [b, e), with the weight sum w (a
  * constant at each call site, inlined). */
+/* The counts a part's density loop sums. */
+typedef struct part_counts {
+    int coincident, surface;
+    int64_t pairs; /* exact: the double it was summed the same integers */
+} part_counts;
+
+/* Particle i's density sum from its lists (built), rho = m W sum. */
+__attribute__((always_inline)) static inline void weigh(ms_volume *v, const ms_nlist *L,
+                                                        const ms_nlist *G, int i, float mw,
+                                                        weight_fn *w, part_counts *c)
+{
+    const int nreal = v->nl_count[i], nghost = v->gl_count[i];
+    const int n = (nreal + LANES - 1) / LANES * LANES, gn = (nghost + LANES - 1) / LANES * LANES;
+    int close = 0;
+    const float *g2 = nghost ? G->r2 + v->gl_begin[i] : NULL; /* an image run, if any */
+    const float sum = w(v, L->r2 + v->nl_begin[i], n, g2, gn, &close);
+    v->nbr[i] = nreal + nghost;
+    c->coincident += close - 1; /* itself */
+    c->pairs += nreal - 1 + nghost;
+    c->surface += ms_volume_is_surface(v, i);
+    v->rho[i] = mw * sum;
+}
+
+/* density_part's loop over particles [b, e), with the weight sum w and
+ * finish fin (constants at each call site, inlined). A particle's weights
+ * are summed after the next particle's lists are built (issue 12, round
+ * thirteen): its list's stores, compressed blocks at any offset, have
+ * then left the store buffer, and the sum's aligned loads do not wait
+ * for them. The same sums: the same bits. */
 __attribute__((always_inline)) static inline void density_range(density_ctx *ctx, int part, int b,
                                                                 int e, weight_fn *w, finish_fn *fin)
 {
@@ -279,8 +308,7 @@ __attribute__((always_inline)) static inline void density_range(density_ctx *ctx
     ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
     const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
     const float mw = v->mass * (poly6 ? v->K.poly6 : v->K.spiky);
-    int coincident = 0, surface = 0;
-    int64_t pairs = 0; /* exact: the double it was summed the same integers */
+    part_counts c = {0, 0, 0};
     L->len = 0;
     G->len = 0;
     v->list_failed[part] = 0;
@@ -291,28 +319,20 @@ __attribute__((always_inline)) static inline void density_range(density_ctx *ctx
             v->list_failed[part] = 1;
             return;
         }
-        const int nreal = v->nl_count[i], nghost = v->gl_count[i];
-        const size_t begin = (size_t)v->nl_begin[i], gbegin = (size_t)v->gl_begin[i];
-        int close = 0;
-        const float *g2 = nghost ? G->r2 + gbegin : NULL; /* an image run, if any */
-        const int gn = nghost ? (int)(G->len - gbegin) : 0;
-        float sum = w(v, L->r2 + begin, (int)(L->len - begin), g2, gn, &close);
-        v->nbr[i] = nreal + nghost;
-        coincident += close - 1; /* itself */
-        pairs += nreal - 1 + nghost;
-        int is_surface = ms_volume_is_surface(v, i);
-        surface += is_surface;
-        v->rho[i] = mw * sum;
+        if (i > b)
+            weigh(v, L, G, i - 1, mw, w, &c);
     }
+    if (e > b)
+        weigh(v, L, G, e - 1, mw, w, &c);
     const float max_err = fin(v, b, e);
     if (!v->lists_reserved && !ms_volume_lists_headroom(v, part)) {
         v->list_failed[part] = 1;
         return;
     }
-    ctx->coincident[part] = coincident;
-    ctx->surface[part] = surface;
+    ctx->coincident[part] = c.coincident;
+    ctx->surface[part] = c.surface;
     ctx->max_err[part] = max_err;
-    ctx->pairs[part] = (double)pairs;
+    ctx->pairs[part] = (double)c.pairs;
 }
 
 #if MS_VOLUME_HAVE_AVX512
