@@ -19,10 +19,11 @@
 
 enum { LANES = MS_VOLUME_LANES };
 /* The candidate run of the AVX-512 path (v->cand[part], cand_cap floats
- * per field): x | y | z of the candidates, then x | y | z of the real
- * neighbours the filter kept, in list order, for the image filter of a
- * particle near a wall (gather_image_avx512: loads, not gathers). */
-enum { CAND_FIELDS = 6 };
+ * per field): x | y | z of the candidates, then the r^2 of the image runs
+ * after the first of a particle near two or three walls (up to six), for
+ * filter_run_images_avx512; v->cand_idx[part] (cand_cap ints per field):
+ * the candidates' indices, then those image runs' entries. */
+enum { CAND_FIELDS = 9, CAND_IDX_FIELDS = 7 };
 
 /* Room for `more` entries plus a block of padding. */
 static int reserve(ms_nlist *L, size_t more)
@@ -73,7 +74,7 @@ int ms_volume_lists_headroom(ms_volume *v, int part)
         ms_free(v->cand[part]);
         ms_free(v->cand_idx[part]);
         v->cand[part] = ms_alloc_array(CAND_FIELDS * cap, sizeof(float));
-        v->cand_idx[part] = ms_alloc_array(cap, sizeof(int));
+        v->cand_idx[part] = ms_alloc_array(CAND_IDX_FIELDS * cap, sizeof(int));
         v->cand_cap[part] = v->cand[part] && v->cand_idx[part] ? cap : 0;
         if (!v->cand_cap[part])
             return 0;
@@ -147,7 +148,7 @@ static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi,
  * slow). Returns how many were within h. */
 __attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t filter_block(
     __m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y, const float *z,
-    __mmask16 valid, __m512i id, int *out, float *out2, float *pos, size_t stride)
+    __mmask16 valid, __m512i id, int *out, float *out2)
 {
     __m512 xj = _mm512_maskz_loadu_ps(valid, x), yj = _mm512_maskz_loadu_ps(valid, y);
     __m512 zj = _mm512_maskz_loadu_ps(valid, z);
@@ -159,11 +160,6 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline 
     __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
     _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(m, id));
     _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(m, r2));
-    if (pos) { /* the kept neighbours' positions too (constant per call site) */
-        _mm512_storeu_ps(pos, _mm512_maskz_compress_ps(m, xj));
-        _mm512_storeu_ps(pos + stride, _mm512_maskz_compress_ps(m, yj));
-        _mm512_storeu_ps(pos + 2 * stride, _mm512_maskz_compress_ps(m, zj));
-    }
     return (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
 }
 
@@ -182,8 +178,7 @@ filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float
         for (int j = lo[r]; j < hi[r]; j += 16) {
             unsigned rem = (unsigned)(hi[r] - j);
             __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
-            n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n,
-                              NULL, 0);
+            n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n);
             id = _mm512_add_epi32(id, sixteen);
         }
     }
@@ -191,12 +186,10 @@ filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float
 }
 
 /* filter_rows_avx512 over candidates already copied into one run
- * (cand_of): the same list, without a short loop per row. With pos, the
- * kept neighbours' x | y | z (stride apart) are stored too, in list order. */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t
-filter_run_body(const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride,
-                const float q[3], float h2, int *restrict out, float *restrict out2,
-                float *restrict pos)
+ * (cand_of): the same list, without a short loop per row. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx512(
+    const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
+    float h2, int *restrict out, float *restrict out2)
 {
     const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
     const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
@@ -206,24 +199,101 @@ filter_run_body(const float *restrict cx, const int *restrict cidx, size_t nc, s
         size_t rem = nc - j;
         __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
-        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n,
-                          pos ? pos + n : NULL, stride);
+        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n);
     }
     return n;
 }
 
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx512(
-    const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
-    float h2, int *restrict out, float *restrict out2)
+/* A particle's wall images for filter_run_images_avx512: n of them, image
+ * k at (x[k], y[k], z[k]) with tag[k]; its run goes to idx[k], r2[k]
+ * (16 entries of slack) and its length to len[k]. */
+typedef struct image_runs {
+    int n;
+    float x[7], y[7], z[7];
+    int tag[7];
+    int *idx[7];
+    float *r2[7];
+    size_t len[7];
+} image_runs;
+
+/* filter_run_avx512 for a particle near a wall, and in the same pass its
+ * wall images' runs: image k's neighbours are those of the particle's
+ * real neighbours within h of the image (gather_image), in list order,
+ * and here they are the candidates the real filter keeps in each block
+ * that are also within h of the image, compressed in candidate order: the
+ * same entries in the same order, with the same r^2 (the same positions,
+ * the same operations). Issue 12, round thirteen: until then the filter
+ * stored the kept neighbours' positions and the image filter loaded them
+ * back, with the list's indices, right after those stores (a call an
+ * image, and loads that wait for the stores to reach the cache). */
+/* Image k's run of one block: the lanes of m within h of (ix, iy, iz). */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t image_block(
+    __m512 ix, __m512 iy, __m512 iz, __m512 hh, __m512 xj, __m512 yj, __m512 zj, __mmask16 m,
+    __m512i id, int *out, float *out2)
 {
-    return filter_run_body(cx, cidx, nc, stride, q, h2, out, out2, NULL);
+    __m512 ex = _mm512_sub_ps(ix, xj), ey = _mm512_sub_ps(iy, yj), ez = _mm512_sub_ps(iz, zj);
+    __m512 g2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_mul_ps(ey, ey)),
+                              _mm512_mul_ps(ez, ez));
+    __mmask16 hit = _mm512_mask_cmp_ps_mask(m, g2, hh, _CMP_LT_OQ);
+    _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(hit, id));
+    _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(hit, g2));
+    return (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
 }
 
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_pos_avx512(
+/* The body of filter_run_images_avx512 for nimg images (a constant at
+ * each call site: one image, the floor or a side wall, keeps its run in
+ * registers). */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t images_body(
     const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
-    float h2, int *restrict out, float *restrict out2, float *restrict pos)
+    float h2, int *restrict out, float *restrict out2, image_runs *im, int nimg)
 {
-    return filter_run_body(cx, cidx, nc, stride, q, h2, out, out2, pos);
+    const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(h2);
+    size_t n = 0, len[7] = {0, 0, 0, 0, 0, 0, 0};
+    for (size_t j = 0; j < nc; j += 16) {
+        size_t rem = nc - j;
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+        __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
+        __m512 xj = _mm512_maskz_loadu_ps(valid, cx + j), yj = _mm512_maskz_loadu_ps(valid, cy + j);
+        __m512 zj = _mm512_maskz_loadu_ps(valid, cz + j);
+        __m512 dx = _mm512_sub_ps(qx, xj), dy = _mm512_sub_ps(qy, yj), dz = _mm512_sub_ps(qz, zj);
+        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                  _mm512_mul_ps(dz, dz));
+        __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
+        _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
+        n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+        for (int k = 0; k < nimg; ++k)
+            len[k] += image_block(_mm512_set1_ps(im->x[k]), _mm512_set1_ps(im->y[k]),
+                                  _mm512_set1_ps(im->z[k]), hh, xj, yj, zj, m,
+                                  _mm512_or_si512(id, _mm512_set1_epi32(im->tag[k])),
+                                  im->idx[k] + len[k], im->r2[k] + len[k]);
+    }
+    for (int k = 0; k < nimg; ++k)
+        im->len[k] = len[k];
+    return n;
+}
+
+/* filter_run_avx512 for a particle near a wall, and in the same pass its
+ * wall images' runs: image k's neighbours are those of the particle's
+ * real neighbours within h of the image (gather_image), in list order,
+ * and here they are the candidates the real filter keeps in each block
+ * that are also within h of the image, compressed in candidate order: the
+ * same entries in the same order, with the same r^2 (the same positions,
+ * the same operations). Issue 12, round thirteen: until then the filter
+ * stored the kept neighbours' positions and the image filter loaded them
+ * back, with the list's indices, right after those stores (a call an
+ * image, and loads that wait for the stores to reach the cache). */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_images_avx512(
+    const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
+    float h2, int *restrict out, float *restrict out2, image_runs *im)
+{
+    if (im->n == 1)
+        return images_body(cx, cidx, nc, stride, q, h2, out, out2, im, 1);
+    if (im->n == 3)
+        return images_body(cx, cidx, nc, stride, q, h2, out, out2, im, 3);
+    return images_body(cx, cidx, nc, stride, q, h2, out, out2, im, 7);
 }
 #endif
 
@@ -315,7 +385,7 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static long cand_of(ms_volume
         ms_free(v->cand[part]);
         ms_free(v->cand_idx[part]);
         v->cand[part] = ms_alloc_array(CAND_FIELDS * cap, sizeof(float));
-        v->cand_idx[part] = ms_alloc_array(cap, sizeof(int));
+        v->cand_idx[part] = ms_alloc_array(CAND_IDX_FIELDS * cap, sizeof(int));
         v->cand_cap[part] = v->cand[part] && v->cand_idx[part] ? cap : 0;
         if (!v->cand_cap[part])
             return -1;
@@ -394,7 +464,8 @@ static int gather(const ms_volume *v, ms_nlist *L, const float q[3], const ms_ro
  * the domain, |q - x_j|^2 = |p - x_j|^2 + 4 sum_k d_k e_k (d_k, e_k the
  * distances of p and x_j from wall k, both >= 0). So the image list is
  * p's real list (n entries from idx) filtered again at q, in its order:
- * no search of the cells around q. Plain C, the same on every ISA. */
+ * no search of the cells around q. Plain C, for the C and SSE2 paths
+ * (AVX-512: filter_run_images_avx512, the same runs). */
 static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
                         const int *restrict idx, int n)
 {
@@ -416,46 +487,6 @@ static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int t
     L->len += m;
     return (int)m;
 }
-
-#if MS_VOLUME_HAVE_AVX512
-/* gather_image in AVX-512: the neighbours' positions loaded from the
- * copy the filter kept (pos: x | y | z, stride apart, in list order;
- * issue 12: it replaced two 64-bit gathers per block, ~10 % of a fig1
- * sub-step), the same r^2 and the same order (compress keeps it), so the
- * same list. */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static int gather_image_avx512(
-    const ms_volume *v, ms_nlist *L, const float q[3], int tag, const int *restrict idx, int n,
-    const float *restrict pos, size_t stride)
-{
-    if (!reserve(L, (size_t)n + 2 * LANES))
-        return -1;
-    const float *restrict px = pos, *restrict py = pos + stride, *restrict pz = pos + 2 * stride;
-    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
-    const __m512 hh = _mm512_set1_ps(v->K.h2);
-    const __m512i vtag = _mm512_set1_epi32(tag);
-    int *restrict out = L->idx + L->len;
-    float *restrict out2 = L->r2 + L->len;
-    size_t m = 0;
-    for (int k = 0; k < n; k += 16) {
-        unsigned rem = (unsigned)(n - k);
-        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
-        /* idx is padded (with the particle itself): a whole block is valid memory */
-        __m512i j = _mm512_loadu_si512((const void *)(idx + k));
-        __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, px + k));
-        __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, py + k));
-        __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, pz + k));
-        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
-                                  _mm512_mul_ps(dz, dz));
-        __mmask16 hit = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
-        _mm512_storeu_si512((void *)(out + m),
-                            _mm512_maskz_compress_epi32(hit, _mm512_or_si512(j, vtag)));
-        _mm512_storeu_ps(out2 + m, _mm512_maskz_compress_ps(hit, r2));
-        m += (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
-    }
-    L->len += m;
-    return (int)m;
-}
-#endif
 
 /* The images of particle i's neighbours across the tangent plane of its
  * nearest shape collider (point c = p - d n, normal n): the particles j on
@@ -524,6 +555,66 @@ static void pad(ms_nlist *L, size_t begin, int index, float h2)
     L->len = end;
 }
 
+/* Image f of p: p reflected across the walls of the bits of f. */
+static inline void image_of(const float p[3], unsigned f, const float wall[3], float q[3])
+{
+    for (int k = 0; k < 3; ++k)
+        q[k] = f & (1u << k) ? 2.0f * wall[k] - p[k] : p[k];
+}
+
+#if MS_VOLUME_HAVE_AVX512
+/* Particle i's real list (appended to the part's list, unpadded) and, near
+ * a wall, its wall images' runs (appended to the image list in the fixed
+ * order of the images, as the loop of ms_volume_neighbours_of): the first
+ * image's run written in place, the others into the candidate run's
+ * scratch fields and copied after it. The number of image entries, or -1
+ * if a list could not grow. */
+static int lists_avx512(ms_volume *v, int part, long ncand, const float p[3], unsigned near,
+                        const float wall[3])
+{
+    ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
+    const size_t stride = v->cand_cap[part];
+    const float h2 = v->K.h2;
+    if (!reserve(L, (size_t)ncand + 2 * LANES))
+        return -1;
+    if (!near) {
+        L->len += filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)ncand, stride, p, h2,
+                                    L->idx + L->len, L->r2 + L->len);
+        return 0;
+    }
+    if (!reserve(G, (size_t)ncand + 2 * LANES))
+        return -1;
+    image_runs im;
+    im.n = 0;
+    for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
+        if ((f & near) != f)
+            continue;
+        float q[3];
+        image_of(p, f, wall, q);
+        const int k = im.n++;
+        im.x[k] = q[0];
+        im.y[k] = q[1];
+        im.z[k] = q[2];
+        im.tag[k] = (int)(f << MS_VOLUME_IMAGE_SHIFT);
+        im.idx[k] = k ? v->cand_idx[part] + (size_t)k * stride : G->idx + G->len;
+        im.r2[k] = k ? v->cand[part] + (size_t)(2 + k) * stride : G->r2 + G->len;
+    }
+    L->len += filter_run_images_avx512(v->cand[part], v->cand_idx[part], (size_t)ncand, stride, p,
+                                       h2, L->idx + L->len, L->r2 + L->len, &im);
+    size_t got = im.len[0];
+    G->len += im.len[0];
+    for (int k = 1; k < im.n; ++k) {
+        if (!reserve(G, im.len[k] + 2 * LANES))
+            return -1;
+        memcpy(G->idx + G->len, im.idx[k], im.len[k] * sizeof(int));
+        memcpy(G->r2 + G->len, im.r2[k], im.len[k] * sizeof(float));
+        G->len += im.len[k];
+        got += im.len[k];
+    }
+    return (int)got;
+}
+#endif
+
 /* Particle i's runs (see volume_internal.h): its real neighbours from the rows
  * of its cell (own, shared by the particles of a cell, recomputed when the
  * cell changes; *ncand the candidates copied for the AVX-512 path) and its
@@ -553,51 +644,35 @@ int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *n
     }
     float wall[3];
     const unsigned near = ms_volume_walls_near(v, p[0], p[1], p[2], wall);
-    int nreal; /* the particle itself included */
+    int nreal, nghost = 0; /* the particle itself included in nreal */
 #if MS_VOLUME_HAVE_AVX512
-    /* near a wall: the filter keeps the neighbours' positions for the
-     * image filter, after the candidates in the same run */
-    const size_t stride = run ? v->cand_cap[part] : 0;
-    float *const pos = run ? v->cand[part] + 3 * stride : NULL;
     if (run) {
-        if (!reserve(L, (size_t)*ncand + 2 * LANES)) {
+        nghost = lists_avx512(v, part, *ncand, p, near, wall);
+        if (nghost < 0)
             return -1;
-        }
-        if (near)
-            nreal = (int)filter_run_pos_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand,
-                                               stride, p, h2, L->idx + L->len, L->r2 + L->len, pos);
-        else
-            nreal = (int)filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand, stride,
-                                           p, h2, L->idx + L->len, L->r2 + L->len);
-        L->len += (size_t)nreal;
+        nreal = (int)(L->len - begin);
     } else
 #endif
+    {
         nreal = gather(v, L, p, own, 0);
-    if (nreal < 0) {
-        return -1;
+        if (nreal < 0)
+            return -1;
     }
     pad(L, begin, i, h2);
-    int nghost = 0;
-    for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
-        if ((f & near) != f)
-            continue;
-        float q[3] = {p[0], p[1], p[2]};
-        for (int k = 0; k < 3; ++k)
-            if (f & (1u << k))
-                q[k] = 2.0f * wall[k] - q[k];
-        const int tag = (int)(f << MS_VOLUME_IMAGE_SHIFT);
-        int got;
 #if MS_VOLUME_HAVE_AVX512
-        if (run)
-            got = gather_image_avx512(v, G, q, tag, L->idx + begin, nreal, pos, stride);
-        else
+    if (!run)
 #endif
-            got = gather_image(v, G, q, tag, L->idx + begin, nreal);
-        if (got < 0) {
-            return -1;
+        for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
+            if ((f & near) != f)
+                continue;
+            float q[3];
+            image_of(p, f, wall, q);
+            const int got =
+                gather_image(v, G, q, (int)(f << MS_VOLUME_IMAGE_SHIFT), L->idx + begin, nreal);
+            if (got < 0)
+                return -1;
+            nghost += got;
         }
-        nghost += got;
-    }
     if (v->c_d[i] < v->K.h) {
         int got = gather_plane(v, G, p, i);
         if (got < 0) {
