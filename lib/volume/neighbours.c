@@ -19,11 +19,11 @@
 
 enum { LANES = MS_VOLUME_LANES };
 /* The candidate run of the AVX-512 path (v->cand[part], cand_cap floats
- * per field): x | y | z of the candidates, then the r^2 of the image runs
- * after the first of a particle near two or three walls (up to six), for
- * filter_run_images_avx512; v->cand_idx[part] (cand_cap ints per field):
- * the candidates' indices, then those image runs' entries. */
-enum { CAND_FIELDS = 9, CAND_IDX_FIELDS = 7 };
+ * per field): x | y | z of the candidates, then x | y | z of the real
+ * neighbours the filter kept, in list order, for the image filter of a
+ * particle near two or three walls (gather_image_avx512: loads, not
+ * gathers); v->cand_idx[part]: the candidates' indices. */
+enum { CAND_FIELDS = 6 };
 
 /* Room for `more` entries plus a block of padding. */
 static int reserve(ms_nlist *L, size_t more)
@@ -74,7 +74,7 @@ int ms_volume_lists_headroom(ms_volume *v, int part)
         ms_free(v->cand[part]);
         ms_free(v->cand_idx[part]);
         v->cand[part] = ms_alloc_array(CAND_FIELDS * cap, sizeof(float));
-        v->cand_idx[part] = ms_alloc_array(CAND_IDX_FIELDS * cap, sizeof(int));
+        v->cand_idx[part] = ms_alloc_array(cap, sizeof(int));
         v->cand_cap[part] = v->cand[part] && v->cand_idx[part] ? cap : 0;
         if (!v->cand_cap[part])
             return 0;
@@ -204,53 +204,29 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx5
     return n;
 }
 
-/* A particle's wall images for filter_run_images_avx512: n of them, image
- * k at (x[k], y[k], z[k]) with tag[k]; its run goes to idx[k], r2[k]
- * (16 entries of slack) and its length to len[k]. */
-typedef struct image_runs {
-    int n;
-    float x[7], y[7], z[7];
-    int tag[7];
-    int *idx[7];
-    float *r2[7];
-    size_t len[7];
-} image_runs;
-
-/* filter_run_avx512 for a particle near a wall, and in the same pass its
- * wall images' runs: image k's neighbours are those of the particle's
- * real neighbours within h of the image (gather_image), in list order,
- * and here they are the candidates the real filter keeps in each block
- * that are also within h of the image, compressed in candidate order: the
- * same entries in the same order, with the same r^2 (the same positions,
- * the same operations). Issue 12, round thirteen: until then the filter
+/* filter_run_avx512 for a particle near one wall, and in the same pass
+ * the run of its wall image (x, y, z; tag) into iout, iout2 (16 entries of
+ * slack): the image's neighbours are those of the particle's real
+ * neighbours within h of the image (gather_image), in list order, and
+ * here they are the candidates the real filter keeps in each block that
+ * are also within h of the image, compressed in candidate order: the same
+ * entries in the same order, with the same r^2 (the same positions, the
+ * same operations). Issue 12, round thirteen: until then the filter
  * stored the kept neighbours' positions and the image filter loaded them
- * back, with the list's indices, right after those stores (a call an
- * image, and loads that wait for the stores to reach the cache). */
-/* Image k's run of one block: the lanes of m within h of (ix, iy, iz). */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t image_block(
-    __m512 ix, __m512 iy, __m512 iz, __m512 hh, __m512 xj, __m512 yj, __m512 zj, __mmask16 m,
-    __m512i id, int *out, float *out2)
-{
-    __m512 ex = _mm512_sub_ps(ix, xj), ey = _mm512_sub_ps(iy, yj), ez = _mm512_sub_ps(iz, zj);
-    __m512 g2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_mul_ps(ey, ey)),
-                              _mm512_mul_ps(ez, ez));
-    __mmask16 hit = _mm512_mask_cmp_ps_mask(m, g2, hh, _CMP_LT_OQ);
-    _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(hit, id));
-    _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(hit, g2));
-    return (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
-}
-
-/* The body of filter_run_images_avx512 for nimg images (a constant at
- * each call site: one image, the floor or a side wall, keeps its run in
- * registers). */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t images_body(
+ * back, with the list's indices, right after those stores. *nimg gets the
+ * image run's length. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_image_avx512(
     const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
-    float h2, int *restrict out, float *restrict out2, image_runs *im, int nimg)
+    float h2, int *restrict out, float *restrict out2, const float img[3], int tag,
+    int *restrict iout, float *restrict iout2, size_t *nimg)
 {
     const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
     const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 ix = _mm512_set1_ps(img[0]), iy = _mm512_set1_ps(img[1]),
+                 iz = _mm512_set1_ps(img[2]);
     const __m512 hh = _mm512_set1_ps(h2);
-    size_t n = 0, len[7] = {0, 0, 0, 0, 0, 0, 0};
+    const __m512i vtag = _mm512_set1_epi32(tag);
+    size_t n = 0, ni = 0;
     for (size_t j = 0; j < nc; j += 16) {
         size_t rem = nc - j;
         __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
@@ -264,36 +240,87 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline 
         _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
         _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
         n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
-        for (int k = 0; k < nimg; ++k)
-            len[k] += image_block(_mm512_set1_ps(im->x[k]), _mm512_set1_ps(im->y[k]),
-                                  _mm512_set1_ps(im->z[k]), hh, xj, yj, zj, m,
-                                  _mm512_or_si512(id, _mm512_set1_epi32(im->tag[k])),
-                                  im->idx[k] + len[k], im->r2[k] + len[k]);
+        __m512 ex = _mm512_sub_ps(ix, xj), ey = _mm512_sub_ps(iy, yj), ez = _mm512_sub_ps(iz, zj);
+        __m512 g2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_mul_ps(ey, ey)),
+                                  _mm512_mul_ps(ez, ez));
+        __mmask16 hit = _mm512_mask_cmp_ps_mask(m, g2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(iout + ni),
+                            _mm512_maskz_compress_epi32(hit, _mm512_or_si512(id, vtag)));
+        _mm512_storeu_ps(iout2 + ni, _mm512_maskz_compress_ps(hit, g2));
+        ni += (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
     }
-    for (int k = 0; k < nimg; ++k)
-        im->len[k] = len[k];
+    *nimg = ni;
     return n;
 }
 
-/* filter_run_avx512 for a particle near a wall, and in the same pass its
- * wall images' runs: image k's neighbours are those of the particle's
- * real neighbours within h of the image (gather_image), in list order,
- * and here they are the candidates the real filter keeps in each block
- * that are also within h of the image, compressed in candidate order: the
- * same entries in the same order, with the same r^2 (the same positions,
- * the same operations). Issue 12, round thirteen: until then the filter
- * stored the kept neighbours' positions and the image filter loaded them
- * back, with the list's indices, right after those stores (a call an
- * image, and loads that wait for the stores to reach the cache). */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_images_avx512(
+/* filter_run_avx512 that also stores the kept neighbours' x | y | z
+ * (stride apart, in list order) at pos, for gather_image_avx512. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_pos_avx512(
     const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
-    float h2, int *restrict out, float *restrict out2, image_runs *im)
+    float h2, int *restrict out, float *restrict out2, float *restrict pos)
 {
-    if (im->n == 1)
-        return images_body(cx, cidx, nc, stride, q, h2, out, out2, im, 1);
-    if (im->n == 3)
-        return images_body(cx, cidx, nc, stride, q, h2, out, out2, im, 3);
-    return images_body(cx, cidx, nc, stride, q, h2, out, out2, im, 7);
+    const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(h2);
+    size_t n = 0;
+    for (size_t j = 0; j < nc; j += 16) {
+        size_t rem = nc - j;
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+        __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
+        __m512 xj = _mm512_maskz_loadu_ps(valid, cx + j), yj = _mm512_maskz_loadu_ps(valid, cy + j);
+        __m512 zj = _mm512_maskz_loadu_ps(valid, cz + j);
+        __m512 dx = _mm512_sub_ps(qx, xj), dy = _mm512_sub_ps(qy, yj), dz = _mm512_sub_ps(qz, zj);
+        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                  _mm512_mul_ps(dz, dz));
+        __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
+        _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
+        _mm512_storeu_ps(pos + n, _mm512_maskz_compress_ps(m, xj));
+        _mm512_storeu_ps(pos + stride + n, _mm512_maskz_compress_ps(m, yj));
+        _mm512_storeu_ps(pos + 2 * stride + n, _mm512_maskz_compress_ps(m, zj));
+        n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+    }
+    return n;
+}
+
+/* gather_image in AVX-512 for a particle near two or three walls: its
+ * real list (n entries from idx) filtered again at the image q, the
+ * neighbours' positions loaded from the copy the filter kept (pos: x | y
+ * | z, stride apart, in list order); the same r^2, the same order, so the
+ * same run as gather_image. Per image it filters the kept neighbours,
+ * where filter_run_image_avx512 filters every candidate block once more:
+ * with three or seven images that was the slower (fig1). */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static int gather_image_avx512(
+    const ms_volume *v, ms_nlist *L, const float q[3], int tag, const int *restrict idx, int n,
+    const float *restrict pos, size_t stride)
+{
+    if (!reserve(L, (size_t)n + 2 * LANES))
+        return -1;
+    const float *restrict px = pos, *restrict py = pos + stride, *restrict pz = pos + 2 * stride;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(v->K.h2);
+    const __m512i vtag = _mm512_set1_epi32(tag);
+    int *restrict out = L->idx + L->len;
+    float *restrict out2 = L->r2 + L->len;
+    size_t m = 0;
+    for (int k = 0; k < n; k += 16) {
+        unsigned rem = (unsigned)(n - k);
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+        /* the list has a block of slack: a whole block is valid memory */
+        __m512i j = _mm512_loadu_si512((const void *)(idx + k));
+        __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, px + k));
+        __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, py + k));
+        __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, pz + k));
+        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                  _mm512_mul_ps(dz, dz));
+        __mmask16 hit = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(out + m),
+                            _mm512_maskz_compress_epi32(hit, _mm512_or_si512(j, vtag)));
+        _mm512_storeu_ps(out2 + m, _mm512_maskz_compress_ps(hit, r2));
+        m += (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
+    }
+    L->len += m;
+    return (int)m;
 }
 #endif
 
@@ -385,7 +412,7 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static long cand_of(ms_volume
         ms_free(v->cand[part]);
         ms_free(v->cand_idx[part]);
         v->cand[part] = ms_alloc_array(CAND_FIELDS * cap, sizeof(float));
-        v->cand_idx[part] = ms_alloc_array(CAND_IDX_FIELDS * cap, sizeof(int));
+        v->cand_idx[part] = ms_alloc_array(cap, sizeof(int));
         v->cand_cap[part] = v->cand[part] && v->cand_idx[part] ? cap : 0;
         if (!v->cand_cap[part])
             return -1;
@@ -465,7 +492,8 @@ static int gather(const ms_volume *v, ms_nlist *L, const float q[3], const ms_ro
  * distances of p and x_j from wall k, both >= 0). So the image list is
  * p's real list (n entries from idx) filtered again at q, in its order:
  * no search of the cells around q. Plain C, for the C and SSE2 paths
- * (AVX-512: filter_run_images_avx512, the same runs). */
+ * (AVX-512: filter_run_image_avx512 and gather_image_avx512, the same
+ * runs). */
 static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
                         const int *restrict idx, int n)
 {
@@ -582,10 +610,12 @@ static inline void image_of(const float p[3], unsigned f, const float wall[3], f
 #if MS_VOLUME_HAVE_AVX512
 /* Particle i's real list (appended to the part's list, unpadded) and, near
  * a wall, its wall images' runs (appended to the image list in the fixed
- * order of the images, as the loop of ms_volume_neighbours_of): the first
- * image's run written in place, the others into the candidate run's
- * scratch fields and copied after it. The number of image entries, or -1
- * if a list could not grow. */
+ * order of the images, as the loop of ms_volume_neighbours_of): near one
+ * wall in the same pass (filter_run_image_avx512), near two or three
+ * from the kept neighbours (gather_image_avx512; measured on fig1, whose
+ * shallow tank has a sixth of its particles near two walls: 0.99 of a
+ * frame against filtering every candidate block once an image). The
+ * number of image entries, or -1 if a list could not grow. */
 static int lists_avx512(ms_volume *v, int part, long ncand, const float p[3], unsigned near,
                         const float wall[3])
 {
@@ -601,33 +631,35 @@ static int lists_avx512(ms_volume *v, int part, long ncand, const float p[3], un
     }
     if (!reserve(G, (size_t)ncand + 2 * LANES))
         return -1;
-    image_runs im;
-    im.n = 0;
-    for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
-        if ((f & near) != f)
-            continue;
-        float q[3];
-        image_of(p, f, wall, q);
-        const int k = im.n++;
-        im.x[k] = q[0];
-        im.y[k] = q[1];
-        im.z[k] = q[2];
-        im.tag[k] = (int)(f << MS_VOLUME_IMAGE_SHIFT);
-        im.idx[k] = k ? v->cand_idx[part] + (size_t)k * stride : G->idx + G->len;
-        im.r2[k] = k ? v->cand[part] + (size_t)(2 + k) * stride : G->r2 + G->len;
+    if (near & (near - 1)) { /* two or three walls: three or seven images */
+        const size_t begin = L->len;
+        float *pos = v->cand[part] + 3 * stride;
+        const int nreal =
+            (int)filter_run_pos_avx512(v->cand[part], v->cand_idx[part], (size_t)ncand, stride, p,
+                                       h2, L->idx + begin, L->r2 + begin, pos);
+        L->len += (size_t)nreal;
+        int got = 0;
+        for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
+            if ((f & near) != f)
+                continue;
+            float q[3];
+            image_of(p, f, wall, q);
+            const int k = gather_image_avx512(v, G, q, (int)(f << MS_VOLUME_IMAGE_SHIFT),
+                                              L->idx + begin, nreal, pos, stride);
+            if (k < 0)
+                return -1;
+            got += k;
+        }
+        return got;
     }
-    L->len += filter_run_images_avx512(v->cand[part], v->cand_idx[part], (size_t)ncand, stride, p,
-                                       h2, L->idx + L->len, L->r2 + L->len, &im);
-    size_t got = im.len[0];
-    G->len += im.len[0];
-    for (int k = 1; k < im.n; ++k) {
-        if (!reserve(G, im.len[k] + 2 * LANES))
-            return -1;
-        memcpy(G->idx + G->len, im.idx[k], im.len[k] * sizeof(int));
-        memcpy(G->r2 + G->len, im.r2[k], im.len[k] * sizeof(float));
-        G->len += im.len[k];
-        got += im.len[k];
-    }
+    float q[3]; /* one wall: its image's run straight into the image list */
+    image_of(p, near, wall, q);
+    size_t got = 0;
+    L->len += filter_run_image_avx512(v->cand[part], v->cand_idx[part], (size_t)ncand, stride, p,
+                                      h2, L->idx + L->len, L->r2 + L->len, q,
+                                      (int)(near << MS_VOLUME_IMAGE_SHIFT), G->idx + G->len,
+                                      G->r2 + G->len, &got);
+    G->len += got;
     return (int)got;
 }
 #endif
