@@ -161,11 +161,10 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 
  * same lanes and the same lane sum, so the same bits; the coincident
  * count is a popcount (the C loop's float count of small integers is
  * exact). */
-__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float weight_sum_avx512(
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float weight_runs(
     const ms_volume *v, const float *restrict r2, int n, const float *restrict g2, int gn,
-    int *coincident)
+    int *coincident, int poly6)
 {
-    const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
     const __m512 h = _mm512_set1_ps(v->K.h), h2 = _mm512_set1_ps(v->K.h2);
     const __m512 eps2 = _mm512_set1_ps(v->eps2);
     __m512 acc = _mm512_setzero_ps();
@@ -179,6 +178,16 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline float w
         acc = _mm512_add_ps(acc, weight16(_mm512_loadu_ps(g2 + k), poly6, h, h2));
     *coincident = close;
     return lanes_sum16(acc);
+}
+
+/* The kernel chosen once, outside the loops (-O2 does not unswitch). */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float weight_sum_avx512(
+    const ms_volume *v, const float *restrict r2, int n, const float *restrict g2, int gn,
+    int *coincident)
+{
+    if (v->desc.density_kernel == MS_DENSITY_POLY6)
+        return weight_runs(v, r2, n, g2, gn, coincident, 1);
+    return weight_runs(v, r2, n, g2, gn, coincident, 0);
 }
 #endif
 
