@@ -33,11 +33,26 @@
  * cohesion of the surface layer and nothing else.
  */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "volume/volume_internal.h"
 
-float ms_volume_pressure(const ms_volume *v, float rho)
+#if MS_VOLUME_HAVE_AVX512
+#include <immintrin.h>
+#endif
+
+/* max(p, 0) as fmaxf(p, 0.0f) gives it (a NaN p: 0), without the call
+ * to libm that fmaxf is at -O2 (issue 12, round thirteen: once a particle
+ * in the density pass). p = -0 cannot occur (k, B > 0; x - x = +0). */
+static inline float clamp_positive(float p)
+{
+    return p > 0.0f ? p : 0.0f;
+}
+
+/* The law's pressure (ms_volume_pressure), inlined into the density
+ * pass: no call a particle. */
+static inline float pressure_of(const ms_volume *v, float rho)
 {
     float rho0 = v->desc.rest_density;
     if (v->desc.pressure == MS_PRESSURE_DFSPH)
@@ -46,13 +61,17 @@ float ms_volume_pressure(const ms_volume *v, float rho)
         float r = rho / rho0;
         if (r <= 2.0f) {
             float r2 = r * r, r3 = r2 * r;
-            return fmaxf(v->tait_b * (r3 * r3 * r - 1.0f), 0.0f);
+            return clamp_positive(v->tait_b * (r3 * r3 * r - 1.0f));
         }
         return v->tait_b * (127.0f + 448.0f * (r - 2.0f)); /* 2^7 - 1, 7 * 2^6 */
     }
-    return fmaxf(v->desc.gas_constant * (rho - rho0), 0.0f);
+    return clamp_positive(v->desc.gas_constant * (rho - rho0));
 }
 
+float ms_volume_pressure(const ms_volume *v, float rho)
+{
+    return pressure_of(v, rho);
+}
 
 typedef struct density_ctx {
     ms_volume *v;
@@ -115,17 +134,190 @@ weight_sum(const ms_volume *v, const float *restrict r2, int n, const float *res
     return ms_lanes_sum(acc);
 }
 
-static void density_part(void *ctxp, int part, int b, int e)
+#if MS_VOLUME_HAVE_AVX512
+/* ms_lanes_sum of a vector, in registers: the same tree order. */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float lanes_sum16(__m512 a)
 {
-    density_ctx *ctx = ctxp;
+    __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(a), _mm512_extractf32x8_ps(a, 1));
+    __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
+    __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
+    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
+}
+
+/* The kernel weight of 16 entries r^2: (h - r)^3 (spiky) or (h^2 - r^2)^3
+ * (poly6), the C loop's operations in its order. */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 weight16(__m512 q,
+                                                                                         int poly6,
+                                                                                         __m512 h,
+                                                                                         __m512 h2)
+{
+    const __m512 t = poly6 ? _mm512_sub_ps(h2, q) : _mm512_sub_ps(h, _mm512_sqrt_ps(q));
+    return _mm512_mul_ps(_mm512_mul_ps(t, t), t);
+}
+
+/* weight_sum in AVX-512 intrinsics, inlined into the density pass
+ * (issue 12, round thirteen: the clone was called once a particle, and
+ * its lanes went through the stack to ms_lanes_sum): the same terms in the
+ * same lanes and the same lane sum, so the same bits; the coincident
+ * count is a popcount (the C loop's float count of small integers is
+ * exact). */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float weight_runs(
+    const ms_volume *v, const float *restrict r2, int n, const float *restrict g2, int gn,
+    int *coincident, int poly6)
+{
+    const __m512 h = _mm512_set1_ps(v->K.h), h2 = _mm512_set1_ps(v->K.h2);
+    const __m512 eps2 = _mm512_set1_ps(v->eps2);
+    __m512 acc = _mm512_setzero_ps();
+    int close = 0;
+    for (int k = 0; k < n; k += LANES) {
+        const __m512 q = _mm512_loadu_ps(r2 + k);
+        acc = _mm512_add_ps(acc, weight16(q, poly6, h, h2));
+        close += _mm_popcnt_u32(_cvtmask16_u32(_mm512_cmp_ps_mask(q, eps2, _CMP_LT_OQ)));
+    }
+    for (int k = 0; k < gn; k += LANES)
+        acc = _mm512_add_ps(acc, weight16(_mm512_loadu_ps(g2 + k), poly6, h, h2));
+    *coincident = close;
+    return lanes_sum16(acc);
+}
+
+/* The kernel chosen once, outside the loops (-O2 does not unswitch). */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float weight_sum_avx512(
+    const ms_volume *v, const float *restrict r2, int n, const float *restrict g2, int gn,
+    int *coincident)
+{
+    if (v->desc.density_kernel == MS_DENSITY_POLY6)
+        return weight_runs(v, r2, n, g2, gn, coincident, 1);
+    return weight_runs(v, r2, n, g2, gn, coincident, 0);
+}
+#endif
+
+typedef float weight_fn(const ms_volume *v, const float *restrict r2, int n,
+                        const float *restrict g2, int gn, int *coincident);
+
+/* What the density gives particles [b, e) once rho is summed: 1/rho, the
+ * law's pressure, the packed copy's p and 1/rho; returns the largest
+ * compression rho/rho0 - 1 (at least 0). */
+typedef float finish_fn(ms_volume *v, int b, int e);
+
+static inline void finish_one(ms_volume *v, int i)
+{
+    const float rho = v->rho[i];
+    v->inv_rho[i] = 1.0f / rho;
+    v->prs[i] = pressure_of(v, rho);
+    float *restrict pk = v->pk + 8 * (size_t)i; /* pack_part wrote the rest */
+    pk[3] = v->prs[i];
+    pk[7] = v->inv_rho[i];
+}
+
+static float finish_c(ms_volume *v, int b, int e)
+{
+    const float rho0 = v->desc.rest_density;
+    float max_err = 0.0f;
+    for (int i = b; i < e; ++i) {
+        finish_one(v, i);
+        float err = v->rho[i] / rho0 - 1.0f; /* compression */
+        max_err = err > max_err ? err : max_err;
+    }
+    return max_err;
+}
+
+#if MS_VOLUME_HAVE_AVX512
+/* pressure_of in 16 lanes: the same operations per lane (the Tait law's
+ * two branches blended), so the same bits. */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 pressure16(
+    const ms_volume *v, __m512 rho)
+{
+    const __m512 rho0 = _mm512_set1_ps(v->desc.rest_density), zero = _mm512_setzero_ps();
+    __m512 p;
+    if (v->desc.pressure == MS_PRESSURE_DFSPH)
+        return zero;
+    if (v->desc.pressure == MS_PRESSURE_TAIT) {
+        const __m512 b = _mm512_set1_ps(v->tait_b), r = _mm512_div_ps(rho, rho0);
+        const __m512 r2 = _mm512_mul_ps(r, r), r3 = _mm512_mul_ps(r2, r);
+        const __m512 lo = _mm512_mul_ps(
+            b, _mm512_sub_ps(_mm512_mul_ps(_mm512_mul_ps(r3, r3), r), _mm512_set1_ps(1.0f)));
+        const __m512 hi =
+            _mm512_mul_ps(b, _mm512_add_ps(_mm512_set1_ps(127.0f),
+                                           _mm512_mul_ps(_mm512_set1_ps(448.0f),
+                                                         _mm512_sub_ps(r, _mm512_set1_ps(2.0f)))));
+        const __mmask16 low = _mm512_cmp_ps_mask(r, _mm512_set1_ps(2.0f), _CMP_LE_OQ);
+        const __mmask16 pos = _mm512_cmp_ps_mask(lo, zero, _CMP_GT_OQ);
+        /* r <= 2: clamp_positive(lo); else (NaN r too) hi */
+        return _mm512_mask_blend_ps(low, hi, _mm512_maskz_mov_ps(pos, lo));
+    }
+    p = _mm512_mul_ps(_mm512_set1_ps(v->desc.gas_constant), _mm512_sub_ps(rho, rho0));
+    return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(p, zero, _CMP_GT_OQ), p);
+}
+
+/* finish_c in 16 lanes (issue 12, round thirteen: two scalar divisions a
+ * particle in the density loop, beside its square roots): the same
+ * operations per lane; the maximum (max_ps(a, m) = a > m ? a : m, the C
+ * test, from +0) does not depend on the order. The packed copy's p and
+ * 1/rho are stored lane by lane. */
+__attribute__((target("avx512f,avx512dq,bmi2"), always_inline)) static inline float finish_avx512(
+    ms_volume *v, int b, int e)
+{
+    const __m512 one = _mm512_set1_ps(1.0f), rho0 = _mm512_set1_ps(v->desc.rest_density);
+    __m512 m = _mm512_setzero_ps();
+    for (int i = b; i < e; i += 16) {
+        const unsigned rem = (unsigned)(e - i), n = rem < 16u ? rem : 16u;
+        const __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, n);
+        const __m512 rho = _mm512_maskz_loadu_ps(valid, v->rho + i);
+        const __m512 inv = _mm512_maskz_div_ps(valid, one, rho);
+        const __m512 p = pressure16(v, rho);
+        _mm512_mask_storeu_ps(v->inv_rho + i, valid, inv);
+        _mm512_mask_storeu_ps(v->prs + i, valid, p);
+        const __m512 err = _mm512_sub_ps(_mm512_maskz_div_ps(valid, rho, rho0), one);
+        m = _mm512_mask_max_ps(m, valid, err, m);
+        float *restrict pk = v->pk + 8 * (size_t)i;
+        for (unsigned l = 0; l < n; ++l) {
+            pk[8 * l + 3] = v->prs[i + (int)l];
+            pk[8 * l + 7] = v->inv_rho[i + (int)l];
+        }
+    }
+    return _mm512_reduce_max_ps(m);
+}
+#endif
+
+/* density_part's loop over particles [b, e), with the weight sum w (a
+ * constant at each call site, inlined). */
+/* The counts a part's density loop sums. */
+typedef struct part_counts {
+    int coincident, surface;
+    int64_t pairs; /* exact: the double it was summed the same integers */
+} part_counts;
+
+/* Particle i's density sum from its lists (built), rho = m W sum. */
+__attribute__((always_inline)) static inline void weigh(ms_volume *v, const ms_nlist *L,
+                                                        const ms_nlist *G, int i, float mw,
+                                                        weight_fn *w, part_counts *c)
+{
+    const int nreal = v->nl_count[i], nghost = v->gl_count[i];
+    const int n = (nreal + LANES - 1) / LANES * LANES, gn = (nghost + LANES - 1) / LANES * LANES;
+    int close = 0;
+    const float *g2 = nghost ? G->r2 + v->gl_begin[i] : NULL; /* an image run, if any */
+    const float sum = w(v, L->r2 + v->nl_begin[i], n, g2, gn, &close);
+    v->nbr[i] = nreal + nghost;
+    c->coincident += close - 1; /* itself */
+    c->pairs += nreal - 1 + nghost;
+    c->surface += ms_volume_is_surface(v, i);
+    v->rho[i] = mw * sum;
+}
+
+/* density_part's loop over particles [b, e), with the weight sum w and
+ * finish fin (constants at each call site, inlined). A particle's weights
+ * are summed after the next particle's lists are built (issue 12, round
+ * thirteen): its list's stores, compressed blocks at any offset, have
+ * then left the store buffer, and the sum's aligned loads do not wait
+ * for them. The same sums: the same bits. */
+__attribute__((always_inline)) static inline void density_range(density_ctx *ctx, int part, int b,
+                                                                int e, weight_fn *w, finish_fn *fin)
+{
     ms_volume *v = ctx->v;
     ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
     const int poly6 = v->desc.density_kernel == MS_DENSITY_POLY6;
     const float mw = v->mass * (poly6 ? v->K.poly6 : v->K.spiky);
-    const float rho0 = v->desc.rest_density;
-    int coincident = 0, surface = 0;
-    float max_err = 0.0f;
-    double pairs = 0.0;
+    part_counts c = {0, 0, 0};
     L->len = 0;
     G->len = 0;
     v->list_failed[part] = 0;
@@ -136,35 +328,41 @@ static void density_part(void *ctxp, int part, int b, int e)
             v->list_failed[part] = 1;
             return;
         }
-        const int nreal = v->nl_count[i], nghost = v->gl_count[i];
-        const size_t begin = (size_t)v->nl_begin[i], gbegin = (size_t)v->gl_begin[i];
-        int close = 0;
-        const float *g2 = nghost ? G->r2 + gbegin : NULL; /* an image run, if any */
-        const int gn = nghost ? (int)(G->len - gbegin) : 0;
-        float sum = weight_sum(v, L->r2 + begin, (int)(L->len - begin), g2, gn, &close);
-        v->nbr[i] = nreal + nghost;
-        coincident += close - 1; /* itself */
-        pairs += nreal - 1 + nghost;
-        int is_surface = ms_volume_is_surface(v, i);
-        surface += is_surface;
-        float rho = mw * sum;
-        v->rho[i] = rho;
-        v->inv_rho[i] = 1.0f / rho;
-        v->prs[i] = ms_volume_pressure(v, rho);
-        float *restrict pk = v->pk + 8 * (size_t)i; /* pack_part wrote the rest */
-        pk[3] = v->prs[i];
-        pk[7] = v->inv_rho[i];
-        float err = rho / rho0 - 1.0f; /* compression */
-        max_err = err > max_err ? err : max_err;
+        if (i > b)
+            weigh(v, L, G, i - 1, mw, w, &c);
     }
+    if (e > b)
+        weigh(v, L, G, e - 1, mw, w, &c);
+    const float max_err = fin(v, b, e);
     if (!v->lists_reserved && !ms_volume_lists_headroom(v, part)) {
         v->list_failed[part] = 1;
         return;
     }
-    ctx->coincident[part] = coincident;
-    ctx->surface[part] = surface;
+    ctx->coincident[part] = c.coincident;
+    ctx->surface[part] = c.surface;
     ctx->max_err[part] = max_err;
-    ctx->pairs[part] = pairs;
+    ctx->pairs[part] = (double)c.pairs;
+}
+
+#if MS_VOLUME_HAVE_AVX512
+__attribute__((target("avx512f,avx512dq,bmi2"))) static void density_range_avx512(density_ctx *ctx,
+                                                                                  int part, int b,
+                                                                                  int e)
+{
+    density_range(ctx, part, b, e, weight_sum_avx512, finish_avx512);
+}
+#endif
+
+static void density_part(void *ctxp, int part, int b, int e)
+{
+    density_ctx *ctx = ctxp;
+#if MS_VOLUME_HAVE_AVX512
+    if (ctx->v->isa == MS_VOLUME_ISA_AVX512) {
+        density_range_avx512(ctx, part, b, e);
+        return;
+    }
+#endif
+    density_range(ctx, part, b, e, weight_sum, finish_c);
 }
 
 /* The packed copy's positions and velocities (v->pk: x, y, z, -, vx, vy,

@@ -118,7 +118,7 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void lo
 #undef TRANSPOSE4
 
 /* ms_lanes_sum in registers: the same tree order. */
-__attribute__((target("avx512f,avx512dq"))) static inline float hsum_avx512(__m512 v)
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float hsum_avx512(__m512 v)
 {
     __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(v), _mm512_extractf32x8_ps(v, 1));
     __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
@@ -150,48 +150,61 @@ static pair_sums lanes_sum(const pair_lanes *a)
 }
 
 #if MS_VOLUME_HAVE_AVX512
+/* The seven lane accumulators of sums_avx512, named (no array): with
+ * a[7] and loops over its index GCC kept them on the stack once the pass
+ * was flattened, and the image terms added to them through memory
+ * (issue 12, round thirteen). */
+typedef struct lanes7 {
+    __m512 px, py, pz, vx, vy, vz, d;
+} lanes7;
+
+/* An image's position p and velocity u along axis k: reflected (2 wall - p,
+ * a sign flip of u) in the lanes whose image bits f have bit k. */
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline void reflect_axis(
+    __m512i f, int k, float wall, __m512 *p, __m512 *u)
+{
+    const __mmask16 m = _mm512_test_epi32_mask(f, _mm512_set1_epi32(1 << k));
+    *p = _mm512_mask_sub_ps(*p, m, _mm512_set1_ps(2.0f * wall), *p);
+    *u = _mm512_castsi512_ps(_mm512_mask_xor_epi32(
+        _mm512_castps_si512(*u), m, _mm512_castps_si512(*u), _mm512_set1_epi32((int)0x80000000u)));
+}
+
 /* The wall-image terms of entries [k, k + 16) of the image list (no shape
  * images), in AVX-512: per entry the same operations as the C loop
  * (reflection as 2 wall - x and a sign flip, IEEE sqrt and division, no
  * fused multiply-adds), so the same seven terms, bit for bit, added to
- * the lane accumulators a[0..7) (entry k + l to lane l, as the C loop). */
+ * the lane accumulators a (entry k + l to lane l, as the C loop). */
 __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void image_terms_avx512(
     const ms_volume *v, const int *restrict gidx, const float *restrict gr2, int i,
-    const float wall[3], int pressure, __m512 a[7])
+    const float wall[3], int pressure, lanes7 *a)
 {
     const float *pi8 = v->pk + 8 * (size_t)i;
     const __m512 zero = _mm512_setzero_ps(), h = _mm512_set1_ps(v->K.h);
     const __m512 eps = _mm512_set1_ps(sqrtf(v->eps2)), pi = _mm512_set1_ps(pi8[3]);
-    const __m512i sign = _mm512_set1_epi32((int)0x80000000u);
     const __m512i g = _mm512_loadu_si512((const void *)gidx);
     const __m512i f = _mm512_srli_epi32(g, MS_VOLUME_IMAGE_SHIFT);
     int j[16];
     _mm512_storeu_si512((void *)j,
                         _mm512_and_si512(g, _mm512_set1_epi32((1 << MS_VOLUME_IMAGE_SHIFT) - 1)));
-    __m512 p[3], u[3], pj, irj;
-    load_records(v->pk, j, &p[0], &p[1], &p[2], &pj, &u[0], &u[1], &u[2], &irj);
-    const float own[3] = {pi8[0], pi8[1], pi8[2]}, ownu[3] = {pi8[4], pi8[5], pi8[6]};
-    __m512 d[3], du[3];
-    for (int k = 0; k < 3; ++k) {
-        __mmask16 m = _mm512_test_epi32_mask(f, _mm512_set1_epi32(1 << k));
-        p[k] = _mm512_mask_sub_ps(p[k], m, _mm512_set1_ps(2.0f * wall[k]), p[k]);
-        u[k] = _mm512_castsi512_ps(
-            _mm512_mask_xor_epi32(_mm512_castps_si512(u[k]), m, _mm512_castps_si512(u[k]), sign));
-        d[k] = _mm512_sub_ps(_mm512_set1_ps(own[k]), p[k]);
-        du[k] = _mm512_sub_ps(u[k], _mm512_set1_ps(ownu[k]));
-    }
+    __m512 px, py, pz, pj, ux, uy, uz, irj;
+    load_records(v->pk, j, &px, &py, &pz, &pj, &ux, &uy, &uz, &irj);
+    reflect_axis(f, 0, wall[0], &px, &ux);
+    reflect_axis(f, 1, wall[1], &py, &uy);
+    reflect_axis(f, 2, wall[2], &pz, &uz);
     __m512 r = _mm512_sqrt_ps(_mm512_loadu_ps(gr2));
     __m512 hr = _mm512_max_ps(_mm512_sub_ps(h, r), zero);
     __m512 fv = _mm512_mul_ps(irj, hr);
     if (pressure) { /* see sums_avx512 */
         __m512 fp = _mm512_div_ps(_mm512_mul_ps(_mm512_mul_ps(_mm512_add_ps(pi, pj), fv), hr),
                                   _mm512_max_ps(r, eps));
-        for (int k = 0; k < 3; ++k)
-            a[k] = _mm512_add_ps(a[k], _mm512_mul_ps(fp, d[k]));
+        a->px = _mm512_add_ps(a->px, _mm512_mul_ps(fp, _mm512_sub_ps(_mm512_set1_ps(pi8[0]), px)));
+        a->py = _mm512_add_ps(a->py, _mm512_mul_ps(fp, _mm512_sub_ps(_mm512_set1_ps(pi8[1]), py)));
+        a->pz = _mm512_add_ps(a->pz, _mm512_mul_ps(fp, _mm512_sub_ps(_mm512_set1_ps(pi8[2]), pz)));
     }
-    for (int k = 0; k < 3; ++k)
-        a[3 + k] = _mm512_add_ps(a[3 + k], _mm512_mul_ps(fv, du[k]));
-    a[6] = _mm512_add_ps(a[6], fv);
+    a->vx = _mm512_add_ps(a->vx, _mm512_mul_ps(fv, _mm512_sub_ps(ux, _mm512_set1_ps(pi8[4]))));
+    a->vy = _mm512_add_ps(a->vy, _mm512_mul_ps(fv, _mm512_sub_ps(uy, _mm512_set1_ps(pi8[5]))));
+    a->vz = _mm512_add_ps(a->vz, _mm512_mul_ps(fv, _mm512_sub_ps(uz, _mm512_set1_ps(pi8[6]))));
+    a->d = _mm512_add_ps(a->d, fv);
 }
 
 /* The sums of sums_of in AVX-512 intrinsics: the same operations per lane
@@ -211,7 +224,7 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void im
  * loads the records' velocity halves alone (ms_load_quads: 16-byte
  * loads, a 4 x 4 transpose instead of 8 x 8; round twelve, issue 12).
  * The C loops still compute them (the same +0). */
-__attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
+__attribute__((target("avx512f,avx512dq"), always_inline)) static inline pair_sums sums_avx512(
     const ms_volume *v, const int *restrict idx, const float *restrict r2s, int n, int i,
     const int *restrict gidx, const float *restrict gr2, int gn, const float wall[3],
     pair_lanes *out)
@@ -224,7 +237,7 @@ __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
                  uzi = _mm512_set1_ps(pi8[6]);
     const __m512 pi = _mm512_set1_ps(pi8[3]), h = _mm512_set1_ps(v->K.h);
     const __m512 eps = _mm512_set1_ps(sqrtf(v->eps2)), zero = _mm512_setzero_ps();
-    __m512 a[7] = {zero, zero, zero, zero, zero, zero, zero};
+    lanes7 a = {zero, zero, zero, zero, zero, zero, zero};
     for (int k = 0; k < n && !pressure; k += MS_VOLUME_LANES) { /* DFSPH: the viscosity */
         __m512 uxj, uyj, uzj, irj;
         /* the streamed r^2 and indices 512 entries ahead, as dfsph.c's
@@ -236,10 +249,10 @@ __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
         __m512 r = _mm512_sqrt_ps(_mm512_loadu_ps(r2s + k));
         __m512 hr = _mm512_max_ps(_mm512_sub_ps(h, r), zero);
         __m512 fv = _mm512_mul_ps(irj, hr);
-        a[3] = _mm512_add_ps(a[3], _mm512_mul_ps(fv, _mm512_sub_ps(uxj, uxi)));
-        a[4] = _mm512_add_ps(a[4], _mm512_mul_ps(fv, _mm512_sub_ps(uyj, uyi)));
-        a[5] = _mm512_add_ps(a[5], _mm512_mul_ps(fv, _mm512_sub_ps(uzj, uzi)));
-        a[6] = _mm512_add_ps(a[6], fv);
+        a.vx = _mm512_add_ps(a.vx, _mm512_mul_ps(fv, _mm512_sub_ps(uxj, uxi)));
+        a.vy = _mm512_add_ps(a.vy, _mm512_mul_ps(fv, _mm512_sub_ps(uyj, uyi)));
+        a.vz = _mm512_add_ps(a.vz, _mm512_mul_ps(fv, _mm512_sub_ps(uzj, uzi)));
+        a.d = _mm512_add_ps(a.d, fv);
     }
     for (int k = 0; k < n && pressure; k += MS_VOLUME_LANES) {
         __m512 xj, yj, zj, pj, uxj, uyj, uzj, irj;
@@ -252,25 +265,29 @@ __attribute__((target("avx512f,avx512dq"))) static pair_sums sums_avx512(
         __m512 fv = _mm512_mul_ps(irj, hr);
         __m512 pp = _mm512_add_ps(pi, pj);
         __m512 fp = _mm512_div_ps(_mm512_mul_ps(_mm512_mul_ps(pp, fv), hr), _mm512_max_ps(r, eps));
-        a[0] = _mm512_add_ps(a[0], _mm512_mul_ps(fp, dx));
-        a[1] = _mm512_add_ps(a[1], _mm512_mul_ps(fp, dy));
-        a[2] = _mm512_add_ps(a[2], _mm512_mul_ps(fp, dz));
-        a[3] = _mm512_add_ps(a[3], _mm512_mul_ps(fv, _mm512_sub_ps(uxj, uxi)));
-        a[4] = _mm512_add_ps(a[4], _mm512_mul_ps(fv, _mm512_sub_ps(uyj, uyi)));
-        a[5] = _mm512_add_ps(a[5], _mm512_mul_ps(fv, _mm512_sub_ps(uzj, uzi)));
-        a[6] = _mm512_add_ps(a[6], fv);
+        a.px = _mm512_add_ps(a.px, _mm512_mul_ps(fp, dx));
+        a.py = _mm512_add_ps(a.py, _mm512_mul_ps(fp, dy));
+        a.pz = _mm512_add_ps(a.pz, _mm512_mul_ps(fp, dz));
+        a.vx = _mm512_add_ps(a.vx, _mm512_mul_ps(fv, _mm512_sub_ps(uxj, uxi)));
+        a.vy = _mm512_add_ps(a.vy, _mm512_mul_ps(fv, _mm512_sub_ps(uyj, uyi)));
+        a.vz = _mm512_add_ps(a.vz, _mm512_mul_ps(fv, _mm512_sub_ps(uzj, uzi)));
+        a.d = _mm512_add_ps(a.d, fv);
     }
     for (int k = 0; k < gn; k += MS_VOLUME_LANES) /* the image list is padded to 16 */
-        image_terms_avx512(v, gidx + k, gr2 + k, i, wall, pressure, a);
+        image_terms_avx512(v, gidx + k, gr2 + k, i, wall, pressure, &a);
     if (out) {
-        float *const dst[7] = {out->px, out->py, out->pz, out->vx, out->vy, out->vz, out->d};
-        for (int q = 0; q < 7; ++q)
-            _mm512_storeu_ps(dst[q], a[q]);
+        _mm512_storeu_ps(out->px, a.px);
+        _mm512_storeu_ps(out->py, a.py);
+        _mm512_storeu_ps(out->pz, a.pz);
+        _mm512_storeu_ps(out->vx, a.vx);
+        _mm512_storeu_ps(out->vy, a.vy);
+        _mm512_storeu_ps(out->vz, a.vz);
+        _mm512_storeu_ps(out->d, a.d);
         pair_sums none = {0};
         return none;
     }
-    pair_sums s = {hsum_avx512(a[0]), hsum_avx512(a[1]), hsum_avx512(a[2]), hsum_avx512(a[3]),
-                   hsum_avx512(a[4]), hsum_avx512(a[5]), hsum_avx512(a[6])};
+    pair_sums s = {hsum_avx512(a.px), hsum_avx512(a.py), hsum_avx512(a.pz), hsum_avx512(a.vx),
+                   hsum_avx512(a.vy), hsum_avx512(a.vz), hsum_avx512(a.d)};
     return s;
 }
 #endif
@@ -369,54 +386,92 @@ static void image_lanes_c(const ms_volume *v, const int *restrict gidx, const fl
     }
 }
 
-static pair_sums sums_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
+/* Particle i's runs: its real list (n entries, padded) and its image
+ * list (gn, padded; the neighbour reflected across the walls of its image
+ * bits, position and velocity, or across the nearest shape's tangent
+ * plane, same pressure and density), and the walls it is near. */
+typedef struct runs_of_i {
+    const int *idx, *gidx;
+    const float *r2s, *gr2;
+    int n, gn;
+    float wall[3];
+} runs_of_i;
+
+static inline runs_of_i runs_of(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
 {
-    const int *restrict idx = lst->idx + v->nl_begin[i];
-    const float *restrict r2s = lst->r2 + v->nl_begin[i];
-    const int n = padded(v->nl_count[i]);
-    /* the images: the neighbour reflected across the walls of its image
-     * bits (position and velocity), or across the nearest shape's tangent
-     * plane, same pressure and density */
-    const int *gidx = gst->idx + v->gl_begin[i];
-    const float *gr2 = gst->r2 + v->gl_begin[i];
-    const int gn = padded(v->gl_count[i]);
-    float wall[3] = {0.0f, 0.0f, 0.0f};
-    if (gn)
-        ms_volume_walls_near(v, v->x[i], v->y[i], v->z[i], wall);
+    runs_of_i r = {lst->idx + v->nl_begin[i], gst->idx + v->gl_begin[i], lst->r2 + v->nl_begin[i],
+                   gst->r2 + v->gl_begin[i],  padded(v->nl_count[i]),    padded(v->gl_count[i]),
+                   {0.0f, 0.0f, 0.0f}};
+    if (r.gn)
+        ms_volume_walls_near(v, v->x[i], v->y[i], v->z[i], r.wall);
+    return r;
+}
+
+static pair_sums sums_c(const ms_volume *v, const ms_nlist *lst, const ms_nlist *gst, int i)
+{
+    const runs_of_i r = runs_of(v, lst, gst, i);
     pair_lanes a;
-#if MS_VOLUME_HAVE_AVX512
-    if (v->isa == MS_VOLUME_ISA_AVX512) {
-        if (!gn || !(v->c_d[i] < v->K.h)) /* wall images only */
-            return sums_avx512(v, idx, r2s, n, i, gidx, gr2, gn, wall, NULL);
-        sums_avx512(v, idx, r2s, n, i, gidx, gr2, 0, wall, &a);
-        image_lanes_c(v, gidx, gr2, gn, i, wall, &a);
-        return lanes_sum(&a);
-    }
-#endif
     memset(&a, 0, sizeof a);
-    real_lanes_c(v, idx, r2s, n, i, &a);
-    if (gn)
-        image_lanes_c(v, gidx, gr2, gn, i, wall, &a);
+    real_lanes_c(v, r.idx, r.r2s, r.n, i, &a);
+    if (r.gn)
+        image_lanes_c(v, r.gidx, r.gr2, r.gn, i, r.wall, &a);
     return lanes_sum(&a);
 }
+
+/* Particle i's acceleration from its sums (eqs. 13, 14), the boundary
+ * field and gravity; its viscous rate for the time-step bound. */
+static inline void accel_of(ms_volume *v, int i, pair_sums s, float cp, float cv)
+{
+    const float ri = v->inv_rho[i];
+    s.d -= ri * v->K.h; /* the list holds the particle itself: not a neighbour */
+    v->ax[i] = cp * ri * s.px + cv * ri * s.vx + v->b_ax[i] + v->desc.gravity[0];
+    v->ay[i] = cp * ri * s.py + cv * ri * s.vy + v->b_ay[i] + v->desc.gravity[1];
+    v->az[i] = cp * ri * s.pz + cv * ri * s.vz + v->b_az[i] + v->desc.gravity[2];
+    v->visc_rate[i] = cv * ri * (s.d > 0.0f ? s.d : 0.0f);
+}
+
+#if MS_VOLUME_HAVE_AVX512
+/* The force pass of particles [b, e) on AVX-512, sums_avx512 inlined: no
+ * call a particle, the loop's constants and the seven accumulators kept in
+ * registers (issue 12, round thirteen, as dfsph_part in round twelve).
+ * A particle at a shape adds its shape images in the C loop. The same
+ * operations: the same bits. */
+__attribute__((target("avx512f,avx512dq"))) static void forces_range_avx512(ms_volume *v, int part,
+                                                                            int b, int e)
+{
+    const ms_nlist *lst = &v->lists[part], *gst = &v->ghosts[part];
+    const float cp = 0.5f * v->press_scale * v->mass * v->K.spiky_grad;  /* eq. 13 */
+    const float cv = 0.5f * v->mass * v->K.visc_lap * v->desc.viscosity; /* eq. 14 */
+    for (int i = b; i < e; ++i) {
+        const runs_of_i r = runs_of(v, lst, gst, i);
+        if (!r.gn || !(v->c_d[i] < v->K.h)) { /* wall images only */
+            accel_of(v, i, sums_avx512(v, r.idx, r.r2s, r.n, i, r.gidx, r.gr2, r.gn, r.wall, NULL),
+                     cp, cv);
+            continue;
+        }
+        pair_lanes a;
+        sums_avx512(v, r.idx, r.r2s, r.n, i, r.gidx, r.gr2, 0, r.wall, &a);
+        image_lanes_c(v, r.gidx, r.gr2, r.gn, i, r.wall, &a);
+        accel_of(v, i, lanes_sum(&a), cp, cv);
+    }
+}
+#endif
 
 static void forces_part(void *ctxp, int part, int b, int e)
 {
     forces_ctx *ctx = ctxp;
     ms_volume *v = ctx->v;
+#if MS_VOLUME_HAVE_AVX512
+    if (v->isa == MS_VOLUME_ISA_AVX512) {
+        forces_range_avx512(v, part, b, e);
+        return;
+    }
+#endif
     const ms_nlist *lst = &v->lists[part], *gst = &v->ghosts[part];
     const float cp = 0.5f * v->press_scale * v->mass * v->K.spiky_grad; /* eq. 13 */
     const float cv = 0.5f * v->mass * v->K.visc_lap * v->desc.viscosity; /* eq. 14 */
-    const float gx = v->desc.gravity[0], gy = v->desc.gravity[1], gz = v->desc.gravity[2];
-    for (int i = b; i < e; ++i) {
-        pair_sums s = sums_of(v, lst, gst, i);
-        const float ri = v->inv_rho[i];
-        s.d -= ri * v->K.h; /* the list holds the particle itself: not a neighbour */
-        v->ax[i] = cp * ri * s.px + cv * ri * s.vx + v->b_ax[i] + gx;
-        v->ay[i] = cp * ri * s.py + cv * ri * s.vy + v->b_ay[i] + gy;
-        v->az[i] = cp * ri * s.pz + cv * ri * s.vz + v->b_az[i] + gz;
-        v->visc_rate[i] = cv * ri * (s.d > 0.0f ? s.d : 0.0f);
-    }
+    for (int i = b; i < e; ++i)
+        accel_of(v, i, sums_c(v, lst, gst, i), cp, cv);
 }
 
 static uint64_t mix64(uint64_t z)

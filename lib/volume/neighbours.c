@@ -21,7 +21,8 @@ enum { LANES = MS_VOLUME_LANES };
 /* The candidate run of the AVX-512 path (v->cand[part], cand_cap floats
  * per field): x | y | z of the candidates, then x | y | z of the real
  * neighbours the filter kept, in list order, for the image filter of a
- * particle near a wall (gather_image_avx512: loads, not gathers). */
+ * particle near two or three walls (gather_image_avx512: loads, not
+ * gathers); v->cand_idx[part]: the candidates' indices. */
 enum { CAND_FIELDS = 6 };
 
 /* Room for `more` entries plus a block of padding. */
@@ -147,7 +148,7 @@ static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi,
  * slow). Returns how many were within h. */
 __attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t filter_block(
     __m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y, const float *z,
-    __mmask16 valid, __m512i id, int *out, float *out2, float *pos, size_t stride)
+    __mmask16 valid, __m512i id, int *out, float *out2)
 {
     __m512 xj = _mm512_maskz_loadu_ps(valid, x), yj = _mm512_maskz_loadu_ps(valid, y);
     __m512 zj = _mm512_maskz_loadu_ps(valid, z);
@@ -159,11 +160,6 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline 
     __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
     _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(m, id));
     _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(m, r2));
-    if (pos) { /* the kept neighbours' positions too (constant per call site) */
-        _mm512_storeu_ps(pos, _mm512_maskz_compress_ps(m, xj));
-        _mm512_storeu_ps(pos + stride, _mm512_maskz_compress_ps(m, yj));
-        _mm512_storeu_ps(pos + 2 * stride, _mm512_maskz_compress_ps(m, zj));
-    }
     return (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
 }
 
@@ -182,8 +178,7 @@ filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float
         for (int j = lo[r]; j < hi[r]; j += 16) {
             unsigned rem = (unsigned)(hi[r] - j);
             __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
-            n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n,
-                              NULL, 0);
+            n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n);
             id = _mm512_add_epi32(id, sixteen);
         }
     }
@@ -191,12 +186,10 @@ filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float
 }
 
 /* filter_rows_avx512 over candidates already copied into one run
- * (cand_of): the same list, without a short loop per row. With pos, the
- * kept neighbours' x | y | z (stride apart) are stored too, in list order. */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t
-filter_run_body(const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride,
-                const float q[3], float h2, int *restrict out, float *restrict out2,
-                float *restrict pos)
+ * (cand_of): the same list, without a short loop per row. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx512(
+    const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
+    float h2, int *restrict out, float *restrict out2)
 {
     const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
     const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
@@ -206,24 +199,128 @@ filter_run_body(const float *restrict cx, const int *restrict cidx, size_t nc, s
         size_t rem = nc - j;
         __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
-        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n,
-                          pos ? pos + n : NULL, stride);
+        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n);
     }
     return n;
 }
 
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx512(
+/* filter_run_avx512 for a particle near one wall, and in the same pass
+ * the run of its wall image (x, y, z; tag) into iout, iout2 (16 entries of
+ * slack): the image's neighbours are those of the particle's real
+ * neighbours within h of the image (gather_image), in list order, and
+ * here they are the candidates the real filter keeps in each block that
+ * are also within h of the image, compressed in candidate order: the same
+ * entries in the same order, with the same r^2 (the same positions, the
+ * same operations). Issue 12, round thirteen: until then the filter
+ * stored the kept neighbours' positions and the image filter loaded them
+ * back, with the list's indices, right after those stores. *nimg gets the
+ * image run's length. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_image_avx512(
     const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
-    float h2, int *restrict out, float *restrict out2)
+    float h2, int *restrict out, float *restrict out2, const float img[3], int tag,
+    int *restrict iout, float *restrict iout2, size_t *nimg)
 {
-    return filter_run_body(cx, cidx, nc, stride, q, h2, out, out2, NULL);
+    const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 ix = _mm512_set1_ps(img[0]), iy = _mm512_set1_ps(img[1]),
+                 iz = _mm512_set1_ps(img[2]);
+    const __m512 hh = _mm512_set1_ps(h2);
+    const __m512i vtag = _mm512_set1_epi32(tag);
+    size_t n = 0, ni = 0;
+    for (size_t j = 0; j < nc; j += 16) {
+        size_t rem = nc - j;
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+        __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
+        __m512 xj = _mm512_maskz_loadu_ps(valid, cx + j), yj = _mm512_maskz_loadu_ps(valid, cy + j);
+        __m512 zj = _mm512_maskz_loadu_ps(valid, cz + j);
+        __m512 dx = _mm512_sub_ps(qx, xj), dy = _mm512_sub_ps(qy, yj), dz = _mm512_sub_ps(qz, zj);
+        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                  _mm512_mul_ps(dz, dz));
+        __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
+        _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
+        n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+        __m512 ex = _mm512_sub_ps(ix, xj), ey = _mm512_sub_ps(iy, yj), ez = _mm512_sub_ps(iz, zj);
+        __m512 g2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_mul_ps(ey, ey)),
+                                  _mm512_mul_ps(ez, ez));
+        __mmask16 hit = _mm512_mask_cmp_ps_mask(m, g2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(iout + ni),
+                            _mm512_maskz_compress_epi32(hit, _mm512_or_si512(id, vtag)));
+        _mm512_storeu_ps(iout2 + ni, _mm512_maskz_compress_ps(hit, g2));
+        ni += (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
+    }
+    *nimg = ni;
+    return n;
 }
 
+/* filter_run_avx512 that also stores the kept neighbours' x | y | z
+ * (stride apart, in list order) at pos, for gather_image_avx512. */
 __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_pos_avx512(
     const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
     float h2, int *restrict out, float *restrict out2, float *restrict pos)
 {
-    return filter_run_body(cx, cidx, nc, stride, q, h2, out, out2, pos);
+    const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(h2);
+    size_t n = 0;
+    for (size_t j = 0; j < nc; j += 16) {
+        size_t rem = nc - j;
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+        __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
+        __m512 xj = _mm512_maskz_loadu_ps(valid, cx + j), yj = _mm512_maskz_loadu_ps(valid, cy + j);
+        __m512 zj = _mm512_maskz_loadu_ps(valid, cz + j);
+        __m512 dx = _mm512_sub_ps(qx, xj), dy = _mm512_sub_ps(qy, yj), dz = _mm512_sub_ps(qz, zj);
+        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                  _mm512_mul_ps(dz, dz));
+        __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
+        _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
+        _mm512_storeu_ps(pos + n, _mm512_maskz_compress_ps(m, xj));
+        _mm512_storeu_ps(pos + stride + n, _mm512_maskz_compress_ps(m, yj));
+        _mm512_storeu_ps(pos + 2 * stride + n, _mm512_maskz_compress_ps(m, zj));
+        n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+    }
+    return n;
+}
+
+/* gather_image in AVX-512 for a particle near two or three walls: its
+ * real list (n entries from idx) filtered again at the image q, the
+ * neighbours' positions loaded from the copy the filter kept (pos: x | y
+ * | z, stride apart, in list order); the same r^2, the same order, so the
+ * same run as gather_image. Per image it filters the kept neighbours,
+ * where filter_run_image_avx512 filters every candidate block once more:
+ * with three or seven images that was the slower (fig1). */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static int gather_image_avx512(
+    const ms_volume *v, ms_nlist *L, const float q[3], int tag, const int *restrict idx, int n,
+    const float *restrict pos, size_t stride)
+{
+    if (!reserve(L, (size_t)n + 2 * LANES))
+        return -1;
+    const float *restrict px = pos, *restrict py = pos + stride, *restrict pz = pos + 2 * stride;
+    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
+    const __m512 hh = _mm512_set1_ps(v->K.h2);
+    const __m512i vtag = _mm512_set1_epi32(tag);
+    int *restrict out = L->idx + L->len;
+    float *restrict out2 = L->r2 + L->len;
+    size_t m = 0;
+    for (int k = 0; k < n; k += 16) {
+        unsigned rem = (unsigned)(n - k);
+        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+        /* the list has a block of slack: a whole block is valid memory */
+        __m512i j = _mm512_loadu_si512((const void *)(idx + k));
+        __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, px + k));
+        __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, py + k));
+        __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, pz + k));
+        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                                  _mm512_mul_ps(dz, dz));
+        __mmask16 hit = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
+        _mm512_storeu_si512((void *)(out + m),
+                            _mm512_maskz_compress_epi32(hit, _mm512_or_si512(j, vtag)));
+        _mm512_storeu_ps(out2 + m, _mm512_maskz_compress_ps(hit, r2));
+        m += (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
+    }
+    L->len += m;
+    return (int)m;
 }
 #endif
 
@@ -394,7 +491,9 @@ static int gather(const ms_volume *v, ms_nlist *L, const float q[3], const ms_ro
  * the domain, |q - x_j|^2 = |p - x_j|^2 + 4 sum_k d_k e_k (d_k, e_k the
  * distances of p and x_j from wall k, both >= 0). So the image list is
  * p's real list (n entries from idx) filtered again at q, in its order:
- * no search of the cells around q. Plain C, the same on every ISA. */
+ * no search of the cells around q. Plain C, for the C and SSE2 paths
+ * (AVX-512: filter_run_image_avx512 and gather_image_avx512, the same
+ * runs). */
 static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int tag,
                         const int *restrict idx, int n)
 {
@@ -416,46 +515,6 @@ static int gather_image(const ms_volume *v, ms_nlist *L, const float q[3], int t
     L->len += m;
     return (int)m;
 }
-
-#if MS_VOLUME_HAVE_AVX512
-/* gather_image in AVX-512: the neighbours' positions loaded from the
- * copy the filter kept (pos: x | y | z, stride apart, in list order;
- * issue 12: it replaced two 64-bit gathers per block, ~10 % of a fig1
- * sub-step), the same r^2 and the same order (compress keeps it), so the
- * same list. */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static int gather_image_avx512(
-    const ms_volume *v, ms_nlist *L, const float q[3], int tag, const int *restrict idx, int n,
-    const float *restrict pos, size_t stride)
-{
-    if (!reserve(L, (size_t)n + 2 * LANES))
-        return -1;
-    const float *restrict px = pos, *restrict py = pos + stride, *restrict pz = pos + 2 * stride;
-    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
-    const __m512 hh = _mm512_set1_ps(v->K.h2);
-    const __m512i vtag = _mm512_set1_epi32(tag);
-    int *restrict out = L->idx + L->len;
-    float *restrict out2 = L->r2 + L->len;
-    size_t m = 0;
-    for (int k = 0; k < n; k += 16) {
-        unsigned rem = (unsigned)(n - k);
-        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
-        /* idx is padded (with the particle itself): a whole block is valid memory */
-        __m512i j = _mm512_loadu_si512((const void *)(idx + k));
-        __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, px + k));
-        __m512 dy = _mm512_sub_ps(qy, _mm512_maskz_loadu_ps(valid, py + k));
-        __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(valid, pz + k));
-        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
-                                  _mm512_mul_ps(dz, dz));
-        __mmask16 hit = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
-        _mm512_storeu_si512((void *)(out + m),
-                            _mm512_maskz_compress_epi32(hit, _mm512_or_si512(j, vtag)));
-        _mm512_storeu_ps(out2 + m, _mm512_maskz_compress_ps(hit, r2));
-        m += (size_t)_mm_popcnt_u32(_cvtmask16_u32(hit));
-    }
-    L->len += m;
-    return (int)m;
-}
-#endif
 
 /* The images of particle i's neighbours across the tangent plane of its
  * nearest shape collider (point c = p - d n, normal n): the particles j on
@@ -524,6 +583,87 @@ static void pad(ms_nlist *L, size_t begin, int index, float h2)
     L->len = end;
 }
 
+#if MS_VOLUME_HAVE_AVX512
+/* pad() of the real list in AVX-512 (issue 12, round thirteen): the
+ * slots [len, end) only, by two masked stores, where pad writes a whole
+ * block in eight 16-byte stores. Round ten's two whole 64-byte stores
+ * were slower (1.049x on the Zen 4 VM); so was this for the image list
+ * (dam break 1.013x, fig1_x10 0.987x: not kept). */
+__attribute__((target("avx512f,bmi2"))) static void pad_avx512(ms_nlist *L, size_t begin, int index,
+                                                               float h2)
+{
+    const size_t end = begin + (L->len - begin + LANES - 1) / LANES * LANES;
+    const __mmask16 m = (__mmask16)_bzhi_u32(0xffffu, (unsigned)(end - L->len));
+    _mm512_mask_storeu_epi32(L->idx + L->len, m, _mm512_set1_epi32(index));
+    _mm512_mask_storeu_ps(L->r2 + L->len, m, _mm512_set1_ps(h2));
+    L->len = end;
+}
+#endif
+
+/* Image f of p: p reflected across the walls of the bits of f. */
+static inline void image_of(const float p[3], unsigned f, const float wall[3], float q[3])
+{
+    for (int k = 0; k < 3; ++k)
+        q[k] = f & (1u << k) ? 2.0f * wall[k] - p[k] : p[k];
+}
+
+#if MS_VOLUME_HAVE_AVX512
+/* Particle i's real list (appended to the part's list, unpadded) and, near
+ * a wall, its wall images' runs (appended to the image list in the fixed
+ * order of the images, as the loop of ms_volume_neighbours_of): near one
+ * wall in the same pass (filter_run_image_avx512), near two or three
+ * from the kept neighbours (gather_image_avx512; measured on fig1, whose
+ * shallow tank has a sixth of its particles near two walls: 0.99 of a
+ * frame against filtering every candidate block once an image). The
+ * number of image entries, or -1 if a list could not grow. */
+static int lists_avx512(ms_volume *v, int part, long ncand, const float p[3], unsigned near,
+                        const float wall[3])
+{
+    ms_nlist *L = &v->lists[part], *G = &v->ghosts[part];
+    const size_t stride = v->cand_cap[part];
+    const float h2 = v->K.h2;
+    if (!reserve(L, (size_t)ncand + 2 * LANES))
+        return -1;
+    if (!near) {
+        L->len += filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)ncand, stride, p, h2,
+                                    L->idx + L->len, L->r2 + L->len);
+        return 0;
+    }
+    if (!reserve(G, (size_t)ncand + 2 * LANES))
+        return -1;
+    if (near & (near - 1)) { /* two or three walls: three or seven images */
+        const size_t begin = L->len;
+        float *pos = v->cand[part] + 3 * stride;
+        const int nreal =
+            (int)filter_run_pos_avx512(v->cand[part], v->cand_idx[part], (size_t)ncand, stride, p,
+                                       h2, L->idx + begin, L->r2 + begin, pos);
+        L->len += (size_t)nreal;
+        int got = 0;
+        for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
+            if ((f & near) != f)
+                continue;
+            float q[3];
+            image_of(p, f, wall, q);
+            const int k = gather_image_avx512(v, G, q, (int)(f << MS_VOLUME_IMAGE_SHIFT),
+                                              L->idx + begin, nreal, pos, stride);
+            if (k < 0)
+                return -1;
+            got += k;
+        }
+        return got;
+    }
+    float q[3]; /* one wall: its image's run straight into the image list */
+    image_of(p, near, wall, q);
+    size_t got = 0;
+    L->len += filter_run_image_avx512(v->cand[part], v->cand_idx[part], (size_t)ncand, stride, p,
+                                      h2, L->idx + L->len, L->r2 + L->len, q,
+                                      (int)(near << MS_VOLUME_IMAGE_SHIFT), G->idx + G->len,
+                                      G->r2 + G->len, &got);
+    G->len += got;
+    return (int)got;
+}
+#endif
+
 /* Particle i's runs (see volume_internal.h): its real neighbours from the rows
  * of its cell (own, shared by the particles of a cell, recomputed when the
  * cell changes; *ncand the candidates copied for the AVX-512 path) and its
@@ -553,51 +693,40 @@ int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *n
     }
     float wall[3];
     const unsigned near = ms_volume_walls_near(v, p[0], p[1], p[2], wall);
-    int nreal; /* the particle itself included */
+    int nreal, nghost = 0; /* the particle itself included in nreal */
 #if MS_VOLUME_HAVE_AVX512
-    /* near a wall: the filter keeps the neighbours' positions for the
-     * image filter, after the candidates in the same run */
-    const size_t stride = run ? v->cand_cap[part] : 0;
-    float *const pos = run ? v->cand[part] + 3 * stride : NULL;
     if (run) {
-        if (!reserve(L, (size_t)*ncand + 2 * LANES)) {
+        nghost = lists_avx512(v, part, *ncand, p, near, wall);
+        if (nghost < 0)
             return -1;
-        }
-        if (near)
-            nreal = (int)filter_run_pos_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand,
-                                               stride, p, h2, L->idx + L->len, L->r2 + L->len, pos);
-        else
-            nreal = (int)filter_run_avx512(v->cand[part], v->cand_idx[part], (size_t)*ncand, stride,
-                                           p, h2, L->idx + L->len, L->r2 + L->len);
-        L->len += (size_t)nreal;
+        nreal = (int)(L->len - begin);
     } else
 #endif
+    {
         nreal = gather(v, L, p, own, 0);
-    if (nreal < 0) {
-        return -1;
-    }
-    pad(L, begin, i, h2);
-    int nghost = 0;
-    for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
-        if ((f & near) != f)
-            continue;
-        float q[3] = {p[0], p[1], p[2]};
-        for (int k = 0; k < 3; ++k)
-            if (f & (1u << k))
-                q[k] = 2.0f * wall[k] - q[k];
-        const int tag = (int)(f << MS_VOLUME_IMAGE_SHIFT);
-        int got;
-#if MS_VOLUME_HAVE_AVX512
-        if (run)
-            got = gather_image_avx512(v, G, q, tag, L->idx + begin, nreal, pos, stride);
-        else
-#endif
-            got = gather_image(v, G, q, tag, L->idx + begin, nreal);
-        if (got < 0) {
+        if (nreal < 0)
             return -1;
-        }
-        nghost += got;
     }
+#if MS_VOLUME_HAVE_AVX512
+    if (run)
+        pad_avx512(L, begin, i, h2);
+    else
+#endif
+        pad(L, begin, i, h2);
+#if MS_VOLUME_HAVE_AVX512
+    if (!run)
+#endif
+        for (unsigned f = 1; f < 8; ++f) { /* the wall images, in a fixed order */
+            if ((f & near) != f)
+                continue;
+            float q[3];
+            image_of(p, f, wall, q);
+            const int got =
+                gather_image(v, G, q, (int)(f << MS_VOLUME_IMAGE_SHIFT), L->idx + begin, nreal);
+            if (got < 0)
+                return -1;
+            nghost += got;
+        }
     if (v->c_d[i] < v->K.h) {
         int got = gather_plane(v, G, p, i);
         if (got < 0) {
