@@ -33,10 +33,9 @@
  * 2^-32), so the iteration counts, and the bytes, do not depend on how
  * the particles are split among threads.
  *
- * Warm start (2017, section 4.4): the density solve starts from a share of
- * the last sub-step's pressure (rescaled to this sub-step's dt) at
- * particles inside the liquid, half until round thirteen (now half or 0.8:
- * see below); surface particles start from 0. SPlisHSPlasH gates
+ * Warm start (2017, section 4.4): the density solve starts from half the
+ * last sub-step's pressure (rescaled to this sub-step's dt) at particles
+ * inside the liquid; surface particles start from 0. SPlisHSPlasH gates
  * its warm start (also at one half) on the predicted density exceeding
  * rho0, which costs an error pass; the surface test is free. Round two
  * measured a full warm start on every particle blowing up a tank at rest
@@ -85,42 +84,6 @@
  * warm start can be taken back: unstable without relaxation (fig1
  * compressed 344 %), with a relaxation of 1/4 on the lowering updates the
  * settled tank's fastest particle at 0.25 m/s.
- *
- * Round thirteen: the share follows the last density solve's iteration
- * count. After a solve that needed more than its minimum of 2 (it had to
- * rebuild pressure the warm start lacked) the next starts from 0.8 of
- * its total (WARM_FACTOR_LONG); after one that stopped at the minimum
- * (the warm start met eta by itself, or nearly) from half (WARM_FACTOR).
- * That keeps the larger share where the liquid needs it and takes away
- * the ratchet of a large share (the minimum only ever adds pressure):
- * once a warm start is enough, the next is smaller and the total may
- * fall. The count is a whole-volume integer, so 1 and 2 threads and
- * every instruction set give the same shares; the share is applied when
- * the total is kept (F_PRESSURE: df_warm holds the warm s itself), so a
- * snapshot restores it. Measured: the peer's scene's 0.3 s 378 -> 280
- * density iterations (4.8 -> 3.6 a sub-step), average compression 0.103
- * -> 0.101 %, maximum 1.62 -> 2.1 %; the hydrostatic test's settled
- * tank (frames 45-135, viscosities 0.5, 1, 5, 8) 14.0-14.2 -> 7.8-8.0 a
- * sub-step; the hydrostatic test at 11 viscosities
- * (0.5-8): the largest compression 0.41-0.46 % -> 0.64-0.73 % (bar 1 %),
- * the worst slab 1.42 -> 1.77 % (bar 2 %); Martin & Moyce (800
- * particles) front RMS 0.304 -> 0.303 (0.290-0.303 at frames of 1-4 ms),
- * column 9.7 -> 8.6 %. The long share 0.75, 0.85 and 0.9 pass the same
- * bars (0.9: largest compression 0.97 %; 1: 1.01 %, fails); a constant
- * 0.7 inside (3.2 density iterations a sub-step on the peer's scene)
- * passes but 0.66 and 0.72 leave the deepest layer 2.2-2.3 % low (bar
- * 2 %), and 0.8 constant runs the Martin & Moyce front ahead (RMS 0.343).
- * Also tried and not kept: half after a minimum solve replaced by 0.6
- * (251 density iterations on the peer's 0.3 s) or 0.4 with 0.9 (274), the
- * long share only after more than 3 iterations (300), a share rising 0.1
- * or 0.15 an iteration to 0.9 (267, 260), 0.3 to 0.95 (240): each leaves
- * the deepest layer 2.2-2.6 % low at one of the test's viscosities; a
- * minimum of 1 density iteration with these shares 258 (and 83
- * divergence iterations against 79; every bar passes): the peer's 0.3 s
- * 0.974x, glass 0.988x, fig1 under DFSPH 0.992x (volume_ab), but glass's
- * largest compression 1.6 -> 4.8 % and the peer's 2.1 -> 2.7 %; with the
- * long share after 2 or more iterations 198, the hydrostatic tank's
- * largest compression 1.09 % (bar 1 %).
  *
  * The warm start costs no neighbour pass of its own (round ten; it was
  * one of a sub-step's 9): its velocity change, dt / dt_last^2 m G sum_j
@@ -232,11 +195,7 @@ enum { LANES = MS_VOLUME_LANES };
 #define MS_DFSPH_INLINE
 #endif
 enum { MIN_DENSITY_ITERATIONS = 2, MIN_DIVERGENCE_ITERATIONS = 1 };
-/* The warm start's share of the last total s inside the liquid (the
- * header): WARM_FACTOR after a density solve that stopped at its minimum
- * of iterations, WARM_FACTOR_LONG after one that needed more. */
 #define WARM_FACTOR 0.5f
-#define WARM_FACTOR_LONG 0.8f
 
 typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSURE } pass_kind;
 
@@ -255,7 +214,6 @@ typedef struct dfsph_ctx {
     int nmom[MS_VOLUME_MAX_THREADS];
     float moment, weight;
     int restart;
-    float share; /* F_PRESSURE: the warm start's share of the total s kept */
 } dfsph_ctx;
 
 static inline int padded(int n)
@@ -362,12 +320,11 @@ static inline void mirror(const ms_volume *v, int i, unsigned f, float u[3])
     }
 }
 
-/* Particle i's warm-start s at the last sub-step's dt (see the header):
- * 0 at the surface; inside, the share of its last total that the last
- * solve kept in df_warm (F_PRESSURE). */
-static inline float warm_s(const ms_volume *v, int i)
+/* Particle i's share of its last total s in the warm start (see the
+ * header): 0 at the surface, WARM_FACTOR inside. */
+static inline float warm_share(const ms_volume *v, int i)
 {
-    return ms_volume_is_surface(v, i) ? 0.0f : v->df_warm[v->id[i]];
+    return ms_volume_is_surface(v, i) ? 0.0f : WARM_FACTOR;
 }
 
 /* The Jacobi diagonal of particle i: how much rho*_i falls per unit of s_i
@@ -905,7 +862,7 @@ dfsph_part(void *ctxp, int part, int b, int e)
             *mean = ctx->restart ? p : *mean + w * (p - *mean);
             v->prs[i] = *mean;
             v->pk[8 * (size_t)i + 3] = v->prs[i];
-            v->df_warm[v->id[i]] = ctx->share * v->df_sum[i]; /* the next sub-step's start */
+            v->df_warm[v->id[i]] = v->df_sum[i]; /* the next sub-step's start */
         }
         break;
     }
@@ -968,7 +925,7 @@ static void warm_weights(void *ctxp, int part, int b, int e)
     (void)part;
     ms_volume *v = ((dfsph_ctx *)ctxp)->v;
     for (int i = b; i < e; ++i) {
-        v->df_sum[i] = v->df_warm_on ? warm_s(v, i) : 0.0f;
+        v->df_sum[i] = v->df_warm_on ? warm_share(v, i) * v->df_warm[v->id[i]] : 0.0f;
         v->pk[8 * (size_t)i + 3] = v->df_sum[i]; /* until unpack_s: the AVX-512 loop's */
     }
 }
@@ -987,7 +944,7 @@ static void warm_kick(void *ctxp, int part, int b, int e)
         if (v->df_warm_on) {
             set_capped(v, i, v->vx[i] + c * v->df_wx[i], v->vy[i] + c * v->df_wy[i],
                        v->vz[i] + c * v->df_wz[i]);
-            v->df_sum[i] = r2 * warm_s(v, i);
+            v->df_sum[i] = r2 * (warm_share(v, i) * v->df_warm[v->id[i]]);
         } else {
             v->df_sum[i] = 0.0f;
         }
@@ -1156,7 +1113,6 @@ void ms_volume_dfsph_density(ms_volume *v, float dt)
     v->df_pmean_t = ctx.restart ? dt : v->df_pmean_t + dt;
     ctx.weight = dt / v->df_pmean_t;
     ctx.moment = v->df_moment;
-    ctx.share = it > MIN_DENSITY_ITERATIONS ? WARM_FACTOR_LONG : WARM_FACTOR;
     run(v, &ctx, F_PRESSURE);
     v->df_pmean_n = v->n;
     v->df_pmean_step = v->steps;

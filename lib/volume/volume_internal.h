@@ -258,9 +258,8 @@ struct ms_volume {
      * factors pass and read by every iteration: gx | gy | gz blocks of
      * df_grad_cap floats each */
     float *df_grad[MS_VOLUME_MAX_THREADS];
-    /* the warm start: each particle's share of its total s of the last
-     * density solve (dfsph.c's WARM_FACTOR or WARM_FACTOR_LONG), by id
-     * (the sort moves particles), valid while n == df_warm_n; the
+    /* the warm start: each particle's total s of the last density solve,
+     * by id (the sort moves particles), valid while n == df_warm_n; the
      * sub-step it was solved for (s) */
     float *df_warm;
     int df_warm_n;
