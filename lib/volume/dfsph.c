@@ -84,6 +84,19 @@
  * warm start can be taken back: unstable without relaxation (fig1
  * compressed 344 %), with a relaxation of 1/4 on the lowering updates the
  * settled tank's fastest particle at 0.25 m/s.
+ * Round thirteen (branch r13-peer, not kept): a share that follows the
+ * last density solve's iteration count, 0.8 after a solve that needed
+ * more than its minimum of 2 and half after one that did not, passed
+ * every test (the hydrostatic tank's largest compression 0.73 %, its
+ * worst slab 1.77 %) and ran the peer's scene at 0.86-0.88x (4.8 -> 3.6
+ * density iterations a sub-step), but the bench's 128 000-particle dam
+ * break (its first 0.1 s, where the deep column's solves all exceed the
+ * minimum, so the 0.8 share ratchets) over-solved: average compression
+ * 0.10 -> 0.011 %, sub-steps 630 -> 920 a simulated second (faster
+ * particles), 1.27x the time. A hydrostatic warm start for a fresh
+ * liquid (a quarter of rho0 g d from the sort's cell columns, branch
+ * r13-warm) ran the peer's scene at 0.99x and passed the hydrostatic
+ * bar at shares 0.15 and 0.25 only.
  *
  * The warm start costs no neighbour pass of its own (round ten; it was
  * one of a sub-step's 9): its velocity change, dt / dt_last^2 m G sum_j
