@@ -142,30 +142,54 @@ static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi,
 #endif
 
 #if MS_VOLUME_HAVE_AVX512
-/* One block of up to 16 candidates (lanes outside valid are ignored): the
- * ids of those within h of q, and their r^2, stored as whole compressed
- * blocks (the lists have slack: a compress to memory is microcoded and
- * slow). Returns how many were within h. */
+/* A block of up to 16 candidates at x, y, z (lanes outside valid read 0
+ * and are ignored): their positions, their r^2 to q, and which of them
+ * lie within h (r^2 < h^2). */
+typedef struct near_block {
+    __m512 x, y, z, r2;
+    __mmask16 keep;
+} near_block;
+
+__attribute__((target("avx512f"), always_inline)) static inline near_block near_of(
+    __m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y, const float *z,
+    __mmask16 valid)
+{
+    near_block b;
+    b.x = _mm512_maskz_loadu_ps(valid, x);
+    b.y = _mm512_maskz_loadu_ps(valid, y);
+    b.z = _mm512_maskz_loadu_ps(valid, z);
+    __m512 dx = _mm512_sub_ps(qx, b.x);
+    __m512 dy = _mm512_sub_ps(qy, b.y);
+    __m512 dz = _mm512_sub_ps(qz, b.z);
+    b.r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
+                         _mm512_mul_ps(dz, dz));
+    b.keep = _mm512_mask_cmp_ps_mask(valid, b.r2, hh, _CMP_LT_OQ);
+    return b;
+}
+
+/* The ids (id's lanes) of a block's candidates within h and their r^2,
+ * stored as whole compressed blocks (the lists have slack: a compress to
+ * memory is microcoded and slow). Returns how many were within h. */
+__attribute__((target("avx512f,popcnt"), always_inline)) static inline size_t keep_block(
+    const near_block *b, __m512i id, int *out, float *out2)
+{
+    _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(b->keep, id));
+    _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(b->keep, b->r2));
+    return (size_t)_mm_popcnt_u32(_cvtmask16_u32(b->keep));
+}
+
+/* One block of up to 16 candidates: near_of, then keep_block. */
 __attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t filter_block(
     __m512 qx, __m512 qy, __m512 qz, __m512 hh, const float *x, const float *y, const float *z,
     __mmask16 valid, __m512i id, int *out, float *out2)
 {
-    __m512 xj = _mm512_maskz_loadu_ps(valid, x), yj = _mm512_maskz_loadu_ps(valid, y);
-    __m512 zj = _mm512_maskz_loadu_ps(valid, z);
-    __m512 dx = _mm512_sub_ps(qx, xj);
-    __m512 dy = _mm512_sub_ps(qy, yj);
-    __m512 dz = _mm512_sub_ps(qz, zj);
-    __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
-                              _mm512_mul_ps(dz, dz));
-    __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
-    _mm512_storeu_si512((void *)out, _mm512_maskz_compress_epi32(m, id));
-    _mm512_storeu_ps(out2, _mm512_maskz_compress_ps(m, r2));
-    return (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+    const near_block b = near_of(qx, qy, qz, hh, x, y, z, valid);
+    return keep_block(&b, id, out, out2);
 }
 
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t
-filter_rows_avx512(const ms_volume *v, const int *lo, const int *hi, const float q[3], int tag,
-                   int *restrict out, float *restrict out2)
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_rows_avx512(
+    const ms_volume *v, const int *lo, const int *hi, const float q[3], int tag, int *restrict out,
+    float *restrict out2)
 {
     const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
     const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
@@ -231,19 +255,13 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_imag
         size_t rem = nc - j;
         __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
-        __m512 xj = _mm512_maskz_loadu_ps(valid, cx + j), yj = _mm512_maskz_loadu_ps(valid, cy + j);
-        __m512 zj = _mm512_maskz_loadu_ps(valid, cz + j);
-        __m512 dx = _mm512_sub_ps(qx, xj), dy = _mm512_sub_ps(qy, yj), dz = _mm512_sub_ps(qz, zj);
-        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
-                                  _mm512_mul_ps(dz, dz));
-        __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
-        _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
-        _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
-        n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
-        __m512 ex = _mm512_sub_ps(ix, xj), ey = _mm512_sub_ps(iy, yj), ez = _mm512_sub_ps(iz, zj);
+        const near_block b = near_of(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid);
+        n += keep_block(&b, id, out + n, out2 + n);
+        __m512 ex = _mm512_sub_ps(ix, b.x), ey = _mm512_sub_ps(iy, b.y),
+               ez = _mm512_sub_ps(iz, b.z);
         __m512 g2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_mul_ps(ey, ey)),
                                   _mm512_mul_ps(ez, ez));
-        __mmask16 hit = _mm512_mask_cmp_ps_mask(m, g2, hh, _CMP_LT_OQ);
+        __mmask16 hit = _mm512_mask_cmp_ps_mask(b.keep, g2, hh, _CMP_LT_OQ);
         _mm512_storeu_si512((void *)(iout + ni),
                             _mm512_maskz_compress_epi32(hit, _mm512_or_si512(id, vtag)));
         _mm512_storeu_ps(iout2 + ni, _mm512_maskz_compress_ps(hit, g2));
@@ -267,18 +285,11 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_pos_
         size_t rem = nc - j;
         __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
-        __m512 xj = _mm512_maskz_loadu_ps(valid, cx + j), yj = _mm512_maskz_loadu_ps(valid, cy + j);
-        __m512 zj = _mm512_maskz_loadu_ps(valid, cz + j);
-        __m512 dx = _mm512_sub_ps(qx, xj), dy = _mm512_sub_ps(qy, yj), dz = _mm512_sub_ps(qz, zj);
-        __m512 r2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
-                                  _mm512_mul_ps(dz, dz));
-        __mmask16 m = _mm512_mask_cmp_ps_mask(valid, r2, hh, _CMP_LT_OQ);
-        _mm512_storeu_si512((void *)(out + n), _mm512_maskz_compress_epi32(m, id));
-        _mm512_storeu_ps(out2 + n, _mm512_maskz_compress_ps(m, r2));
-        _mm512_storeu_ps(pos + n, _mm512_maskz_compress_ps(m, xj));
-        _mm512_storeu_ps(pos + stride + n, _mm512_maskz_compress_ps(m, yj));
-        _mm512_storeu_ps(pos + 2 * stride + n, _mm512_maskz_compress_ps(m, zj));
-        n += (size_t)_mm_popcnt_u32(_cvtmask16_u32(m));
+        const near_block b = near_of(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid);
+        _mm512_storeu_ps(pos + n, _mm512_maskz_compress_ps(b.keep, b.x));
+        _mm512_storeu_ps(pos + stride + n, _mm512_maskz_compress_ps(b.keep, b.y));
+        _mm512_storeu_ps(pos + 2 * stride + n, _mm512_maskz_compress_ps(b.keep, b.z));
+        n += keep_block(&b, id, out + n, out2 + n);
     }
     return n;
 }
