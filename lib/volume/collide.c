@@ -40,6 +40,8 @@
 
 #if MS_VOLUME_HAVE_AVX512
 #include <immintrin.h>
+
+#include "volume/records_avx512.h"
 #endif
 
 /* eq. 15 field strength in units of A; q = d / r_c */
@@ -75,7 +77,7 @@ __attribute__((target("avx512f,bmi2"))) static void wall_field_avx512(const floa
     const __m512 vr = _mm512_set1_ps(inv_rc), va = _mm512_set1_ps(A);
     for (int i = b; i < e; i += 16) {
         const unsigned rem = (unsigned)(e - i);
-        const __mmask16 m = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+        const __mmask16 m = ms_lanes_left(rem);
         const __m512 x = _mm512_maskz_loadu_ps(m, p + i);
         const __m512 fl = field16(_mm512_mul_ps(_mm512_sub_ps(x, vlo), vr));
         const __m512 fh = field16(_mm512_mul_ps(_mm512_sub_ps(vhi, x), vr));
@@ -97,7 +99,7 @@ __attribute__((target("avx512f,bmi2"))) static void wall_damp_avx512(const float
     const __m512 one = _mm512_set1_ps(1.0f);
     for (int i = b; i < e; i += 16) {
         const unsigned rem = (unsigned)(e - i);
-        const __mmask16 m = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+        const __mmask16 m = ms_lanes_left(rem);
         const __m512 x = _mm512_maskz_loadu_ps(m, p + i), ui = _mm512_maskz_loadu_ps(m, u + i);
         /* approaching the low wall: u < 0 (a NaN u: the high wall, as the C loop) */
         const __mmask16 low = _mm512_cmp_ps_mask(ui, _mm512_setzero_ps(), _CMP_LT_OQ);
@@ -485,7 +487,7 @@ __attribute__((target("avx512f,bmi2"))) static void clamp_axis_avx512(float *res
     const __m512 vlo = _mm512_set1_ps(lo), vhi = _mm512_set1_ps(hi);
     for (int i = b; i < e; i += 16) {
         const unsigned rem = (unsigned)(e - i);
-        const __mmask16 m = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+        const __mmask16 m = ms_lanes_left(rem);
         const __m512 x = _mm512_maskz_loadu_ps(m, p + i);
         unsigned out = _cvtmask16_u32(_mm512_mask_cmp_ps_mask(m, x, vlo, _CMP_LT_OQ) |
                                       _mm512_mask_cmp_ps_mask(m, x, vhi, _CMP_GT_OQ));

@@ -15,6 +15,8 @@
 #endif
 #if MS_VOLUME_HAVE_AVX512
 #include <immintrin.h>
+
+#include "volume/records_avx512.h"
 #endif
 
 enum { LANES = MS_VOLUME_LANES };
@@ -201,7 +203,7 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_rows_avx
         __m512i id = _mm512_add_epi32(_mm512_set1_epi32(lo[r] | tag), iota);
         for (int j = lo[r]; j < hi[r]; j += 16) {
             unsigned rem = (unsigned)(hi[r] - j);
-            __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+            __mmask16 valid = ms_lanes_left(rem);
             n += filter_block(qx, qy, qz, hh, x + j, y + j, z + j, valid, id, out + n, out2 + n);
             id = _mm512_add_epi32(id, sixteen);
         }
@@ -221,7 +223,7 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx5
     size_t n = 0;
     for (size_t j = 0; j < nc; j += 16) {
         size_t rem = nc - j;
-        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+        __mmask16 valid = ms_lanes_left(rem);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
         n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n);
     }
@@ -253,7 +255,7 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_imag
     size_t n = 0, ni = 0;
     for (size_t j = 0; j < nc; j += 16) {
         size_t rem = nc - j;
-        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+        __mmask16 valid = ms_lanes_left(rem);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
         const near_block b = near_of(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid);
         n += keep_block(&b, id, out + n, out2 + n);
@@ -283,7 +285,7 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_pos_
     size_t n = 0;
     for (size_t j = 0; j < nc; j += 16) {
         size_t rem = nc - j;
-        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+        __mmask16 valid = ms_lanes_left(rem);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
         const near_block b = near_of(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid);
         _mm512_storeu_ps(pos + n, _mm512_maskz_compress_ps(b.keep, b.x));
@@ -316,7 +318,7 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static int gather_image_avx51
     size_t m = 0;
     for (int k = 0; k < n; k += 16) {
         unsigned rem = (unsigned)(n - k);
-        __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+        __mmask16 valid = ms_lanes_left(rem);
         /* the list has a block of slack: a whole block is valid memory */
         __m512i j = _mm512_loadu_si512((const void *)(idx + k));
         __m512 dx = _mm512_sub_ps(qx, _mm512_maskz_loadu_ps(valid, px + k));
@@ -442,7 +444,7 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static long cand_of(ms_volume
         const int rlo = r->lo[k], rhi = r->hi[k];
         for (int j = rlo; j < rhi; j += 16) {
             unsigned rem = (unsigned)(rhi - j);
-            __mmask16 m = (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+            __mmask16 m = ms_lanes_left(rem);
             const __m512 xj = _mm512_maskz_loadu_ps(m, v->x + j);
             const __m512 yj = _mm512_maskz_loadu_ps(m, v->y + j);
             const __m512 zj = _mm512_maskz_loadu_ps(m, v->z + j);

@@ -1,5 +1,6 @@
-/* The AVX-512 pair loops' shared pieces (forces.c, dfsph.c): the
- * prefetch of their per-pair streams, and sixteen neighbours' 4-float
+/* The AVX-512 loops' shared pieces: the mask of a block's lanes that
+ * are left before a loop's end; for the pair loops (forces.c, dfsph.c)
+ * the prefetch of their per-pair streams, and sixteen neighbours' 4-float
  * quads out of the packed 8-float records (v->pk), what the force pass
  * (under DFSPH) and the DFSPH solves read of each neighbour: sixteen
  * 16-byte loads and a 4 x 4 transpose in each 128-bit lane, in place of
@@ -14,6 +15,15 @@
 #include <immintrin.h>
 #include <stddef.h>
 #include <stdint.h>
+
+/* The first min(rem, 16) lanes: a block of 16 that starts rem entries
+ * before its loop's end (the entries beyond belong to another part or
+ * lie past the arrays). */
+__attribute__((target("avx512f,bmi2"), always_inline)) static inline __mmask16 ms_lanes_left(
+    size_t rem)
+{
+    return (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+}
 
 #define MS_RECORDS_QUAD(k) _mm_loadu_ps(b + 8 * (size_t)j[k])
 #define MS_RECORDS_ROW(k)                                                                 \

@@ -25,6 +25,8 @@
 
 #if MS_VOLUME_HAVE_AVX512
 #include <immintrin.h>
+
+#include "volume/records_avx512.h"
 #endif
 
 typedef struct bounds_ctx {
@@ -43,7 +45,7 @@ __attribute__((target("avx512f,bmi2"), always_inline)) static inline __mmask16 b
                                                                                           int e)
 {
     const unsigned rem = (unsigned)(e - i);
-    return (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? rem : 16u);
+    return ms_lanes_left(rem);
 }
 
 /* |(x, y, z)|^2 of 16 lanes, (x x + y y) + z z as the C loop. */
