@@ -212,10 +212,14 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_rows_avx
 }
 
 /* filter_rows_avx512 over candidates already copied into one run
- * (cand_of): the same list, without a short loop per row. */
-__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx512(
-    const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
-    float h2, int *restrict out, float *restrict out2)
+ * (cand_of): the same list, without a short loop per row. With pos, also
+ * the kept neighbours' x | y | z (stride apart, in list order), for
+ * gather_image_avx512; inlined into both callers, so pos is a constant
+ * in each and the test leaves the loop. */
+__attribute__((target("avx512f,bmi,bmi2,popcnt"), always_inline)) static inline size_t
+filter_run_body_avx512(const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride,
+                       const float q[3], float h2, int *restrict out, float *restrict out2,
+                       float *restrict pos)
 {
     const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
     const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
@@ -225,9 +229,22 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx5
         size_t rem = nc - j;
         __mmask16 valid = ms_lanes_left(rem);
         __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
-        n += filter_block(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid, id, out + n, out2 + n);
+        const near_block b = near_of(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid);
+        if (pos) {
+            _mm512_storeu_ps(pos + n, _mm512_maskz_compress_ps(b.keep, b.x));
+            _mm512_storeu_ps(pos + stride + n, _mm512_maskz_compress_ps(b.keep, b.y));
+            _mm512_storeu_ps(pos + 2 * stride + n, _mm512_maskz_compress_ps(b.keep, b.z));
+        }
+        n += keep_block(&b, id, out + n, out2 + n);
     }
     return n;
+}
+
+__attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx512(
+    const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
+    float h2, int *restrict out, float *restrict out2)
+{
+    return filter_run_body_avx512(cx, cidx, nc, stride, q, h2, out, out2, NULL);
 }
 
 /* filter_run_avx512 for a particle near one wall, and in the same pass
@@ -273,27 +290,13 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_imag
     return n;
 }
 
-/* filter_run_avx512 that also stores the kept neighbours' x | y | z
- * (stride apart, in list order) at pos, for gather_image_avx512. */
+/* filter_run_avx512 that also stores the kept neighbours' positions at
+ * pos (filter_run_body_avx512). */
 __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_pos_avx512(
     const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
     float h2, int *restrict out, float *restrict out2, float *restrict pos)
 {
-    const float *restrict cy = cx + stride, *restrict cz = cx + 2 * stride;
-    const __m512 qx = _mm512_set1_ps(q[0]), qy = _mm512_set1_ps(q[1]), qz = _mm512_set1_ps(q[2]);
-    const __m512 hh = _mm512_set1_ps(h2);
-    size_t n = 0;
-    for (size_t j = 0; j < nc; j += 16) {
-        size_t rem = nc - j;
-        __mmask16 valid = ms_lanes_left(rem);
-        __m512i id = _mm512_maskz_loadu_epi32(valid, cidx + j);
-        const near_block b = near_of(qx, qy, qz, hh, cx + j, cy + j, cz + j, valid);
-        _mm512_storeu_ps(pos + n, _mm512_maskz_compress_ps(b.keep, b.x));
-        _mm512_storeu_ps(pos + stride + n, _mm512_maskz_compress_ps(b.keep, b.y));
-        _mm512_storeu_ps(pos + 2 * stride + n, _mm512_maskz_compress_ps(b.keep, b.z));
-        n += keep_block(&b, id, out + n, out2 + n);
-    }
-    return n;
+    return filter_run_body_avx512(cx, cidx, nc, stride, q, h2, out, out2, pos);
 }
 
 /* gather_image in AVX-512 for a particle near two or three walls: its
