@@ -40,6 +40,8 @@
 
 #if MS_VOLUME_HAVE_AVX512
 #include <immintrin.h>
+
+#include "volume/records_avx512.h"
 #endif
 
 /* max(p, 0) as fmaxf(p, 0.0f) gives it (a NaN p: 0), without the call
@@ -135,15 +137,6 @@ weight_sum(const ms_volume *v, const float *restrict r2, int n, const float *res
 }
 
 #if MS_VOLUME_HAVE_AVX512
-/* ms_lanes_sum of a vector, in registers: the same tree order. */
-__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float lanes_sum16(__m512 a)
-{
-    __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(a), _mm512_extractf32x8_ps(a, 1));
-    __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
-    __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
-    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
-}
-
 /* The kernel weight of 16 entries r^2: (h - r)^3 (spiky) or (h^2 - r^2)^3
  * (poly6), the C loop's operations in its order. */
 __attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 weight16(__m512 q,
@@ -177,7 +170,7 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline float w
     for (int k = 0; k < gn; k += LANES)
         acc = _mm512_add_ps(acc, weight16(_mm512_loadu_ps(g2 + k), poly6, h, h2));
     *coincident = close;
-    return lanes_sum16(acc);
+    return ms_lanes_sum16(acc);
 }
 
 /* The kernel chosen once, outside the loops (-O2 does not unswitch). */

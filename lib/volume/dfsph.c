@@ -528,17 +528,6 @@ __attribute__((target("avx512f"), always_inline)) static inline void load_svel(
     ms_load_quads(pk + 3, j, s, u, w, t);
 }
 
-/* ms_lanes_sum in registers (the same tree order, so the same bits): the
- * store and sixteen scalar reloads cost more than the sums. */
-__attribute__((target("avx512f"), always_inline)) static inline float hsum(__m512 a)
-{
-    __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(a),
-                              _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(a), 1)));
-    __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
-    __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
-    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
-}
-
 /* factors_of's real-neighbour loop: the same operations per lane as the C
  * loop (IEEE square root and division, no fused multiply-adds), the
  * neighbours' positions as the 16-byte records x, y, z, p of v->pk (which
@@ -582,14 +571,14 @@ __attribute__((target("avx512f"))) static inline void factors_real_avx512(
         wy = _mm512_add_ps(wy, _mm512_mul_ps(f, dy));
         wz = _mm512_add_ps(wz, _mm512_mul_ps(f, dz));
     }
-    out[0] = hsum(sx);
-    out[1] = hsum(sy);
-    out[2] = hsum(sz);
-    out[3] = hsum(sq);
-    out[4] = hsum(sm);
-    out[5] = hsum(wx);
-    out[6] = hsum(wy);
-    out[7] = hsum(wz);
+    out[0] = ms_lanes_sum16(sx);
+    out[1] = ms_lanes_sum16(sy);
+    out[2] = ms_lanes_sum16(sz);
+    out[3] = ms_lanes_sum16(sq);
+    out[4] = ms_lanes_sum16(sm);
+    out[5] = ms_lanes_sum16(wx);
+    out[6] = ms_lanes_sum16(wy);
+    out[7] = ms_lanes_sum16(wz);
 }
 
 __attribute__((target("avx512f"))) static inline float divergence_real_avx512(
@@ -610,7 +599,7 @@ __attribute__((target("avx512f"))) static inline float divergence_real_avx512(
         d = _mm512_add_ps(d, _mm512_mul_ps(_mm512_sub_ps(t, tj), _mm512_loadu_ps(gz + k)));
         a = _mm512_add_ps(a, d);
     }
-    return hsum(a);
+    return ms_lanes_sum16(a);
 }
 
 /* The update pass reads only s of each neighbour: one gather of 16 floats
@@ -640,9 +629,9 @@ __attribute__((target("avx512f"))) static inline void apply_real_avx512(
         b = _mm512_add_ps(b, _mm512_mul_ps(f, _mm512_loadu_ps(gy + k)));
         c = _mm512_add_ps(c, _mm512_mul_ps(f, _mm512_loadu_ps(gz + k)));
     }
-    out[0] = hsum(a);
-    out[1] = hsum(b);
-    out[2] = hsum(c);
+    out[0] = ms_lanes_sum16(a);
+    out[1] = ms_lanes_sum16(b);
+    out[2] = ms_lanes_sum16(c);
 }
 #endif
 

@@ -117,15 +117,6 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void lo
 }
 #undef TRANSPOSE4
 
-/* ms_lanes_sum in registers: the same tree order. */
-__attribute__((target("avx512f,avx512dq"), always_inline)) static inline float hsum_avx512(__m512 v)
-{
-    __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(v), _mm512_extractf32x8_ps(v, 1));
-    __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
-    __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
-    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
-}
-
 #endif
 
 /* Issue 12, round nine: each particle's seven sums are 16 lane
@@ -286,8 +277,9 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline pair_su
         pair_sums none = {0};
         return none;
     }
-    pair_sums s = {hsum_avx512(a.px), hsum_avx512(a.py), hsum_avx512(a.pz), hsum_avx512(a.vx),
-                   hsum_avx512(a.vy), hsum_avx512(a.vz), hsum_avx512(a.d)};
+    pair_sums s = {ms_lanes_sum16(a.px), ms_lanes_sum16(a.py), ms_lanes_sum16(a.pz),
+                   ms_lanes_sum16(a.vx), ms_lanes_sum16(a.vy), ms_lanes_sum16(a.vz),
+                   ms_lanes_sum16(a.d)};
     return s;
 }
 #endif
@@ -468,7 +460,7 @@ static void forces_part(void *ctxp, int part, int b, int e)
     }
 #endif
     const ms_nlist *lst = &v->lists[part], *gst = &v->ghosts[part];
-    const float cp = 0.5f * v->press_scale * v->mass * v->K.spiky_grad; /* eq. 13 */
+    const float cp = 0.5f * v->press_scale * v->mass * v->K.spiky_grad;  /* eq. 13 */
     const float cv = 0.5f * v->mass * v->K.visc_lap * v->desc.viscosity; /* eq. 14 */
     for (int i = b; i < e; ++i)
         accel_of(v, i, sums_c(v, lst, gst, i), cp, cv);

@@ -1,5 +1,5 @@
 /* The AVX-512 loops' shared pieces: the mask of a block's lanes that
- * are left before a loop's end; for the pair loops (forces.c, dfsph.c)
+ * are left before a loop's end, the sum of a vector's lanes; for the pair loops (forces.c, dfsph.c)
  * the prefetch of their per-pair streams, and sixteen neighbours' 4-float
  * quads out of the packed 8-float records (v->pk), what the force pass
  * (under DFSPH) and the DFSPH solves read of each neighbour: sixteen
@@ -23,6 +23,18 @@ __attribute__((target("avx512f,bmi2"), always_inline)) static inline __mmask16 m
     size_t rem)
 {
     return (__mmask16)_bzhi_u32(0xffffu, rem < 16u ? (unsigned)rem : 16u);
+}
+
+/* ms_lanes_sum of a vector, in registers: the same tree order (lane l +
+ * l + 8, then + 4, + 2, + 1), so the same bits; the store and sixteen
+ * scalar reloads cost more than the sums. */
+__attribute__((target("avx512f"), always_inline)) static inline float ms_lanes_sum16(__m512 a)
+{
+    __m256 t8 = _mm256_add_ps(_mm512_castps512_ps256(a),
+                              _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(a), 1)));
+    __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
+    __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
+    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
 }
 
 #define MS_RECORDS_QUAD(k) _mm_loadu_ps(b + 8 * (size_t)j[k])
