@@ -254,7 +254,7 @@ __attribute__((target("avx512f,avx512dq,bmi2"), always_inline)) static inline fl
     __m512 m = _mm512_setzero_ps();
     for (int i = b; i < e; i += 16) {
         const unsigned rem = (unsigned)(e - i), n = rem < 16u ? rem : 16u;
-        const __mmask16 valid = (__mmask16)_bzhi_u32(0xffffu, n);
+        const __mmask16 valid = ms_lanes_left(rem);
         const __m512 rho = _mm512_maskz_loadu_ps(valid, v->rho + i);
         const __m512 inv = _mm512_maskz_div_ps(valid, one, rho);
         const __m512 p = pressure16(v, rho);
