@@ -2,6 +2,7 @@
  * input is refused with file:line:col, the key and what is allowed. */
 #include <check.h>
 #include <dirent.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -181,6 +182,46 @@ START_TEST(out_of_range_names_value_and_range)
             MS_ERR_INVALID_ARGUMENT, "max_particles 10 is below");
     REFUSED("{\"volume\": {\"spacing\": 0.02, \"smoothing_length\": 0.01}}",
             MS_ERR_INVALID_ARGUMENT, "smoothing_length");
+}
+END_TEST
+
+/* DFSPH's stop rule and caps (issue 12): absent, the solver's defaults
+ * (NAN / -1); present, read in the desc's ranges; each refusal exact; and
+ * under a weakly compressible law, where they would do nothing, refused. */
+START_TEST(dfsph_limits_are_read_in_the_solvers_ranges)
+{
+    ms_scene *sc = parse_ok("{\"volume\": {\"pressure\": \"dfsph\"}}");
+    ck_assert(isnan(sc->volume.max_density_error));
+    ck_assert(isnan(sc->volume.max_divergence_error));
+    ck_assert_int_eq(sc->volume.max_density_iterations, -1);
+    ck_assert_int_eq(sc->volume.max_divergence_iterations, -1);
+    ms_scene_destroy(sc);
+    sc = parse_ok("{\"volume\": {\"pressure\": \"dfsph\", \"max_density_error\": 0.0005,"
+                  " \"max_divergence_error\": 0.01, \"max_density_iterations\": 7,"
+                  " \"max_divergence_iterations\": 0}}");
+    ck_assert_float_eq(sc->volume.max_density_error, 0.0005f);
+    ck_assert_float_eq(sc->volume.max_divergence_error, 0.01f);
+    ck_assert_int_eq(sc->volume.max_density_iterations, 7);
+    ck_assert_int_eq(sc->volume.max_divergence_iterations, 0);
+    ms_scene_destroy(sc);
+    sc = NULL;
+    REFUSED("{\"volume\": {\"pressure\": \"dfsph\", \"max_density_error\": 0}}",
+            MS_ERR_INVALID_ARGUMENT,
+            "volume.max_density_error 0 is out of range; allowed: (0, 0.1]");
+    REFUSED("{\"volume\": {\"pressure\": \"dfsph\", \"max_divergence_error\": 0.2}}",
+            MS_ERR_INVALID_ARGUMENT,
+            "volume.max_divergence_error 0.2 is out of range; allowed: (0, 0.1]");
+    REFUSED("{\"volume\": {\"pressure\": \"dfsph\", \"max_density_iterations\": 0}}",
+            MS_ERR_INVALID_ARGUMENT, "volume.max_density_iterations 0 is out of range");
+    REFUSED("{\"volume\": {\"pressure\": \"dfsph\", \"max_divergence_iterations\": 10001}}",
+            MS_ERR_INVALID_ARGUMENT, "volume.max_divergence_iterations 10001 is out of range");
+    REFUSED("{\"volume\": {\"pressure\": \"dfsph\", \"max_density_iterations\": 2.5}}",
+            MS_ERR_PARSE, "volume.max_density_iterations");
+    REFUSED("{\"volume\": {\"max_density_error\": 0.001}}", MS_ERR_INVALID_ARGUMENT,
+            "volume.max_density_error is a limit of the \"dfsph\" pressure solver; allowed "
+            "only with volume.pressure \"dfsph\"");
+    REFUSED("{\"volume\": {\"pressure\": \"tait\", \"max_divergence_iterations\": 3}}",
+            MS_ERR_INVALID_ARGUMENT, "volume.max_divergence_iterations is a limit of the");
 }
 END_TEST
 
@@ -415,6 +456,7 @@ static Suite *scene_suite(void)
     tcase_set_timeout(tc, 60);
     tcase_add_test(tc, minimal_scene_gets_documented_defaults);
     tcase_add_test(tc, volume_level_is_the_fill_spread_over_the_domain);
+    tcase_add_test(tc, dfsph_limits_are_read_in_the_solvers_ranges);
     tcase_add_test(tc, every_shipped_scene_loads);
     tcase_add_test(tc, name_defaults_to_the_file_name);
     tcase_add_test(tc, syntax_error_names_line_and_column);

@@ -85,6 +85,55 @@ START_TEST(surface_only_scene_holds_no_particles_and_runs_no_sph)
 }
 END_TEST
 
+/* A scene's DFSPH limits reach the solver (issue 12): caps bound the
+ * iterations of every sub-step, and a tighter error costs more of them. A
+ * column released into a pool, so the solves have work to do. */
+static ms_volume_info dfsph_run(const char *limits)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "{" POOL_DOMAIN ", \"volume\": {\"spacing\": 0.02, \"pressure\": \"dfsph\", %s"
+             " \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.14, 0.4, 0.2]}],"
+             " \"field\": [16, 16]}}",
+             limits);
+    ms_scene *sc = scene(text);
+    ms_sim *sim = sim_of(sc, 1);
+    ms_volume_info in = ms_volume_info_init();
+    int most_density = 0;
+    for (int f = 0; f < 12; ++f) {
+        steps(sim, 1, 1.0f / 60);
+        ms_volume_get_info(ms_sim_volume(sim), &in);
+        most_density = MS_MAX(most_density, in.density_iterations);
+    }
+    in.density_iterations = most_density; /* the largest of the last sub-steps seen */
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    return in;
+}
+
+START_TEST(a_scenes_dfsph_limits_reach_the_solver)
+{
+    ms_volume_info capped =
+        dfsph_run("\"max_density_iterations\": 2, \"max_divergence_iterations\": 0,");
+    ck_assert_int_gt(capped.substeps, 0);
+    ck_assert_int_eq(capped.divergence_iterations_total, 0);
+    ck_assert_int_le(capped.density_iterations, 2);
+    ck_assert_int_le(capped.density_iterations_total, 2 * capped.substeps);
+    ms_volume_info tight = dfsph_run("\"max_density_error\": 0.0002,");
+    ms_volume_info loose = dfsph_run("\"max_density_error\": 0.01,");
+    ms_volume_info dflt = dfsph_run("");
+    ck_assert_int_gt(dflt.divergence_iterations_total, 0);
+    /* iterations per sub-step: the tight bound needs more than the loose */
+    double it_tight = (double)tight.density_iterations_total / (double)tight.substeps,
+           it_loose = (double)loose.density_iterations_total / (double)loose.substeps;
+    ck_assert_msg(it_tight > 1.5 * it_loose,
+                  "density iterations a sub-step: %.2f at 0.02 %%, "
+                  "%.2f at 1 %%",
+                  it_tight, it_loose);
+    ck_assert_float_le(tight.density_error, 0.0002f);
+}
+END_TEST
+
 START_TEST(volume_only_scene_is_the_sph_field_alone)
 {
     ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME "}");
@@ -1129,6 +1178,7 @@ static Suite *sim_suite(void)
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, surface_only_scene_holds_no_particles_and_runs_no_sph);
     tcase_add_test(tc, volume_only_scene_is_the_sph_field_alone);
+    tcase_add_test(tc, a_scenes_dfsph_limits_reach_the_solver);
     tcase_add_test(tc, absent_effects_cost_nothing);
     tcase_add_test(tc, threads_is_the_whole_budget);
     tcase_add_test(tc, n_time_is_the_fewest_stable_wave_steps);

@@ -101,6 +101,11 @@ struct ms_scene {
         int threads;             /* threads inside the SPH step */
         int smooth_steps;        /* eq. 18 smoothing passes (-1 = default) */
         float smooth_energy;     /* J/kg, eq. 18 threshold */
+        /* MS_PRESSURE_DFSPH's stop rule and caps (NAN / -1: the solver's) */
+        float max_density_error;    /* average predicted compression */
+        float max_divergence_error; /* average dt (D rho/Dt) / rho0 */
+        int max_density_iterations;
+        int max_divergence_iterations;
     } volume;
     int nfill;
     float fill_lo[MS_SCENE_MAX_FILLS][3], fill_hi[MS_SCENE_MAX_FILLS][3]; /* m */

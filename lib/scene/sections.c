@@ -254,13 +254,60 @@ static ms_status read_fill(ms_scene_ctx *c, json_t *o, ms_scene *sc, double *cou
     return MS_OK;
 }
 
+/* DFSPH's stop rule and iteration caps (issue 12), in the desc's ranges
+ * (volume/desc.c). Under the weakly compressible laws they would do
+ * nothing, so a scene that sets one there is refused rather than run as if
+ * it had been heard. */
+static ms_status read_dfsph_limits(ms_scene_ctx *c, json_t *o, ms_scene *sc)
+{
+    static const char *const limits[] = {"max_density_error", "max_divergence_error",
+                                         "max_density_iterations", "max_divergence_iterations"};
+    long dens_it, div_it;
+    MS_TRY(ms_scene_get_float(c, o, "max_density_error", NAN, 0, 0.1, 1, "",
+                              &sc->volume.max_density_error));
+    MS_TRY(ms_scene_get_float(c, o, "max_divergence_error", NAN, 0, 0.1, 1, "",
+                              &sc->volume.max_divergence_error));
+    MS_TRY(ms_scene_get_int(c, o, "max_density_iterations", -1, 1, 10000, &dens_it));
+    MS_TRY(ms_scene_get_int(c, o, "max_divergence_iterations", -1, 0, 10000, &div_it));
+    sc->volume.max_density_iterations = (int)dens_it;
+    sc->volume.max_divergence_iterations = (int)div_it;
+    if (sc->volume.pressure == MS_PRESSURE_DFSPH)
+        return MS_OK;
+    for (size_t k = 0; k < sizeof limits / sizeof limits[0]; ++k)
+        if (json_object_get(o, limits[k])) {
+            ms_scene_push_key(c, limits[k]);
+            ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                                         "is a limit of the \"dfsph\" pressure solver; "
+                                         "allowed only with volume.pressure \"dfsph\"");
+            ms_scene_pop(c);
+            return st;
+        }
+    return MS_OK;
+}
+
 static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
-    static const char *const keys[] = {"spacing", "smoothing_length", "rest_density",
-                                       "gas_constant", "viscosity", "gravity", "pressure",
-                                       "max_particles", "fill", "field", "sound_speed",
-                                       "courant", "max_substeps", "threads", "smooth_steps",
-                                       "smooth_energy", NULL};
+    static const char *const keys[] = {"spacing",
+                                       "smoothing_length",
+                                       "rest_density",
+                                       "gas_constant",
+                                       "viscosity",
+                                       "gravity",
+                                       "pressure",
+                                       "max_particles",
+                                       "fill",
+                                       "field",
+                                       "sound_speed",
+                                       "courant",
+                                       "max_substeps",
+                                       "threads",
+                                       "smooth_steps",
+                                       "smooth_energy",
+                                       "max_density_error",
+                                       "max_divergence_error",
+                                       "max_density_iterations",
+                                       "max_divergence_iterations",
+                                       NULL};
     static const char *const pressures[] = {"ideal_gas", "tait", "dfsph", NULL};
     static const float g[3] = {0, 0, -9.81f};
     json_t *o;
@@ -301,6 +348,7 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     sc->volume.max_substeps = (int)maxsub;
     sc->volume.threads = (int)vthreads;
     sc->volume.smooth_steps = (int)smooth;
+    MS_TRY(read_dfsph_limits(c, o, sc));
     MS_TRY(ms_scene_get_ivec(c, o, "field", 2, field, 2, 4096, field));
     sc->field_nx = field[0];
     sc->field_ny = field[1];

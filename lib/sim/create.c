@@ -356,6 +356,14 @@ ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out
             vd.smooth_steps = sc->volume.smooth_steps;
         if (!isnan(sc->volume.smooth_energy))
             vd.smooth_energy = sc->volume.smooth_energy;
+        if (!isnan(sc->volume.max_density_error))
+            vd.max_density_error = sc->volume.max_density_error;
+        if (!isnan(sc->volume.max_divergence_error))
+            vd.max_divergence_error = sc->volume.max_divergence_error;
+        if (sc->volume.max_density_iterations >= 0)
+            vd.max_density_iterations = sc->volume.max_density_iterations;
+        if (sc->volume.max_divergence_iterations >= 0)
+            vd.max_divergence_iterations = sc->volume.max_divergence_iterations;
         for (int i = 0; i < sc->nfill; ++i) {
             long n = 1;
             for (int k = 0; k < 3; ++k)
