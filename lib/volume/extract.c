@@ -129,7 +129,7 @@ static void mark_part(void *ctxp, int part, int b, int e)
 }
 
 #if MS_VOLUME_HAVE_AVX512
-#include <immintrin.h>
+#include "volume/records_avx512.h"
 
 /* mark_part in AVX-512: 16 neighbours at a time, their neighbour counts
  * gathered (the same test on the same numbers: the same marks). */
@@ -319,39 +319,58 @@ __attribute__((target("avx512f,popcnt"))) static int gather_avx512(const float *
     return mc;
 }
 
-/* gather_avx512 for the band search with column_span folded in: the
- * kept lanes' maxima of z + R sqrt(a) and z and minimum of z - R as it
- * gathers (maxima and minima are exact in any order: column_span's
- * values). Returns the count; *zstart, *zlow as column_span's (mc > 0). */
-__attribute__((target("avx512f,popcnt"))) static int gather_span_avx512(
-    const float *bx, const float *by, const float *bz, int k0, int k1, float px, float py,
-    float inv_r2, float R, float spacing, float *cz, float *ca, float *zstart, float *zlow)
+/* gather_avx512 for the band search with column_span folded in, from
+ * the band (band_build): x, the row's (y - py)^2 and z. The kept lanes'
+ * maximum of z and minimum of z as it gathers (exact in any order), and
+ * zlow = min z - R after (a rounding is monotone: min(z - R) is
+ * (min z) - R). Returns the count; *zstart, *zlow as column_span's
+ * (mc > 0).
+ *
+ * The start is min(zmax, zc + spacing) with zmax the highest sphere top
+ * z + R sqrt(a), and almost always zc + spacing: a sphere near the column
+ * reaches above it. So no square root while gathering (a 16-float one
+ * costs as much as the rest of a block): z + R a is never above the top
+ * (0 < a <= 1, so a <= sqrt(a), and the float sqrt(a) rounds to a float
+ * no below a; each rounding after is monotone), and where the highest
+ * z + R a reaches zc + spacing so does zmax, and the start is
+ * zc + spacing. Otherwise zmax is computed as column_span does, from the
+ * kept candidates. The same start, the same bytes. */
+__attribute__((target("avx512f,bmi2,popcnt"))) static int gather_span_avx512(
+    const float *bx, const float *bdy2, const float *bz, int k0, int k1, float px, float inv_r2,
+    float R, float spacing, float *cz, float *ca, float *zstart, float *zlow)
 {
-    const __m512 vpx = _mm512_set1_ps(px), vpy = _mm512_set1_ps(py);
-    const __m512 vinv = _mm512_set1_ps(inv_r2), one = _mm512_set1_ps(1.0f);
-    const __m512 zero = _mm512_setzero_ps(), vR = _mm512_set1_ps(R);
+    const __m512 vpx = _mm512_set1_ps(px), vinv = _mm512_set1_ps(inv_r2);
+    const __m512 one = _mm512_set1_ps(1.0f), zero = _mm512_setzero_ps(), vR = _mm512_set1_ps(R);
     __m512 top = _mm512_set1_ps(-INFINITY), cmax = top, low = _mm512_set1_ps(INFINITY);
     int mc = 0;
     for (int k = k0; k < k1; k += 16) {
-        const int left = k1 - k;
-        const __mmask16 live = left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
+        const __mmask16 live = ms_lanes_left((size_t)(k1 - k));
         const __m512 ex = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, bx + k), vpx);
-        const __m512 ey = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, by + k), vpy);
-        const __m512 r2 = _mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_mul_ps(ey, ey));
+        const __m512 r2 = _mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_maskz_loadu_ps(live, bdy2 + k));
         const __m512 a = _mm512_sub_ps(one, _mm512_mul_ps(r2, vinv));
         const __mmask16 keep = _mm512_mask_cmp_ps_mask(live, a, zero, _CMP_GT_OQ);
         const __m512 z = _mm512_maskz_loadu_ps(live, bz + k);
-        const __m512 t = _mm512_add_ps(z, _mm512_mul_ps(vR, _mm512_maskz_sqrt_ps(keep, a)));
-        top = _mm512_mask_max_ps(top, keep, top, t);
+        top = _mm512_mask_max_ps(top, keep, top, _mm512_add_ps(z, _mm512_mul_ps(vR, a)));
         cmax = _mm512_mask_max_ps(cmax, keep, cmax, z);
-        low = _mm512_mask_min_ps(low, keep, low, _mm512_sub_ps(z, vR));
+        low = _mm512_mask_min_ps(low, keep, low, z);
         _mm512_storeu_ps(ca + mc, _mm512_maskz_compress_ps(keep, a));
         _mm512_storeu_ps(cz + mc, _mm512_maskz_compress_ps(keep, z));
         mc += __builtin_popcount(keep);
     }
-    const float zmax = _mm512_reduce_max_ps(top), zc = _mm512_reduce_max_ps(cmax);
-    *zstart = zmax < zc + spacing ? zmax : zc + spacing;
-    *zlow = _mm512_reduce_min_ps(low);
+    const float zc = _mm512_reduce_max_ps(cmax), target = zc + spacing;
+    if (!(_mm512_reduce_max_ps(top) >= target)) {
+        /* column_span's zmax over the kept candidates */
+        top = _mm512_set1_ps(-INFINITY);
+        for (int k = 0; k < mc; k += 16) {
+            const __mmask16 live = ms_lanes_left((size_t)(mc - k));
+            const __m512 sa = _mm512_sqrt_ps(_mm512_maskz_loadu_ps(live, ca + k));
+            const __m512 t = _mm512_add_ps(_mm512_maskz_loadu_ps(live, cz + k), _mm512_mul_ps(vR, sa));
+            top = _mm512_mask_max_ps(top, live, top, t);
+        }
+    }
+    const float zmax = _mm512_reduce_max_ps(top);
+    *zstart = zmax < target ? zmax : target;
+    *zlow = _mm512_reduce_min_ps(low) - R;
     /* weight-0 lanes to the next multiple of 8 (a store, not a loop of
      * 0 to 7 turns, whose end mispredicts) */
     _mm256_storeu_ps(ca + mc, _mm256_setzero_ps());
@@ -719,6 +738,7 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
 {
     const int ex = cc->ex, ey = cc->ey, span = 2 * cc->ry + 1;
     const int *cstart = cc->cstart;
+    const float py = cc->s->lo[1] + ((float)j + 0.5f) * cc->dye;
     int k = 0;
     for (int ix = 0; ix < ex; ++ix) {
         /* the bins are x-major: rows j .. j + 2 ry of bin column ix are
@@ -727,7 +747,8 @@ static void band_build(const column_ctx *cc, int j, float *tx, float *ty, float 
         bst[ix] = k;
         for (int q = 0; q < n; ++q) { /* a few a run: no library calls */
             tx[k + q] = cc->bx[q0 + q];
-            ty[k + q] = cc->by[q0 + q];
+            const float dy = cc->by[q0 + q] - py;
+            ty[k + q] = dy * dy;
             tz[k + q] = cc->bz[q0 + q];
         }
         k += n;
@@ -744,6 +765,7 @@ __attribute__((target("avx512f"))) static void band_build_avx512(const column_ct
 {
     const int ex = cc->ex, ey = cc->ey, span = 2 * cc->ry + 1;
     const int *cstart = cc->cstart;
+    const __m512 vpy = _mm512_set1_ps(cc->s->lo[1] + ((float)j + 0.5f) * cc->dye);
     int k = 0;
     for (int ix = 0; ix < ex; ++ix) {
         const int q0 = cstart[ix * ey + j], n = cstart[ix * ey + j + span] - q0;
@@ -752,7 +774,8 @@ __attribute__((target("avx512f"))) static void band_build_avx512(const column_ct
             const int left = n - q;
             const __mmask16 live = left >= 16 ? (__mmask16)0xFFFF : (__mmask16)((1u << left) - 1u);
             _mm512_mask_storeu_ps(tx + k + q, live, _mm512_maskz_loadu_ps(live, cc->bx + q0 + q));
-            _mm512_mask_storeu_ps(ty + k + q, live, _mm512_maskz_loadu_ps(live, cc->by + q0 + q));
+            const __m512 dy = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, cc->by + q0 + q), vpy);
+            _mm512_mask_storeu_ps(ty + k + q, live, _mm512_mul_ps(dy, dy));
             _mm512_mask_storeu_ps(tz + k + q, live, _mm512_maskz_loadu_ps(live, cc->bz + q0 + q));
         }
         k += n;
@@ -978,13 +1001,79 @@ static inline __attribute__((always_inline)) void search_step(const ms_extract_s
     }
 }
 
+enum { NSLOT = 2 };
+
+/* A column gathered ahead of its search (columns_band_body). */
+typedef struct pending {
+    float *cz, *ca;
+    int mc, col;
+    float zmax, zlow;
+} pending;
+
+/* Column col = (i, j)'s candidates into p (band_build's band of row j,
+ * built if *band_j is another row). */
+static inline __attribute__((always_inline)) void band_gather(const column_ctx *cc, int col, int i,
+                                                              int j, int *band_j, float *tx,
+                                                              float *ty, float *tz, int *bst,
+                                                              int avx512, pending *p)
+{
+    (void)avx512;
+    const ms_extract_snap *s = cc->s;
+    const float R = s->R, inv_r2 = 1.0f / (R * R);
+    if (j != *band_j) { /* columns go row by row: once a row */
+#if MS_VOLUME_HAVE_AVX512
+        if (avx512)
+            band_build_avx512(cc, j, tx, ty, tz, bst);
+        else
+#endif
+            band_build(cc, j, tx, ty, tz, bst);
+        *band_j = j;
+    }
+    const float px = s->lo[0] + ((float)i + 0.5f) * cc->dxe;
+    const int k0 = bst[i], k1 = bst[i + 2 * cc->rx + 1];
+    float *cz = p->cz, *ca = p->ca;
+    int mc = 0;
+    float zmax = -INFINITY, zlow = INFINITY;
+#if MS_VOLUME_HAVE_AVX512
+    if (avx512) {
+        mc = gather_span_avx512(tx, ty, tz, k0, k1, px, inv_r2, R, s->spacing, cz, ca, &zmax,
+                                &zlow);
+        if (mc == 0)
+            zmax = -INFINITY, zlow = INFINITY;
+    } else
+#endif
+    {
+        for (int k2 = k0; k2 < k1; ++k2) {
+            const float dx = tx[k2] - px;
+            const float a = 1.0f - (dx * dx + ty[k2]) * inv_r2;
+            cz[mc] = tz[k2];
+            ca[mc] = a;
+            mc += a > 0.0f;
+        }
+        if (mc > 0)
+            column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
+        for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
+            cz[pad] = 0.0f;
+            ca[pad] = 0.0f;
+        }
+    }
+    p->mc = (mc + MS_VOLUME_LANES / 2 - 1) / (MS_VOLUME_LANES / 2) * (MS_VOLUME_LANES / 2);
+    p->col = col;
+    p->zmax = zmax;
+    p->zlow = zlow;
+}
+
 /* Columns [b, e) of the rectangle by the band: one run of candidates a
  * column (images are particles of the extended bins), then the secant
  * root search, NSLOT columns at a time (search): two measured 1.09-1.14x
  * faster than one on fig1 (same process, interleaved; 1.32x on an Intel
  * Xeon in round twelve), three and four no faster than two (slower on
- * that Xeon). Per instruction set as columns_body. */
-enum { NSLOT = 2 };
+ * that Xeon). A column is gathered one column ahead of its search (into
+ * an NSLOT + 1-th buffer): the gather's overlapping compress stores are
+ * then written to the cache by the time the column's first evaluation
+ * loads them, not still in the store buffer, which cannot forward a load
+ * that spans two of them (a stall on the search's chain). The same
+ * columns, the same searches. Per instruction set as columns_body. */
 static inline __attribute__((always_inline)) void columns_band_body(const column_ctx *cc, int part,
                                                                     int b, int e, int avx512)
 {
@@ -994,19 +1083,30 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
           *tz = ty + cc->band_stride;
     int *bst = cc->bstart + (size_t)part * (size_t)(cc->ex + 1), band_j = -1;
     const float R = s->R, inv_r2 = 1.0f / (R * R);
+    float *cand = cc->cand + (size_t)part * (NSLOT + 1) * cc->cand_stride;
     search slot[NSLOT];
     memset(slot, 0, sizeof slot);
     for (int k = 0; k < NSLOT; ++k) {
-        slot[k].cz = cc->cand + ((size_t)part * NSLOT + (size_t)k) * cc->cand_stride;
+        slot[k].cz = cand + (size_t)k * cc->cand_stride;
         slot[k].ca = slot[k].cz + cc->cand_stride / 2;
         slot[k].state = SEARCH_DONE;
         slot[k].col = -1;
     }
+    pending pend = {.cz = cand + (size_t)NSLOT * cc->cand_stride, .col = -1};
+    pend.ca = pend.cz + cc->cand_stride / 2;
     int next = b, live = 0;
     /* next's column and row, stepped along (no division a column) */
     int next_i = b % cc->rw, next_j = b / cc->rw;
+    if (next < e) {
+        band_gather(cc, next, cc->i0 + next_i, cc->j0 + next_j, &band_j, tx, ty, tz, bst, avx512,
+                    &pend);
+        next++;
+        next_j += next_i + 1 == cc->rw;
+        next_i = next_i + 1 == cc->rw ? 0 : next_i + 1;
+    }
     for (;;) {
-        /* a finished slot stores its height and takes the next column */
+        /* a finished slot stores its height and takes the pending column,
+         * and the next column is gathered into the slot's old buffer */
         for (int k = 0; k < NSLOT; ++k) {
             search *q = &slot[k];
             while (q->state == SEARCH_DONE) {
@@ -1015,79 +1115,65 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                     q->col = -1;
                     live--;
                 }
-                if (next >= e)
+                if (pend.col < 0)
                     break;
-                const int col = next++;
-                const int i = cc->i0 + next_i, j = cc->j0 + next_j;
-                next_j += next_i + 1 == cc->rw;
-                next_i = next_i + 1 == cc->rw ? 0 : next_i + 1;
-                if (j != band_j) { /* columns go row by row: once a row */
-#if MS_VOLUME_HAVE_AVX512
-                    if (avx512)
-                        band_build_avx512(cc, j, tx, ty, tz, bst);
-                    else
-#endif
-                        band_build(cc, j, tx, ty, tz, bst);
-                    band_j = j;
-                }
-                const float px = s->lo[0] + ((float)i + 0.5f) * cc->dxe;
-                const float py = s->lo[1] + ((float)j + 0.5f) * cc->dye;
-                const int k0 = bst[i], k1 = bst[i + 2 * cc->rx + 1];
                 float *cz = q->cz, *ca = q->ca;
-                int mc = 0;
-                float zmax = -INFINITY, zlow = INFINITY;
-#if MS_VOLUME_HAVE_AVX512
-                if (avx512) {
-                    mc = gather_span_avx512(tx, ty, tz, k0, k1, px, py, inv_r2, R, s->spacing, cz,
-                                            ca, &zmax, &zlow);
-                    if (mc == 0)
-                        zmax = -INFINITY, zlow = INFINITY;
-                } else
-#endif
-                {
-                    for (int k2 = k0; k2 < k1; ++k2) {
-                        const float dx = tx[k2] - px, dy = ty[k2] - py;
-                        const float a = 1.0f - (dx * dx + dy * dy) * inv_r2;
-                        cz[mc] = tz[k2];
-                        ca[mc] = a;
-                        mc += a > 0.0f;
-                    }
-                    if (mc > 0)
-                        column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
-                    for (int pad = mc; pad % (MS_VOLUME_LANES / 2); ++pad) { /* weight-0 lanes */
-                        cz[pad] = 0.0f;
-                        ca[pad] = 0.0f;
-                    }
-                }
-                q->mc =
-                    (mc + MS_VOLUME_LANES / 2 - 1) / (MS_VOLUME_LANES / 2) * (MS_VOLUME_LANES / 2);
-                q->col = col;
+                q->cz = pend.cz;
+                q->ca = pend.ca;
+                q->mc = pend.mc;
+                q->col = pend.col;
                 live++;
-                search_start(s, q, zmax, zlow);
+                search_start(s, q, pend.zmax, pend.zlow);
+                pend.cz = cz;
+                pend.ca = ca;
+                pend.col = -1;
+                if (next < e) {
+                    band_gather(cc, next, cc->i0 + next_i, cc->j0 + next_j, &band_j, tx, ty, tz,
+                                bst, avx512, &pend);
+                    next++;
+                    next_j += next_i + 1 == cc->rw;
+                    next_i = next_i + 1 == cc->rw ? 0 : next_i + 1;
+                }
             }
         }
         if (live == 0)
             break;
-        /* the slots' evaluations, independent of each other */
-        float phi[NSLOT];
+        /* the slots' evaluations, independent of each other; a walking
+         * slot's next step too (the walk's points are known ahead: z,
+         * then z - spacing / 2, computed as search_step will), one chain
+         * of latencies shorter where the walk goes on (2.3 steps a column
+         * on fig1), the same points and values */
+        const float dz = 0.5f * s->spacing;
+        float phi[NSLOT], phi2[NSLOT];
+        int walking[NSLOT];
 #pragma GCC unroll 4
         for (int k = 0; k < NSLOT; ++k) {
             const search *q = &slot[k];
-            phi[k] = 0.0f;
+            phi[k] = phi2[k] = 0.0f;
+            walking[k] = q->state == SEARCH_WALK;
             if (q->state == SEARCH_DONE)
                 continue;
 #if MS_VOLUME_HAVE_AVX512
             if (avx512) {
                 phi[k] = phi_at_avx512(q->cz, q->ca, q->mc, q->ze, inv_r2);
+                if (walking[k])
+                    phi2[k] = phi_at_avx512(q->cz, q->ca, q->mc, q->ze - dz, inv_r2);
                 continue;
             }
 #endif
             phi[k] = phi_at(q->cz, q->ca, q->mc, q->ze, inv_r2);
+            if (walking[k])
+                phi2[k] = phi_at(q->cz, q->ca, q->mc, q->ze - dz, inv_r2);
         }
 #pragma GCC unroll 4
-        for (int k = 0; k < NSLOT; ++k)
-            if (slot[k].state != SEARCH_DONE)
-                search_step(s, &slot[k], phi[k]);
+        for (int k = 0; k < NSLOT; ++k) {
+            search *q = &slot[k];
+            if (q->state == SEARCH_DONE)
+                continue;
+            search_step(s, q, phi[k]);
+            if (walking[k] && q->state == SEARCH_WALK) /* q->ze is the point of phi2 */
+                search_step(s, q, phi2[k]);
+        }
     }
 }
 
@@ -1383,22 +1469,22 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     if (st == MS_OK)
         st = scratch((void **)&w->list, &w->list_cap,
                      icap + ecells + 1 + (size_t)parts * (size_t)(ex + 1), sizeof(int));
-    /* buf: 3 x 4m binned positions, 3 fields, per thread NSLOT columns'
-     * candidates (cz, ca) and the band (x, y, z) */
+    /* buf: 3 x 4m binned positions, 3 fields, per thread NSLOT + 1
+     * columns' candidates (cz, ca) and the band (x, (y - py)^2, z) */
     const size_t cand_stride = 2 * (icap + MS_VOLUME_LANES);
     const size_t band_stride = icap + MS_VOLUME_LANES;
     const size_t padded = (size_t)(rw + 2) * (rh + 2);
     if (st == MS_OK)
         st = scratch((void **)&w->buf, &w->buf_cap,
                      3 * icap + 2 * rcells + padded +
-                         (size_t)parts * (NSLOT * cand_stride + 3 * band_stride),
+                         (size_t)parts * ((NSLOT + 1) * cand_stride + 3 * band_stride),
                      sizeof(float));
     if (st != MS_OK)
         return st;
     int *cstart = w->start, *ckey = w->list, *cfill = ckey + icap, *bstart = cfill + ecells + 1;
     float *bx = w->buf, *by = bx + icap, *bz = by + icap;
     float *raw = bz + icap, *tmp = raw + rcells, *blend = tmp + padded;
-    float *cand = blend + rcells, *band = cand + (size_t)parts * NSLOT * cand_stride;
+    float *cand = blend + rcells, *band = cand + (size_t)parts * (NSLOT + 1) * cand_stride;
     memset(cfill, 0, ecells * sizeof *cfill);
     /* the bin of a particle or image: the particles' clamped to the field
      * as the reference's, the images' to the extension */
