@@ -209,6 +209,9 @@ enum { LANES = MS_VOLUME_LANES };
 #endif
 enum { MIN_DENSITY_ITERATIONS = 2, MIN_DIVERGENCE_ITERATIONS = 1 };
 #define WARM_FACTOR 0.5f
+/* The density solve's momentum (the header): the share of a particle's
+ * last update s carried into its next. */
+#define DENSITY_MOMENTUM 0.3f
 
 typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSURE } pass_kind;
 
@@ -227,6 +230,7 @@ typedef struct dfsph_ctx {
     int nmom[MS_VOLUME_MAX_THREADS];
     float moment, weight;
     int restart;
+    float momentum; /* F_DENSITY_ERROR: DENSITY_MOMENTUM, 0 at a solve's first error pass */
 } dfsph_ctx;
 
 static inline int padded(int n)
@@ -839,7 +843,9 @@ dfsph_part(void *ctxp, int part, int b, int e)
             ci = ci < cap ? ci : cap;
             float ei = ci - dt * mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, img, i);
             ei = ei > 0.0f ? ei : 0.0f;
-            v->df_s[i] = ei * v->df_inv_diag[i];
+            /* the Jacobi update plus the momentum share of the last one
+             * (df_s still holds it; both >= 0: the total only grows) */
+            v->df_s[i] = ei * v->df_inv_diag[i] + ctx->momentum * v->df_s[i];
             err += quantise(ei / rho0); /* compression only: quantise clamps at 0 */
         }
         break;
@@ -1033,6 +1039,7 @@ static int solve(ms_volume *v, dfsph_ctx *ctx, pass_kind error, float eta, int l
                  const float *first, float *reached)
 {
     int it = 0;
+    ctx->momentum = 0.0f; /* no last update yet */
     float avg = first ? *first : run(v, ctx, error);
     for (;;) {
         *reached = avg;
@@ -1042,6 +1049,7 @@ static int solve(ms_volume *v, dfsph_ctx *ctx, pass_kind error, float eta, int l
         it++;
         if (avg <= eta && it >= least)
             break; /* met before this update: no confirming pass */
+        ctx->momentum = error == F_DENSITY_ERROR ? DENSITY_MOMENTUM : 0.0f;
         avg = run(v, ctx, error);
     }
     return it;
