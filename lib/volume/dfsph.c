@@ -783,6 +783,15 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
     }
     const float c = scale * v->mass * v->K.spiky_grad;
     set_capped(v, i, v->vx[i] + c * sx, v->vy[i] + c * sy, v->vz[i] + c * sz);
+    /* the running total of s, and the new velocity into the packed copy
+     * the AVX-512 error loops read: no pass of an update reads pk (the
+     * update gathers s from df_s), so i's record may change under it
+     * (round fourteen: one per-particle pass fewer an iteration) */
+    v->df_sum[i] += si;
+    float *pk = v->pk + 8 * (size_t)i;
+    pk[4] = v->vx[i];
+    pk[5] = v->vy[i];
+    pk[6] = v->vz[i];
 }
 
 /* e / rho0 in units of 2^-32, clamped to [0, 64] (NaN counts as 64) so
@@ -907,22 +916,6 @@ dfsph_part(void *ctxp, int part, int b, int e)
     ctx->err[part] = err;
 }
 
-/* After an update pass: the running total of s, and the new velocities
- * into the packed copy the AVX-512 loops read. The passes themselves never
- * write pk: a neighbour's 16-byte record load would race with the write. */
-static void sum_add(void *ctxp, int part, int b, int e)
-{
-    (void)part;
-    ms_volume *v = ((dfsph_ctx *)ctxp)->v;
-    for (int i = b; i < e; ++i) {
-        v->df_sum[i] += v->df_s[i];
-        float *pk = v->pk + 8 * (size_t)i;
-        pk[4] = v->vx[i];
-        pk[5] = v->vy[i];
-        pk[6] = v->vz[i];
-    }
-}
-
 /* One pass of kind over all particles; the average error of an error pass. */
 static float run(ms_volume *v, dfsph_ctx *ctx, pass_kind kind)
 {
@@ -932,8 +925,6 @@ static float run(ms_volume *v, dfsph_ctx *ctx, pass_kind kind)
         ctx->nmom[p] = 0;
     }
     ms_vpool_run(v->pool, dfsph_part, ctx, v->n);
-    if (kind == F_APPLY)
-        ms_vpool_run(v->pool, sum_add, ctx, v->n);
     int64_t err = 0;
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) /* integers: order-free */
         err += ctx->err[p];
