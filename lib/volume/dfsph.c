@@ -97,6 +97,39 @@
  * liquid (a quarter of rho0 g d from the sort's cell columns, branch
  * r13-warm) ran the peer's scene at 0.99x and passed the hydrostatic
  * bar at shares 0.15 and 0.25 only.
+ * Round fourteen (kept): heavy-ball momentum on the density solve's
+ * Jacobi updates, carried only where the particle is still compressed.
+ * After a solve's first update each particle's update is
+ *       s_i = e_i / diag_i + DENSITY_MOMENTUM s_i(last update)  (e_i > 0)
+ *       s_i = 0                                                   (e_i = 0)
+ * Both terms are >= 0, so the total still only grows and the clamp at 0
+ * holds; the stop rule and the minima are unchanged, and the divergence
+ * solve (1 iteration) has none. It speeds the smooth, column-wide mode
+ * Jacobi is slowest on. Measured on the peer's scene (bench_dfsph --peer,
+ * 0.3 s; density + divergence iterations a simulated second, sub-steps a
+ * simulated second, average / largest compression): none 1523, 263,
+ * 0.103 / 1.62 %; 0.3 (kept) 1347, 260, 0.102 / 1.78 %; 0.4 1283, 260,
+ * 0.096 / 1.91 %; 0.5 1270; 0.6 1240, 263, 0.102 / 2.29 %. Density
+ * iterations of the 0.3 s (volume_ab peer 18): 378 -> 326 at 0.3, 307 at
+ * 0.4. 0.4 left glass (tests/test_volume.c's extraction case) in a state
+ * whose band search misses a root by 1.7e-4 m (as round ten's shares);
+ * 0.6 left the hydrostatic tank's deepest layer 2.2 % low (bar 2 %).
+ * The hydrostatic tank's largest compression (viscosities 0.5-8, bar
+ * 1 %): none 0.42-0.45 %, 0.3 0.47-0.50 %. Also passing but not kept
+ * (less margin): 0.3 for the second update and 0.5 from the third, 1270
+ * iterations a simulated second, the tank's largest compression
+ * 0.58-0.79 %, the peer's 2.08 %; a ramp 0.3 + 0.15 an update up to
+ * 0.75: 1280, the tank's 1.005 % (fails).
+ * Not kept: the carry everywhere (also where e_i = 0): 0.2 1320, 0.3
+ * 1243 (largest compression 1.24 %), 0.4 1173, 0.5 1113, 0.6 1010, 0.8
+ * 1167 (293 sub-steps, 3.2 %), but an update carried into a particle
+ * that has since expanded pushes on, which the clamp cannot take back:
+ * the settling tank 14 % (0.4) and 10 % (0.5) above its energy at 0.2 s
+ * (bar 1 %), and at 0.3 test_stability's one-particle sheet ended at
+ * 9.4 J of the 5.1 J that entered, its largest-step dam break 7.61 of
+ * 7.59 J. A plain over-relaxation s_i = omega e_i / diag_i: omega 1.15
+ * 1283 (largest compression 3.0 %), 1.3 1147 (2.9 %, the hydrostatic
+ * tank's deepest layer 2.2 % low), 1.5 1127 (14.7 %).
  *
  * The warm start costs no neighbour pass of its own (round ten; it was
  * one of a sub-step's 9): its velocity change, dt / dt_last^2 m G sum_j
@@ -209,6 +242,9 @@ enum { LANES = MS_VOLUME_LANES };
 #endif
 enum { MIN_DENSITY_ITERATIONS = 2, MIN_DIVERGENCE_ITERATIONS = 1 };
 #define WARM_FACTOR 0.5f
+/* The density solve's momentum (the header): the share of a particle's
+ * last update s carried into its next. */
+#define DENSITY_MOMENTUM 0.3f
 
 typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSURE } pass_kind;
 
@@ -227,6 +263,7 @@ typedef struct dfsph_ctx {
     int nmom[MS_VOLUME_MAX_THREADS];
     float moment, weight;
     int restart;
+    float momentum; /* F_DENSITY_ERROR: DENSITY_MOMENTUM, 0 at a solve's first error pass */
 } dfsph_ctx;
 
 static inline int padded(int n)
@@ -752,6 +789,15 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
     }
     const float c = scale * v->mass * v->K.spiky_grad;
     set_capped(v, i, v->vx[i] + c * sx, v->vy[i] + c * sy, v->vz[i] + c * sz);
+    /* the running total of s, and the new velocity into the packed copy
+     * the AVX-512 error loops read: no pass of an update reads pk (the
+     * update gathers s from df_s), so i's record may change under it
+     * (round fourteen: one per-particle pass fewer an iteration) */
+    v->df_sum[i] += si;
+    float *pk = v->pk + 8 * (size_t)i;
+    pk[4] = v->vx[i];
+    pk[5] = v->vy[i];
+    pk[6] = v->vz[i];
 }
 
 /* e / rho0 in units of 2^-32, clamped to [0, 64] (NaN counts as 64) so
@@ -839,7 +885,11 @@ dfsph_part(void *ctxp, int part, int b, int e)
             ci = ci < cap ? ci : cap;
             float ei = ci - dt * mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, img, i);
             ei = ei > 0.0f ? ei : 0.0f;
-            v->df_s[i] = ei * v->df_inv_diag[i];
+            /* the Jacobi update plus, while i is still compressed, the
+             * momentum share of its last one (df_s still holds it; both
+             * >= 0: the total only grows; the header) */
+            v->df_s[i] =
+                ei > 0.0f ? ei * v->df_inv_diag[i] + ctx->momentum * v->df_s[i] : 0.0f;
             err += quantise(ei / rho0); /* compression only: quantise clamps at 0 */
         }
         break;
@@ -872,22 +922,6 @@ dfsph_part(void *ctxp, int part, int b, int e)
     ctx->err[part] = err;
 }
 
-/* After an update pass: the running total of s, and the new velocities
- * into the packed copy the AVX-512 loops read. The passes themselves never
- * write pk: a neighbour's 16-byte record load would race with the write. */
-static void sum_add(void *ctxp, int part, int b, int e)
-{
-    (void)part;
-    ms_volume *v = ((dfsph_ctx *)ctxp)->v;
-    for (int i = b; i < e; ++i) {
-        v->df_sum[i] += v->df_s[i];
-        float *pk = v->pk + 8 * (size_t)i;
-        pk[4] = v->vx[i];
-        pk[5] = v->vy[i];
-        pk[6] = v->vz[i];
-    }
-}
-
 /* One pass of kind over all particles; the average error of an error pass. */
 static float run(ms_volume *v, dfsph_ctx *ctx, pass_kind kind)
 {
@@ -897,8 +931,6 @@ static float run(ms_volume *v, dfsph_ctx *ctx, pass_kind kind)
         ctx->nmom[p] = 0;
     }
     ms_vpool_run(v->pool, dfsph_part, ctx, v->n);
-    if (kind == F_APPLY)
-        ms_vpool_run(v->pool, sum_add, ctx, v->n);
     int64_t err = 0;
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) /* integers: order-free */
         err += ctx->err[p];
@@ -1033,6 +1065,7 @@ static int solve(ms_volume *v, dfsph_ctx *ctx, pass_kind error, float eta, int l
                  const float *first, float *reached)
 {
     int it = 0;
+    ctx->momentum = 0.0f; /* no last update yet */
     float avg = first ? *first : run(v, ctx, error);
     for (;;) {
         *reached = avg;
@@ -1042,6 +1075,7 @@ static int solve(ms_volume *v, dfsph_ctx *ctx, pass_kind error, float eta, int l
         it++;
         if (avg <= eta && it >= least)
             break; /* met before this update: no confirming pass */
+        ctx->momentum = error == F_DENSITY_ERROR ? DENSITY_MOMENTUM : 0.0f;
         avg = run(v, ctx, error);
     }
     return it;
