@@ -71,6 +71,11 @@ ms_status ms_volume_share_loops(ms_volume *v);
 void ms_vpool_help_open(ms_vpool *p);
 void ms_vpool_help(ms_vpool *p);
 void ms_vpool_help_close(ms_vpool *p);
+/* The particles' positions and velocities (m, m/s) in the stable order
+ * (particle k at index k, as ms_volume_get_particles), one array an axis:
+ * pos[a] and vel[a] each hold the volume's count. The sim's copies take
+ * them from here in one pass, with no interleaved block between. */
+void ms_volume_copy_particles(const ms_volume *v, float *const pos[3], float *const vel[3]);
 void ms_extract_snap_free(ms_extract_snap *s);
 void ms_extract_work_free(ms_extract_work *w);
 size_t ms_extract_snap_bytes(const ms_extract_snap *s);
