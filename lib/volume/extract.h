@@ -48,6 +48,13 @@ typedef struct ms_extract_work {
 /* Phase A: the snapshot of v at its current positions (rebuilds the
  * neighbour counts if the positions moved since the last density pass). */
 ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s);
+/* Phase A's first part alone: the neighbour pass (grid, boundary terms,
+ * lists, counts and density) at the current positions if they moved since
+ * the last, as ms_volume_extract_snap would run it. *for_step: 1 if it ran
+ * and the next ms_volume_step may start from it (its first sub-step's own
+ * pass, ms_volume_take_counted_pass: no collider jumped), so the sim times
+ * it with the SPH step, where it would run without the extraction. */
+ms_status ms_volume_extract_counts(ms_volume *v, int *for_step);
 /* Phase B: the nx x ny height field of s into out (m above lo[2]); the
  * columns are split over pool's threads (NULL: the calling thread). */
 ms_status ms_extract_field(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool, int nx,
