@@ -99,7 +99,9 @@ MS_API const ms_scene *ms_sim_scene(const ms_sim *sim); /* NULL when made from a
 /* Statistics since creation. The stage times are the milliseconds each
  * stage ran (with threads = 2 the volume and surface stages overlap, so
  * they may add up to more than total_ms, the wall time of ms_sim_step).
- *   volume_ms   interaction, surface->volume coupling and SPH (volume thread)
+ *   volume_ms   interaction, surface->volume coupling and SPH (volume thread),
+ *               with the neighbour pass at the step's end positions that
+ *               the extraction reads and the next step starts from
  *   extract_ms  height-field extraction (eqs. 16-18) and the particle copy:
  *               the surface particles on the volume thread, the columns
  *               and the smoothing on the surface thread (the flow of the

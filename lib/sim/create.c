@@ -442,7 +442,6 @@ void ms_sim_destroy(ms_sim *sim)
         ms_free(sim->ppos[k][0]); /* one block per slot (volume_task.c) */
         ms_free(sim->pvel[k][0]);
     }
-    ms_free(sim->paos);
     ms_free(sim->wave_colmap);
     ms_free(sim->wave_rowsum);
     ms_free(sim->flow_count);

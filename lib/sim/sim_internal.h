@@ -110,8 +110,6 @@ struct ms_sim {
     float *flow_count;       /* fnx * fny: S's scratch for the flow */
     float *ppos[2][3], *pvel[2][3]; /* particle copies, SoA */
     int pcount[2], pcap[2];
-    float *paos;             /* 6 * paos_cap scratch for ms_volume_get_particles */
-    int paos_cap;
     float *wave_snap[2];     /* fnx * fny: W averaged per SPH cell, from S (gain_vs > 0) */
     int *wave_colmap;        /* snx: SPH column of each wave column */
     float *wave_rowsum;      /* fnx * fny: S's scratch for the average */

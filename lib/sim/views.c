@@ -155,7 +155,6 @@ void ms_sim_get_stats(const ms_sim *sim, ms_stats *user)
                                  ms_extract_snap_bytes(&sim->snap[k]);
         out->volume_bytes +=
             ms_extract_work_bytes(&sim->work_v) + ms_extract_work_bytes(&sim->work_s);
-        out->volume_bytes += (size_t)sim->paos_cap * 6 * sizeof(float);
     }
     if (sim->surface) {
         ms_surface_info si = ms_surface_info_init();

@@ -1207,6 +1207,17 @@ columns_band_c(void *ctxp, int part, int b, int e)
     columns_band_body(ctxp, part, b, e, 0);
 }
 
+ms_status ms_volume_extract_counts(ms_volume *v, int *for_step)
+{
+    *for_step = 0;
+    if (v->n == 0 || v->counts_valid)
+        return MS_OK;
+    ms_volume_grid_build(v);
+    ms_status st = ms_volume_count_neighbours(v);
+    *for_step = st == MS_OK && v->pass_ready;
+    return st;
+}
+
 /* Phase A (extract.h): mark, then copy the marked particles (internal
  * order of the volume, which the binning keeps) and the constants. */
 ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
@@ -1225,12 +1236,10 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
     s->reference = 0; /* a bench or test sets it between the phases */
     if (v->n == 0)
         return MS_OK;
-    if (!v->counts_valid) {
-        ms_volume_grid_build(v);
-        ms_status st = ms_volume_count_neighbours(v);
-        if (st != MS_OK)
-            return st;
-    }
+    int for_step;
+    ms_status st = ms_volume_extract_counts(v, &for_step);
+    if (st != MS_OK)
+        return st;
     /* per cell the lowest surface particle in it or the cells around it:
      * a 3 x 3 x 3 minimum, one axis at a time (a particle's cell is never
      * on the grid's padding, so the neighbours of the cells read exist) */

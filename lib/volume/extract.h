@@ -48,6 +48,13 @@ typedef struct ms_extract_work {
 /* Phase A: the snapshot of v at its current positions (rebuilds the
  * neighbour counts if the positions moved since the last density pass). */
 ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s);
+/* Phase A's first part alone: the neighbour pass (grid, boundary terms,
+ * lists, counts and density) at the current positions if they moved since
+ * the last, as ms_volume_extract_snap would run it. *for_step: 1 if it ran
+ * and the next ms_volume_step may start from it (its first sub-step's own
+ * pass, ms_volume_take_counted_pass: no collider jumped), so the sim times
+ * it with the SPH step, where it would run without the extraction. */
+ms_status ms_volume_extract_counts(ms_volume *v, int *for_step);
 /* Phase B: the nx x ny height field of s into out (m above lo[2]); the
  * columns are split over pool's threads (NULL: the calling thread). */
 ms_status ms_extract_field(const ms_extract_snap *s, ms_extract_work *w, ms_vpool *pool, int nx,
@@ -71,6 +78,11 @@ ms_status ms_volume_share_loops(ms_volume *v);
 void ms_vpool_help_open(ms_vpool *p);
 void ms_vpool_help(ms_vpool *p);
 void ms_vpool_help_close(ms_vpool *p);
+/* The particles' positions and velocities (m, m/s) in the stable order
+ * (particle k at index k, as ms_volume_get_particles), one array an axis:
+ * pos[a] and vel[a] each hold the volume's count. The sim's copies take
+ * them from here in one pass, with no interleaved block between. */
+void ms_volume_copy_particles(const ms_volume *v, float *const pos[3], float *const vel[3]);
 void ms_extract_snap_free(ms_extract_snap *s);
 void ms_extract_work_free(ms_extract_work *w);
 size_t ms_extract_snap_bytes(const ms_extract_snap *s);

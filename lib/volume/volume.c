@@ -5,6 +5,7 @@
 
 #include <stdatomic.h>
 
+#include "volume/extract.h"
 #include "volume/volume_internal.h"
 #include "core/struct_sizes.h"
 
@@ -394,8 +395,15 @@ void ms_volume_publish(ms_volume *v)
     if (!v->pub)
         return;
     size_t c = (size_t)v->cap;
-    float *restrict px = v->pub, *restrict py = px + c, *restrict pz = py + c;
-    float *restrict ux = pz + c, *restrict uy = ux + c, *restrict uz = uy + c;
+    float *const pos[3] = {v->pub, v->pub + c, v->pub + 2 * c};
+    float *const vel[3] = {v->pub + 3 * c, v->pub + 4 * c, v->pub + 5 * c};
+    ms_volume_copy_particles(v, pos, vel);
+}
+
+void ms_volume_copy_particles(const ms_volume *v, float *const pos[3], float *const vel[3])
+{
+    float *restrict px = pos[0], *restrict py = pos[1], *restrict pz = pos[2];
+    float *restrict ux = vel[0], *restrict uy = vel[1], *restrict uz = vel[2];
     for (int i = 0; i < v->n; ++i) {
         int k = v->id[i];
         px[k] = v->x[i];
