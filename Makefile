@@ -146,7 +146,14 @@ plugins: $(PLUGINS)
 tools: $(TOOL) $(BENCHES)
 tests: $(TESTS)
 
-$(BUILD)/obj/%.o: %.c
+# What the objects were compiled for (compiler, flags, the optional
+# libraries found): a change rebuilds them all. Without it, installing
+# libsdl2-dev (or OSMesa, EGL) after a first build left the old objects
+# compiled without it beside new ones with it, and `modesplit` failed to
+# link (view_gl_fn undefined).
+CONFIG_STAMP := $(BUILD)/config.stamp
+
+$(BUILD)/obj/%.o: %.c $(CONFIG_STAMP)
 	@mkdir -p $(@D)
 	@echo "  CC      $<"
 	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -c $< -o $@
@@ -168,11 +175,11 @@ $(STATIC): $(LIB_OBJ)
 
 # Plugins are self-contained: they use no libmodesplit symbols, so they
 # load into any host (a statically linked test, an engine, the tool).
-$(BUILD)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h
+$(BUILD)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h $(CONFIG_STAMP)
 	@mkdir -p $(@D)
 	@echo "  PLUGIN  $@"
 	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -shared -Wl,--no-undefined $(LDSAN) -o $@ $< $(PLUGIN_LIBS)
-$(BUILD)/plugins/shader_%.so: plugins/shaders/%.c include/modesplit/plugin.h
+$(BUILD)/plugins/shader_%.so: plugins/shaders/%.c include/modesplit/plugin.h $(CONFIG_STAMP)
 	@mkdir -p $(@D)
 	@echo "  PLUGIN  $@"
 	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -shared -Wl,--no-undefined $(LDSAN) -o $@ $< $(PLUGIN_LIBS)
@@ -203,11 +210,18 @@ VIEW_TEST_OBJ := $(addprefix $(BUILD)/obj/tools/modesplit/,view_log.o view_camer
 $(BUILD)/obj/tools/modesplit/%.o: CPPFLAGS += -DMS_HAVE_SDL2=$(HAVE_SDL2)
 $(BUILD)/obj/tools/modesplit/%.o: ALL_CFLAGS += $(SDL2_CFLAGS)
 $(BUILD)/bin/modesplit: SYS_LIBS += $(SDL2_LIBS)
+
+CONFIG_LINE := cc=$(CC) cflags=$(CFLAGS) native=$(NATIVE) osmesa=$(HAVE_OSMESA) egl=$(HAVE_EGL) \
+               sdl2=$(HAVE_SDL2)
+# rewritten only when it differs, so an unchanged configuration rebuilds
+# nothing
+$(shell mkdir -p $(BUILD) && { [ "$$(cat $(CONFIG_STAMP) 2>/dev/null)" = '$(CONFIG_LINE)' ] || \
+    printf '%s\n' '$(CONFIG_LINE)' > $(CONFIG_STAMP); })
 $(BUILD)/tests/test_view: $(VIEW_TEST_OBJ)
 $(BUILD)/tests/test_view: TEST_SUPPORT += $(VIEW_TEST_OBJ)
 
 # Tests link the static library so they can also reach internal functions.
-$(BUILD)/obj/tests/%.o: tests/%.c
+$(BUILD)/obj/tests/%.o: tests/%.c $(CONFIG_STAMP)
 	@mkdir -p $(@D)
 	@echo "  CC      $<"
 	$(Q)$(CC) $(CPPFLAGS) -Itests $(ALL_CFLAGS) $(CHECK_CFLAGS) -c $< -o $@
