@@ -888,8 +888,7 @@ dfsph_part(void *ctxp, int part, int b, int e)
             /* the Jacobi update plus, while i is still compressed, the
              * momentum share of its last one (df_s still holds it; both
              * >= 0: the total only grows; the header) */
-            v->df_s[i] =
-                ei > 0.0f ? ei * v->df_inv_diag[i] + ctx->momentum * v->df_s[i] : 0.0f;
+            v->df_s[i] = ei > 0.0f ? ei * v->df_inv_diag[i] + ctx->momentum * v->df_s[i] : 0.0f;
             err += quantise(ei / rho0); /* compression only: quantise clamps at 0 */
         }
         break;

@@ -346,7 +346,8 @@ __attribute__((target("avx512f,bmi2,popcnt"))) static int gather_span_avx512(
     for (int k = k0; k < k1; k += 16) {
         const __mmask16 live = ms_lanes_left((size_t)(k1 - k));
         const __m512 ex = _mm512_sub_ps(_mm512_maskz_loadu_ps(live, bx + k), vpx);
-        const __m512 r2 = _mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_maskz_loadu_ps(live, bdy2 + k));
+        const __m512 r2 =
+            _mm512_add_ps(_mm512_mul_ps(ex, ex), _mm512_maskz_loadu_ps(live, bdy2 + k));
         const __m512 a = _mm512_sub_ps(one, _mm512_mul_ps(r2, vinv));
         const __mmask16 keep = _mm512_mask_cmp_ps_mask(live, a, zero, _CMP_GT_OQ);
         const __m512 z = _mm512_maskz_loadu_ps(live, bz + k);
@@ -364,7 +365,8 @@ __attribute__((target("avx512f,bmi2,popcnt"))) static int gather_span_avx512(
         for (int k = 0; k < mc; k += 16) {
             const __mmask16 live = ms_lanes_left((size_t)(mc - k));
             const __m512 sa = _mm512_sqrt_ps(_mm512_maskz_loadu_ps(live, ca + k));
-            const __m512 t = _mm512_add_ps(_mm512_maskz_loadu_ps(live, cz + k), _mm512_mul_ps(vR, sa));
+            const __m512 t =
+                _mm512_add_ps(_mm512_maskz_loadu_ps(live, cz + k), _mm512_mul_ps(vR, sa));
             top = _mm512_mask_max_ps(top, live, top, t);
         }
     }
@@ -1036,8 +1038,8 @@ static inline __attribute__((always_inline)) void band_gather(const column_ctx *
     float zmax = -INFINITY, zlow = INFINITY;
 #if MS_VOLUME_HAVE_AVX512
     if (avx512) {
-        mc = gather_span_avx512(tx, ty, tz, k0, k1, px, inv_r2, R, s->spacing, cz, ca, &zmax,
-                                &zlow);
+        mc =
+            gather_span_avx512(tx, ty, tz, k0, k1, px, inv_r2, R, s->spacing, cz, ca, &zmax, &zlow);
         if (mc == 0)
             zmax = -INFINITY, zlow = INFINITY;
     } else
