@@ -1012,24 +1012,37 @@ typedef struct pending {
     float zmax, zlow;
 } pending;
 
-/* Column col = (i, j)'s candidates into p (band_build's band of row j,
- * built if *band_j is another row). */
-static inline __attribute__((always_inline)) void band_gather(const column_ctx *cc, int col, int i,
-                                                              int j, int *band_j, float *tx,
-                                                              float *ty, float *tz, int *bst,
-                                                              int avx512, pending *p)
+/* The next column of a thread's columns [next, e): its (i, j) in the
+ * rectangle, stepped along (no division a column), and the row whose band
+ * (band_build) the thread holds. */
+typedef struct cursor {
+    int next, e, i, j, band_j;
+} cursor;
+
+/* The cursor's column's candidates into p (its row's band built if the
+ * band holds another row), and the cursor on to the next; past e, p->col
+ * is -1 and nothing is gathered. */
+static inline __attribute__((always_inline)) void band_gather(const column_ctx *cc, cursor *at,
+                                                              float *tx, float *ty, float *tz,
+                                                              int *bst, int avx512, pending *p)
 {
     (void)avx512;
+    p->col = -1;
+    if (at->next >= at->e)
+        return;
+    const int col = at->next++, i = cc->i0 + at->i, j = cc->j0 + at->j;
+    at->j += at->i + 1 == cc->rw;
+    at->i = at->i + 1 == cc->rw ? 0 : at->i + 1;
     const ms_extract_snap *s = cc->s;
     const float R = s->R, inv_r2 = 1.0f / (R * R);
-    if (j != *band_j) { /* columns go row by row: once a row */
+    if (j != at->band_j) { /* columns go row by row: once a row */
 #if MS_VOLUME_HAVE_AVX512
         if (avx512)
             band_build_avx512(cc, j, tx, ty, tz, bst);
         else
 #endif
             band_build(cc, j, tx, ty, tz, bst);
-        *band_j = j;
+        at->band_j = j;
     }
     const float px = s->lo[0] + ((float)i + 0.5f) * cc->dxe;
     const int k0 = bst[i], k1 = bst[i + 2 * cc->rx + 1];
@@ -1083,7 +1096,7 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
     const ms_extract_snap *s = cc->s;
     float *tx = cc->band + (size_t)part * 3 * cc->band_stride, *ty = tx + cc->band_stride,
           *tz = ty + cc->band_stride;
-    int *bst = cc->bstart + (size_t)part * (size_t)(cc->ex + 1), band_j = -1;
+    int *bst = cc->bstart + (size_t)part * (size_t)(cc->ex + 1);
     const float R = s->R, inv_r2 = 1.0f / (R * R);
     float *cand = cc->cand + (size_t)part * (NSLOT + 1) * cc->cand_stride;
     search slot[NSLOT];
@@ -1094,18 +1107,11 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
         slot[k].state = SEARCH_DONE;
         slot[k].col = -1;
     }
-    pending pend = {.cz = cand + (size_t)NSLOT * cc->cand_stride, .col = -1};
+    pending pend = {.cz = cand + (size_t)NSLOT * cc->cand_stride};
     pend.ca = pend.cz + cc->cand_stride / 2;
-    int next = b, live = 0;
-    /* next's column and row, stepped along (no division a column) */
-    int next_i = b % cc->rw, next_j = b / cc->rw;
-    if (next < e) {
-        band_gather(cc, next, cc->i0 + next_i, cc->j0 + next_j, &band_j, tx, ty, tz, bst, avx512,
-                    &pend);
-        next++;
-        next_j += next_i + 1 == cc->rw;
-        next_i = next_i + 1 == cc->rw ? 0 : next_i + 1;
-    }
+    cursor at = {.next = b, .e = e, .i = b % cc->rw, .j = b / cc->rw, .band_j = -1};
+    int live = 0;
+    band_gather(cc, &at, tx, ty, tz, bst, avx512, &pend);
     for (;;) {
         /* a finished slot stores its height and takes the pending column,
          * and the next column is gathered into the slot's old buffer */
@@ -1128,14 +1134,7 @@ static inline __attribute__((always_inline)) void columns_band_body(const column
                 search_start(s, q, pend.zmax, pend.zlow);
                 pend.cz = cz;
                 pend.ca = ca;
-                pend.col = -1;
-                if (next < e) {
-                    band_gather(cc, next, cc->i0 + next_i, cc->j0 + next_j, &band_j, tx, ty, tz,
-                                bst, avx512, &pend);
-                    next++;
-                    next_j += next_i + 1 == cc->rw;
-                    next_i = next_i + 1 == cc->rw ? 0 : next_i + 1;
-                }
+                band_gather(cc, &at, tx, ty, tz, bst, avx512, &pend);
             }
         }
         if (live == 0)
