@@ -741,6 +741,16 @@ static inline void set_capped(ms_volume *v, int i, float nx, float ny, float nz)
     v->vz[i] = nz;
 }
 
+/* i's velocity into the packed copy the AVX-512 error loops read (floats
+ * 4..6 of its record) */
+static inline void pack_velocity(ms_volume *v, int i)
+{
+    float *pk = v->pk + 8 * (size_t)i;
+    pk[4] = v->vx[i];
+    pk[5] = v->vy[i];
+    pk[6] = v->vz[i];
+}
+
 /* v_i += scale m G sum_j (s_i + s_j) g_ij (x_i - x_j): the pressure term. */
 static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
                                             const float *restrict cgx, const float *restrict cgy,
@@ -794,10 +804,7 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
      * update gathers s from df_s), so i's record may change under it
      * (round fourteen: one per-particle pass fewer an iteration) */
     v->df_sum[i] += si;
-    float *pk = v->pk + 8 * (size_t)i;
-    pk[4] = v->vx[i];
-    pk[5] = v->vy[i];
-    pk[6] = v->vz[i];
+    pack_velocity(v, i);
 }
 
 /* e / rho0 in units of 2^-32, clamped to [0, 64] (NaN counts as 64) so
@@ -981,10 +988,7 @@ static void warm_kick(void *ctxp, int part, int b, int e)
         } else {
             v->df_sum[i] = 0.0f;
         }
-        float *pk = v->pk + 8 * (size_t)i;
-        pk[4] = v->vx[i];
-        pk[5] = v->vy[i];
-        pk[6] = v->vz[i];
+        pack_velocity(v, i);
     }
 }
 
