@@ -187,6 +187,11 @@ void ms_sim_upsample_add(const ms_sim *sim, const float *field, const float *wav
 ms_status ms_sim_upsample_excite(ms_sim *sim, const float *e, ms_surface *s);
 /* out = up(field) + wave (rows stride floats apart) and, if avg is not
  * NULL, ms_sim_average_waves of it, in one pass */
+/* The largest fraction of the local depth up(H) the waves may add or
+ * take away in the combined field (ms_sim_waves_on_liquid): a trough of
+ * 0.8 of the depth leaves a fifth of the liquid, never the floor. */
+#define MS_SIM_WAVE_DEPTH_FRAC 0.8f
+void ms_sim_waves_on_liquid(ms_sim *sim, const float *field);
 void ms_sim_combine(ms_sim *sim, const float *field, const float *wave, size_t stride, float *out,
                     float *avg);
 

@@ -21,7 +21,7 @@
 #include "volume/snapshot.h"
 
 #define MAGIC "MSSNAP\0\0"
-#define SNAP_VERSION 1u
+#define SNAP_VERSION 2u
 #define VERSION_LEN 32
 /* header offsets */
 enum {
@@ -67,24 +67,31 @@ static ms_status buf_io(ms_blob *b, const char *name, float *p, size_t count)
 /* The extraction snapshot of a slot (phase A, volume/extract.h). */
 static ms_status extract_io(ms_blob *b, ms_extract_snap *s, int max)
 {
-    int m = s->m;
+    int m = s->m, n = s->n_all;
     ms_status st;
     if ((st = MS_BLOB_IO(b, "sim.x.empty", s->empty)) ||
-        (st = ms_blob_count(b, "sim.x.m", &m, max)))
+        (st = ms_blob_count(b, "sim.x.m", &m, max)) ||
+        (st = ms_blob_count(b, "sim.x.n", &n, max)))
         return st;
-    if (b->reading && m > s->cap) {
-        float *q = ms_alloc_array((size_t)m * 3, sizeof(float));
+    if (b->reading && n < m)
+        return ms_fail(MS_ERR_PARSE, "sim: snapshot holds %d marked of %d particles; the marked "
+                       "are at most all", m, n);
+    if (b->reading && n > s->cap) {
+        float *q = ms_alloc_array((size_t)n * 3, sizeof(float));
         if (!q)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory restoring %d particles", m);
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory restoring %d particles", n);
         ms_free(s->x);
         s->x = q;
-        s->y = q + m;
-        s->z = q + 2 * (size_t)m;
-        s->cap = m;
+        s->y = q + n;
+        s->z = q + 2 * (size_t)n;
+        s->cap = n;
     }
-    if (b->reading)
+    if (b->reading) {
         s->m = m;
-    const size_t fb = (size_t)m * sizeof(float);
+        s->n_all = n;
+    }
+    /* the marked particles, then the others (extract.h) */
+    const size_t fb = (size_t)n * sizeof(float);
     if ((st = ms_blob_io(b, "sim.x.x", s->x, fb)) || (st = ms_blob_io(b, "sim.x.y", s->y, fb)) ||
         (st = ms_blob_io(b, "sim.x.z", s->z, fb)) || (st = MS_BLOB_IO(b, "sim.x.e", s->e)) ||
         (st = MS_BLOB_IO(b, "sim.x.iso", s->iso)) || (st = MS_BLOB_IO(b, "sim.x.R", s->R)) ||

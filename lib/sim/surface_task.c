@@ -145,6 +145,8 @@ void ms_sim_surface_task(void *arg)
             st = couple_from_volume(sim, h, dt, dt_step);
         if (st == MS_OK) /* N_time steps, in fused sweeps (the same bytes) */
             st = ms_surface_step_calls(sim->surface, dt_step, n_time);
+        if (st == MS_OK && h)
+            ms_sim_waves_on_liquid(sim, h);
         sim->wave_dt_last = dt_step;
     }
     double c1 = ms_now();

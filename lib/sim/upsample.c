@@ -258,11 +258,79 @@ void ms_sim_combine(ms_sim *sim, const float *field, const float *wave, size_t s
         const float *restrict w = wave + (size_t)j * stride;
         float *restrict o = out + (size_t)j * n;
 #pragma omp simd
-        for (int i = 0; i < n; ++i)
-            o[i] = (a[i] + wy * (b[i] - a[i])) + w[i] + add;
+        for (int i = 0; i < n; ++i) {
+            const float u = a[i] + wy * (b[i] - a[i]);           /* m, up(H) */
+            const float lim = MS_SIM_WAVE_DEPTH_FRAC * u;          /* m, >= 0 */
+            const float wc = w[i] < -lim ? -lim : (w[i] > lim ? lim : w[i]);
+            o[i] = u + wc + add;
+        }
         if (avg)
             avg_row(sim, &st, j, w, avg);
     }
     if (avg)
         avg_flush(sim, &st, avg);
+}
+
+/* The waves ride on the liquid (3.5): W is a perturbation of the SPH
+ * surface, so it lives only where up(H) holds liquid, and it carries no
+ * volume of its own. Once a frame, after the wave steps and before the sum:
+ *  - on a dry cell (up(H) = 0: the extraction found no liquid in the
+ *    column) W and its previous step are set to 0, so no wave runs over a
+ *    dry floor (a moved glass's ripples stayed on the floor around it);
+ *  - the mean of W over the wet, non-solid cells is taken out of W (its
+ *    last displacement v, the wave velocity, is kept). The coupling's
+ *    impulses are zero-mean over the SPH field, but the parts falling on
+ *    solid or dry cells are dropped, and the wave equation keeps a
+ *    uniform offset for ever (damping acts on the velocity): a spinning
+ *    paddle drove W's mean down by 3 cm a second, and with it the slopes;
+ *  - ms_sim_combine bounds what W adds: |W| <= MS_SIM_WAVE_DEPTH_FRAC of
+ *    the local depth up(H), so a trough never reaches the floor where
+ *    there is liquid: combined >= (1 - MS_SIM_WAVE_DEPTH_FRAC) up(H).
+ * Sums in double, row by row: the same bytes for any thread count. */
+void ms_sim_waves_on_liquid(ms_sim *sim, const float *field)
+{
+    ms_surface *s = sim->surface;
+    upsample_x(sim, field, sim->rowtmp);
+    const int n = sim->snx;
+    double sum = 0.0;
+    long wet = 0;
+    for (int j = 0; j < sim->sny; ++j) {
+        const float *restrict a = sim->rowtmp + (size_t)sim->iy0[j] * n;
+        const float *restrict b = sim->rowtmp + (size_t)sim->iy1[j] * n;
+        const float wy = sim->wy[j];
+        const size_t at = ms_surface_at(s, 0, j);
+        float *restrict h = s->h + at, *restrict v = s->v + at;
+        const unsigned char *solid = s->solid ? s->solid + at : NULL;
+        double rs = 0.0;
+        long rw = 0;
+        for (int i = 0; i < n; ++i) {
+            const float u = a[i] + wy * (b[i] - a[i]); /* m, up(H) */
+            if (!(u > 0.0f)) {
+                h[i] = 0.0f;
+                v[i] = 0.0f;
+            } else if (!solid || !solid[i]) {
+                rs += h[i];
+                rw++;
+            }
+        }
+        sum += rs;
+        wet += rw;
+    }
+    if (wet > 0) {
+        const float mean = (float)(sum / (double)wet);
+        for (int j = 0; j < sim->sny; ++j) {
+            const float *restrict a = sim->rowtmp + (size_t)sim->iy0[j] * n;
+            const float *restrict b = sim->rowtmp + (size_t)sim->iy1[j] * n;
+            const float wy = sim->wy[j];
+            const size_t at = ms_surface_at(s, 0, j);
+            float *restrict h = s->h + at;
+            const unsigned char *solid = s->solid ? s->solid + at : NULL;
+            for (int i = 0; i < n; ++i) {
+                const float u = a[i] + wy * (b[i] - a[i]);
+                if (u > 0.0f && (!solid || !solid[i]))
+                    h[i] -= mean;
+            }
+        }
+    }
+    s->view_dirty = 1;
 }

@@ -24,7 +24,7 @@
  *     steps = smooth_steps * (1 - e / smooth_energy)   for e < smooth_energy,
  *     steps = 0                                        above,
  * with e = E_kin / total mass (J/kg, so the threshold does not depend on
- * the particle count). A fractional step blends one more pass in, so the
+ * the particle count), E_kin taken about the mean velocity (flow_energy). A fractional step blends one more pass in, so the
  * field does not jump as e crosses an integer step. One pass is a 3 x 3
  * binomial filter over the cells that hold liquid (dry cells stay 0 and
  * do not pull the shore down); passes update the field in place row by
@@ -96,7 +96,19 @@ typedef struct mark_ctx {
     ms_volume *v;
     const float *low; /* per grid cell: the lowest surface particle in it and its neighbours */
     float reach;      /* h and a margin far above float round-off */
+    const float *top; /* per x-y column of the grid: the highest particle in it and the 8 around */
+    float band;       /* m: a particle this close below top is marked (TOP_BAND) */
 } mark_ctx;
+
+/* A particle within this many iso-radii plus a spacing below the highest
+ * particle of its 3 x 3 grid columns is marked whatever its neighbour
+ * count: the top layers of a liquid whatever its packing. The neighbour
+ * count alone misses them in a settled, disordered liquid (its top layer
+ * holds ~0.7 of an interior particle's neighbours, the surface test's
+ * 0.75 is within the noise), which left columns with no sphere and a
+ * hole to the floor. columns_verify below makes the field exact either
+ * way; the band only keeps it from having to repair every column. */
+#define TOP_BAND_R 1.0f
 
 /* mark[i] = 1 surface particle, 2 within h of one, 0 neither: a gather
  * over the neighbour lists of the last density pass (real neighbours; the
@@ -110,8 +122,10 @@ static void mark_part(void *ctxp, int part, int b, int e)
     ms_volume *v = ((mark_ctx *)ctxp)->v;
     const float *low = ((mark_ctx *)ctxp)->low, reach = ((mark_ctx *)ctxp)->reach;
     const ms_nlist *L = &v->lists[part];
+    const float *top = ((mark_ctx *)ctxp)->top, band = ((mark_ctx *)ctxp)->band;
+    const int gxy = v->gx * v->gy;
     for (int i = b; i < e; ++i) {
-        if (ms_volume_is_surface(v, i)) {
+        if (ms_volume_is_surface(v, i) || v->z[i] >= top[v->cell[i] % gxy] - band) {
             v->mark[i] = 1;
             continue;
         }
@@ -140,8 +154,10 @@ __attribute__((target("avx512f"))) static void mark_part_avx512(void *ctxp, int 
     const ms_nlist *L = &v->lists[part];
     const __m512 vh2 = _mm512_set1_ps(v->K.h2), vsn = _mm512_set1_ps(v->surface_nbrs);
     const __m512i none = _mm512_setzero_si512();
+    const float *top = ((mark_ctx *)ctxp)->top, band = ((mark_ctx *)ctxp)->band;
+    const int gxy = v->gx * v->gy;
     for (int i = b; i < e; ++i) {
-        if (ms_volume_is_surface(v, i)) {
+        if (ms_volume_is_surface(v, i) || v->z[i] >= top[v->cell[i] % gxy] - band) {
             v->mark[i] = 1;
             continue;
         }
@@ -1219,6 +1235,28 @@ ms_status ms_volume_extract_counts(ms_volume *v, int *for_step)
     return st;
 }
 
+/* Eq. 18's E_kin per unit mass (J/kg), taken relative to the liquid's
+ * mean velocity: the energy of the flow inside the liquid, not of the
+ * liquid carried as a whole. A glass of water moved at 0.2 m/s holds
+ * 0.02 J/kg of bulk motion, the default threshold, and its still surface
+ * went unsmoothed, showing every particle; a liquid at rest in its
+ * container is still whether or not the container moves. Sums in double
+ * in the internal order. */
+static double flow_energy(const ms_volume *v)
+{
+    double e = 0.0, px = 0.0, py = 0.0, pz = 0.0;
+    for (int i = 0; i < v->n; ++i) {
+        e += (double)v->vx[i] * v->vx[i] + (double)v->vy[i] * v->vy[i] +
+             (double)v->vz[i] * v->vz[i];
+        px += v->vx[i];
+        py += v->vy[i];
+        pz += v->vz[i];
+    }
+    const double n = v->n;
+    const double rel = e / n - (px * px + py * py + pz * pz) / (n * n);
+    return rel > 0.0 ? 0.5 * rel : 0.0;
+}
+
 /* Phase A (extract.h): mark, then copy the marked particles (internal
  * order of the volume, which the binning keeps) and the constants. */
 ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
@@ -1244,16 +1282,35 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
     /* per cell the lowest surface particle in it or the cells around it:
      * a 3 x 3 x 3 minimum, one axis at a time (a particle's cell is never
      * on the grid's padding, so the neighbours of the cells read exist) */
-    const size_t nc = (size_t)v->ncells;
-    if (2 * nc > s->cells_cap) {
-        float *c = ms_alloc_array(2 * nc, sizeof(float));
+    const size_t nc = (size_t)v->ncells, nxy = (size_t)v->gx * (size_t)v->gy;
+    if (2 * nc + 2 * nxy > s->cells_cap) {
+        float *c = ms_alloc_array(2 * nc + 2 * nxy, sizeof(float));
         if (!c)
             return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for height extraction");
         ms_free(s->cells);
         s->cells = c;
-        s->cells_cap = 2 * nc;
+        s->cells_cap = 2 * nc + 2 * nxy;
     }
     float *low = s->cells, *t = s->cells + nc;
+    /* per x-y column of the grid the highest particle, then the 3 x 3
+     * maximum (a particle's x-y column is never on the padding) */
+    float *ctop = s->cells + 2 * nc, *top = ctop + nxy;
+    for (size_t c = 0; c < nxy; ++c)
+        ctop[c] = top[c] = -INFINITY;
+    for (int i = 0; i < v->n; ++i) {
+        const size_t c = (size_t)v->cell[i] % nxy;
+        ctop[c] = v->z[i] > ctop[c] ? v->z[i] : ctop[c];
+    }
+    for (int cy = 1; cy + 1 < v->gy; ++cy)
+        for (int cx = 1; cx + 1 < v->gx; ++cx) {
+            float mx = -INFINITY;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const float z = ctop[(size_t)(cy + dy) * v->gx + cx + dx];
+                    mx = z > mx ? z : mx;
+                }
+            top[(size_t)cy * v->gx + cx] = mx;
+        }
     for (size_t c = 0; c < nc; ++c)
         low[c] = INFINITY;
     for (int i = 0; i < v->n; ++i) {
@@ -1277,7 +1334,11 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
         }
     }
     /* |dz| <= r for a neighbour at r < h: h and a 64th */
-    mark_ctx mc = {.v = v, .low = t, .reach = v->K.h * (1.0f + 1.0f / 64.0f)};
+    mark_ctx mc = {.v = v,
+                   .low = t,
+                   .reach = v->K.h * (1.0f + 1.0f / 64.0f),
+                   .top = top,
+                   .band = TOP_BAND_R * v->K.h + v->desc.spacing};
     ms_vpool_fn *mark = mark_part;
 #if MS_VOLUME_HAVE_AVX512
     if (v->isa == MS_VOLUME_ISA_AVX512)
@@ -1287,8 +1348,8 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
     int m = 0;
     for (int i = 0; i < v->n; ++i)
         m += v->mark[i] != 0;
-    if (m > s->cap) {
-        int cap = v->n; /* m <= n: room for all (i15: steps do not allocate) */
+    if (v->n > s->cap) {
+        int cap = v->n; /* all, marked first (steps do not allocate) */
         float *q = ms_alloc_array((size_t)cap * 3, sizeof(float));
         if (!q)
             return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for height extraction");
@@ -1298,17 +1359,17 @@ ms_status ms_volume_extract_snap(ms_volume *v, ms_extract_snap *s)
         s->z = q + 2 * (size_t)cap;
         s->cap = cap;
     }
+    /* the marked particles, then the others (columns_verify's repairs) */
     float *restrict x = s->x, *restrict y = s->y, *restrict z = s->z;
-    for (int i = 0, k = 0; i < v->n; ++i) {
-        if (!v->mark[i])
-            continue;
-        x[k] = v->x[i];
-        y[k] = v->y[i];
-        z[k] = v->z[i];
-        k++;
+    for (int i = 0, k = 0, u = m; i < v->n; ++i) {
+        const int q = v->mark[i] ? k++ : u++;
+        x[q] = v->x[i];
+        y[q] = v->y[i];
+        z[q] = v->z[i];
     }
     s->m = m;
-    s->e = ms_volume_kinetic_energy(v) / ((double)v->mass * v->n); /* eq. 18, J/kg */
+    s->n_all = v->n;
+    s->e = flow_energy(v); /* eq. 18, J/kg */
     return MS_OK;
 }
 
@@ -1340,6 +1401,10 @@ void ms_extract_work_free(ms_extract_work *w)
     ms_free(w->list);
     ms_free(w->buf);
     ms_free(w->cell);
+    ms_free(w->vtop);
+    ms_free(w->vbuf);
+    ms_free(w->vstart);
+    ms_free(w->vlist);
     memset(w, 0, sizeof *w);
 }
 
@@ -1350,7 +1415,8 @@ size_t ms_extract_snap_bytes(const ms_extract_snap *s)
 
 size_t ms_extract_work_bytes(const ms_extract_work *w)
 {
-    return (w->start_cap + w->list_cap) * sizeof(int) + (w->buf_cap + w->cell_cap) * sizeof(float);
+    return (w->start_cap + w->list_cap + w->vstart_cap + w->vlist_cap) * sizeof(int) +
+           (w->buf_cap + w->cell_cap + w->vtop_cap + w->vbuf_cap) * sizeof(float);
 }
 
 /* Eq. 18: the smoothing passes from E_kin / total mass, the last one
@@ -1572,6 +1638,154 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     return MS_OK;
 }
 
+/* The columns the marked particles cannot decide, searched again over
+ * every particle. phi is a sum of non-negative terms, so the marked
+ * spheres' phi_m <= phi everywhere, and phi_m = phi at every height more
+ * than R above the highest unmarked particle within R of the column (B).
+ * A column whose crossing zr of phi_m lies above B + R (with a margin for
+ * the root's tolerance) therefore has the same topmost crossing with
+ * every particle: nothing above zr reaches T, and phi(zr) = phi_m(zr) >= T.
+ * Any other column (a crossing within R of an unmarked particle, or no
+ * crossing with particles near: a sheet thinner than the walk's
+ * half-spacing steps, as a dam break's front, is stepped over) is searched
+ * again over all the particles by fine_height, whose walk takes a 32nd of
+ * a spacing. So the field is eq. 16's over every particle, whatever the
+ * marking; the marking decides only how many columns need the second
+ * search. B is a
+ * maximum over a box of bins of half-width ceil(R / cell) + 1, which holds
+ * every particle within R of the column and every wall image within R (an
+ * image is within R of a column only if its particle is). Runs on the
+ * calling thread: one column's result does not depend on the others or on
+ * the rectangle, so the bytes are those of any split. */
+/* The topmost crossing of a column's candidates (column_candidates) by a
+ * walk down from the highest sphere top in steps of a 32nd of a spacing,
+ * then bisection to a 256th: m above the floor, 0 if phi never reaches T. */
+static float fine_height(const ms_extract_snap *s, const float *cz, const float *ca, int mc,
+                         float zlow)
+{
+    const float R = s->R, inv_r2 = 1.0f / (R * R), T = s->iso;
+    const float step = s->spacing / 32.0f, tol = s->spacing / 256.0f;
+    float top = -INFINITY;
+    for (int k = 0; k < mc; ++k)
+        if (ca[k] > 0.0f)
+            top = fmaxf(top, cz[k] + R * sqrtf(ca[k]));
+    for (float z = top; z >= zlow; z -= step) {
+        if (phi_at(cz, ca, mc, z, inv_r2) < T)
+            continue;
+        float zb = z, za = z + step; /* phi(zb) >= T > phi(za) */
+        while (za - zb > tol) {
+            const float zm = 0.5f * (za + zb);
+            if (!(zm > zb && zm < za))
+                break;
+            if (phi_at(cz, ca, mc, zm, inv_r2) >= T)
+                zb = zm;
+            else
+                za = zm;
+        }
+        return fminf(fmaxf(0.5f * (za + zb) - s->lo[2], 0.0f), s->hi[2] - s->lo[2]);
+    }
+    return 0.0f;
+}
+
+static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, int nx, int ny,
+                                int i0, int j0, int rw, int rh, float *raw)
+{
+    const int m = s->m, n = s->n_all;
+    const size_t cells = (size_t)nx * ny;
+    const float *lo = s->lo, *hi = s->hi;
+    const float dxe = (hi[0] - lo[0]) / (float)nx, dye = (hi[1] - lo[1]) / (float)ny;
+    const float R = s->R, margin = s->spacing / 8.0f; /* > the searches' tolerance */
+    const int bx_r = (int)ceilf(R / dxe) + 1, by_r = (int)ceilf(R / dye) + 1;
+    /* all the scratch at once, before any column needs it, so a run's
+     * later frames allocate nothing (sized for the snapshot's capacity) */
+    const size_t ncap = (size_t)s->cap;
+    const size_t cand_stride = 8 * (ncap + MS_VOLUME_LANES);
+    ms_status st = scratch((void **)&w->vtop, &w->vtop_cap, 4 * cells, sizeof(float));
+    if (st == MS_OK)
+        st = scratch((void **)&w->vstart, &w->vstart_cap, 2 * (cells + 1), sizeof(int));
+    if (st == MS_OK)
+        st = scratch((void **)&w->vlist, &w->vlist_cap,
+                     ncap + 2 * (size_t)ceilf(R / dye) + 1, sizeof(int));
+    if (st == MS_OK)
+        st = scratch((void **)&w->vbuf, &w->vbuf_cap, 3 * ncap + cand_stride, sizeof(float));
+    if (st != MS_OK)
+        return st;
+    /* per bin the highest unmarked particle (ub) and whether any particle
+     * lies in it (ab), then their box maxima (ut, at) */
+    float *ub = w->vtop, *ut = ub + cells, *ab = ut + cells, *at = ab + cells;
+    for (size_t c = 0; c < cells; ++c)
+        ub[c] = ab[c] = -INFINITY;
+    for (int k = 0; k < n; ++k) {
+        const int ix = (int)clampf((s->x[k] - lo[0]) / dxe, 0.0f, (float)(nx - 1));
+        const int iy = (int)clampf((s->y[k] - lo[1]) / dye, 0.0f, (float)(ny - 1));
+        const size_t c = (size_t)iy * nx + ix;
+        ab[c] = 0.0f;
+        if (k >= m)
+            ub[c] = s->z[k] > ub[c] ? s->z[k] : ub[c];
+    }
+    for (int j = 0; j < ny; ++j)
+        for (int i = i0; i < i0 + rw; ++i) {
+            float mu = -INFINITY, ma = -INFINITY;
+            for (int q = MS_MAX(i - bx_r, 0); q <= MS_MIN(i + bx_r, nx - 1); ++q) {
+                mu = ub[(size_t)j * nx + q] > mu ? ub[(size_t)j * nx + q] : mu;
+                ma = ab[(size_t)j * nx + q] > ma ? ab[(size_t)j * nx + q] : ma;
+            }
+            ut[(size_t)j * nx + i] = mu;
+            at[(size_t)j * nx + i] = ma;
+        }
+    int bad = 0;
+    for (int j = j0; j < j0 + rh; ++j)
+        for (int i = i0; i < i0 + rw; ++i) {
+            float b = -INFINITY, a = -INFINITY;
+            for (int q = MS_MAX(j - by_r, 0); q <= MS_MIN(j + by_r, ny - 1); ++q) {
+                b = ut[(size_t)q * nx + i] > b ? ut[(size_t)q * nx + i] : b;
+                a = at[(size_t)q * nx + i] > a ? at[(size_t)q * nx + i] : a;
+            }
+            float *h = raw + (size_t)(j - j0) * rw + (i - i0);
+            /* a dry column with particles near may be a thin sheet the
+             * walk's half-spacing steps went over: searched again too */
+            const int ok = *h > 0.0f ? b == -INFINITY || *h + lo[2] - R - margin >= b
+                                     : a == -INFINITY;
+            if (!ok) {
+                *h = -1.0f; /* to be searched again */
+                bad++;
+            }
+        }
+    if (!bad)
+        return MS_OK;
+    /* every particle binned on the field (the reference's bins) */
+    int *cstart = w->vstart, *cfill = w->vstart + cells + 1, *ckey = w->vlist;
+    int *reach = w->vlist + ncap;
+    float *vx = w->vbuf, *vy = vx + ncap, *vz = vy + ncap, *cz = vz + ncap;
+    float *ca = cz + cand_stride / 2;
+    memset(cfill, 0, cells * sizeof *cfill);
+    for (int k = 0; k < n; ++k) {
+        const int ix = (int)clampf((s->x[k] - lo[0]) / dxe, 0.0f, (float)(nx - 1));
+        const int iy = (int)clampf((s->y[k] - lo[1]) / dye, 0.0f, (float)(ny - 1));
+        ckey[k] = iy * nx + ix;
+        cfill[ckey[k]]++;
+    }
+    bin_scatter(ckey, n, cells, s->x, s->y, s->z, cstart, cfill, vx, vy, vz);
+    column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
+                     .dye = dye, .cstart = cstart, .bx = vx, .by = vy, .bz = vz};
+    for (int j = j0; j < j0 + rh; ++j) {
+        int row_done = 0;
+        for (int i = i0; i < i0 + rw; ++i) {
+            float *h = raw + (size_t)(j - j0) * rw + (i - i0);
+            if (*h >= 0.0f)
+                continue;
+            if (!row_done) {
+                row_reaches(&cc, j, reach);
+                row_done = 1;
+            }
+            float zmax, zlow;
+            const int mc = column_candidates(&cc, i, j, reach, 0, cz, ca, &zmax, &zlow);
+            *h = fine_height(s, cz, ca, mc, zlow);
+        }
+    }
+    return MS_OK;
+}
+
 /* One eq. 18 pass over the rectangle (rw x rh) from pad (the field,
  * zero-padded), weighted by f; dry cells keep their 0 (selected, not
  * skipped: vectorises; one operation at a time, so every width gives
@@ -1622,6 +1836,8 @@ static ms_status extract_rect(const ms_extract_snap *s, ms_extract_work *w, ms_v
     ms_status st = s->reference
                        ? columns_reference(s, w, pool, nx, ny, i0, j0, rw, rh, &raw, &tmp, &blend)
                        : columns_band(s, w, pool, nx, ny, i0, j0, rw, rh, &raw, &tmp, &blend);
+    if (st == MS_OK)
+        st = columns_verify(s, w, nx, ny, i0, j0, rw, rh, raw);
     if (st != MS_OK)
         return st;
 
@@ -1713,9 +1929,13 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
         return st;
     ms_extract_snap s = {0};
     /* the volume's scratch serves as phase B's */
-    ms_extract_work w = {.start = v->ex_start, .list = v->ex_list, .buf = v->ex_buf,
-                         .start_cap = v->ex_start_cap, .list_cap = v->ex_list_cap,
-                         .buf_cap = v->ex_cap};
+    ms_extract_work w = v->ex_verify;
+    w.start = v->ex_start;
+    w.list = v->ex_list;
+    w.buf = v->ex_buf;
+    w.start_cap = v->ex_start_cap;
+    w.list_cap = v->ex_list_cap;
+    w.buf_cap = v->ex_cap;
     st = ms_volume_extract_snap(v, &s);
     if (st == MS_OK)
         st = ms_extract_field(&s, &w, v->pool, nx, ny, out);
@@ -1728,6 +1948,10 @@ ms_status ms_volume_extract_height(ms_volume *v, int nx, int ny, float *out)
     v->ex_list_cap = w.list_cap;
     v->ex_cap = w.buf_cap;
     assert(!w.cell);
+    w.start = w.list = NULL;
+    w.buf = NULL;
+    w.start_cap = w.list_cap = w.buf_cap = 0;
+    v->ex_verify = w; /* the repairs' scratch */
     ms_extract_snap_free(&s);
     return st;
 }

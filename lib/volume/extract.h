@@ -22,8 +22,10 @@ typedef struct ms_vpool ms_vpool;
 typedef struct ms_extract_snap {
     int empty;           /* the volume held no particle: the field is 0 */
     int m, cap;          /* marked particles, capacity of x, y, z */
-    float *x, *y, *z;    /* m, the marked particles (stable order of the volume) */
-    double e;            /* J/kg, E_kin / total mass (eq. 18) */
+    int n_all;           /* all the particles: x, y, z hold the m marked ones
+                            (stable order of the volume), then the others */
+    float *x, *y, *z;    /* m */
+    double e;            /* J/kg, E_kin / total mass about the mean velocity (eq. 18) */
     float iso;           /* T, the iso-level of phi (eq. 16) */
     float R;             /* m, iso-radius = h */
     float spacing;       /* m */
@@ -43,6 +45,10 @@ typedef struct ms_extract_work {
     size_t start_cap, list_cap;
     float *buf, *cell; /* cell: ms_extract_cell's rectangle */
     size_t buf_cap, cell_cap;
+    /* the columns searched again over every particle (extract.c) */
+    float *vtop, *vbuf;
+    int *vstart, *vlist;
+    size_t vtop_cap, vbuf_cap, vstart_cap, vlist_cap;
 } ms_extract_work;
 
 /* Phase A: the snapshot of v at its current positions (rebuilds the

@@ -154,6 +154,7 @@ void ms_volume_destroy(ms_volume *v)
     ms_free(v->ex_buf);
     ms_free(v->ex_start);
     ms_free(v->ex_list);
+    ms_extract_work_free(&v->ex_verify);
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p) {
         ms_free(v->lists[p].idx);
         ms_free(v->lists[p].r2);
@@ -477,7 +478,7 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
     out->bytes = sizeof *v + (size_t)v->cap * per +
                  ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
                  v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int) +
-                 v->grid_hist_cap * sizeof(int);
+                 v->grid_hist_cap * sizeof(int) + ms_extract_work_bytes(&v->ex_verify);
     if (v->pub)
         out->bytes += (size_t)v->cap * 6 * sizeof(float);
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p)

@@ -31,6 +31,7 @@
 #include "core/core_internal.h"
 #include "modesplit/shape.h"
 #include "modesplit/volume.h"
+#include "volume/extract.h"
 #include "volume/kernels.h"
 
 #define MS_VOLUME_MAX_COLLIDERS 64
@@ -220,6 +221,7 @@ struct ms_volume {
     size_t ex_cap;
     int *ex_start, *ex_list;
     size_t ex_start_cap, ex_list_cap;
+    ms_extract_work ex_verify; /* its repairs' scratch (start, list, buf unused) */
 
     int isa;             /* MS_VOLUME_ISA_* of the neighbour filter */
     ms_vpool *pool;
