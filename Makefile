@@ -378,7 +378,7 @@ accuracy: all
 # The two long cases run side by side (one core each); both must pass.
 check-long: all $(BUILD)/tests/test_stability
 	@skips=$(abspath $(BUILD))/skipped-long.txt; rm -f $$skips; pids=; \
-	for c in coupled_top_gains coupled_every_scene; do \
+	for c in coupled_top_gains coupled_every_scene still_pool; do \
 	    MS_TEST_LONG=1 CK_RUN_CASE=$$c MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) \
 	        MS_TEST_SKIP_FILE=$$skips $(BUILD)/tests/test_stability & pids="$$pids $$!"; \
 	done; fail=0; for p in $$pids; do wait $$p || fail=1; done; \
