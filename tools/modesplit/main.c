@@ -1,6 +1,6 @@
 /* modesplit: run scenes, inspect run files, validate scenes, list plugins.
  * main() dispatches to one cmd_*.c per command; the usage text here is the
- * reference (README.md repeats it). */
+ * reference (docs/tool.md repeats it). */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
