@@ -45,6 +45,16 @@ ROUND="\\b[Rr]ounds? $NUMBER\\b"
 BRANCH='\b[ir][0-9]{1,2}[a-z]?-[a-z][a-z0-9]*(-[a-z0-9]+)*\b'
 ISSUE='\b[Ii]ssues? #?[0-9]+|\(i[0-9]+[:)]'
 PATTERN="$ROUND|$BRANCH|$ISSUE"
+# the same citations wrapped across two lines ("... round" / " * thirteen")
+WRAPPED_END='([Rr]ounds?|[Ii]ssues?)[ \t]*$'
+WRAPPED_START="^[ \t*#/\"]*(#?[0-9]+|$(echo "$NUMBER" | tr -d '()'))([^A-Za-z0-9]|\$)"
+
+# wrapped FILE: prints FILE:LINE: for a citation split over two lines
+wrapped() {
+    awk -v f="$1" -v e="$WRAPPED_END" -v s="$WRAPPED_START" \
+        'NR > 1 && prev ~ e && $0 ~ s { print f ":" NR - 1 ": " prev " / " $0; found = 1 }
+         { prev = $0 } END { exit !found }' "$1"
+}
 
 self="$(cd "$(dirname "$0")" && pwd)/$(basename "$0")"
 
@@ -67,11 +77,14 @@ check() {
             [ "$f" = "$e" ] && exempt=1
         done
         if [ $exempt -eq 1 ]; then
-            hits=$(cd "$root" && grep -cE "$PATTERN" "$f" || true)
+            hits=$(cd "$root" && { grep -E "$PATTERN" "$f"; wrapped "$f"; } | wc -l)
             exempt_hits="$exempt_hits $f:$hits"
             continue
         fi
         if (cd "$root" && grep -nHE "$PATTERN" "$f"); then
+            status=1
+        fi
+        if (cd "$root" && wrapped "$f"); then
             status=1
         fi
     done
@@ -121,6 +134,9 @@ self_test() {
     expect FAIL tools/t.sh "# $(printf 'iss%s 28' ue): the list"
     expect FAIL include/m.h "/* caps $(printf '(i%s:' 15) no allocation) */"
     expect FAIL CHANGELOG.md "- faster extraction ($(printf 'Iss%s 12' ue))"
+    expect FAIL lib/x/b.c "$(printf '/* measured until %s\n * thirteen */' "$r")"
+    expect FAIL lib/x/b.c "$(printf '/* allocates nothing (is%s\n * 15) */' sue)"
+    expect OK lib/x/b.c "$(printf '/* the lane sums %s\n * to nearest */' "$r")"
     expect OK lib/x/a.c "/* round-off only; rounds to nearest; the issue is the order */"
     expect OK README.md "orbit round the target; x86-64; r2 = x * x"
     # a README one line over the bound fails, at the bound passes

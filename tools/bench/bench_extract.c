@@ -1,12 +1,11 @@
-/* Extraction benchmark (eqs. 16-18, issue 12's goal: < 0.3 ms a frame on
- * fig1): ms per ms_volume_extract_height call of a scene's volume after
+/* Extraction benchmark (eqs. 16-18): ms per ms_volume_extract_height call of a scene's volume after
  * 100 frames of the scene (the liquid in motion), at the scene's field
  * size, with 1 and 2 threads. With 2, a second thread of this program
  * lends itself to the volume's pool during the timed calls (as a 2-thread
  * sim's surface thread does while the volume steps, ms_vpool_help), so
  * phase B's columns run on both; without it the sim's pool has no
- * thread of its own outside a step and the call ran on one (until round
- * thirteen the 2-thread row timed exactly that: the 1-thread figure).
+ * thread of its own outside a step and the call would run on one (the
+ * 1-thread figure again).
  * Median and 10th/90th percentiles of
  * the repeats; cpu_ms, the calling thread's CPU time per call (the cost
  * of a 1-thread call on a loaded machine; with 2 threads the helper's

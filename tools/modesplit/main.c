@@ -317,7 +317,7 @@ static int dispatch(int argc, char **argv)
         return cmd_plugins(argc - 1, argv + 1);
     if (!strcmp(cmd, "accuracy"))
         return cmd_accuracy(argc - 1, argv + 1);
-    /* the renderer's commands (issue 14) */
+    /* the renderer's commands */
     if (!strcmp(cmd, "render"))
         return cmd_render(argc - 1, argv + 1);
     if (!strcmp(cmd, "cubemap"))
