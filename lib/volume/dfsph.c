@@ -491,7 +491,7 @@ __attribute__((target("avx512f"))) static inline float divergence_real_avx512(
  * (from v->df_s, which pk[3] copies) in place of sixteen 16-byte record
  * loads and their transpose, three of whose four values it never used.
  * Measured in one process, the two alternating on the same state (fig1
- * under DFSPH, 2500 update passes, loaded machine): 0.88x the time of
+ * under DFSPH, 2500 update passes): 0.88x the time of
  * the record loads. Values are moved, never computed: the same bits.
  * Inline, so that GCC inlines it into dfsph_part's AVX-512 clone (it
  * cannot into the others), which is flattened (below). */

@@ -12,8 +12,8 @@
  * share is not in it); and "sim", the sim's own extract_ms per frame over 30 frames
  * (phase A with its neighbour recount, the particle copy, phase B; the
  * mean, one run). Each case runs twice, interleaved repeat by repeat,
- * both with the best gather of the CPU: the reference search (663cc3c's
- * code, ms_extract_snap.reference) and the band search (the default);
+ * both with the best gather of the CPU: the reference search (the column
+ * search the band search replaced, ms_extract_snap.reference) and the band search (the default);
  * "x" is the reference median over the band median. max_dh: the largest
  * |band - reference| of a cell over the 100 frames (phase B of each
  * frame's snapshot both ways, 1 thread), in m and in spacings. Writes
@@ -146,7 +146,7 @@ int main(int argc, char **argv)
             if (!h || !h2)
                 return 1;
             enum { REPEATS = 31 };
-            /* the searches to compare: the reference (663cc3c) and the band */
+            /* the searches to compare: the reference and the band */
             double t[2][REPEATS], tc[2][REPEATS];
             ms_extract_snap snap = {0};
             ms_extract_work work = {0};
