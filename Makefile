@@ -39,7 +39,7 @@ HAVE_OSMESA := $(shell $(PKG_CONFIG) --exists osmesa 2>/dev/null && echo 1 || ec
 ifeq ($(HAVE_OSMESA),1)
 LIB_PKGS  += osmesa
 endif
-# The renderer's second GL path (issue 14): EGL (surfaceless Mesa or a
+# The renderer's second GL path: EGL (surfaceless Mesa or a
 # GPU's EGL), beside or instead of OSMesa; `make HAVE_EGL=0` or
 # `make HAVE_OSMESA=0` builds with one only. With OSMesa the gl* entry
 # points come from libOSMesa (they dispatch through Mesa's shared glapi,
@@ -111,9 +111,9 @@ TESTS     := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 # (the rest is single-threaded and only gets 10-40x slower under TSan);
 # `make check SAN=tsan` names them when it starts.
 TSAN_SUITES ?= core plugin sim determinism api
-# issue 12 (work sharing): the shared pool's helper thread
+# the volume's shared pool and its helper thread
 TSAN_SUITES += pool
-# issue 14 (speed): the tool's PNG writer thread (run / render --png)
+# the tool's PNG writer thread (run / render --png)
 TSAN_SUITES += render_tool
 ifeq ($(SAN),tsan)
 TESTS     := $(filter $(TSAN_SUITES:%=$(BUILD)/tests/test_%),$(TESTS))
@@ -196,7 +196,7 @@ $(BUILD)/bin/%: $(BUILD)/obj/tools/bench/%.o $(STATIC)
 	@echo "  LD      $@"
 	$(Q)$(CC) $(LDSAN) -o $@ $< $(STATIC) $(SYS_LIBS)
 
-# modesplit view (issue 16): the window is SDL2's, optional like OSMesa;
+# modesplit view: the window is SDL2's, optional like OSMesa;
 # without it `modesplit view` says so and exits 2. The tool links no
 # OpenGL library (the viewer takes its few GL calls from the window's
 # context). tests/test_view also links the viewer's SDL-free parts.
@@ -236,7 +236,7 @@ deps:
 # Every suite runs even if one fails; the target fails if any did.
 check: deps
 	@$(MAKE) --no-print-directory all tests
-	@$(MAKE) --no-print-directory check-headers check-exports check-readme
+	@$(MAKE) --no-print-directory check-headers check-exports check-readme check-docs
 	@$(MAKE) --no-print-directory check-abi
 	@$(MAKE) --no-print-directory check-bench-figures
 	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS))";) \
@@ -268,7 +268,15 @@ check-exports: $(SHARED)
 check-readme: $(STATIC)
 	@CC="$(CC) $(LDSAN)" MS_LIBS="$(SYS_LIBS)" tests/check_readme.sh $(BUILD)
 
-# The renderer's golden pictures (issue 14): tests/data/golden/<scene>.png,
+# README.md, CHANGELOG.md, docs/ and the sources' comments cite no work
+# round, branch or issue number, and the README stays a guide (<= 400
+# lines); the self-test plants such lines and expects the check to fail.
+.PHONY: check-docs
+check-docs:
+	@tests/check_docs.sh --self-test
+	@tests/check_docs.sh
+
+# The renderer's golden pictures: tests/data/golden/<scene>.png,
 # compared with a tolerance by test_render; written afresh only here, on
 # purpose, so a change of the look is a visible diff in review.
 # And the golden hash of a fixed scene's fields (tests/data/golden_hash.txt,
@@ -280,7 +288,7 @@ golden: $(BUILD)/tests/test_render $(BUILD)/tests/test_determinism plugins
 	@echo "golden: wrote tests/data/golden_hash.txt"
 
 
-# ---- the ABI listing and the Python package (issue 13) -----------------------
+# ---- the ABI listing and the Python package ----------------------------------
 # tools/abi/abi.json lists every public function (C signature, exported or
 # not), struct (size, field offsets) and enum value, from the headers, the
 # compiler and `nm -D` of the library; the Python package builds its ctypes
@@ -309,13 +317,13 @@ check-python: all
 	$(Q)PYTHONPATH=$(abspath tools/python) MODESPLIT_LIB=$(abspath $(BUILD))/lib/libmodesplit.so MODESPLIT_BUILD=$(abspath $(BUILD)) \
 	    $(PY_SAN) $(PYTHON) -m pytest -q -rs tools/python/tests $(PY_SAN_ARGS) $(MS_PYTEST_ARGS)
 
-# Issue 17: ParaView (pvpython, Debian's 5.11) opens the runs the tool
+# ParaView (pvpython, Debian's 5.11) opens the runs the tool
 # writes, with its default reader and the legacy one (tests/paraview/).
 # Needs pvpython + xvfb-run; skipped (exit 77) without them, failed in CI.
 check-paraview: all
 	@tests/paraview/check.sh $(BUILD)
 
-# Issue 17: `modesplit export --usd` read back with pxr (tools/usd_tests/).
+# `modesplit export --usd` read back with pxr (tools/usd_tests/).
 # USD_VENV=1 (CI) pip-installs usd-core, h5py, numpy, pytest into $(BUILD)/venv-usd.
 check-usd: all
 	@tools/usd_tests/check.sh $(BUILD) $(if $(filter 1,$(USD_VENV)),--venv)
@@ -344,7 +352,7 @@ install: all
 	sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@VERSION@|$(VERSION)|g' \
 	    -e 's|@REQUIRES@|$(LIB_PKGS)|g' tools/modesplit.pc.in \
 	    > $(DESTDIR)$(PREFIX)/lib/pkgconfig/modesplit.pc
-	# issue 17: the scenes, the man page and the USD exporter under share/
+	# the scenes, the man page and the USD exporter under share/
 	install -d $(DESTDIR)$(PREFIX)/share/modesplit/scenes $(DESTDIR)$(PREFIX)/share/man/man1 \
 	    $(DESTDIR)$(PREFIX)/share/modesplit/python/modesplit
 	install -m 644 data/scenes/*.json data/scenes/README.md $(DESTDIR)$(PREFIX)/share/modesplit/scenes/
@@ -362,7 +370,7 @@ uninstall:
 clean:
 	rm -rf build build-asan build-tsan demo
 
-# ---- issue 11: the accuracy study and the long stability runs ----
+# ---- the accuracy study and the long stability runs ----
 # make accuracy     the full study of `modesplit accuracy` (both cores, one
 #                   case per job), committed in data/accuracy/
 # make check-long   the coupled long runs of tests/test_stability.c (fig1 and
@@ -390,7 +398,7 @@ check-long: all $(BUILD)/tests/test_stability
 # Plugins include plugins/common/*.h: their dependency files too.
 -include $(wildcard $(BUILD)/plugins/*.d)
 
-# ---- issue 15: the clang build (CI) ----
+# ---- the clang build (CI) ----
 # check-clang: the library, plugins, tools and tests compile with clang and
 # the same -Werror warnings (build-clang/); .ci/run runs it, so a warning
 # only clang gives fails CI. It needs a CI-only tool (clang: tools/deps.sh
@@ -401,20 +409,20 @@ check-clang:
 	@$(MAKE) --no-print-directory CC=clang BUILD=build-clang all tests
 	@echo "check-clang: library, plugins, tools and tests build with clang -Werror (build-clang/)"
 
-# ---- issue 15: README speed figures against the committed bench CSVs ----
+# ---- the speed figures of README.md and docs/performance.md ----
 # data/bench/*.csv: one `make bench` on a quiet machine (data/bench/README.md
-# names it). README.md links each figure it quotes to its CSV row, or
-# generates a table from them; check-bench-figures (in `make check`) fails
-# when one differs. After a deliberate `make bench` on a quiet machine:
+# names it). README.md and docs/performance.md link each figure they quote
+# to its CSV row, or generate a table from them; check-bench-figures (in
+# `make check`) fails when one differs. After a deliberate `make bench` on a quiet machine:
 # `make bench-commit` copies bench/*.csv there and rewrites the figures.
 .PHONY: check-bench-figures bench-commit
 check-bench-figures:
 	$(Q)$(PYTHON) tools/bench/test_figures.py
-	$(Q)$(PYTHON) tools/bench/figures.py --check README.md
+	$(Q)$(PYTHON) tools/bench/figures.py --check README.md docs/performance.md
 bench-commit:
 	$(Q)$(PYTHON) tools/bench/figures.py --commit bench
 
-# ---- issue 15: the layout of changed lines (CI) ----
+# ---- the layout of changed lines (CI) ----
 # format-check: the C lines changed since a base (tools/format_check.sh says
 # which) follow .clang-format. It needs a CI-only tool (clang-format:
 # tools/deps.sh --ci), so it is not part of `make check`; .ci/run runs it.
@@ -422,10 +430,9 @@ bench-commit:
 format-check:
 	@tools/format_check.sh
 
-# ---- issue 12, round nine: a one-process A/B of two library builds ----
+# ---- a one-process A/B of two library builds ----
 # build/bin/volume_ab A.so B.so dam N REPS | scene FILE REPS | peer FRAMES
-# REPS (round twelve: bench_dfsph --peer's DFSPH scene, whole runs in
-# turn): both builds dlmopen'ed, sub-steps, frames or runs in turn
+# REPS (peer: bench_dfsph --peer's DFSPH scene, whole runs in turn): both builds dlmopen'ed, sub-steps, frames or runs in turn
 # (tools/ab/volume_ab.c). Not part
 # of `all` or `bench`: `make volume-ab`.
 .PHONY: volume-ab

@@ -105,8 +105,8 @@ START_TEST(surface_steps_allocate_nothing_after_the_first)
 }
 END_TEST
 
-/* A running scene allocates nothing in any frame after the first (issue
- * 15), at 1 and 2 threads: the first frame makes every block the pipeline
+/* A running scene allocates nothing in any frame after the first, at 1
+ * and 2 threads: the first frame makes every block the pipeline
  * uses at its largest (both snapshot slots, the extraction scratch, the
  * drag's one-cell extraction), create makes the boat's path, the drag
  * dent's room and the volume's wave record, and the first density pass

@@ -1,5 +1,5 @@
-/* Caustics on the objects under the water (issue 14; section 3.6 lights
- * only the floor): the tracer carries the light through the water at
+/* Caustics on the objects under the water (section 3.6 lights only the
+ * floor): the tracer carries the light through the water at
  * heights between the floor and the surface too (ms_caustics.layers), and
  * the light at a height is the light a floor at that height would get; an
  * obstacle shades the floor where the refracted sun meets it first; drawn,

@@ -1,4 +1,4 @@
-/* Caustics on the pool's walls (issue 14; section 3.6 traces the floor):
+/* Caustics on the pool's walls (section 3.6 traces the floor only):
  * light that the refracted sun carries past the floor's edge lands on the
  * walls facing the sun, at the irradiance Snell's law gives a vertical
  * wall, none on the walls in shadow; floor and walls together keep all the

@@ -254,7 +254,7 @@ START_TEST(a_moving_glass_carries_its_liquid)
         /* none in its wall where the step left it: the shape at its end
          * pose (the next frame sets the same pose again). Counted at the
          * start pose, liquid 0.25 mm "inside" showed up as the summation
-         * order (issue 12, round nine) or a 1-ulp change of gravity moved
+         * order of the sums or a 1-ulp change of gravity moved
          * the particles: a read-out artifact, 0 at the end pose. */
         ms_shape_set_pose(glass, (float[3]){x, 0.2f, 0.0f}, (float[3]){u, 0, 0});
         ck_assert_int_eq(inside_count(v, glass, 1e-4f), 0);
@@ -427,8 +427,7 @@ START_TEST(a_teleported_collider_is_swept_not_crushed)
     /* The 3 cm jump in 1/60 s is a piston at U = 1.8 m/s; a wall at U
      * throws liquid at up to about 2U. Measured: 4.4 m/s fastest; the
      * fastest particle is a maximum over a splash, and gravity changed by
-     * -5 .. +6 ulp gave 3.9 - 5.4 m/s (round nine; 5.5 with the new
-     * summation order), so asserted below 4U = 7.2 m/s, not 3U (crushing
+     * -5 .. +6 ulp gave 3.9 - 5.5 m/s, so asserted below 4U = 7.2 m/s, not 3U (crushing
      * it would fling it at tens of m/s). */
     ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
@@ -438,7 +437,7 @@ START_TEST(a_teleported_collider_is_swept_not_crushed)
 }
 END_TEST
 
-/* Issue 12: the next step's first sub-step takes the neighbour pass the
+/* The next step's first sub-step takes the neighbour pass the
  * extraction ran between steps (ms_volume_count_neighbours) only while it
  * holds. Two volumes take the same steps with the same colliders; only A
  * is extracted between steps (a pass every frame), while between steps the

@@ -604,7 +604,7 @@ START_TEST(sigkill_mid_run_leaves_every_flushed_frame)
 }
 END_TEST
 
-/* The same with a checkpoint blob in every frame (issue 17). */
+/* The same with a checkpoint blob in every frame. */
 START_TEST(sigkill_mid_run_leaves_a_whole_checkpoint)
 {
     make_tmp_dir();
@@ -1261,7 +1261,7 @@ START_TEST(preview_refuses_bad_arguments)
 }
 END_TEST
 
-/* ---- reopening to append (resume, issue 17) ----------------------------- */
+/* ---- reopening to append (resume) ------------------------------------ */
 
 /* A kill between a frame's data and its commit: datasets one longer than
  * `frames` and the step's links, as the writer leaves them. */

@@ -1,4 +1,4 @@
-/* The look of the water in a glass (issue 14, data/scenes/glass.json): the
+/* The look of the water in a glass (data/scenes/glass.json): the
  * liquid's surface reaches the glass's inner wall at the liquid's level and
  * stops there, the column of water is seen through the glass down to the
  * glass's floor, and no refraction lookup through a steep side shows the

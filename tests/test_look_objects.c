@@ -1,4 +1,4 @@
-/* The look of the scene's objects (issue 14): an obstacle under the water
+/* The look of the scene's objects: an obstacle under the water
  * is seen through it, refracted (Snell's law makes it look nearer and so
  * larger from above), and an obstacle standing out of the water is seen
  * in its reflection, at the mirror image of its footprint. Each case draws

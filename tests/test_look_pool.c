@@ -1,4 +1,4 @@
-/* The liquid stays inside its pool (issue 14, fig4c): in the dam break of
+/* The liquid stays inside its pool (fig4c): in the dam break of
  * Fig. 4c (domain 1 x 1 x 0.5 m, the fill 0.44 m high) the liquid runs up
  * the right wall to the domain's top, higher than the rim the renderer
  * used to put just above still water (0.18 m + 5 cm), and it was drawn

@@ -404,7 +404,7 @@ START_TEST(out_of_tree_plugin_builds_against_installed_headers)
     }
     ck_assert_msg(rc == 0, "install/build failed (%d): %s", rc, rc ? out : "");
     /* installed program, no MODESPLIT_PLUGIN_PATH: the install's plugins,
-     * and not the build tree's (issue 17: it is not the installed code's) */
+     * and not the build tree's (it is not the installed code's) */
     snprintf(path, sizeof path, "%s/installed.txt", dir);
     slurp(path, out, sizeof out);
     snprintf(want, sizeof want, "path %s/prefix/lib/modesplit/plugins\n", dir);

@@ -1,8 +1,8 @@
-/* The volume's shared pool (lib/volume/pool.c, issue 12's work sharing):
+/* The volume's shared pool (lib/volume/pool.c, the sim's work sharing):
  * the calling thread and a lent helper claim the chunks of each loop; the
  * helper really runs chunks, every chunk runs once, and a loop gives the
- * same values as a loop on one thread. Given an engine's task interface
- * (issue 15), each loop runs through it: a test task system counts the
+ * same values as a loop on one thread. Given an engine's task interface,
+ * each loop runs through it: a test task system counts the
  * tasks it ran, and the sim's volume loops go through it with the bytes
  * of one thread. */
 #include <check.h>
@@ -97,8 +97,8 @@ END_TEST
  * second thread (open, help, close) to a pool with a helper thread of its
  * own. That is a no-op: the offered thread returns at once (it would
  * otherwise claim chunks until a close), and after the close the pool's
- * own helper still takes chunk 1 while the caller holds chunk 0 (round
- * twelve's pool once let the close send its helpers away). */
+ * own helper still takes chunk 1 while the caller holds chunk 0 (a close
+ * must not send the pool's own helpers away). */
 START_TEST(a_pool_with_threads_of_its_own_ignores_a_lent_helper)
 {
     caller = pthread_self();
@@ -125,7 +125,7 @@ START_TEST(a_pool_with_threads_of_its_own_ignores_a_lent_helper)
 }
 END_TEST
 
-/* Round five: chunks are claimed with an atomic add, a helper spins a
+/* Chunks are claimed atomically, a helper spins a
  * little between loops and then sleeps. Many loops of odd sizes with a
  * lent helper: every chunk of every loop runs exactly once, on its own
  * range, and the loop's values are one thread's. */
@@ -193,11 +193,11 @@ START_TEST(every_chunk_of_every_loop_runs_once_with_a_lent_helper)
 }
 END_TEST
 
-/* Round six: the caller claims chunks from the front, a lent helper from
+/* The caller claims chunks from the front, a lent helper from
  * the back, so that each keeps its end of the arrays (and its core's cache)
  * from loop to loop. In every loop the caller's chunks are 0 .. k-1 and the
- * helper's k .. parts-1: with the chunks dealt alternately (one counter, as
- * before) the helper's would be interleaved with the caller's and this
+ * helper's k .. parts-1: with the chunks dealt alternately (one counter)
+ * the helper's would be interleaved with the caller's and this
  * fails. Chunk 0 (always the caller's) holds until the helper has run the
  * last chunk (bounded: 20 s); the helper's chunks take 1 ms, so the caller
  * takes some of the rest from the front. */
@@ -287,7 +287,7 @@ START_TEST(an_idle_lent_helper_sleeps_instead_of_spinning)
 }
 END_TEST
 
-/* ---- the engine's task interface (issue 15) ---------------------------- */
+/* ---- the engine's task interface ---------------------------------------- */
 
 /* A test task system: each enqueued task on a thread of its own (or, with
  * `inline_run`, run at once and NULL returned, as core.h allows); it

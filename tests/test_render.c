@@ -1330,7 +1330,7 @@ START_TEST(the_shipped_scenes_render_their_golden_pictures)
 {
     REQUIRE_GL();
     static const char *const scenes[] = {"fig1", "fig9a", "fig9b", "fig10", "sky", "glass",
-                                         /* issue 14: every shipped look (the _x10 variants
+                                         /* every shipped look (the _x10 variants
                                           * draw as their scenes) */
                                          "default", "fig3", "fig4c", "stir"};
     const int write = getenv("MS_GOLDEN_WRITE") && !strcmp(getenv("MS_GOLDEN_WRITE"), "1");
@@ -1562,7 +1562,7 @@ START_TEST(refracted_tile_edges_are_straight_lines)
 }
 END_TEST
 
-/* Issue 14: where the liquid is dry (depth under MS_RENDER_DRY_DEPTH)
+/* Where the liquid is dry (depth under MS_RENDER_DRY_DEPTH)
  * nothing of it is drawn, so the floor is seen directly. An all-dry field
  * (half a dry depth everywhere) draws the same bytes with the clear water
  * shader and the opaque white milk shader (any sheet of milk would whiten

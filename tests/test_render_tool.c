@@ -233,8 +233,8 @@ static int same_file(const char *a, const char *b)
     return same;
 }
 
-/* `render --png` encodes in a writer thread while it draws the next frame
- * (issue 14): the frames of one call are, byte for byte and in order, the
+/* `render --png` encodes in a writer thread while it draws the next frame:
+ * the frames of one call are, byte for byte and in order, the
  * frames each drawn alone, and they are what ms_image_write_png (the
  * encoder of ms_renderer_write_png) makes of their pixels. */
 START_TEST(png_frames_encoded_off_the_render_thread_keep_their_bytes_and_order)

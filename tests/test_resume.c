@@ -1,4 +1,4 @@
-/* modesplit run --resume (issue 17): a run killed by SIGKILL at a random
+/* modesplit run --resume: a run killed by SIGKILL at a random
  * frame, or stopped, continues from its file's last complete frame, and
  * the finished file holds the same bytes in every field, time and particle
  * array as a run never stopped, with 1 and 2 threads; a frame cut by the

@@ -185,7 +185,7 @@ START_TEST(out_of_range_names_value_and_range)
 }
 END_TEST
 
-/* DFSPH's stop rule and caps (issue 12): absent, the solver's defaults
+/* DFSPH's stop rule and caps: absent, the solver's defaults
  * (NAN / -1); present, read in the desc's ranges; each refusal exact; and
  * under a weakly compressible law, where they would do nothing, refused. */
 START_TEST(dfsph_limits_are_read_in_the_solvers_ranges)

@@ -734,7 +734,7 @@ START_TEST(moving_disturber_follows_its_path_and_leaves_a_wake)
 }
 END_TEST
 
-/* Issue 12: the sim's N_time steps of one sub-step each run as one fused
+/* The sim's N_time steps of one sub-step each run as one fused
  * sweep (ms_surface_step_calls); they must give the bytes and the clock of
  * the N_time calls, with a moving disturber, an absorbing edge, 1 to 11
  * calls (over the 8 steps a sweep fuses), and with rain (which falls
@@ -785,7 +785,7 @@ START_TEST(fused_step_calls_are_the_calls)
 }
 END_TEST
 
-/* Issue 12: where every cell has the same a and delta (no speed or damping
+/* Where every cell has the same a and delta (no speed or damping
  * map, no obstacle, not absorbing), the interior rows are stepped with a0
  * and d0 in registers instead of the per-cell arrays: the same bits as the
  * arrays' rows, for reflecting and periodic edges, a moving disturber and

@@ -1,4 +1,4 @@
-/* view: `modesplit view`, the interactive window (issue 16), driven as a
+/* view: `modesplit view`, the interactive window, driven as a
  * user drives it: under Xvfb (Mesa's llvmpipe through SDL's GLX context)
  * with replayed input logs (--script) that make every interaction a
  * deterministic test, once with real X events (xdotool) and an X

@@ -1,10 +1,10 @@
 #!/bin/sh
 # Installs the Debian packages libmodesplit needs when they are missing.
 # As root it runs apt-get; otherwise it prints the one command to run.
-#   tools/deps.sh          check, install what is missing (root)
+#   tools/deps.sh          check, install what the product uses (root)
 #   tools/deps.sh --ci     the same, plus the real clients the CI-only
-#                          tests drive (ParaView's pvpython, Xvfb + xdotool,
-#                          gnuplot, SDL2, ffmpeg, h5py, ImageMagick)
+#                          checks drive (ParaView's pvpython, Xvfb + xdotool,
+#                          h5py, ImageMagick, valgrind, clang)
 #   tools/deps.sh --list   print the package list (with --ci: both lists)
 set -eu
 
@@ -12,21 +12,25 @@ set -eu
 # OSMesa (off-screen GL); tests: Check, h5dump (hdf5-tools).
 PACKAGES="build-essential pkg-config libjansson-dev libhdf5-dev hdf5-tools libpng-dev \
 libosmesa6-dev check libsubunit-dev"
-# the ABI listing (`make check-abi`, issue 13) parses the headers with pycparser
+# the ABI listing (`make check-abi`) parses the headers with pycparser
 PACKAGES="$PACKAGES python3-pycparser"
-# the renderer's EGL context backend (issue 14): surfaceless Mesa
+# the renderer's EGL context backend: surfaceless Mesa
 PACKAGES="$PACKAGES libegl-dev libegl-mesa0"
-# the clients users run against the library's output, and what the viewer
-# and the study need: installed by `tools/deps.sh --ci` (.ci/run), left to
+# what the product itself uses, so `make demo` and `make check` give all of
+# it: the viewer (`modesplit view`, SDL2), the accuracy study's plots
+# (gnuplot), `modesplit render --video` (ffmpeg)
+PACKAGES="$PACKAGES libsdl2-dev gnuplot-nox ffmpeg"
+# the clients users run against the library's output and the drivers of the
+# viewer's window tests: installed by `tools/deps.sh --ci` (.ci/run), left to
 # the user otherwise (the tests that need them report themselves skipped).
-CI_PACKAGES="gnuplot-nox libsdl2-dev xvfb xauth xdotool x11-apps imagemagick ffmpeg \
+CI_PACKAGES="xvfb xauth xdotool x11-apps imagemagick \
 paraview python3-paraview python3-h5py python3-venv"
 # valgrind and clang with its runtimes (libFuzzer, ASan: libclang-rt-14-dev,
 # which --no-install-recommends leaves out) run only in CI (.ci/valgrind,
 # .ci/fuzz): `make check` of a user without them must not fail for their
 # absence.
 CI_PACKAGES="$CI_PACKAGES valgrind clang libclang-rt-14-dev"
-# issue 15: `make format-check` (CI only: .clang-format, the changed lines)
+# `make format-check` (CI only: .clang-format)
 CI_PACKAGES="$CI_PACKAGES clang-format"
 
 if [ "${1:-}" = "--ci" ]; then

@@ -1,5 +1,5 @@
 #!/bin/sh
-# make format-check (issue 15): the C lines changed since a base commit are
+# make format-check: the C lines changed since a base commit are
 # laid out as .clang-format says (STYLE.md's habits). Only changed lines:
 # the tree as a whole predates .clang-format, and reformatting it at once
 # would make every branch in flight conflict; files touched later get

@@ -155,7 +155,7 @@ MS_API ms_status ms_reader_read_particles(const ms_reader *r, long frame, int ca
 /* The legacy (Xdmf2 / VisIt) sidecar's path, "run.xdmf2". */
 MS_API const char *ms_writer_xdmf_legacy_path(const ms_writer *w);
 
-/* ---- checkpoints (issue 17) ------------------------------------------- */
+/* ---- checkpoints ------------------------------------------------------ */
 /* ms_writer_frame stores a snapshot of the sim (ms_sim_snapshot) with
  * every n-th written frame (frames 0, n, 2n, ...; the scene's
  * output.checkpoint_every, 1 for a sim made from descs; 0 = none). The

@@ -40,8 +40,7 @@ MS_API ms_status ms_scene_parse_with_overrides(const char *json, size_t len, int
                                                const char *const *overrides, ms_scene **out);
 
 /* output.checkpoint_every: a snapshot of the sim (ms_sim_snapshot) goes
- * into the run file with every n-th written frame, 0 = none (issue 17);
- * default 1. */
+ * into the run file with every n-th written frame, 0 = none; default 1. */
 MS_API int ms_scene_output_checkpoint_every(const ms_scene *sc);
 
 #ifdef __cplusplus

@@ -199,7 +199,7 @@ MS_API ms_status ms_sim_boat(const ms_sim *sim, float pos[2]);
  * skip), to move or tilt it from there. MS_ERR_STATE without one. */
 MS_API ms_status ms_sim_container_pose(const ms_sim *sim, float pos[3], float orientation[4]);
 
-/* Snapshot and restore (issue 17): the whole state of the sim between two
+/* Snapshot and restore: the whole state of the sim between two
  * steps as one byte blob (particles in the solver's order, the wave field
  * and its previous step, maps set at run time, the pipeline's hand-over
  * buffers, RNG states, effect phases, floaters, time and frame counter),

@@ -41,7 +41,7 @@ typedef struct ms_writer_layout {
     int output_every;             /* frames of the sim per written frame, >= 1 */
     int deflate;                  /* height fields: deflate level 1..9 after shuffle;
                                      0 = stored without filters (fastest, largest) */
-    int checkpoint_every;         /* written frames per sim snapshot, 0 = none (issue 17) */
+    int checkpoint_every;         /* written frames per sim snapshot, 0 = none */
     int floaters;                 /* floating objects per frame (/floaters), 0 = none */
 } ms_writer_layout;
 
@@ -71,7 +71,7 @@ const ms_writer_layout *ms_writer_get_layout(const ms_writer *w);
 /* The writer's scratch for a checkpoint blob of `bytes` (kept between
  * frames), NULL when out of memory. */
 void *ms_writer_checkpoint_buffer(ms_writer *w, size_t bytes);
-/* Checkpoints (issue 17): /checkpoint/0 and /checkpoint/1, uint8 blobs of
+/* Checkpoints: /checkpoint/0 and /checkpoint/1, uint8 blobs of
  * ms_sim_snapshot, each with an int64 attribute `frame` (the written frame
  * whose sim state it holds); a new one overwrites the older, so a kill
  * while one is written leaves the other. */

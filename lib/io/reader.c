@@ -33,7 +33,7 @@ struct ms_reader {
     int output_every;
     double frame_dt;
     char *library_version, *scene, *scene_name;
-    /* usable checkpoints, newest first (issue 17) */
+    /* usable checkpoints, newest first */
     int nckpt;
     long ckpt_frame[MS_IO_CHECKPOINTS];
     int ckpt_slot[MS_IO_CHECKPOINTS];

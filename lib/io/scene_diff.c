@@ -1,5 +1,5 @@
 /* lib/io: what differs between two scene texts, key by key (the sentence
- * of a refused resume, issue 17). A scene written with --set overrides is
+ * of a refused resume). A scene written with --set overrides is
  * stored re-printed (17 significant digits, other spacing), so a line diff
  * would name formatting; this compares the parsed JSON values and names the
  * dotted paths whose values differ, with both values. */

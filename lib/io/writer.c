@@ -19,7 +19,7 @@
  *      copy with the frame made before step 2 (a kill leaves the old or the
  *      new file, a full disk refuses the frame before anything is written),
  *      the legacy grid files by one pwrite each.
- * A checkpoint (a sim snapshot, issue 17) goes with step 2 into the older
+ * A checkpoint (a sim snapshot) goes with step 2 into the older
  * of the two /checkpoint/<slot> datasets, its `frame` attribute set to the
  * frame: a reader uses it only once `frames` counts that frame (so a kill
  * before step 4 leaves it unused), and a blob torn by a kill fails its own
@@ -417,7 +417,7 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
  * as it was (an older run there stays whole) instead of a file that does
  * not open; HDF5's first flush writes blocks that point into each other,
  * and before it nothing committed could guard them (h5_atomic.c). NULL
- * (write path itself, as before) when path is not a plain file (a device;
+ * (write path itself, in place) when path is not a plain file (a device;
  * a symbolic link, which is written through), is a file this process may
  * not write, or its folder takes no new file: the probe then reports why
  * with path's name. *oom: out of memory. */
@@ -877,7 +877,7 @@ const ms_writer_layout *ms_writer_get_layout(const ms_writer *w)
     return &w->layout;
 }
 
-/* ---- reopening a run file to append to it (resume, issue 17) ---------- */
+/* ---- reopening a run file to append to it (resume) ------------------- */
 
 /* Line `line` (1-based) of s, at most n bytes, into buf. */
 static void text_line(const char *s, int line, char *buf, size_t n)

@@ -51,7 +51,7 @@ static ms_status sim_layout(const ms_sim *sim, unsigned fields, ms_writer_layout
     l.checkpoint_every = sc ? ms_scene_output_checkpoint_every(sc) : 1;
     ms_sim_info info = ms_sim_info_init();
     ms_sim_get_info(sim, &info);
-    l.floaters = info.floaters; /* fig10's leaves, every frame (issue 17) */
+    l.floaters = info.floaters; /* fig10's leaves, every frame */
     *out = l;
     return MS_OK;
 }
@@ -120,7 +120,7 @@ ms_status ms_writer_frame(ms_writer *w, const ms_sim *sim)
             return ms_fail(MS_ERR_STATE, "io: the sim shows %d floaters, the file holds %d", n,
                            l->floaters);
     }
-    /* issue 17: the sim's whole state with every checkpoint_every-th frame */
+    /* the sim's whole state with every checkpoint_every-th frame */
     if (l->checkpoint_every > 0 && ms_writer_frames(w) % l->checkpoint_every == 0) {
         size_t bytes = 0;
         void *buf = NULL;

@@ -210,7 +210,7 @@ int ms_caustics_wall_rows(const ms_caustics_desc *d)
     return MS_CLAMP((int)ceilf(d->depth / row), 4, d->resolution);
 }
 
-/* The walls' strips (issue 14; section 3.6 lights only the floor): a ray
+/* The walls' strips (section 3.6 lights only the floor): a ray
  * whose floor point (hx, hy) lies outside the floor's square crossed a
  * wall first, at the fraction f of its way down from its start (x, y,
  * z0 over the floor) where it reaches the wall's plane. Splat there in the
@@ -301,8 +301,8 @@ static void splat(float *m, int n, float u, float v, float w)
     m[(size_t)iv1 * n + iu1] += w * au * av;
 }
 
-/* The floor's texels in the shadow of the occluders (issue 14; section
- * 3.6 has no objects under the water): each triangle projected onto the
+/* The floor's texels in the shadow of the occluders (section 3.6 has no
+ * objects under the water): each triangle projected onto the
  * floor along flat water's refracted sun t (Snell's law), its parts above
  * the still water from the water plane (there the light is not yet
  * bent), and the texels whose centres it covers set to 0 in c->lit, then

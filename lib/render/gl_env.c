@@ -210,7 +210,7 @@ ms_status ms_gl_env_create(ms_renderer *r)
     return ms_gl_check("drawing the pool into the environment cubemap");
 }
 
-/* ---- the objects in the environment (issue 14) -------------------------
+/* ---- the objects in the environment ------------------------------------
  *
  * The boat, the obstacles and the glass move every frame, and drawing the
  * whole environment costs more than a frame (about 200 ms at 1024^2 faces

@@ -149,7 +149,7 @@ static void refraction_viewpoint(const ms_renderer_desc *d, float virt[3])
  * column's two vertical faces give a view ray back its elevation, and
  * ms_env's refracted half is drawn for rays through the flat top from
  * virt: the side's own horizontal normal sent the lookups up to the deck
- * beyond the pool (beige-yellow bands, the spots of issue 14). So the
+ * beyond the pool (beige-yellow bands and spots). So the
  * normal is the one that refracts the view ray (1 / ior) towards what
  * lies behind the column on the floor as seen from virt, tilted sideways
  * by the side's own normal's part across the view (a lens's sideways

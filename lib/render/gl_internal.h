@@ -129,7 +129,7 @@ struct ms_gl {
     ms_grid normal_field; /* the grid it covers (ms_field in the shaders) */
     float *gradients;     /* its texels, CPU side */
     size_t gradients_cap; /* floats */
-    /* issue 14, objects in the environment (gl_env.c): env_static is the
+    /* objects in the environment (gl_env.c): env_static is the
      * pool and the sky as ms_gl_env_create draws them; env_live a copy
      * with the boat and the obstacles drawn in each frame (ms_env is
      * env_live while there are objects, else env_static) */

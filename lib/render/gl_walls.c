@@ -1,4 +1,4 @@
-/* The caustics on the pool's walls (issue 14) as the texture the liquid's
+/* The caustics on the pool's walls as the texture the liquid's
  * shader reads, and the light in the water the objects under it are lit
  * by (ms_gl_open_upload). The walls: ms_caustics_walls (texture unit 3), the tracer's four wall
  * strips stacked (caustics.c, ms_caustics.walls), and ms_pool_depth, the

@@ -1,5 +1,5 @@
-/* The liquid inside the scene's container (a glass), for display only
- * (issue 14). The simulated fields stay as eqs. 19-20 make them; what is
+/* The liquid inside the scene's container (a glass), for display only.
+ * The simulated fields stay as eqs. 19-20 make them; what is
  * drawn changes:
  *
  * - The fill. The 1 cm SPH field (eqs. 16-18) ends a few mm short of the

@@ -99,13 +99,13 @@ typedef struct ms_caustics_desc {
     float intensity;      /* 1 = physical contrast, 0 = flat */
     int resolution;       /* texels per side */
     float depth;          /* m: still water over the floor; > 0 also traces the walls */
-    /* issue 14: what blocks the light on its way to the floor, as
+    /* what blocks the light on its way to the floor, as
      * triangles (3 vertices each, x y z first of `occluder_stride` floats
      * a vertex, world); NULL: nothing */
     const float *occluders;
     int occluder_verts;
     int occluder_stride;
-    /* issue 14: the light also at `layers` heights between the floor and
+    /* the light also at `layers` heights between the floor and
      * the still water (needs depth > 0), for the objects under the water */
     int layers;
 } ms_caustics_desc;
@@ -121,7 +121,7 @@ typedef struct ms_caustics {
     int *col0;            /* per ray column: the field node left of it */
     float *colf;          /* and the fraction towards the next */
     size_t row_cap;       /* floats row holds / 6; ints col0 holds */
-    /* the pool's walls under the water (issue 14): 4 strips of n x
+    /* the pool's walls under the water: 4 strips of n x
      * wall_rows texels, bottom row first, stacked -x, +x, -y, +y (along
      * the x-walls u runs with y, along the y-walls with x; v from the
      * floor up to the still water), in the floor map's unit: the light a
@@ -129,7 +129,7 @@ typedef struct ms_caustics {
     int wall_rows;
     float *walls, *walls_tmp;
     /* n * n: 1 where the occluders leave the floor in the sun, 0 in their
-     * shadow (issue 14); map is multiplied by it, open is map before that:
+     * shadow; map is multiplied by it, open is map before that:
      * the light the occluders themselves take (gl_pool.c). NULL and
      * unused without occluders */
     float *lit, *open;
@@ -170,13 +170,13 @@ ms_status ms_png_write_rgba(const char *path, const unsigned char *rgba, int w, 
 /* Depth (m) below which the liquid counts as dry: the surface is cut along
  * this depth's contour (linear between the mesh's vertices) and nothing of
  * it is drawn where it is shallower, so dry floor is seen directly instead
- * of through a zero-depth sheet (issue 14). Above the wave field's residual
+ * of through a zero-depth sheet. Above the wave field's residual
  * ripples on a dry floor (0.6 mm in data/scenes/glass.json at frame 60). */
 #define MS_RENDER_DRY_DEPTH 1e-3f
 
 typedef struct ms_gl ms_gl; /* the GL side (gl_*.c) */
 
-/* The liquid inside the scene's container (glass_fill.c, issue 14): the
+/* The liquid inside the scene's container (glass_fill.c): the
  * container's cavity found once from its signed distance (per angle about
  * its local z axis: where the inner wall starts and the outer wall ends,
  * and the cavity's floor), then each frame, for display only, the field

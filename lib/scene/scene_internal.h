@@ -157,7 +157,7 @@ struct ms_scene {
     unsigned output_fields; /* MS_FIELD_* */
     int output_every;
     int output_deflate; /* 0..9 */
-    int output_checkpoint_every; /* written frames per checkpoint, 0 = none (issue 17) */
+    int output_checkpoint_every; /* written frames per checkpoint, 0 = none */
 };
 
 #endif /* MS_SCENE_INTERNAL_H */

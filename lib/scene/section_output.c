@@ -1,7 +1,6 @@
 /* The "output" section of the scene schema: which fields a run file
  * holds, how often, how compressed (the table of data/scenes/README.md;
- * keep both in step). Moved from sections.c (issue 15: split along its
- * seams), unchanged. */
+ * keep both in step). */
 #include <string.h>
 
 #include "core/core_internal.h"
@@ -28,7 +27,7 @@ ms_status ms_scene_read_output(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     sc->output_every = (int)every;
     MS_TRY(ms_scene_get_int(c, o, "deflate", 1, 0, 9, &deflate));
     sc->output_deflate = (int)deflate;
-    /* issue 17: a snapshot of the sim every n-th written frame, 0 = none */
+    /* a snapshot of the sim every n-th written frame, 0 = none */
     MS_TRY(ms_scene_get_int(c, o, "checkpoint_every", 1, 0, 1000000, &checkpoint_every));
     sc->output_checkpoint_every = (int)checkpoint_every;
     MS_TRY(ms_scene_get_array(c, o, "fields", 0, 16, &fields));

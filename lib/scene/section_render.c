@@ -1,7 +1,6 @@
 /* The "render" section of the scene schema: image size, shader, cubemap,
  * caustics, camera and GL backend (the table of data/scenes/README.md;
- * keep both in step). Moved from sections.c (issue 15: split along its
- * seams), unchanged. */
+ * keep both in step). */
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>

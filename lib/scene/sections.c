@@ -254,7 +254,7 @@ static ms_status read_fill(ms_scene_ctx *c, json_t *o, ms_scene *sc, double *cou
     return MS_OK;
 }
 
-/* DFSPH's stop rule and iteration caps (issue 12), in the desc's ranges
+/* DFSPH's stop rule and iteration caps, in the desc's ranges
  * (volume/desc.c). Under the weakly compressible laws they would do
  * nothing, so a scene that sets one there is refused rather than run as if
  * it had been heard. */

@@ -1,4 +1,4 @@
-/* The wave field's part of a sim snapshot (snapshot.h, issue 17): every
+/* The wave field's part of a sim snapshot (snapshot.h): every
  * piece of state the leapfrog step of eq. 2 reads, so that a restored
  * surface steps to the same bytes as one never stopped. */
 #include <stdatomic.h>

@@ -212,7 +212,7 @@ static void block(ms_surface *s, int K, const float *level_xy)
 static ms_status advance(ms_surface *s, float dt, int n, int each_step)
 {
     /* ms_surface_add_disturber grows level_xy with the disturbers: a step
-     * allocates nothing (issue 15) */
+     * allocates nothing */
     assert(s->ndist <= s->level_cap);
     float *level_xy = s->level_xy;
     if (s->uniform < 0)
@@ -287,8 +287,8 @@ static ms_status step_calls(ms_surface *s, float dt, int calls)
 #endif
     /* Calls of one sub-step each without rain (which falls between calls)
      * are one advance: its sweeps fuse up to MAX_LEVELS steps (block()),
-     * the same bits as one sweep per call (issue 12: N_time = 2 on fig1
-     * streamed the grid twice); the clock adds dt a step, as the calls do. */
+     * the same bits as one sweep per call (a sweep per call streamed
+     * fig1's grid twice a frame at N_time = 2); the clock adds dt a step, as the calls do. */
     const int fuse = nsub == 1 && !(s->rain.rate > 0);
     st = MS_OK;
     for (int c = 0; c < calls && st == MS_OK; c += fuse ? calls : 1) {

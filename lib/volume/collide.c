@@ -65,8 +65,7 @@ __attribute__((target("avx512f"), always_inline)) static inline __m512 field16(_
 
 /* The domain walls' eq. 15 field along one axis, p[b..e) -> out[b..e):
  * A (field(d_lo / r_c) - field(d_hi / r_c)), boundary_part's first loop in
- * 16 lanes (issue 12, round thirteen: scalar, two divisions a particle
- * and axis). Masked at the end: the next part's particles belong to
+ * 16 lanes (the C loop is scalar, two divisions a particle and axis). Masked at the end: the next part's particles belong to
  * another thread. */
 __attribute__((target("avx512f,bmi2"))) static void wall_field_avx512(const float *restrict p,
                                                                       float *restrict out, int b,

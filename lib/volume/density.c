@@ -45,8 +45,7 @@
 #endif
 
 /* max(p, 0) as fmaxf(p, 0.0f) gives it (a NaN p: 0), without the call
- * to libm that fmaxf is at -O2 (issue 12, round thirteen: once a particle
- * in the density pass). p = -0 cannot occur (k, B > 0; x - x = +0). */
+ * to libm that fmaxf is at -O2 (once a particle in the density pass). p = -0 cannot occur (k, B > 0; x - x = +0). */
 static inline float clamp_positive(float p)
 {
     return p > 0.0f ? p : 0.0f;
@@ -96,9 +95,8 @@ static inline float cube(float a)
  * r^2 = h^2: weight 0), entry k of each run in lane k % 16, the lanes
  * summed once in ms_lanes_sum's fixed order; the coincident real pairs
  * (r^2 < eps^2) are counted. Built for AVX-512, AVX2 and the baseline
- * (no FMA contraction with -std=c11: the same bits on each). Issue 12,
- * round nine: the image run used to be summed on its own and added to
- * the real run's sum (float round-off only). */
+ * (no FMA contraction with -std=c11: the same bits on each). The image
+ * run goes into the real run's lanes, not into a sum of its own. */
 #if MS_VOLUME_HAVE_AVX512
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
@@ -149,8 +147,8 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 
 }
 
 /* weight_sum in AVX-512 intrinsics, inlined into the density pass
- * (issue 12, round thirteen: the clone was called once a particle, and
- * its lanes went through the stack to ms_lanes_sum): the same terms in the
+ * (a call of the clone once a particle sent its lanes through the stack
+ * to ms_lanes_sum): the same terms in the
  * same lanes and the same lane sum, so the same bits; the coincident
  * count is a popcount (the C loop's float count of small integers is
  * exact). */
@@ -242,8 +240,8 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline __m512 
     return _mm512_maskz_mov_ps(_mm512_cmp_ps_mask(p, zero, _CMP_GT_OQ), p);
 }
 
-/* finish_c in 16 lanes (issue 12, round thirteen: two scalar divisions a
- * particle in the density loop, beside its square roots): the same
+/* finish_c in 16 lanes (the C loop is two scalar divisions a particle,
+ * beside the density loop's square roots): the same
  * operations per lane; the maximum (max_ps(a, m) = a > m ? a : m, the C
  * test, from +0) does not depend on the order. The packed copy's p and
  * 1/rho are stored lane by lane. */
@@ -299,8 +297,7 @@ __attribute__((always_inline)) static inline void weigh(ms_volume *v, const ms_n
 
 /* density_part's loop over particles [b, e), with the weight sum w and
  * finish fin (constants at each call site, inlined). A particle's weights
- * are summed after the next particle's lists are built (issue 12, round
- * thirteen): its list's stores, compressed blocks at any offset, have
+ * are summed after the next particle's lists are built: its list's stores, compressed blocks at any offset, have
  * then left the store buffer, and the sum's aligned loads do not wait
  * for them. The same sums: the same bits. */
 __attribute__((always_inline)) static inline void density_range(density_ctx *ctx, int part, int b,
@@ -426,7 +423,7 @@ ms_status ms_volume_count_neighbours(ms_volume *v)
     return st;
 }
 
-/* Issue 12: after the step's last drift the extraction (and the coupling
+/* After the step's last drift the extraction (and the coupling
  * to the waves) rebuilt the grid and ran a density pass at the end-of-step
  * positions; the next step's first sub-step would build the same again:
  * the sort of particles already in cell order is the identity, and the

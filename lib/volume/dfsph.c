@@ -1,215 +1,63 @@
 /* MS_PRESSURE_DFSPH: incompressible SPH by the divergence-free solver of
- * Bender & Koschier ("Divergence-Free Smoothed Particle Hydrodynamics",
- * SCA 2015; "Divergence-Free SPH for Incompressible and Viscous Fluids",
- * TVCG 2017). No equation of state: each sub-step the pressure is solved
- * for, twice, by Jacobi iterations on the velocities:
+ * Bender & Koschier (SCA 2015; TVCG 2017). No equation of state: each
+ * sub-step the pressure is solved for, twice, by Jacobi iterations on the
+ * velocities (docs/dfsph.md gives the measurements behind each choice):
  *
  *   divergence-free solve (start of the sub-step, on v):
  *       D rho_i/Dt = sum_j m (v_i - v_j) . grad W_ij         -> 0
  *   constant-density solve (after the kick by the other forces, on v*):
  *       rho*_i = rho_i + dt sum_j m (v*_i - v*_j) . grad W_ij -> rho0
  *
- * Both change the velocities by the symmetric pressure term
- *       dv_i = -(1/dt) sum_j m (s_i + s_j) grad W_ij          (2017, eqs. 11, 13)
- * with s_i = kappa_i dt^2 / rho_i (density; kappa_i dt / rho_i for the
- * divergence). Jacobi on i alone (its neighbours answer to its pressure)
- * gives the update of the papers' factor alpha_i:
+ * Both change the velocities by dv_i = -(1/dt) sum_j m (s_i + s_j) grad W_ij
+ * (2017, eqs. 11, 13). Jacobi on i alone gives
  *       s_i = e_i / (|sum_j m grad W_ij|^2 + sum_j |m grad W_ij|^2)
  * with e_i = rho*_i - rho0 (or D rho_i/Dt), clamped at 0: the solve only
- * pushes compressed liquid apart, so the free surface has no tension. The
- * diagonals are computed once per sub-step (positions do not move during
- * the solves). A particle with fewer than 3/4 of an inside particle's
- * neighbours (a surface particle) has no divergence error (as SPlisHSPlasH,
- * whose bound is 20 neighbours): its missing neighbours would count as
- * expansion the solve cannot mend.
+ * pushes compressed liquid apart, so the free surface has no tension. An
+ * image counts in the diagonal as the mirror of its particle (factors_of):
+ * without that a corner particle's update overshoots and a tank at rest
+ * blows up. Surface particles (under 3/4 of an inside particle's
+ * neighbours) have no divergence error: their missing neighbours would
+ * read as expansion the solve cannot mend.
  *
- * Convergence: the average of e_i / rho0 over all particles <= the desc's
- * max_density_error (and dt e_i / rho0 <= max_divergence_error), after at
- * least 2 density and 1 divergence iterations (SPlisHSPlasH's minima), or
- * the desc's iteration cap. Measured: without the minimum, a splashing dam break in a closed
- * box met the average with 0 iterations while its front hit the wall
- * (the splash dilutes the average), took no pressure at all and blew up
- * at 0.5 s; with it, it settles (1.88 J at 0.1 s, 0.95 J at 1 s). The averages are summed as integers (units of
- * 2^-32), so the iteration counts, and the bytes, do not depend on how
- * the particles are split among threads.
+ * Stop rule: the average of e_i / rho0 <= desc.max_density_error (and
+ * dt e_i / rho0 <= max_divergence_error) after at least
+ * MIN_DENSITY_ITERATIONS and MIN_DIVERGENCE_ITERATIONS (SPlisHSPlasH's
+ * minima; without them a splash that dilutes the average gets no pressure
+ * and blows up), or the desc's cap. The averages are summed as integers
+ * (units of 2^-32), so iteration counts and bytes do not depend on how the
+ * particles are split among threads.
  *
- * Warm start (2017, section 4.4): the density solve starts from half the
- * last sub-step's pressure (rescaled to this sub-step's dt) at particles
- * inside the liquid; surface particles start from 0. SPlisHSPlasH gates
- * its warm start (also at one half) on the predicted density exceeding
- * rho0, which costs an error pass; the surface test is free. Round two
- * measured a full warm start on every particle blowing up a tank at rest
- * (the clamp at 0 never takes back a push that overshoots into
- * expansion, so a stale pressure pumps energy in); measured again now on
- * the bench's 2000-particle dam break (1 s, fastest particle at its end):
- * no warm start 6.4 m/s; half everywhere 12.7 m/s; 0.8 and 1 everywhere
- * the c0 cap of 20 m/s; half where predicted compressed 6.4 m/s; half
- * inside 6.3 m/s, and the smallest largest compression (2.5 % against
- * 6.2 %). On the 32 000-particle dam break (0.1-0.4 s) the iterations a
- * sub-step (density and divergence) fall from 8.0 to 4.7 (gated on the
- * prediction) and 3.9 (inside). The divergence solve is not warm-started:
- * it stops after 1 iteration (SPlisHSPlasH's minimum) on the shipped flows.
+ * Warm start: the density solve starts from WARM_FACTOR of the last
+ * sub-step's total (rescaled to this dt) inside the liquid and from 0 at
+ * surface particles: the clamp never takes back a push that overshoots
+ * into expansion, so a stale pressure at the surface pumps energy in (half
+ * everywhere doubled the 2k dam break's fastest particle). Its velocity
+ * change depends on the positions alone, so the factors pass sums it with
+ * the pair terms it computes anyway (warm_kick applies it). The remaining
+ * swing of the iteration count at rest (2, 18, 2, 19, ...) is half the
+ * hydrostatic pressure rebuilt each sub-step; larger shares steady it but
+ * break the hydrostatic and extraction bars of tests/test_volume.c.
  *
- * The density iterations swing sub-step by sub-step at rest (round ten,
- * measured on a settled 0.28 m tank at viscosity 3: 2, 18, 2, 19, 2, 15
- * ...; 8.3 a sub-step, up to 19; the peer's scene 2, 7, 2, 5, 2, 11).
- * Not the dt rescaling (the tank's sub-step is a constant 1/240 s). The
- * cause: the liquid sits at the bound (its average compression at each
- * sub-step's start 0.086-0.1 %, eta 0.1 %), and half a warm start leaves
- * half the hydrostatic pressure, the column-wide smooth mode Jacobi
- * converges slowest on, to be rebuilt every sub-step: the first error
- * (0.108-0.151 %) lies just above eta, and whether 2 or 18 iterations
- * bring it under hinges on that small difference; an under-solved
- * sub-step (a total pressure 0.5-0.8 of the mean) leaves too small a warm
- * start for the next, which over-solves (1.4x), and so on. A larger share
- * steadies it (one share inside; density iterations a sub-step mean / max
- * at viscosities 5 and 3, the settled tank's fastest particle on
- * average): 0.5: 8.8 / 18, 8.3 / 19, 0.04 m/s; 0.7: 5.2 / 16, 5.1 / 13,
- * 0.05; 0.8: 3.5 / 11, 3.5 / 11, 0.06; 0.9: 2.3 / 11, 2.3 / 10, 0.11; 1:
- * 2 / 2, 0.25 m/s (the 2-iteration minimum then only ever adds pressure:
- * it ratchets up and the liquid expands). Not kept: 0.8 everywhere inside
- * ran the Martin & Moyce front ahead (RMS 0.335 against the bar's 0.327);
- * 0.8 at 95 % of a full neighbourhood and 0.5 elsewhere inside (the tank
- * 4.7 iterations a sub-step, the peer's scene 3.8 against 4.6, fig1 3.03
- * against 3.22) left the hydrostatic test's largest compression at 1.098 %
- * (its bar 1 %) and glass in a state whose extraction band search misses
- * a root by 4.4e-4 m (extract.c; 0.75 and 0.65 deep: the deepest slab's
- * pressure 2.2 % low, the swing back); one density iteration at least
- * (2 passes fewer where the minimum binds: fig1, stir, glass): the
- * deepest slab 2.04 % low (bar 2 %). Branch i12-dfsph-wip holds the 0.8 /
- * 0.5 shares. Also tried: a warm start from the mean of the last two
- * sub-steps' totals (no change at one half), SPlisHSPlasH's gate on the
- * predicted compression (a pass more, 7.4 iterations on the tank), and a
- * projected Jacobi that may lower the total towards 0, so that a full
- * warm start can be taken back: unstable without relaxation (fig1
- * compressed 344 %), with a relaxation of 1/4 on the lowering updates the
- * settled tank's fastest particle at 0.25 m/s.
- * Round thirteen (branch r13-peer, not kept): a share that follows the
- * last density solve's iteration count, 0.8 after a solve that needed
- * more than its minimum of 2 and half after one that did not, passed
- * every test (the hydrostatic tank's largest compression 0.73 %, its
- * worst slab 1.77 %) and ran the peer's scene at 0.86-0.88x (4.8 -> 3.6
- * density iterations a sub-step), but the bench's 128 000-particle dam
- * break (its first 0.1 s, where the deep column's solves all exceed the
- * minimum, so the 0.8 share ratchets) over-solved: average compression
- * 0.10 -> 0.011 %, sub-steps 630 -> 920 a simulated second (faster
- * particles), 1.27x the time. A hydrostatic warm start for a fresh
- * liquid (a quarter of rho0 g d from the sort's cell columns, branch
- * r13-warm) ran the peer's scene at 0.99x and passed the hydrostatic
- * bar at shares 0.15 and 0.25 only.
- * Round fourteen (kept): heavy-ball momentum on the density solve's
- * Jacobi updates, carried only where the particle is still compressed.
- * After a solve's first update each particle's update is
- *       s_i = e_i / diag_i + DENSITY_MOMENTUM s_i(last update)  (e_i > 0)
- *       s_i = 0                                                   (e_i = 0)
- * Both terms are >= 0, so the total still only grows and the clamp at 0
- * holds; the stop rule and the minima are unchanged, and the divergence
- * solve (1 iteration) has none. It speeds the smooth, column-wide mode
- * Jacobi is slowest on. Measured on the peer's scene (bench_dfsph --peer,
- * 0.3 s; density + divergence iterations a simulated second, sub-steps a
- * simulated second, average / largest compression): none 1523, 263,
- * 0.103 / 1.62 %; 0.3 (kept) 1347, 260, 0.102 / 1.78 %; 0.4 1283, 260,
- * 0.096 / 1.91 %; 0.5 1270; 0.6 1240, 263, 0.102 / 2.29 %. Density
- * iterations of the 0.3 s (volume_ab peer 18): 378 -> 326 at 0.3, 307 at
- * 0.4. 0.4 left glass (tests/test_volume.c's extraction case) in a state
- * whose band search misses a root by 1.7e-4 m (as round ten's shares);
- * 0.6 left the hydrostatic tank's deepest layer 2.2 % low (bar 2 %).
- * The hydrostatic tank's largest compression (viscosities 0.5-8, bar
- * 1 %): none 0.42-0.45 %, 0.3 0.47-0.50 %. Also passing but not kept
- * (less margin): 0.3 for the second update and 0.5 from the third, 1270
- * iterations a simulated second, the tank's largest compression
- * 0.58-0.79 %, the peer's 2.08 %; a ramp 0.3 + 0.15 an update up to
- * 0.75: 1280, the tank's 1.005 % (fails).
- * Not kept: the carry everywhere (also where e_i = 0): 0.2 1320, 0.3
- * 1243 (largest compression 1.24 %), 0.4 1173, 0.5 1113, 0.6 1010, 0.8
- * 1167 (293 sub-steps, 3.2 %), but an update carried into a particle
- * that has since expanded pushes on, which the clamp cannot take back:
- * the settling tank 14 % (0.4) and 10 % (0.5) above its energy at 0.2 s
- * (bar 1 %), and at 0.3 test_stability's one-particle sheet ended at
- * 9.4 J of the 5.1 J that entered, its largest-step dam break 7.61 of
- * 7.59 J. A plain over-relaxation s_i = omega e_i / diag_i: omega 1.15
- * 1283 (largest compression 3.0 %), 1.3 1147 (2.9 %, the hydrostatic
- * tank's deepest layer 2.2 % low), 1.5 1127 (14.7 %).
+ * Momentum: after a solve's first update, a particle still compressed adds
+ * DENSITY_MOMENTUM of its last update, s_i = e_i / diag_i + 0.3 s_i,last
+ * (e_i > 0), else 0. Both terms are >= 0, so the clamp holds. The share is
+ * bounded by the tests: 0.4 leaves glass where the band search misses a
+ * root, 0.6 the hydrostatic tank 2.2 % low; carried where e_i = 0 it pumps
+ * energy into test_stability's one-particle sheet.
  *
- * The warm start costs no neighbour pass of its own (round ten; it was
- * one of a sub-step's 9): its velocity change, dt / dt_last^2 m G sum_j
- * (w_i + w_j) g_ij (x_i - x_j) with w the share of the last total s,
- * depends on the positions alone, so the factors pass sums it with the
- * pair terms it computes anyway, and the density solve adds it to v*
- * (warm_kick, a per-particle pass: the same cap on the speed as an
- * update). Before, it was an update pass of its own on s = share (dt /
- * dt_last)^2 S after the kick: the same sum in another order of
- * operations (the bytes change by round-off).
+ * Each sub-step the factors pass computes every pair's g_ij (x_i - x_j)
+ * (images included) once, and every iteration reads them. The boundary is
+ * density.c's images as mirrored particles carrying their particle's s and
+ * mirrored velocity (in the shape's frame, so a moving shape pushes).
+ * Far from rest: a coincident pair takes forces.c's pair direction, a
+ * sub-step removes at most rho0 c0 dt / h of a compression, and the solves
+ * make no particle faster than max(c0, its speed) (c0 = desc.sound_speed).
  *
- * Each sub-step computes the pair terms g_ij (x_i - x_j) of every real
- * neighbour, and g and x_i - x_j' of every image, once (the factors pass,
- * which also takes the divergence solve's first error) and every
- * iteration reads them: no square root, division, position gather or
- * mirroring of a position per pair and iteration (round six: the images'
- * recomputed terms were a fifth of a 32k dam break's DFSPH time). The
- * AVX-512 error loops read the neighbours' velocity as 16-byte records of
- * the packed copy v->pk instead of gathers (the update loop gathers s:
- * see apply_real_avx512), and sum their lanes in registers; the values and the order of the sums are the C loops', so the
- * bits are too. Measured together (peer scene, first 0.15 s, loaded
- * machine, CPU time of the whole run): 1.41 s -> 1.13 s.
- *
- * The boundary: the walls and shapes take part as the images of density.c
- * (the liquid mirrored across each wall within h, and across the tangent
- * plane of the nearest shape), as mirrored particles: an image carries its
- * particle's s and its mirrored velocity (in the shape's frame, so a
- * moving or turning shape pushes). The images already found by the
- * neighbour pass serve both laws, no shape is sampled, and a shape that
- * moves or turns needs no resampling. An image is no free particle: it
- * moves as the mirror of its own, which the Jacobi diagonal accounts for
- * (factors_of). Measured on a tank whose column hits the floor at
- * 0.16 m/s: with the images as static samples (Akinci et al. 2012's
- * pressure mirroring, p_b = p_i) the solve sent the column sideways and
- * kept its kinetic energy; as mirrored particles it stopped it (26 -> 1 in
- * 20 iterations).
- *
- * Far from rest (issue 12, round two): a coincident pair (r <= eps) has
- * no gradient direction and takes forces.c's pair direction (coincident());
- * a sub-step removes at most rho0 c0 dt / h of a particle's compression
- * (F_DENSITY_ERROR), and the solves make no particle faster than
- * max(c0, its speed) (apply_of), c0 the desc's sound speed. Measured: 300
- * particles at one point took 83 s for 60 frames at the iteration cap
- * every sub-step and never separated; now 1 s and they spread. A box at
- * twice rest density reached non-finite velocities in its first frame;
- * now it relaxes to max rho/rho0 - 1 = 0.09 within it, at most c0.
- *
- * The pressure reported in prs (an output: no pass of the dynamics reads
- * it, the warm start keeps its own copy): eq. 13's convention (volume.c),
- * the pressure the liquid exerts, from the impulses the two solves gave
- * in the sub-step,
- *       p_i = M rho_i^2 (S_i / dt^2 + D_i / dt)
- * with S_i the density solve's total s (its impulse is -(1/dt) sum_j m
- * (S_i + S_j) grad W_ij), D_i the divergence solve's (-sum_j m (D_i + D_j)
- * grad W_ij, no 1/dt), both spread over the sub-step dt; prs holds the
- * mean of p_i over the step's sub-steps (by id, weighted by dt). M is the
- * gradient moment the force turns p into -grad p / rho with (volume.c's
- * gradient_moment) measured on the particles inside the liquid this
- * sub-step, (m G / 3 rho0) sum_j g_ij r_ij^2 averaged, not the cubic
- * lattice's: a settled column is no lattice (its moment 0.752 vertically,
- * 0.760 horizontally against the lattice's 0.774). Measured on the test's
- * settled 0.28 m column (1400 particles, issue 12): the two impulses sum
- * to the weight within 0.15 %, the divergence solve's share 2.6 %; the
- * iteration counts swing sub-step by sub-step (3, 17, 2, 19: the warm
- * start), so the density solve's share alone read at a step's last
- * sub-step (round eight's read-out) was 1.3 % off at viscosity 5 but
- * 3-10 % at 4.99, 5.01, 3, 8 (a frame of 4 sub-steps reads one phase of a
- * period-2 swing); both shares with the lattice's M read 2-3 % high at
- * every viscosity (the lattice's moment); now, at viscosities 0.5-8 and
- * with the depth counted as the liquid above (tests/test_volume.c), every
- * layer deeper than 2 h is within 1.7 % of rho0 g d, every slab h thick
- * below the first layer within 1.4 %, the slope of p within 0.8 % of rho0 g.
- * Next to the free surface single layers alternate (1.5 spacings down
- * 2.9-4.7 % high, 2.5 down 1.6-3.5 % low) as under the weakly compressible
- * laws, whose pressure is their density's (ideal gas +6.1 / -2.5 %): the
- * layer 2.5 spacings down has an inside particle's neighbours (32.4
- * against 32.6) and no surface flag, so its M and rho are the interior's
- * and the read-out is not what is off there. The dynamics' bytes are the
- * same as before.
- */
+ * prs is an output (no pass of the dynamics reads it): the pressure the
+ * liquid exerts, p_i = M rho_i^2 (S_i / dt^2 + D_i / dt) from the two
+ * solves' totals, averaged over the step's sub-steps by dt, with M the
+ * gradient moment measured on the inside particles each sub-step (a
+ * settled column is no lattice: 0.752 against the lattice's 0.774). */
 #include <math.h>
 #include <stdint.h>
 
@@ -226,8 +74,8 @@ enum { LANES = MS_VOLUME_LANES };
  * neighbour indices, and the pair terms or r^2) MS_PREFETCH_ENTRIES
  * entries ahead (ms_prefetch_ahead, records_avx512.h): a sub-step's pair
  * terms (19 MB on the peer's scene) live in the shared cache, not the
- * core's, and the hardware prefetchers did not keep up (round twelve: an
- * error pass's pair loop took 0.84 ms, 0.63-0.70 ms with its data in L2).
+ * core's, and the hardware prefetchers do not keep up (an error pass's
+ * pair loop took 0.84 ms without, 0.63-0.70 ms with its data in L2).
  * Measured on the peer's scene's 0.3 s, thread CPU of the phases, three
  * alternated runs: the density solve 0.96-0.97x at 128, 256 and 512
  * entries (1024: no gain), the factors and divergence solve 0.97x with
@@ -550,7 +398,7 @@ static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst
  * multiply-adds, into the same lane accumulators, so the same bits as the
  * C loops. During the solves the packed copy v->pk holds (p, vx, vy, vz)
  * at floats 3..6 of each 8-float record (pk[3], the pressure slot, is not
- * read here: round nine, the update pass gathers s), so the 16 neighbours' data
+ * read here: the update pass gathers s), so the 16 neighbours' data
  * are sixteen 16-byte loads and a 4 x 4 transpose in each 128-bit lane, in
  * place of gathers (AVX-512 gathers were 35 % of a 32k dam break's
  * sub-step; forces.c measured the same technique). Vector a[k] holds the
@@ -643,12 +491,10 @@ __attribute__((target("avx512f"))) static inline float divergence_real_avx512(
  * (from v->df_s, which pk[3] copies) in place of sixteen 16-byte record
  * loads and their transpose, three of whose four values it never used.
  * Measured in one process, the two alternating on the same state (fig1
- * under DFSPH, 2500 update passes, loaded machine): 0.88x the time of
+ * under DFSPH, 2500 update passes): 0.88x the time of
  * the record loads. Values are moved, never computed: the same bits.
- * Inline (round twelve): GCC then inlined it into dfsph_part's AVX-512
- * clone (it cannot into the others): the density solve 0.96x on the
- * peer's scene (thread CPU of the phase, six alternated runs); dfsph_part
- * is now flattened, which inlines all of them there. */
+ * Inline, so that GCC inlines it into dfsph_part's AVX-512 clone (it
+ * cannot into the others), which is flattened (below). */
 __attribute__((target("avx512f"))) static inline void apply_real_avx512(
     const float *s, const int *idx, const float *gx, const float *gy, const float *gz, int n,
     float si, float out[3])
@@ -801,8 +647,8 @@ static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, c
     set_capped(v, i, v->vx[i] + c * sx, v->vy[i] + c * sy, v->vz[i] + c * sz);
     /* the running total of s, and the new velocity into the packed copy
      * the AVX-512 error loops read: no pass of an update reads pk (the
-     * update gathers s from df_s), so i's record may change under it
-     * (round fourteen: one per-particle pass fewer an iteration) */
+     * update gathers s from df_s), so i's record may change under it:
+     * one per-particle pass fewer an iteration */
     v->df_sum[i] += si;
     pack_velocity(v, i);
 }
@@ -838,7 +684,7 @@ static inline MS_DFSPH_INLINE int64_t divergence_error_of(ms_volume *v, const ms
 /* Built for AVX-512, AVX2 and the baseline as density.c's weight_sum: the
  * lanes loops vectorise (gathers), with no fused multiply-adds under
  * -std=c11 and IEEE sqrt and division, so every clone gives the same bits.
- * Flattened (round twelve): the AVX-512 clone inlines the AVX-512 pair
+ * Flattened: the AVX-512 clone inlines the AVX-512 pair
  * loops (the other clones cannot, and call them), so no call per
  * particle and the loops' constants stay in registers; measured on the
  * peer's scene (thread CPU of the phases, four alternated runs, against
@@ -1051,8 +897,8 @@ static ms_status reserve_terms(ms_volume *v)
  * An update whose error (the one it was computed from) already met eta
  * ends the solve once the minimum is done, with no error pass after it:
  * that pass would only confirm what the error before it said, the
- * update moving the iterate towards the solution. Measured (round nine,
- * the error before and after each iteration, 120 frames a scene): the
+ * update moving the iterate towards the solution. Measured (the error
+ * before and after each iteration, 120 frames a scene): the
  * divergence solve's first error met eta before its one obligatory
  * update in 90 % of fig1's sub-steps (69 % stir, 41 % fig4c), the
  * density solve's second in 57 % (99 % stir, 95 % fig4c); over about

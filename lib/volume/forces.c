@@ -70,8 +70,8 @@ static inline int padded(int n)
 /* The 8-float records pk[8 j] (x, y, z, p, vx, vy, vz, 1/rho) of the 16
  * particles j[0..16) as eight vectors of 16 lanes (lane l: particle
  * j[l], vector f: field f): sixteen 32-byte loads and an 8 x 8 transpose
- * in each 256-bit half, in place of eight 64-bit gathers (issue 12:
- * measured on this Zen 4 machine, the force pass's share of a 32k
+ * in each 256-bit half, in place of eight 64-bit gathers (measured on a
+ * Zen 4 CPU, the force pass's share of a 32k
  * sub-step went from 30 % to 20 %; with arrays in place of the written-out
  * temporaries GCC spilled them to the stack and there was no gain).
  * Vector a[k] holds the records of j[k] | j[k+4] (k < 4) or j[k+4] |
@@ -119,15 +119,14 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void lo
 
 #endif
 
-/* Issue 12, round nine: each particle's seven sums are 16 lane
+/* Each particle's seven sums are 16 lane
  * accumulators each; entry k of its real run goes to lane k % 16, then
  * entry k of its image run (both runs padded with zero terms) to lane
- * k % 16, and the lanes are summed once in ms_lanes_sum's order. Until
- * round eight the images were added one by one to the real run's lane
- * sums (a serial chain of 7 scalar adds an image, through a store of the
- * vector terms; measured in one process, this order makes a fig1 frame
- * about 2 % and a fig4c_x10 frame about 3 % faster); the same terms,
- * summed in another order (float round-off only). */
+ * k % 16, and the lanes are summed once in ms_lanes_sum's order. Adding
+ * the images one by one to the real run's lane sums instead is a serial
+ * chain of 7 scalar adds an image through a store of the vector terms:
+ * this order makes a fig1 frame about 2 % and a fig4c_x10 frame about 3 %
+ * faster (volume_ab, one process). */
 typedef struct pair_lanes {
     float px[16], py[16], pz[16], vx[16], vy[16], vz[16], d[16];
 } pair_lanes;
@@ -143,8 +142,7 @@ static pair_sums lanes_sum(const pair_lanes *a)
 #if MS_VOLUME_HAVE_AVX512
 /* The seven lane accumulators of sums_avx512, named (no array): with
  * a[7] and loops over its index GCC kept them on the stack once the pass
- * was flattened, and the image terms added to them through memory
- * (issue 12, round thirteen). */
+ * was flattened, and the image terms added to them through memory. */
 typedef struct lanes7 {
     __m512 px, py, pz, vx, vy, vz, d;
 } lanes7;
@@ -213,7 +211,7 @@ __attribute__((target("avx512f,avx512dq"), always_inline)) static inline void im
  * +0 (they start at +0, and +0 + -0 = +0): skipping them gives the same
  * bits, without the pass's only division, and the real neighbours' loop
  * loads the records' velocity halves alone (ms_load_quads: 16-byte
- * loads, a 4 x 4 transpose instead of 8 x 8; round twelve, issue 12).
+ * loads, a 4 x 4 transpose instead of 8 x 8).
  * The C loops still compute them (the same +0). */
 __attribute__((target("avx512f,avx512dq"), always_inline)) static inline pair_sums sums_avx512(
     const ms_volume *v, const int *restrict idx, const float *restrict r2s, int n, int i,
@@ -425,7 +423,7 @@ static inline void accel_of(ms_volume *v, int i, pair_sums s, float cp, float cv
 #if MS_VOLUME_HAVE_AVX512
 /* The force pass of particles [b, e) on AVX-512, sums_avx512 inlined: no
  * call a particle, the loop's constants and the seven accumulators kept in
- * registers (issue 12, round thirteen, as dfsph_part in round twelve).
+ * registers (as dfsph.c's flattened dfsph_part).
  * A particle at a shape adds its shape images in the C loop. The same
  * operations: the same bits. */
 __attribute__((target("avx512f,avx512dq"))) static void forces_range_avx512(ms_volume *v, int part,

@@ -6,8 +6,7 @@
  * row (x-1, x, x+1) are one contiguous run of particles; a step's first
  * sub-step takes instead the build the extraction made between steps
  * while nothing moved since (ms_volume_take_counted_pass, density.c).
- * With a pool the sort runs in the pool's chunks (issue 12: on one thread
- * it was the largest serial part of a sub-step, ~8 % of fig1_x10's frame):
+ * With a pool the sort runs in the pool's chunks (on one thread it was the largest serial part of a sub-step, ~8 % of fig1_x10's frame):
  * each chunk counts its particles per cell, the counts are summed in
  * (cell, chunk) order, and each chunk places its particles after those of
  * the chunks before it in the same cell: the same permutation as the
@@ -47,8 +46,7 @@ static void count_part(void *ctxp, int part, int b, int e)
 }
 
 /* The particles of [b, e) to their places: particle i to next[key[i]]++.
- * Between two sub-steps few particles change cells (measured, issue 12:
- * 2-16 of fig1's 2000 in most sub-steps, none in 30 %), so the particles
+ * Between two sub-steps few particles change cells (measured: 2-16 of fig1's 2000 in most sub-steps, none in 30 %), so the particles
  * land in long runs of consecutive places: a run grows while the next
  * particle's place follows the run's last one (the same cell, or a new
  * cell whose next place is just after), and each run is copied with one

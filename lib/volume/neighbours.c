@@ -56,7 +56,7 @@ static int reserve(ms_nlist *L, size_t more)
 }
 
 /* Room, once, for the lists to grow without allocating during the steps
- * (issue 15: no allocation in any step after the first). Called by the
+ * (no allocation in any step after the first). Called by the
  * first density pass with the lengths it needed: the real lists get twice
  * that (measured on the shipped scenes over 400 frames: at most 1.25x the
  * first pass's, as the liquid moves and compresses), the image lists
@@ -254,10 +254,8 @@ __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_avx5
  * here they are the candidates the real filter keeps in each block that
  * are also within h of the image, compressed in candidate order: the same
  * entries in the same order, with the same r^2 (the same positions, the
- * same operations). Issue 12, round thirteen: until then the filter
- * stored the kept neighbours' positions and the image filter loaded them
- * back, with the list's indices, right after those stores. *nimg gets the
- * image run's length. */
+ * same operations), with no stored positions loaded back right after
+ * their stores. *nimg gets the image run's length. */
 __attribute__((target("avx512f,bmi,bmi2,popcnt"))) static size_t filter_run_image_avx512(
     const float *restrict cx, const int *restrict cidx, size_t nc, size_t stride, const float q[3],
     float h2, int *restrict out, float *restrict out2, const float img[3], int tag,
@@ -402,7 +400,7 @@ static void rows_of(const ms_volume *v, long c, ms_rows *r)
  * full blocks; 5-6 since the pruning below) instead of nine short rows
  * (18 blocks, half of them part-empty, and a mispredicted loop exit per
  * row).
- * Issue 12, round ten: only the candidates that may lie within h of one
+ * Only the candidates that may lie within h of one
  * of the cell's particles are copied: box [lo, hi] holds the positions
  * of the particles that share the run, and a candidate whose per-axis
  * gaps to it (g = max(lo - x, x - hi, 0)) give g2 = (gx^2 + gy^2) + gz^2
@@ -600,11 +598,10 @@ static void pad(ms_nlist *L, size_t begin, int index, float h2)
 }
 
 #if MS_VOLUME_HAVE_AVX512
-/* pad() of the real list in AVX-512 (issue 12, round thirteen): the
- * slots [len, end) only, by two masked stores, where pad writes a whole
- * block in eight 16-byte stores. Round ten's two whole 64-byte stores
- * were slower (1.049x on the Zen 4 VM); so was this for the image list
- * (dam break 1.013x, fig1_x10 0.987x: not kept). */
+/* pad() of the real list in AVX-512: the slots [len, end) only, by two
+ * masked stores, where pad writes a whole block in eight 16-byte stores
+ * (two whole 64-byte stores were 1.049x slower on a Zen 4 CPU). The image
+ * list keeps pad(): this gained nothing there. */
 __attribute__((target("avx512f,bmi2"))) static void pad_avx512(ms_nlist *L, size_t begin, int index,
                                                                float h2)
 {

@@ -9,22 +9,22 @@
  * the pool stops its own threads and runs chunks 1.. as the engine's tasks
  * (enqueue, then finish each), chunk 0 on the calling thread: the same
  * split, the same bytes.
- * A shared pool (ms_vpool_create_shared, issue 12's work sharing) has no
+ * A shared pool (ms_vpool_create_shared, the sim's work sharing) has no
  * threads of its own: each loop's chunks are claimed one at a time by the
  * calling thread and by whoever else has a moment: a helper that another
  * part of the program lends while it has nothing to do (ms_vpool_help
  * between help_open and help_close: lib/sim's second thread once its
  * surface task is done), and, given the engine's task interface, one
- * engine task per loop that claims chunks like the helper (issue 15: the
- * volume's parallel-for through the engine's enqueue/finish, no thread of
- * the library's own). Chunks are claimed as they come, so a helper that
+ * engine task per loop that claims chunks like the helper (the volume's
+ * parallel-for through the engine's enqueue/finish, no thread of the
+ * library's own). Chunks are claimed as they come, so a helper that
  * arrives late still takes its share; who runs a chunk changes nothing in
  * it, so the bytes are the same.
- * Hand-over (issue 12, round five): a chunk is claimed with one atomic
+ * Hand-over: a chunk is claimed with one atomic
  * compare-and-swap on a word holding the loop's generation and the chunks
  * taken from each end, not under a mutex. The caller claims from the
- * front (0, 1, ...), a helper from the back (parts - 1, parts - 2, ...)
- * (round six): each thread then keeps the same end of the particle arrays
+ * front (0, 1, ...), a helper from the back (parts - 1, parts - 2, ...):
+ * each thread then keeps the same end of the particle arrays
  * from loop to loop, in its own core's cache, and they meet wherever the
  * work balances. With the chunks dealt alternately (one counter) the two
  * cores passed each loop's data back and forth: a per-thread CPU-time
@@ -270,10 +270,10 @@ static ms_status start_workers(ms_vpool *p)
 /* A pool with threads - 1 helper threads of its own (a volume's
  * desc.threads). Its loops are shared loops (run_shared) whose helpers
  * never leave: each spins MS_VPOOL_SPIN_US for the next loop before it
- * sleeps, so a step's loops, microseconds apart, cost no wake-up (issue
- * 12, round twelve: the condition variable it waited on before woke a
- * worker for every loop, and with 2 threads bench_volume's 2000-particle
- * sub-step took 0.78 ms against 1 thread's 0.33 on the Intel VM). The
+ * sleeps, so a step's loops, microseconds apart, cost no wake-up (a
+ * worker woken from a condition variable for every loop made
+ * bench_volume's 2000-particle sub-step 0.78 ms on 2 threads against 1
+ * thread's 0.33). The
  * split is the same chunks, so the same bytes. */
 ms_status ms_vpool_create(int threads, ms_vpool **out)
 {

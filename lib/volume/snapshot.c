@@ -1,4 +1,4 @@
-/* The SPH volume's part of a sim snapshot (snapshot.h, issue 17). */
+/* The SPH volume's part of a sim snapshot (snapshot.h). */
 #include <stddef.h>
 #include <stdatomic.h>
 #include <string.h>

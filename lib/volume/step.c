@@ -56,8 +56,7 @@ __attribute__((target("avx512f"), always_inline)) static inline __m512 norm2(__m
                          _mm512_mul_ps(z, z));
 }
 
-/* bounds_part in 16 lanes (issue 12, round thirteen; the C loop is
- * scalar at -O2): max_ps(a, m) is `a > m ? a : m`, the C loop's test (a
+/* bounds_part in 16 lanes (GCC leaves the C loop scalar at -O2): max_ps(a, m) is `a > m ? a : m`, the C loop's test (a
  * NaN a keeps m), and the maxima of lanes that start at +0 do not depend
  * on the order: the same results. Masked lanes read 0 and change
  * nothing. */
@@ -259,16 +258,14 @@ static ms_status substep_bound(ms_volume *v, int dfsph, float *out)
          * the peer's DamBreakModel steps 3.3 ms at d = 0.03 m), and by
          * its acceleration a dt^2 <= 0.16 lambda^2 spacing (the peer has
          * no such bound). The latter binds at rest (a = g) and as a column
-         * starts to fall. It was lambda^2/4 until round five (a corner
-         * particle of the 31k dam break compressed 22 %, a settled tank
-         * missed rho0 g d by 3.3 %), then lambda^2/16 until round eleven.
-         * Measured in round eleven, after the boundary, read-out and warm
-         * start fixes, factor f in dt = f lambda sqrt(d / a): the settled
+         * starts to fall. At lambda^2/4 a corner particle of the 31k dam
+         * break compressed 22 % and a settled tank missed rho0 g d by
+         * 3.3 %. The factor f in dt = f lambda sqrt(d / a): the settled
          * tank of test_volume (d = 0.02 m, frames of 1/60 s) meets rho0 g d
          * within 2 % at 3 sub-steps a frame (f 0.31-0.46) and misses it at
          * 2 (f 0.5: 2.0 %, 0.75: 2.1 %, 1.0: 3.8 %, at viscosity 0.5-1),
          * so no f gives fig1 (d = 0.05 m) 1 sub-step (f >= 0.58) while that
-         * test passes. f = 0.4 (0.25 before) keeps the tank at 3 sub-steps
+         * test passes. f = 0.4 (rather than 0.25) keeps the tank at 3 sub-steps
          * for accelerations down to 0.75 g and gives fig1 2 sub-steps
          * instead of 3 (max compression 0.43 -> 0.54 %), glass (d = 0.01 m)
          * 4.1 instead of 6 (1.1 -> 1.5 %; at 0.45, 3.4 and 3.9 %), and the
@@ -305,7 +302,7 @@ ms_status ms_volume_step(ms_volume *v, float dt)
     const int dfsph = v->desc.pressure == MS_PRESSURE_DFSPH;
     double rest = dt, tau = 0.0;
     long taken = 0;
-    /* Known before any work (i15): no state allows a sub-step longer than
+    /* Known before any work: no state allows a sub-step longer than
      * the CFL bound at rest, lambda h / c0 (the sound speed never falls
      * below c0 and speeds add to it), so a step needing more than
      * max_substeps of those is refused at once, not after max_substeps. */

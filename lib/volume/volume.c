@@ -529,7 +529,7 @@ ms_status ms_volume_add_collider(ms_volume *v, ms_shape *shape)
                        MS_VOLUME_MAX_COLLIDERS);
     v->col_expect_valid[v->ncolliders] = 0;
     v->colliders[v->ncolliders++] = shape;
-    v->pass_ready = 0; /* issue 12: the boundary terms changed (density.c) */
+    v->pass_ready = 0; /* the boundary terms changed (density.c) */
     return MS_OK;
 }
 

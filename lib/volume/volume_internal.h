@@ -101,8 +101,8 @@ int ms_vpool_parts(const ms_vpool *p);
  * every density pass. A list has a cache line of its own: each thread
  * bumps its part's `len` once a particle, and with the parts' lists
  * sharing a line that line went back and forth between the two cores
- * (issue 12, round twelve: bench_volume's 31k sub-step took 5.4 ms on 2
- * threads against 4.8 on 1 on the Intel VM; 3.3 with the line apart). */
+ * (bench_volume's 31k sub-step took 5.4 ms on 2 threads against 4.8 on
+ * 1; 3.3 with the line apart). */
 #define MS_VOLUME_IMAGE_SHIFT 24
 #define MS_VOLUME_IMAGE_SHAPE 8u
 typedef struct ms_nlist {
@@ -160,7 +160,7 @@ struct ms_volume {
     int *cell;                  /* cell of each particle (sorted order) */
     unsigned char *mark;        /* extraction: 1 surface, 2 neighbour of one */
     int counts_valid;           /* nbr[] matches the current positions */
-    /* issue 12: the pass of the last ms_volume_count_neighbours (grid,
+    /* The pass of the last ms_volume_count_neighbours (grid,
      * boundary terms, lists, density), offered only when it saw every
      * collider at its pose (as the next step's tau = 0 does: none moving
      * since the step, or the caller put it where the step left it), which
@@ -288,7 +288,7 @@ struct ms_volume {
     int df_pmean_n;
     long df_pmean_step;
     double df_pmean_until;
-    /* The warm start folded into the factors pass (dfsph.c, round ten).
+    /* The warm start folded into the factors pass (dfsph.c).
      * Per particle, cell order, valid during a sub-step while df_warm_on:
      * sum_j (w_i + w_j) g_ij (x_i - x_j) over the real neighbours and the
      * images, w the warm start's s at the last sub-step's dt (m^5/kg times
@@ -389,7 +389,7 @@ int ms_volume_neighbours_of(ms_volume *v, int part, int i, ms_rows *own, long *n
 /* 1, or 0 if the lists could not get their headroom (neighbours.c) */
 int ms_volume_lists_headroom(ms_volume *v, int part);
 /* Room for a wave field of `cells` for ms_volume_adapt_to_waves (interact.c),
- * so the sim's steps allocate nothing (i15). */
+ * so the sim's steps allocate nothing. */
 ms_status ms_volume_reserve_waves(ms_volume *v, size_t cells);
 
 /* density.c: the neighbour lists, and rho, prs, inv_rho, nbr for every

@@ -1,5 +1,5 @@
 #!/bin/sh
-# ParaView opens every kind of run the tool writes (issue 17): the demo
+# ParaView opens every kind of run the tool writes: the demo
 # scene, a run of 0 frames, of 1 frame, a run killed by SIGKILL, and runs
 # that write only some fields; each with ParaView's default reader for
 # run.xmf and the legacy reader for run.xdmf2 (tests/paraview/open_run.py),

@@ -1,5 +1,4 @@
-/* volume_ab: a one-process A/B of two builds of the library (issue 12,
- * round nine). Both shared libraries are loaded with dlmopen (each its own
+/* volume_ab: a one-process A/B of two builds of the library. Both shared libraries are loaded with dlmopen (each its own
  * namespace, so the same symbols do not clash) and stepped in turn: a
  * sub-step of each build's dam break (bench_volume's scene), or a frame of
  * each build's sim of a scene file, alternating which goes first; thread
@@ -110,8 +109,8 @@ static ms_volume *dam_break(const build *b, int target)
     return v;
 }
 
-/* bench_dfsph --peer's scene (SPlisHSPlasH's DamBreakModel as issue 12
- * timed it): a 32^3 block of spacing 0.0303 m in a 4 x 3 x 1.5 m box,
+/* bench_dfsph --peer's scene (SPlisHSPlasH's DamBreakModel, the scene
+ * SPlisHSPlasH itself was timed on): a 32^3 block of spacing 0.0303 m in a 4 x 3 x 1.5 m box,
  * DFSPH. */
 static ms_volume *peer_scene(const build *b)
 {

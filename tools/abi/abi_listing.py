@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The public ABI of libmodesplit as one JSON listing (issue 13).
+"""The public ABI of libmodesplit as one JSON listing.
 
 What it lists, from the public headers (include/modesplit/*.h) and the
 compiler that builds the library:

@@ -2,8 +2,8 @@
  * the same dam break (a column a x a x 2a released in a 4a x a x 2.2a
  * tank, h = 2 spacing, mu = 1 Pa s) with about 2k, 32k and 128k particles,
  * then the peer's scene (a 32^3 block of spacing 0.0303 m in a 4 x 3 x 1.5 m
- * box, 32768 particles, the first 0.3 s: SPlisHSPlasH's DamBreakModel as
- * issue 12 timed it) (--quick: 2k and 32k, 3 frames), simulated for a
+ * box, 32768 particles, the first 0.3 s: SPlisHSPlasH's DamBreakModel, the
+ * scene SPlisHSPlasH itself was timed on) (--quick: 2k and 32k, 3 frames), simulated for a
  * fixed time after a warm-up (the peer's scene: from its release), once per
  * law: ideal gas (k = 400 m^2/s^2, c = 20 m/s), Tait (c0 = 20 m/s) and
  * DFSPH (0.1 % average compression). For each: wall time per simulated
@@ -157,7 +157,7 @@ static void compression(const ms_volume *v, double *avg, float *mx)
 
 /* --scene FILE [--frames N]: a shipped scene as it is (its pressure law)
  * and with volume.pressure "dfsph", one thread each, interleaved frame by
- * frame (issue 12: switch a scene where DFSPH is faster at equal or better
+ * frame (a scene switches to DFSPH where it is faster at equal or better
  * accuracy). Per law: the volume's ms a frame (ms_stats.volume_ms: SPH and
  * interaction, no extraction), sub-steps a frame, DFSPH iterations a
  * sub-step (density + divergence), average and maximum compression as

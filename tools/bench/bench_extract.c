@@ -1,20 +1,19 @@
-/* Extraction benchmark (eqs. 16-18, issue 12's goal: < 0.3 ms a frame on
- * fig1): ms per ms_volume_extract_height call of a scene's volume after
+/* Extraction benchmark (eqs. 16-18): ms per ms_volume_extract_height call of a scene's volume after
  * 100 frames of the scene (the liquid in motion), at the scene's field
  * size, with 1 and 2 threads. With 2, a second thread of this program
  * lends itself to the volume's pool during the timed calls (as a 2-thread
  * sim's surface thread does while the volume steps, ms_vpool_help), so
  * phase B's columns run on both; without it the sim's pool has no
- * thread of its own outside a step and the call ran on one (until round
- * thirteen the 2-thread row timed exactly that: the 1-thread figure).
+ * thread of its own outside a step and the call would run on one (the
+ * 1-thread figure again).
  * Median and 10th/90th percentiles of
  * the repeats; cpu_ms, the calling thread's CPU time per call (the cost
  * of a 1-thread call on a loaded machine; with 2 threads the helper's
  * share is not in it); and "sim", the sim's own extract_ms per frame over 30 frames
  * (phase A with its neighbour recount, the particle copy, phase B; the
  * mean, one run). Each case runs twice, interleaved repeat by repeat,
- * both with the best gather of the CPU: the reference search (663cc3c's
- * code, ms_extract_snap.reference) and the band search (the default);
+ * both with the best gather of the CPU: the reference search (the column
+ * search the band search replaced, ms_extract_snap.reference) and the band search (the default);
  * "x" is the reference median over the band median. max_dh: the largest
  * |band - reference| of a cell over the 100 frames (phase B of each
  * frame's snapshot both ways, 1 thread), in m and in spacings. Writes
@@ -147,7 +146,7 @@ int main(int argc, char **argv)
             if (!h || !h2)
                 return 1;
             enum { REPEATS = 31 };
-            /* the searches to compare: the reference (663cc3c) and the band */
+            /* the searches to compare: the reference and the band */
             double t[2][REPEATS], tc[2][REPEATS];
             ms_extract_snap snap = {0};
             ms_extract_work work = {0};

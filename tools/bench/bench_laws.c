@@ -1,4 +1,4 @@
-/* Pressure-law benchmark on the shipped scenes (issue 12): each real-time
+/* Pressure-law benchmark on the shipped scenes: each real-time
  * scene with a volume, run whole (volume, extraction, waves, combine; no
  * rendering) on 1 thread under each pressure law, the laws' repeats
  * interleaved (ideal gas, Tait, DFSPH, ideal gas, ...) so a busy minute of

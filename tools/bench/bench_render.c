@@ -152,7 +152,7 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
     return 0;
 }
 
-/* ---- LP_NUM_THREADS (issue 14) -------------------------------------------
+/* ---- LP_NUM_THREADS ----------------------------------------------------
  *
  * llvmpipe reads LP_NUM_THREADS once, when it makes its first context, so
  * each setting runs in a child process of its own (this program again,

@@ -90,7 +90,7 @@ static int repeat(ms_sim *sim, const ms_scene *sc, int r, result *out)
 }
 
 /* Runs one scene with 1 and 2 threads, their repeats interleaved (1, 2,
- * 1, 2, ...: issue 12, round five), so that a busy minute of a shared
+ * 1, 2, ...), so that a busy minute of a shared
  * machine slows both alike and the ratio stays fair: run one after the
  * other, a minute when another process held a core slowed only the
  * 2-thread run. Frames per repeat chosen from the 1-thread warm-up

@@ -3,10 +3,10 @@
  * to the memory bandwidth measured in the same run and the bound it puts
  * on a step that streams its fields from memory. Writes surface.csv.
  *
- * Then the surface side of a sim's frame (issue 12, round nine) on fig1
- * and fig1_x10: the coupling's impulse, N_time wave steps ("waves") and
- * eq. 20 with the average the volume reads ("combine"), ms a frame, the
- * round-eight sequence (up-sample into a scratch field +
+ * Then the surface side of a sim's frame on fig1 and fig1_x10: the
+ * coupling's impulse, N_time wave steps ("waves") and eq. 20 with the
+ * average the volume reads ("combine"), ms a frame, the separate-call
+ * sequence (path "round8" in the CSV: up-sample into a scratch field +
  * ms_surface_excite, N_time ms_surface_step calls, the view copy,
  * up-sample + sum, the per-run average) against today's (one pass each,
  * fused sweeps), on the same sim, interleaved repeat by repeat, 1 thread
@@ -54,8 +54,8 @@ static ms_surface *make_pool(int n)
     return s;
 }
 
-/* Round eight's average (lib/sim/surface_task.c at 68f9f84): a run of
- * wave columns summed in a register, one run after the other. */
+/* The separate-call sequence's average: a run of wave columns summed in a
+ * register, one run after the other. */
 static void average_round8(ms_sim *sim, const float *w, float *out)
 {
     const int snx = sim->snx, fnx = sim->fnx;
@@ -138,8 +138,8 @@ static int frame_bench(int argc, char **argv, const char *machine, const char *c
                                "combine_ms_p10,combine_ms_p90,repeats");
     if (!csv)
         return 1;
-    printf("\nsurface side of a sim frame (issue 12): ms a frame, median [p10, p90], the\n"
-           "round-eight sequence and today's interleaved on the same sim, 1 thread\n");
+    printf("\nsurface side of a sim frame: ms a frame, median [p10, p90], the separate-call\n"
+           "sequence and today's interleaved on the same sim, 1 thread\n");
     printf("%-9s %9s %6s %6s %7s %20s %20s\n", "scene", "grid", "field", "n_time", "path",
            "waves ms", "combine ms");
     static const char *const scenes[] = {"fig1", "fig1_x10"};
@@ -211,8 +211,8 @@ int main(int argc, char **argv)
                    "ns per cell-update of the wave equation with speed and damping maps on grids\n"
                    "256^2 to 2048^2, one core (median, 10th-90th percentile), beside the memory\n"
                    "bandwidth; writes DIR/surface.csv (default DIR: bench). Then the surface side\n"
-                   "of a sim frame on fig1 and fig1_x10 (--data DIR: the scenes), round eight's\n"
-                   "sequence against today's, interleaved; writes DIR/surface_frame.csv.\n"))
+                   "of a sim frame on fig1 and fig1_x10 (--data DIR: the scenes), separate\n"
+                   "calls against today's sequence, interleaved; writes DIR/surface_frame.csv.\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     char machine[320], commit[64];

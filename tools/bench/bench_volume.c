@@ -6,7 +6,7 @@
  * 20 sub-steps that lets the column start to fall; the median and the
  * 10th/90th percentiles of the repeats are printed. Writes volume.csv.
  * --sizes N,N and --threads T run only those (an A/B of two builds runs
- * them alternately, issue 12). */
+ * them alternately). */
 #include <math.h>
 #include <string.h>
 

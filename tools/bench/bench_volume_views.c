@@ -1,4 +1,4 @@
-/* What ms_volume_particles costs (issue 13: the Python package's zero-copy
+/* What ms_volume_particles costs (the Python package's zero-copy
  * volume.positions / volume.velocities): once a caller asked for the
  * views, every ms_volume_step ends with one copy of the particles into
  * them. Two identical dam breaks (bench_volume's, 1 thread), one with the

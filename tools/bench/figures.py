@@ -1,28 +1,31 @@
 #!/usr/bin/env python3
-"""The README's speed figures against the committed bench CSVs (issue 15).
+"""The speed figures of README.md and docs/performance.md against the
+committed bench CSVs.
 
 data/bench/*.csv are the CSVs of one `make bench` on a quiet machine
-(data/bench/README.md says which machine, commit and date). README.md
-quotes them in two ways, both checked here:
+(data/bench/README.md says which machine, commit and date). The pages
+quote them in two ways, both checked here:
 
   * a figure as a Markdown link to its CSV whose title picks the row and
     the column:
         [259](data/bench/scenes.csv "scene=fig1 threads=2 fps_median_per_s")
-    The row is the one whose columns equal every key=value; the last word
-    is the column. The figure is checked at the decimals it is written
-    with (259 against 258.881 passes, 260 fails).
+    (from docs/, the link reads ../data/bench/...). The row is the one
+    whose columns equal every key=value; the last word is the column. The
+    figure is checked at the decimals it is written with (259 against
+    258.881 passes, 260 fails).
   * a generated table between <!-- bench-table NAME --> and
     <!-- /bench-table --> (NAME from TABLES below): rebuilt from the CSVs
     and compared line by line.
 
 Figures that are not linked are not checked: link a figure that comes from
-`make bench`; figures measured otherwise (a loaded machine, a one-off
-comparison) say so in their sentence.
+`make bench`; figures measured otherwise (a one-off comparison) say so in
+their sentence. Each page named must link or generate at least one figure.
 
-  figures.py --check [README.md]   exit 1 with one line per mismatch
-  figures.py --write [README.md]   rewrite every linked figure and table
+  figures.py --check [PAGE.md...]  exit 1 with one line per mismatch
+  figures.py --write [PAGE.md...]  rewrite every linked figure and table
   figures.py --commit BENCH_DIR    copy BENCH_DIR/*.csv into data/bench,
                                    write data/bench/README.md, then --write
+  PAGE.md defaults to README.md and docs/performance.md.
 """
 import csv
 import datetime
@@ -34,7 +37,8 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DATA = os.path.join(ROOT, "data", "bench")
-LINK = re.compile(r'\[([-+]?[0-9]+(?:\.[0-9]+)?)\]\((data/bench/[A-Za-z0-9_.-]+\.csv) "([^"]*)"\)')
+LINK = re.compile(r'\[([-+]?[0-9]+(?:\.[0-9]+)?)\]\((?:\.\./)?(data/bench/[A-Za-z0-9_.-]+\.csv) "([^"]*)"\)')
+PAGES = ["README.md", os.path.join("docs", "performance.md")]
 TABLE = re.compile(r"<!-- bench-table ([a-z_]+) -->\n(.*?)<!-- /bench-table -->", re.S)
 
 
@@ -117,7 +121,7 @@ def table_parts():
     for r in load("data/bench/extract.csv"):
         if r.get("gather") == "c":  # the C gather: bench_extract's reference row
             continue
-        if r.get("search") == "reference":  # issue 12 round 6: 663cc3c's root search
+        if r.get("search") == "reference":  # the column search the band search replaced
             continue
         out.append(f"| extraction (`extract.csv`) | {r['scene']}, {r['nx']}×{r['ny']}, "
                    f"{r['threads']} thread{'s' if r['threads'] != '1' else ''} | "
@@ -133,7 +137,7 @@ def table_parts():
 
 
 def table_laws():
-    """The shipped scenes under each pressure law (bench_laws, issue 12)."""
+    """The shipped scenes under each pressure law (bench_laws)."""
     rows = load("data/bench/laws.csv")
     out = ["| scene | particles | law | frames/s, 1 thread (p10–p90) | over the scene's law | "
            "volume ms a frame | sub-steps a frame | DFSPH iterations a frame | "
@@ -154,7 +158,7 @@ def table_laws():
 TABLES = {"scenes": table_scenes, "parts": table_parts, "laws": table_laws}
 
 
-def process(text, write):
+def process(text, write, page="README.md"):
     """(new text, mismatches)."""
     problems = []
 
@@ -166,35 +170,36 @@ def process(text, write):
         try:
             want = fmt(lookup(name, selector), decimals(quoted))
         except Mismatch as e:
-            problems.append(f"README.md:{line_of(m.start())}: {e}")
+            problems.append(f"{page}:{line_of(m.start())}: {e}")
             return m.group(0)
         if want != quoted:
             if not write:
-                problems.append(f'README.md:{line_of(m.start())}: {quoted} is {want} in {name} '
+                problems.append(f'{page}:{line_of(m.start())}: {quoted} is {want} in {name} '
                                 f'("{selector}")')
-            return f'[{want}]({name} "{selector}")'
+            prefix = "../" if m.group(0).split("(", 1)[1].startswith("../") else ""
+            return f'[{want}]({prefix}{name} "{selector}")'
         return m.group(0)
 
     def table(m):
         name = m.group(1)
         if name not in TABLES:
-            problems.append(f"README.md:{line_of(m.start())}: no bench table {name!r} "
+            problems.append(f"{page}:{line_of(m.start())}: no bench table {name!r} "
                             f"(known: {', '.join(TABLES)})")
             return m.group(0)
         try:
             want = "\n".join(TABLES[name]()) + "\n"
         except Mismatch as e:
-            problems.append(f"README.md:{line_of(m.start())}: {e}")
+            problems.append(f"{page}:{line_of(m.start())}: {e}")
             return m.group(0)
         if want != m.group(2) and not write:
             have = m.group(2).splitlines()
             for k, line in enumerate(want.splitlines()):
                 if k >= len(have) or have[k] != line:
-                    problems.append(f"README.md:{line_of(m.start(2)) + k}: bench table {name}: "
+                    problems.append(f"{page}:{line_of(m.start(2)) + k}: bench table {name}: "
                                     f"the CSVs give\n    {line}")
                     break
             else:
-                problems.append(f"README.md:{line_of(m.start(2))}: bench table {name} has "
+                problems.append(f"{page}:{line_of(m.start(2))}: bench table {name} has "
                                 f"extra lines")
         return f"<!-- bench-table {name} -->\n{want}<!-- /bench-table -->"
 
@@ -225,17 +230,17 @@ def commit(bench_dir):
 def write_readme(commits, machines, date, names):
     with open(os.path.join(DATA, "README.md"), "w") as f:
         f.write("# Committed bench results\n\n"
-                "The CSVs of one `make bench` on a quiet machine; README.md's speed\n"
-                "figures link to them and `make check` (`check-bench-figures`,\n"
-                "tools/bench/figures.py) fails when one differs.\n\n"
+                "The CSVs of one `make bench` on a quiet machine; the speed figures\n"
+                "of README.md and docs/performance.md link to them and `make check`\n"
+                "(`check-bench-figures`, tools/bench/figures.py) fails when one differs.\n\n"
                 f"- commit: {', '.join(commits)}\n"
                 f"- machine: {', '.join(machines)} (as `make bench` names it in each row)\n"
                 f"- date: {date}\n"
                 f"- files: {', '.join(names)}\n\n"
                 "To refresh: on a quiet machine `make bench`, then `make bench-commit`\n"
                 "(copies bench/*.csv here, rewrites this file and every linked figure\n"
-                "and generated table of README.md); read the diff of README.md, whose\n"
-                "prose may need to follow the new figures, and commit both.\n")
+                "and generated table of README.md and docs/performance.md); read their\n"
+                "diff, whose prose may need to follow the new figures, and commit them.\n")
 
 
 def main(argv):
@@ -244,33 +249,39 @@ def main(argv):
         argv = [argv[0], "--write"]
     if len(argv) < 2 or argv[1] not in ("--check", "--write"):
         sys.exit(__doc__)
-    readme = argv[2] if len(argv) > 2 else os.path.join(ROOT, "README.md")
-    with open(readme) as f:
-        text = f.read()
-    new, problems = process(text, argv[1] == "--write")
-    if argv[1] == "--write":
+    pages = argv[2:] or [os.path.join(ROOT, p) for p in PAGES]
+    failed = 0
+    for page in pages:
+        name = os.path.relpath(page, ROOT) if os.path.isabs(page) else page
+        with open(page) as f:
+            text = f.read()
+        new, problems = process(text, argv[1] == "--write", name)
+        if argv[1] == "--write":
+            if problems:
+                print("\n".join(problems), file=sys.stderr)
+                failed = 1
+                continue
+            if new != text:
+                with open(page, "w") as f:
+                    f.write(new)
+            print(f"bench figures: {name} follows data/bench/*.csv")
+            continue
         if problems:
             print("\n".join(problems), file=sys.stderr)
-            return 1
-        if new != text:
-            with open(readme, "w") as f:
-                f.write(new)
-        print(f"bench figures: {readme} follows data/bench/*.csv")
-        return 0
-    if problems:
-        print("\n".join(problems), file=sys.stderr)
-        print(f"check-bench-figures: {len(problems)} figure(s) of README.md differ from "
-              "data/bench/*.csv (after a deliberate `make bench`: `make bench-commit`)",
-              file=sys.stderr)
-        return 1
-    figures = len(LINK.findall(text))
-    tables = len(TABLE.findall(text))
-    if figures + tables == 0:
-        print("check-bench-figures: README.md links no figure to data/bench/", file=sys.stderr)
-        return 1
-    print(f"bench figures: {figures} linked figures and {tables} tables of README.md match "
-          "data/bench/*.csv")
-    return 0
+            print(f"check-bench-figures: {len(problems)} figure(s) of {name} differ from "
+                  "data/bench/*.csv (after a deliberate `make bench`: `make bench-commit`)",
+                  file=sys.stderr)
+            failed = 1
+            continue
+        figures = len(LINK.findall(text))
+        tables = len(TABLE.findall(text))
+        if figures + tables == 0:
+            print(f"check-bench-figures: {name} links no figure to data/bench/", file=sys.stderr)
+            failed = 1
+            continue
+        print(f"bench figures: {figures} linked figures and {tables} tables of {name} match "
+              "data/bench/*.csv")
+    return failed
 
 
 if __name__ == "__main__":

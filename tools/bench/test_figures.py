@@ -46,6 +46,8 @@ def expect(ok, text, word=None):
 
 
 expect(True, f"[{V0}]({ROW}) and [{V1}]({ROW}) and [{V2}]({ROW})\n")
+expect(True, f"from docs/: [{V0}](../{ROW})\n")
+expect(False, f"from docs/: [{float(V0) + 1:.0f}](../{ROW})\n", V0)
 expect(False, f"[{float(V0) + 1:.0f}]({ROW})\n", V0)
 expect(False, f"[{float(V1) - 0.1:.1f}]({ROW})\n", V1)
 expect(False, '[1](data/bench/scenes.csv "scene=fig1 fps_median_per_s")\n', "2 rows")
@@ -61,4 +63,4 @@ _, _, table = run("<!-- bench-table scenes -->\n<!-- /bench-table -->\n", "--wri
 expect(True, table)
 expect(False, table.replace("| fig1 | 2000 |", "| fig1 | 2001 |", 1), "bench table scenes")
 expect(False, "<!-- bench-table nope -->\n<!-- /bench-table -->\n", "no bench table")
-print("bench figures: the check refuses wrong figures, selectors and tables (12 cases)")
+print("bench figures: the check refuses wrong figures, selectors and tables (14 cases)")

@@ -159,7 +159,7 @@ static FILE *open_video(const render_opts *o, int w, int h, double fps)
     return f;
 }
 
-/* The file's floaters of frame f (issue 17: /floaters) as leaves, drawn
+/* The file's floaters of frame f (/floaters) as leaves, drawn
  * as a run draws them (lib/render/draw_sim.c: 3 cm across in a 1 m pool,
  * brown); nothing when the file has none. 0 or -1 (ms_last_error). */
 static int floater_discs(const ms_reader *rd, long f, ms_renderer *r, const ms_renderer_desc *d)

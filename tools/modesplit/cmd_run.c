@@ -233,7 +233,7 @@ static int run_open(run_state *r)
         }
     }
     ms_sim_field_grid(r->sim, MS_FIELD_COMBINED, &r->grid);
-    r->png.sim = r->sim; /* the renderer draws the sim's floaters and boat too (issue 14) */
+    r->png.sim = r->sim; /* the renderer draws the sim's floaters and boat too */
     return EXIT_OK;
 }
 

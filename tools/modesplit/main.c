@@ -1,6 +1,6 @@
 /* modesplit: run scenes, inspect run files, validate scenes, list plugins.
  * main() dispatches to one cmd_*.c per command; the usage text here is the
- * reference (README.md repeats it). */
+ * reference (docs/tool.md repeats it). */
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -317,7 +317,7 @@ static int dispatch(int argc, char **argv)
         return cmd_plugins(argc - 1, argv + 1);
     if (!strcmp(cmd, "accuracy"))
         return cmd_accuracy(argc - 1, argv + 1);
-    /* the renderer's commands (issue 14) */
+    /* the renderer's commands */
     if (!strcmp(cmd, "render"))
         return cmd_render(argc - 1, argv + 1);
     if (!strcmp(cmd, "cubemap"))

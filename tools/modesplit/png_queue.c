@@ -1,4 +1,4 @@
-/* PNG encoding off the render thread (issue 14): `modesplit run --png` and
+/* PNG encoding off the render thread: `modesplit run --png` and
  * `modesplit render --png` hand each drawn frame's pixels (a copy) to one
  * writer thread, which encodes them with ms_image_write_png in the order
  * they came, while the caller draws the next frame. At most PNG_QUEUE_DEPTH

@@ -1,4 +1,4 @@
-/* modesplit run SCENE --resume RUN.h5 (issue 17): continue a run that was
+/* modesplit run SCENE --resume RUN.h5: continue a run that was
  * killed or stopped, appending to its file.
  *
  * How: the file holds the sim's whole state (ms_sim_snapshot) with every

@@ -75,7 +75,7 @@ int tool_command_usage(FILE *f, const char *cmd);
  * the command's usage text lists. */
 void tool_unknown_option(const char *cmd, const char *opt);
 int cmd_view(int argc, char **argv); /* cmd_view.c, view_*.c */
-/* the renderer's commands (issue 14) */
+/* the renderer's commands */
 int cmd_render(int argc, char **argv);
 int cmd_cubemap(int argc, char **argv);
 int cmd_accuracy(int argc, char **argv);

@@ -1,4 +1,4 @@
-/* `modesplit view` (issue 16): the interactive window of the paper's Fig. 1.
+/* `modesplit view`: the interactive window of the paper's Fig. 1.
  *
  * cmd_view.c     the window (SDL2 + its OpenGL context), the loop, the
  *                renderer drawing into the window (ms_renderer_create_in_context)

@@ -139,7 +139,7 @@ SIZE_FIELDS = ("size", "struct_size")
 def new_struct(name):
     """A zeroed struct for C to fill (ms_stats, infos) or for a desc that has
     no *_desc_default(). If it carries a size field (the "descs only grow"
-    promise, issue 13/15), that is set to the size the package's listing
+    promise), that is set to the size the package's listing
     gives, as a C caller's sizeof would; descs with a default come from C."""
     s = STRUCTS[name]()
     for f in SIZE_FIELDS:

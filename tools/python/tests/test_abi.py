@@ -1,4 +1,4 @@
-"""The package's layouts and functions are the ABI listing's (issue 13)."""
+"""The package's layouts and functions are the ABI listing's."""
 import ctypes
 import json
 
