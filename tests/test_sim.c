@@ -85,7 +85,7 @@ START_TEST(surface_only_scene_holds_no_particles_and_runs_no_sph)
 }
 END_TEST
 
-/* A scene's DFSPH limits reach the solver (issue 12): caps bound the
+/* A scene's DFSPH limits reach the solver: caps bound the
  * iterations of every sub-step, and a tighter error costs more of them. A
  * column released into a pool, so the solves have work to do. */
 static ms_volume_info dfsph_run(const char *limits)
@@ -271,7 +271,7 @@ START_TEST(a_given_n_time_must_keep_within_the_cfl_bound)
     ms_sim_destroy(sim);
     ms_scene_destroy(ok);
     ms_scene *bad = scene("{" POOL_DOMAIN ", " POOL_SURFACE ", \"coupling\": {\"n_time\": 1}}");
-    sim = NULL; /* the scene's frame is known: refused at creation (issue 11) */
+    sim = NULL; /* the scene's frame is known: refused at creation */
     MS_ASSERT_REFUSED(ms_sim_create_from_scene(bad, 1, &sim), MS_ERR_UNSTABLE, "n_time 1");
     ck_assert_ptr_null(sim);
     ms_scene_destroy(bad);
@@ -372,7 +372,7 @@ static void helper_sim_free(ms_sim *sim)
     free(sim->excite);
 }
 
-/* Issue 12: the average for the volume sums across SPH columns to be fast;
+/* The average for the volume sums across SPH columns to be fast;
  * per SPH cell it must make the additions of the plain loop (row by row,
  * left to right) in the same order, so the volume sees the same bits, also
  * where N_surf is not an integer (runs of unequal length) and where an SPH
@@ -418,7 +418,7 @@ START_TEST(average_is_bitwise_the_plain_loop)
 }
 END_TEST
 
-/* Issue 12: the combine in one pass over the solver's padded rows gives
+/* The combine in one pass over the solver's padded rows gives
  * the bits of up-sampling + sum and of the average, done one after the
  * other on a contiguous copy. */
 START_TEST(combine_in_one_pass_is_the_two_passes)
@@ -455,7 +455,7 @@ START_TEST(combine_in_one_pass_is_the_two_passes)
 }
 END_TEST
 
-/* Issue 12: the coupling's impulse added straight into the wave solver is
+/* The coupling's impulse added straight into the wave solver is
  * ms_surface_excite(up(e), 1) bit for bit, obstacles included; an impulse
  * that is not finite is still refused with the surface's sentence. */
 START_TEST(excite_in_one_pass_is_surface_excite)

@@ -434,7 +434,7 @@ static uint64_t packed_twice(int law, int *skipped)
      * DFSPH gets 0.6 m: in a 0.3 m box it could never reach rest density,
      * its constant-density target is unreachable and its solve pushed at
      * the c0 cap every sub-step, sloshing at ~c0 without decay (measured:
-     * KE 1800 J at frame 30 as at frame 1; issue 12, round 3). */
+     * KE 1800 J at frame 30 as at frame 1). */
     const float tall = law == MS_PRESSURE_DFSPH ? 0.6f : 0.3f;
     ms_volume *v = sph(law, 0.3f, tall, 0.03f, 0);
     if (!v)
@@ -653,7 +653,7 @@ START_TEST(refuse_a_wave_grid_of_zero_cell_size)
 {
     ms_surface_desc d = ms_surface_desc_default();
     ms_surface *s = NULL;
-    /* a value outside its domain: MS_ERR_INVALID_ARGUMENT (issue 15's rule) */
+    /* a value outside its domain: MS_ERR_INVALID_ARGUMENT (the library's rule) */
     d.dx = 0;
     MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_INVALID_ARGUMENT, "dx 0 m");
     d.dx = NAN;
@@ -666,7 +666,7 @@ START_TEST(refuse_a_wave_speed_that_is_not_positive)
 {
     ms_surface_desc d = ms_surface_desc_default();
     ms_surface *s = NULL;
-    /* a value outside its domain: MS_ERR_INVALID_ARGUMENT (issue 15's rule) */
+    /* a value outside its domain: MS_ERR_INVALID_ARGUMENT (the library's rule) */
     d.wave_speed = 0;
     MS_ASSERT_REFUSED(ms_surface_create(&d, &s), MS_ERR_INVALID_ARGUMENT, "wave_speed 0 m/s");
     d.wave_speed = INFINITY;

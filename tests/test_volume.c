@@ -227,7 +227,7 @@ START_TEST(a_step_needing_too_many_substeps_is_unstable_and_leaves_a_valid_state
     ck_assert_int_eq(ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.2f, 0.2f, 0.2f}),
                      MS_OK);
     /* 1 s needs at least 625 sub-steps even at rest (0.4 h / c0): refused
-     * before any work (i15) */
+     * before any work */
     MS_ASSERT_REFUSED(ms_volume_step(v, 1.0f), MS_ERR_UNSTABLE, "max_substeps");
     ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
@@ -348,9 +348,7 @@ static void depth_below_surface(const ms_volume *v, double area, double spacing,
  * floor 4.2 % low, the one 2.5 spacings down 2.5 % low, the others within
  * 2.1 %),
  * Tait within 3.3 % (2.3-2.9 % high inside, the layer 2.5 spacings down
- * 0.8 % low). Until round ten d was volume over area
- * minus z and the bound 5 % + rho0 g spacing/4 (a level known to a quarter
- * spacing). The compression stays within 3 x what the law gives at rest,
+ * 0.8 % low). The compression stays within 3 x what the law gives at rest,
  * rho0 g H / (rho0 c^2) = g H / c^2 = 0.7 % here (the settling column
  * overshoots): 2 %. */
 static void hydrostatic(ms_pressure law)
@@ -428,7 +426,7 @@ END_TEST
 /* DFSPH (incompressible): a settled 0.28 m column's pressure (dfsph.c's
  * read-out: both solves' impulses as a pressure, the mean over each
  * step's sub-steps, the measured gradient moment), averaged over 1.5 s,
- * matches rho0 g d within 2 % (issue 12's bar) below the first layer, at
+ * matches rho0 g d within 2 % below the first layer, at
  * every viscosity of the scenes' range, d counted as the liquid above
  * (depth_below_surface): in every layer (a spacing thick) deeper than 2 h,
  * and in every slab h thick (two consecutive layers; h, the kernel's
@@ -456,16 +454,14 @@ END_TEST
  * weight sets the difference of the pressures of the layers above and
  * below it, so the odd layers' pressures are tied to each other and the
  * even layers' to each other, and where the neighbourhood is cut (the
- * surface's clamp, the floor) the two sets settle apart. Until round ten
- * the level was volume over area and the slabs a spacing thick by z: the
- * slab 2.5 spacings down read 2.2-4 % low and was allowed 2 % + rho0 g
- * spacing/8. The slope of p against z, fitted over the layers deeper than
- * h (blind to the level), is rho0 g within 2 % (measured within 0.8 %). Before (round eight, the
- * density solve's share read at each step's last sub-step) the worst
- * slab was 1.3 % off at viscosity 5 but 3.1, 4.6, 6.7, 9.8 and 4.7 % at
- * 4.99, 5.01, 5.05, 3 and 8: the iteration counts alternate sub-step by
- * sub-step (a warm start's period-2 swing, e.g. 3, 17, 2, 19 iterations)
- * and a frame of 4 sub-steps always read the same phase of it.
+ * surface's clamp, the floor) the two sets settle apart. The slope of p
+ * against z, fitted over the layers deeper than h (blind to the level),
+ * is rho0 g within 2 % (measured within 0.8 %). The pressure is read as
+ * an average over the frame's sub-steps, not at its last one: the
+ * iteration counts alternate sub-step by sub-step (a warm start's
+ * period-2 swing, e.g. 3, 17, 2, 19 iterations), and a frame of 4
+ * sub-steps read at its last always saw the same phase of it (the worst
+ * slab then 1.3 % off at viscosity 5 but 9.8 % at 3).
  * The compression at the positions each step ends with, max(rho/rho0 - 1,
  * 0), averages at most the desc's 0.1 % plus a tenth of it (measured
  * 0.097-0.099 % at the seven viscosities) and peaks below 1 % (measured
@@ -565,8 +561,8 @@ static void hydrostatic_dfsph(float viscosity)
     ms_volume_destroy(v);
 }
 
-/* The scenes' viscosities span 0.5-8; 4.99, 5 and 5.01 are round eight's
- * counter-example (a read-out tuned to one setting). */
+/* The scenes' viscosities span 0.5-8; 4.99, 5 and 5.01 guard
+ * against a read-out tuned to one setting. */
 START_TEST(hydrostatic_pressure_matches_rho_g_d_dfsph)
 {
     if (skip_under_tsan())
@@ -708,8 +704,7 @@ START_TEST(dam_break_follows_martin_and_moyce)
 END_TEST
 
 /* The same dam break with DFSPH against the ideal gas law at the same 800
- * particles (issue 12: "at least as close as the weakly compressible
- * solver"). The column H(tau) is: measured 10.3 % against 10.4 % (over
+ * particles: at least as close as the weakly compressible solver. The column H(tau) is: measured 10.3 % against 10.4 % (over
  * frames of 1-4 ms, which resample both and change DFSPH's sub-steps,
  * 7.6-11.1 % against 9.3-14.5 %); asserted: within 2 points of the ideal
  * gas's. The front Z(T) is NOT: RMS 0.290 against 0.197 (0.290-0.302
@@ -992,7 +987,7 @@ static double root_distance(const ms_extract_snap *s, double px, double py, doub
     return best;
 }
 
-/* Issue 12: the band path (bins with the wall images, a secant root
+/* The band path (bins with the wall images, a secant root
  * search) against the reference (663cc3c's: the same walk, a bracket
  * closed to 1/256 of a spacing) over frames of moving liquid in three
  * shipped scenes, walls and corners included, the raw columns (no eq. 18
@@ -1067,7 +1062,7 @@ START_TEST(the_band_search_finds_the_reference_surface)
 }
 END_TEST
 
-/* Issue 12: a glass column under DFSPH (acceleration-bound factor 0.5)
+/* A glass column under DFSPH (acceleration-bound factor 0.5)
  * whose phi dips under T between two layers below its surface: the secant
  * stalled at the bracket's lower end for ten steps and its estimate stood
  * 0.15 mm (7.7 tol/2) from the nearest root (main 914c088). Its spheres (z, 1 - d^2 / R^2) as
@@ -1260,7 +1255,7 @@ END_TEST
 /* The same with the poly6 density kernel, the ideal gas and Tait laws
  * and a moving sphere in the liquid (its shape images take the force
  * pass's C loop on every path; the wall field, damping, weight sums and
- * pressure laws have AVX-512 loops of their own since round thirteen):
+ * pressure laws have AVX-512 loops of their own):
  * every path gives the same bytes. */
 static uint64_t run_ball_isa(int isa, ms_pressure law)
 {

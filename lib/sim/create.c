@@ -137,7 +137,7 @@ static ms_status alloc_buffers(ms_sim *sim, int floaters)
                     if (!sim->wave_snap[k])
                         return oom("the surface->volume coupling");
                 }
-                /* and the volume's record of them (i15: steps allocate nothing) */
+                /* and the volume's record of them (steps allocate nothing) */
                 MS_TRY(ms_volume_reserve_waves(sim->volume, nf));
                 sim->wave_colmap = sim_alloc(&sim->own_surface_bytes, (size_t)sim->snx,
                                              sizeof *sim->wave_colmap);
@@ -402,7 +402,7 @@ ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out
     ms_sim *sim;
     MS_TRY(create_common(&d, origin, sc->level, sc, &sim));
     /* the scene knows its frame: what no sub-stepping can make stable at
-     * that frame is refused here, at creation (issue 11) */
+     * that frame is refused here, at creation */
     ms_status bad = check_scene_frame(sim, sc->frame_dt);
     if (bad != MS_OK) {
         ms_sim_destroy(sim);

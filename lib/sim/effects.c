@@ -108,13 +108,13 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
         st = ms_surface_add_disturber(sim->surface, &d, &sim->boat_id);
         /* its path now, at speed 0 (it stays on the first point, as above),
          * so the start sets it again in the same block: the frame the boat
-         * starts allocates nothing (i15) */
+         * starts allocates nothing */
         if (st == MS_OK && n > 1)
             st = ms_surface_set_disturber_path(sim->surface, sim->boat_id, n, sim->boat_xy, 0.0f,
                                                sc->boat_path.loop);
     }
     /* the dent the pointer drags without a volume is added when the drag
-     * starts: its room now (i15) */
+     * starts: its room now */
     if (st == MS_OK && sim->surface && sc->has_drag && !sim->volume)
         st = ms_surface_reserve_disturbers(sim->surface, sc->has_boat ? 2 : 1);
     if (st == MS_OK && sim->surface && sc->ndrops > 0) {
@@ -125,7 +125,7 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
         sim->own_effects_bytes += (size_t)sc->ndrops * sizeof *sim->drop_order;
         /* every drop is checked now, as ms_surface_add_drop will check it
          * when it falls: `modesplit check` then refuses what `run` would
-         * refuse at a later frame (i15) */
+         * refuse at a later frame */
         const float extent = (float)MS_MAX(sim->snx, sim->sny) * sim->sdx;
         for (int i = 0; i < sc->ndrops; ++i) {
             const float r = sc->drops[i].radius;

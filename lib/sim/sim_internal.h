@@ -220,7 +220,7 @@ void ms_sim_average_waves(ms_sim *sim, const float *wave, float *out);
 ms_status ms_sim_worker_start(ms_sim *sim);
 /* The threads of threads = 2 (worker.c): the engine's tasks when given,
  * else the sim's own second thread; either way a volume of one thread
- * shares its loops with the other side (issue 12, issue 15). */
+ * shares its loops with the other side (or with the engine's tasks). */
 ms_status ms_sim_setup_threads(ms_sim *sim);
 void ms_sim_worker_stop(ms_sim *sim);
 void ms_sim_worker_run(ms_sim *sim, ms_task_fn *fn, void *arg);

@@ -1,4 +1,4 @@
-/* ms_sim_snapshot / ms_sim_restore (issue 17): the whole state of a sim
+/* ms_sim_snapshot / ms_sim_restore: the whole state of a sim
  * between two steps as one byte blob, so that a run continues from it
  * with the same bytes as a run never stopped (the one-frame pipeline of
  * Fig. 8 included: both slots of the hand-over buffers).

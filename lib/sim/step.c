@@ -12,7 +12,7 @@
  * start (t_0), which the surface task of the first call turns into the
  * field it shows. Done lazily so that an engine can fill the volume
  * between ms_sim_create and the first step. */
-/* Issue 15: no allocation in any step after the first. The first makes
+/* No allocation in any step after the first. The first makes
  * every block the frames use at its largest: the second snapshot slot and
  * particle copy (the volume's particle count bounds both); the field
  * extraction's scratch, at the most threads it runs on (into hfield[1],
@@ -165,7 +165,7 @@ static ms_status step_frame(ms_sim *sim, float frame_dt)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: frame_dt %g s is outside (0, 10] s",
                        (double)frame_dt);
     /* a fixed N_time too small for this frame: refused before anything
-     * runs (issue 11), not a frame later when the pipeline's waves take
+     * runs, not a frame later when the pipeline's waves take
      * it up; a scene's sim was refused at creation already */
     if ((st = ms_sim_check_n_time(sim, frame_dt)) != MS_OK)
         return st;

@@ -115,7 +115,7 @@ void ms_sim_upsample_add(const ms_sim *sim, const float *field, const float *wav
 /* 3.5's impulse up(e) added to the wave solver's f^n and v in its own
  * padded rows (an impulse: f^{n-1} stays), as ms_surface_excite(up(e), 1)
  * does, in one pass instead of three (up-sample into a scratch field, the
- * check of every wave cell, the sum; issue 12): the same sums, so the same
+ * check of every wave cell, the sum): the same sums, so the same
  * bits. Up-sampled values are convex combinations of e, so checking the
  * fnx * fny values of e bounds them all; a value that is not finite or
  * not below 1e30 m takes the checked path, which refuses it. */
@@ -201,7 +201,7 @@ static void avg_flush(const ms_sim *sim, const avg_state *st, float *out)
  * SPH cell, but the chains of different cells are independent, so they
  * overlap in the core. Measured on fig1's 400 x 50 rows (AMD EPYC, one
  * thread): 55 us a frame, against 70 for the run loop that compared each
- * wave column's SPH column (round eight) and 77-105 for the loop across
+ * wave column's SPH column and 77-105 for the loop across
  * SPH columns with gathers (hardware or emulated: gathers are slow here). */
 static void run_sums(float *restrict acc, const float *restrict src, const int *restrict r0,
                      int fnx)

@@ -61,10 +61,10 @@ ms_status ms_sim_setup_threads(ms_sim *sim)
         ms_sim_worker_stop(sim);
     if (sim->threads != 2 || !sim->volume)
         return MS_OK; /* nothing runs beside the volume */
-    /* work sharing (issue 12): a volume of one thread splits its loops in
+    /* work sharing: a volume of one thread splits its loops in
      * chunks that the other side claims while it has nothing to do: this
      * sim's second thread once its surface task is done (step.c), or one
-     * engine task per loop (issue 15: no thread of the library's own when
+     * engine task per loop (no thread of the library's own when
      * the engine gives its tasks). A volume-only sim too: its second side
      * is the height field's column search, which leaves most of the frame
      * free. The same bytes either way. */

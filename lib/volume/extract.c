@@ -34,7 +34,7 @@
  * and snapshots what the columns need; B, a pure function of the snapshot,
  * bins, searches the columns and smooths, on any thread (lib/sim runs it
  * on the surface thread, Fig. 8). B's column search comes in two forms:
- * the band search (columns_band, the default since issue 12's round six)
+ * the band search (columns_band, the default)
  * and the reference (columns_reference, 663cc3c's bytes), kept to measure
  * the first against.
  */
@@ -81,7 +81,7 @@ static ms_status scratch(void **p, size_t *cap, size_t need, size_t size)
     if (need <= *cap)
         return MS_OK;
     /* half again what is needed: a growing liquid reallocates a few times,
-     * not every frame (i15: steps allocate only at a new high-water mark) */
+     * not every frame (steps allocate only at a new high-water mark) */
     size_t grown = need + need / 2;
     void *q = ms_alloc_array(grown, size);
     if (!q)
@@ -1097,9 +1097,8 @@ static inline __attribute__((always_inline)) void band_gather(const column_ctx *
 /* Columns [b, e) of the rectangle by the band: one run of candidates a
  * column (images are particles of the extended bins), then the secant
  * root search, NSLOT columns at a time (search): two measured 1.09-1.14x
- * faster than one on fig1 (same process, interleaved; 1.32x on an Intel
- * Xeon in round twelve), three and four no faster than two (slower on
- * that Xeon). A column is gathered one column ahead of its search (into
+ * faster than one on fig1 (same process, interleaved; bench_extract),
+ * three and four no faster than two. A column is gathered one column ahead of its search (into
  * an NSLOT + 1-th buffer): the gather's overlapping compress stores are
  * then written to the cache by the time the column's first evaluation
  * loads them, not still in the store buffer, which cannot forward a load
@@ -1469,7 +1468,7 @@ static ms_status columns_reference(const ms_extract_snap *s, ms_extract_work *w,
      * reaches (row_reaches) */
     const int parts = ms_vpool_parts(pool);
     const size_t reach_stride = 2 * (size_t)ceilf(s->R / dye) + 1;
-    /* sized for the snapshot's capacity, not its m: no growth as m does (i15) */
+    /* sized for the snapshot's capacity, not its m: no growth as m does */
     const size_t mcap = (size_t)s->cap;
     ms_status st = scratch((void **)&w->start, &w->start_cap, cells + 1, sizeof(int));
     if (st == MS_OK)
@@ -1539,7 +1538,7 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     const int ex = nx + 2 * rx, ey = ny + 2 * ry;
     const size_t ecells = (size_t)ex * ey;
     const int parts = ms_vpool_parts(pool);
-    /* sized for the snapshot's capacity, not its m: no growth as m does (i15) */
+    /* sized for the snapshot's capacity, not its m: no growth as m does */
     const size_t mcap = (size_t)s->cap, icap = 4 * mcap; /* a particle and 3 images */
     ms_status st = scratch((void **)&w->start, &w->start_cap, ecells + 1, sizeof(int));
     if (st == MS_OK)

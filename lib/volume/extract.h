@@ -71,7 +71,7 @@ ms_status ms_extract_cell(const ms_extract_snap *s, ms_extract_work *w, int nx, 
                           int j, float *out);
 /* The volume's worker threads, for phase B while the volume rests. */
 ms_vpool *ms_volume_extract_pool(ms_volume *v);
-/* Work sharing (issue 12): a volume of one thread (threads 1, NULL pool)
+/* Work sharing: a volume of one thread (threads 1, NULL pool)
  * gets a shared pool of MS_VPOOL_SHARED_PARTS chunks per loop and no
  * threads of its own; another thread helps with the chunks while it has nothing else to do:
  * ms_vpool_help runs chunks as they come until ms_vpool_help_close (the
@@ -79,7 +79,7 @@ ms_vpool *ms_volume_extract_pool(ms_volume *v);
  * thread. With the engine's tasks (ms_volume_set_tasks) each loop also
  * enqueues one engine task that claims chunks the same way. */
 ms_status ms_volume_share_loops(ms_volume *v);
-#define MS_VPOOL_SHARED_PARTS 8  /* pool.c: claimed from both ends (issue 12, round six) */
+#define MS_VPOOL_SHARED_PARTS 8  /* pool.c: claimed from both ends */
 #define MS_VPOOL_SHARED_MIN 1024 /* shorter loops run on the calling thread */
 void ms_vpool_help_open(ms_vpool *p);
 void ms_vpool_help(ms_vpool *p);
