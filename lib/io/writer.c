@@ -372,6 +372,42 @@ static ms_status probe_path(const char *path, const char *shown, const ms_writer
     return st;
 }
 
+/* An output never overwrites an input: none of the names this writer
+ * writes (the run file, its two XDMF sidecars, and the temporary names
+ * each is made under: ".part", ".before", ".tmp") may be the scene's own
+ * file, whatever the spelling (the same device and inode; a name that
+ * does not exist yet cannot be it). Checked before anything is created. */
+static ms_status check_not_input(const ms_writer *w, const char *scene)
+{
+    struct stat in, sb;
+    if (!scene || !scene[0] || stat(scene, &in) != 0)
+        return MS_OK;
+    const char *const base[3] = {w->path, w->xmf_path, w->xmf2_path};
+    static const char *const what[3] = {"the run file", "the XDMF sidecar of",
+                                        "the legacy XDMF sidecar of"};
+    static const char *const suffix[] = {"", ".part", ".before", ".part.before", ".tmp"};
+    for (int b = 0; b < 3; ++b)
+        for (size_t k = 0; k < sizeof suffix / sizeof suffix[0]; ++k) {
+            size_t n = strlen(base[b]) + strlen(suffix[k]) + 1;
+            char *name = ms_malloc(n);
+            if (!name)
+                return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+            snprintf(name, n, "%s%s", base[b], suffix[k]);
+            int same = stat(name, &sb) == 0 && sb.st_dev == in.st_dev && sb.st_ino == in.st_ino;
+            ms_status st = MS_OK;
+            if (same)
+                st = ms_fail(MS_ERR_INVALID_ARGUMENT,
+                             "io: %s, %s%s%s%s, is the scene file %s: an output never "
+                             "overwrites an input; choose another output name",
+                             name, what[b], b ? " " : "", b ? w->path : "",
+                             k ? " (a temporary name of it)" : "", scene);
+            ms_free(name);
+            if (st != MS_OK)
+                return st;
+        }
+    return MS_OK;
+}
+
 /* The set-up both openers share: the arguments checked (*out = NULL) and
  * a writer of layout l for path with no file open yet (strings of the
  * layout not kept) in *wp. */
@@ -400,13 +436,17 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
         w->ckpt_frame[i] = -1;
     }
     w->layout = *l;
-    w->layout.scene_text = w->layout.scene_name = NULL;
+    w->layout.scene_text = w->layout.scene_name = w->layout.scene_path = NULL;
     w->path = ms_strdup(path);
     w->xmf_path = ms_xdmf_path_for(path);
     w->xmf2_path = ms_xdmf_legacy_path_for(path);
     if (!w->path || !w->xmf_path || !w->xmf2_path) {
         free_writer(w);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+    }
+    if ((st = check_not_input(w, l->scene_path)) != MS_OK) {
+        free_writer(w);
+        return st;
     }
     *wp = w;
     return MS_OK;
