@@ -1141,6 +1141,70 @@ START_TEST(resume_refuses_a_forged_checkpoint_and_keeps_the_file)
 }
 END_TEST
 
+/* Start args and wait until `path` lists at least `at` frames; the pid. */
+static pid_t start_and_wait(const char *const *args, const char *path, long at)
+{
+    pid_t pid = start_tool(args);
+    int status;
+    while (frames_listed(path) < at) {
+        ck_assert_msg(waitpid(pid, &status, WNOHANG) == 0, "the run ended before frame %ld", at);
+        usleep(2000);
+    }
+    return pid;
+}
+
+/* SIGTERM: the tool finishes its frame and closes the file (exit 0 or
+ * the signal's). */
+static void stop(pid_t pid)
+{
+    int status;
+    kill(pid, SIGTERM);
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+}
+
+/* One writer per run file: while a run (or a resume) writes f.h5, a
+ * --resume of it and another run with --out f.h5 are refused in one
+ * sentence with exit 1, and the writer goes on: its file stays readable,
+ * its sidecar lists what the file holds, and it resumes afterwards. */
+START_TEST(a_second_writer_of_a_run_file_is_refused)
+{
+    make_tmp_dir();
+    const char *f = tmp_path("f.h5");
+    char xmf[600];
+    snprintf(xmf, sizeof xmf, "%s/f.xmf", tmp_dir);
+    const char *run[] = {"run", SCENE, "--frames", "100000", "--quiet", "--out", f, NULL};
+    const char *resume[] = {"run", SCENE, "--frames", "100000", "--quiet", "--resume", f, NULL};
+    const char *again[] = {"run", SCENE, "--frames", "3", "--quiet", "--out", f, NULL};
+    for (int round = 0; round < 2; ++round) {
+        /* round 0: a run is writing; round 1: a resume is */
+        pid_t first = start_and_wait(round == 0 ? run : resume, f, frames_listed(f) + 2);
+        ck_assert_int_eq(run_tool(resume), 1);
+        ck_assert_msg(strstr(log_text, "is being written by another process") &&
+                          strstr(log_text, "one writer per run file"),
+                      "%s", log_text);
+        ck_assert_int_eq(run_tool(again), 1);
+        ck_assert_msg(strstr(log_text, "is being written by another process"), "%s", log_text);
+        long before = frames_listed(f);
+        stop(first);
+        ck_assert(ms_test_wait_unused(f, 30.0));
+        long n = frames_now(f);
+        ck_assert_int_ge(n, before);
+        ck_assert_int_eq(frames_listed(f), n); /* the sidecar agrees with the file */
+    }
+    /* no writer left: a resume goes on */
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(f, &r), MS_OK);
+    long n = ms_reader_frames(r);
+    ms_reader_close(r);
+    char frames[32];
+    snprintf(frames, sizeof frames, "%ld", n + 2);
+    const char *more[] = {"run", SCENE, "--frames", frames, "--quiet", "--resume", f, NULL};
+    ck_assert_msg(run_tool(more) == 0, "%s", log_text);
+    ck_assert_int_eq(frames_now(f), n + 2);
+    ms_test_remove_tree(tmp_dir);
+}
+END_TEST
+
 static Suite *resume_suite(void)
 {
     Suite *s = suite_create("resume");
@@ -1156,6 +1220,7 @@ static Suite *resume_suite(void)
     tcase_add_test(tc, resume_from_an_older_checkpoint_or_none);
     tcase_add_test(tc, checkpoint_every_out_of_range_is_refused);
     tcase_add_test(tc, resume_refuses_a_forged_checkpoint_and_keeps_the_file);
+    tcase_add_test(tc, a_second_writer_of_a_run_file_is_refused);
     suite_add_tcase(s, tc);
     TCase *api = tcase_create("snapshot");
     tcase_set_timeout(api, 120);
