@@ -1032,6 +1032,21 @@ START_TEST(restore_refuses_a_forged_checkpoint)
         reseal(bad, bytes);
         assert_forgery_refused(sc, bad, bytes, f->status, f->word, f->bound);
     }
+    /* a fresh sim's snapshot (both extraction slots zeros, never filled)
+     * that claims frames were done: its zero radius and domain would reach
+     * the extraction, so the zeros are refused */
+    ms_sim *fresh = NULL;
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 1, &fresh), MS_OK);
+    size_t fbytes;
+    unsigned char *fblob = take_snapshot(fresh, &fbytes);
+    ms_sim_destroy(fresh);
+    size_t len = 0;
+    int64_t calls = 5;
+    memcpy(blob_record(fblob, fbytes, "sim.calls", 0, &len), &calls, sizeof calls);
+    reseal(fblob, fbytes);
+    assert_forgery_refused(sc, fblob, fbytes, MS_ERR_INVALID_ARGUMENT, "extraction radius R 0 m",
+                           "this sim's volume has");
+    free(fblob);
     /* the untouched blob still restores */
     ms_sim *b = NULL;
     ck_assert_int_eq(ms_sim_create_from_scene(sc, 2, &b), MS_OK);

@@ -67,7 +67,7 @@ static ms_status buf_io(ms_blob *b, const char *name, float *p, size_t count)
 }
 
 /* The extraction snapshot of a slot (phase A, volume/extract.h). */
-static ms_status extract_io(ms_blob *b, const ms_volume *v, ms_extract_snap *s, int max)
+static ms_status extract_io(ms_blob *b, const ms_volume *v, ms_extract_snap *s, int max, int fresh)
 {
     int m = s->m;
     ms_status st;
@@ -97,7 +97,7 @@ static ms_status extract_io(ms_blob *b, const ms_volume *v, ms_extract_snap *s, 
         (st = MS_BLOB_IO(b, "sim.x.smooth", s->smooth_steps)) ||
         (st = MS_BLOB_IO(b, "sim.x.smooth_e", s->smooth_energy)))
         return st;
-    return b->reading ? ms_volume_snapshot_check_extract(v, s) : MS_OK;
+    return b->reading ? ms_volume_snapshot_check_extract(v, s, fresh) : MS_OK;
 }
 
 /* The particle copy of a slot, in the layout volume_task.c makes
@@ -198,7 +198,8 @@ static ms_status sim_io(ms_sim *sim, ms_blob *b)
                        (st = ms_blob_check_int("sim.n_time_last", sim->n_time_last, 0, 10000000))))
         return st;
     for (int k = 0; st == MS_OK && k < 2; ++k) {
-        if (sim->volume && (st = extract_io(b, sim->volume, &sim->snap[k], maxp)) == MS_OK &&
+        if (sim->volume &&
+            (st = extract_io(b, sim->volume, &sim->snap[k], maxp, sim->calls == 0)) == MS_OK &&
             (st = particles_io(b, sim, k, maxp)) == MS_OK)
             st = buf_io(b, "sim.hfield", sim->hfield[k], nf);
         if (st == MS_OK && (st = buf_io(b, "sim.flow", sim->flow[k], 2 * nf)) == MS_OK)

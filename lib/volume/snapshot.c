@@ -214,11 +214,13 @@ ms_status ms_volume_snapshot_io(ms_volume *v, ms_blob *b, int *recount)
     return MS_OK;
 }
 
-ms_status ms_volume_snapshot_check_extract(const ms_volume *v, const ms_extract_snap *s)
+ms_status ms_volume_snapshot_check_extract(const ms_volume *v, const ms_extract_snap *s, int fresh)
 {
-    /* a slot no frame has filled yet holds zeros */
-    const int unfilled = s->m == 0 && s->R == 0.0f && s->spacing == 0.0f && s->smooth_steps == 0 &&
-                         s->smooth_energy == 0.0f && s->iso == 0.0f;
+    /* before the first step no slot is filled: they hold zeros (the first
+     * step fills both before either is extracted, and phase B must never
+     * see a zero domain or radius) */
+    const int unfilled = fresh && s->m == 0 && s->R == 0.0f && s->spacing == 0.0f &&
+                         s->smooth_steps == 0 && s->smooth_energy == 0.0f && s->iso == 0.0f;
     ms_status st;
     if ((st = ms_blob_check_int("sim.x.empty", s->empty, 0, 1)) ||
         (st = ms_blob_check_int("sim.x.m", s->m, 0, v->desc.max_particles)))
