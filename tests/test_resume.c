@@ -971,6 +971,9 @@ START_TEST(restore_refuses_a_forged_checkpoint)
     float dt = ms_scene_frame_dt(sc);
     for (int i = 0; i < 4; ++i)
         ck_assert_int_eq(ms_sim_step(a, dt), MS_OK);
+    /* a drag queued for the next frame is state too */
+    const float dpos[2] = {0.4f, 0.5f}, dvel[2] = {0.5f, 0.0f};
+    ck_assert_int_eq(ms_sim_drag(a, dpos, dvel, 0.1f, 0.05f, 5.0f), MS_OK);
     size_t bytes;
     unsigned char *blob = take_snapshot(a, &bytes), *bad = malloc(bytes);
     int n = 0;
@@ -1011,6 +1014,9 @@ START_TEST(restore_refuses_a_forged_checkpoint)
          "extraction smoothing passes 2000000000", "this sim's volume has"},
         {"sim.x.lo", 0, 4, 1, -1e30, MS_ERR_INVALID_ARGUMENT, "extraction domain min y",
          "this sim's volume has"},
+        /* a drag's radius bounds the particles it visits: ms_sim_drag's range */
+        {"sim.drags", 0, 16, 1, 1e9, MS_ERR_INVALID_ARGUMENT, "sim.drags radius",
+         "outside [1e-06, 100] m"},
         /* rain: the range and the drops-a-second cap of ms_surface_set_rain */
         {"sf.rain", 0, 4, 1, 1e9, MS_ERR_INVALID_ARGUMENT, "rain rate 1e+09", "outside [0, 1e+06]"},
         {"sf.rain", 0, 4, 1, 9e5, MS_ERR_INVALID_ARGUMENT, "rain rate 900000", "at most"},

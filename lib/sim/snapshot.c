@@ -167,10 +167,9 @@ static ms_status check_drags(const ms_sim_drag_req *d, int n)
         if ((st = ms_blob_check_floats("sim.drags pos", d[i].pos, 2, -1e4, 1e4, "m")) ||
             (st = ms_blob_check_floats("sim.drags vel", d[i].vel, 2, -1e3, 1e3, "m/s")) ||
             (st = ms_blob_check_floats("sim.drags radius", &d[i].radius, 1, 1e-6, 100, "m")) ||
-            (st = ms_blob_check_floats("sim.drags depth", &d[i].depth, 1, 0, 100, "m")))
+            (st = ms_blob_check_floats("sim.drags depth", &d[i].depth, 1, 0, 100, "m")) ||
+            (st = ms_blob_check_floats("sim.drags strength", &d[i].strength, 1, 1e-6, 1e4, "1/s")))
             break;
-        else
-            st = ms_blob_check_floats("sim.drags strength", &d[i].strength, 1, 1e-6, 1e4, "1/s");
     return st;
 }
 
