@@ -358,6 +358,190 @@ START_TEST(bad_options_are_refused)
 }
 END_TEST
 
+/* ---- part files and paths are untrusted: no shell, no escape from --out ---- */
+
+/* Run the tool with argv (no shell between: the arguments are as given);
+ * its output in out; the exit status. */
+static int tool_argv(const char *const *args, char *out, size_t size)
+{
+    char log[400];
+    snprintf(log, sizeof log, "%s.log", dir);
+    int status = ms_test_run_tool(args, log, log);
+    FILE *f = fopen(log, "r");
+    size_t got = f ? fread(out, 1, size - 1, f) : 0;
+    out[got] = '\0';
+    if (f)
+        fclose(f);
+    unlink(log);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+static int path_exists(const char *path)
+{
+    struct stat sb;
+    return stat(path, &sb) == 0;
+}
+
+/* A part of one real case (water-dispersion, the cheapest) in dir/parts:
+ * its header and first line1, to forge rows from. */
+static void real_part(char *header, char *line1, size_t size)
+{
+    char out[1 << 14], parts[400], path[500];
+    snprintf(parts, sizeof parts, "%s/parts", dir);
+    const char *a[] = {"accuracy", "--quick", "--case", "water-dispersion", "--out", parts, NULL};
+    ck_assert_msg(tool_argv(a, out, sizeof out) == 0, "%s", out);
+    snprintf(path, sizeof path, "%s/water-dispersion.csv", parts);
+    FILE *f = fopen(path, "r");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_ptr_nonnull(fgets(header, (int)size, f));
+    ck_assert_ptr_nonnull(fgets(line1, (int)size, f));
+    fclose(f);
+}
+
+/* dir/parts/water-dispersion.csv: header, then line1 with its first field
+ * (the study) replaced by study and, if metric is not NULL, its fifth
+ * (the metric, quoted in the CSV) by metric. */
+static void forge_part(const char *header, const char *line1, const char *study, const char *metric)
+{
+    char path[500];
+    snprintf(path, sizeof path, "%s/parts/water-dispersion.csv", dir);
+    FILE *f = fopen(path, "w");
+    ck_assert_ptr_nonnull(f);
+    fputs(header, f);
+    const char *rest = strchr(line1, ','); /* ,knob,value,"config","metric",... */
+    if (!metric) {
+        fprintf(f, "%s%s", study, rest);
+    } else {
+        const char *m0 = strchr(strchr(strchr(rest + 1, ',') + 1, '"') + 1, '"') + 2;
+        const char *m1 = strchr(m0 + 1, '"');
+        fprintf(f, "%s%.*s\"%s%s", study, (int)(m0 - rest), rest, metric, m1);
+    }
+    fclose(f);
+}
+
+START_TEST(merge_refuses_study_names_that_are_not_names)
+{
+    make_dir();
+    char header[4096], line1[4096], out[1 << 14], parts[400], report[400], pwned[500];
+    real_part(header, line1, sizeof header);
+    snprintf(parts, sizeof parts, "%s/parts", dir);
+    snprintf(report, sizeof report, "%s/report/deep", dir);
+    snprintf(pwned, sizeof pwned, "%s/PWNED", dir);
+    char cmd_study[600];
+    snprintf(cmd_study, sizeof cmd_study, "x`touch %s`", pwned);
+    const char *const hostile[] = {cmd_study,
+                                   "../../escape",
+                                   "a'b",
+                                   "a\"b",
+                                   "x/y",
+                                   "",
+                                   "waves_and_a_name_longer_than_its_field"};
+    for (size_t i = 0; i < sizeof hostile / sizeof hostile[0]; ++i) {
+        forge_part(header, line1, hostile[i], NULL);
+        const char *a[] = {"accuracy", "--merge", parts, "--out", report, NULL};
+        ck_assert_int_eq(tool_argv(a, out, sizeof out), 1);
+        ck_assert_msg(strstr(out, "water-dispersion.csv:2: study \"") &&
+                          strstr(out, "allowed: a letter, then letters, digits"),
+                      "%s", out);
+        ck_assert_msg(!path_exists(pwned), "study %s ran a command", hostile[i]);
+        /* nothing written: not under --out, not beside it */
+        ck_assert(!path_exists(report));
+        char esc[500];
+        snprintf(esc, sizeof esc, "%s/escape.dat", dir);
+        ck_assert(!path_exists(esc));
+    }
+    remove_dir();
+}
+END_TEST
+
+/* Text fields (a metric) may hold quotes and backquotes: the plot script
+ * has them only inside single quotes, where gnuplot runs nothing. */
+START_TEST(plot_script_runs_nothing_from_a_part)
+{
+    make_dir();
+    char header[4096], line1[4096], out[1 << 14], parts[400], pwned[500], metric[800];
+    real_part(header, line1, sizeof header);
+    snprintf(parts, sizeof parts, "%s/parts", dir);
+    snprintf(pwned, sizeof pwned, "%s/PWNED", dir);
+    /* gnuplot runs in dir: a command would make dir/PWNED */
+    snprintf(metric, sizeof metric, "err `touch PWNED` it's @x");
+    forge_part(header, line1, "water", metric);
+    const char *a[] = {"accuracy", "--merge", parts, "--out", dir, NULL};
+    ck_assert_msg(tool_argv(a, out, sizeof out) == 0, "%s", out);
+    ck_assert_msg(!path_exists(pwned), "gnuplot ran a command from the part");
+    char path[500], text[1 << 15];
+    snprintf(path, sizeof path, "%s/accuracy.gp", dir);
+    FILE *gp = fopen(path, "r");
+    ck_assert_ptr_nonnull(gp);
+    size_t len = fread(text, 1, sizeof text - 1, gp);
+    text[len] = '\0';
+    fclose(gp);
+    /* the one line with the metric: a single-quoted string, its quote doubled */
+    char want[900];
+    snprintf(want, sizeof want, "set ylabel 'err `touch PWNED` it''s @x'\n");
+    ck_assert_msg(strstr(text, want) != NULL, "%s", text);
+    ck_assert_ptr_null(strstr(text, "\"err"));
+    if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
+        snprintf(path, sizeof path, "%s/water_error.png", dir);
+        ck_assert_msg(path_exists(path), "gnuplot drew no plot: %s", out);
+    }
+    remove_dir();
+}
+END_TEST
+
+/* An --out with quotes and a command in it reaches no shell: the merge
+ * writes into that very directory, and --jobs prints lines a shell reads
+ * back as the same words. */
+START_TEST(out_with_quotes_reaches_no_shell)
+{
+    make_dir();
+    char header[4096], line1[4096], out[1 << 14], parts[400], odd[1200], pwned[500];
+    real_part(header, line1, sizeof header);
+    snprintf(parts, sizeof parts, "%s/parts", dir);
+    snprintf(pwned, sizeof pwned, "%s/PWNED", dir);
+    snprintf(odd, sizeof odd, "%s/a'; touch %s; echo '", dir, pwned);
+    const char *a[] = {"accuracy", "--merge", parts, "--out", odd, NULL};
+    ck_assert_msg(tool_argv(a, out, sizeof out) == 0, "%s", out);
+    ck_assert(!path_exists(pwned));
+    char path[1400];
+    snprintf(path, sizeof path, "%s/accuracy.md", odd);
+    ck_assert(path_exists(path));
+    if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
+        snprintf(path, sizeof path, "%s/water_error.png", odd);
+        ck_assert_msg(path_exists(path), "%s", out);
+    }
+    /* --jobs: each line, read by sh, gives --out exactly */
+    const char *j[] = {"accuracy", "--jobs", "--out", odd, NULL};
+    ck_assert_int_eq(tool_argv(j, out, sizeof out), 0);
+    char *line = strtok(out, "\n");
+    ck_assert_ptr_nonnull(line);
+    char script[2000], words[400];
+    snprintf(words, sizeof words, "%s.words", dir);
+    snprintf(script, sizeof script,
+             "eval \"set -- $1\"; shift $(($# - 1)); printf '%%s' \"$1\" > '%s'", words);
+    const char *sh[] = {"/bin/sh", "-c", script, "sh", line, NULL};
+    pid_t pid = fork();
+    if (pid == 0) {
+        execv(sh[0], (char *const *)sh);
+        _exit(127);
+    }
+    int status;
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+    ck_assert(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    ck_assert(!path_exists(pwned));
+    FILE *f = fopen(words, "r");
+    ck_assert_ptr_nonnull(f);
+    char got[1400];
+    size_t n = fread(got, 1, sizeof got - 1, f);
+    got[n] = '\0';
+    fclose(f);
+    unlink(words);
+    snprintf(path, sizeof path, "%s/parts", odd);
+    ck_assert_str_eq(got, path);
+    remove_dir();
+}
+END_TEST
+
 static Suite *accuracy_suite(void)
 {
     Suite *s = suite_create("accuracy");
@@ -366,6 +550,9 @@ static Suite *accuracy_suite(void)
     tcase_add_test(t, quick_study_writes_everything_and_shows_the_theory);
     tcase_add_test(t, jobs_case_and_merge_give_the_same_rows);
     tcase_add_test(t, bad_options_are_refused);
+    tcase_add_test(t, merge_refuses_study_names_that_are_not_names);
+    tcase_add_test(t, plot_script_runs_nothing_from_a_part);
+    tcase_add_test(t, out_with_quotes_reaches_no_shell);
     suite_add_tcase(s, t);
     return s;
 }

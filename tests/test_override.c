@@ -137,6 +137,38 @@ START_TEST(stored_overrides_must_be_strings)
 }
 END_TEST
 
+/* "overrides" is the record of the --set a run was made with: replacing it
+ * (or a part of it) is refused, not applied to a list already freed (a
+ * use after free valgrind saw; ASan cannot, the read is inside jansson),
+ * with the scene's own list or without one. */
+START_TEST(set_of_the_overrides_record_is_refused)
+{
+    static const char with_list[] = "{\"surface\": {}, \"overrides\": [\"duration=1\"]}";
+    const char *const sets[] = {"overrides=1", "overrides=[]", "overrides[0]=\"x\"",
+                                "overrides.a=2"};
+    for (size_t i = 0; i < sizeof sets / sizeof sets[0]; ++i) {
+        ms_scene *sc = NULL;
+        MS_ASSERT_REFUSED(parse_set(1, &sets[i], &sc), MS_ERR_INVALID_ARGUMENT, sets[i]);
+        ck_assert_msg(strstr(ms_last_error(), "written by the tool") != NULL, "%s",
+                      ms_last_error());
+        ck_assert_ptr_null(sc);
+        MS_ASSERT_REFUSED(
+            ms_scene_parse_with_overrides(with_list, strlen(with_list), 1, &sets[i], &sc),
+            MS_ERR_INVALID_ARGUMENT, "\"overrides\" is the list");
+        ck_assert_ptr_null(sc);
+    }
+    /* a key that only begins with the word is an ordinary (unknown) key */
+    const char *other[] = {"overridesx=1"};
+    ms_scene *sc = NULL;
+    MS_ASSERT_REFUSED(parse_set(1, other, &sc), MS_ERR_PARSE, "overridesx");
+    /* and a later --set still lands in the list */
+    const char *two[] = {"duration=2", "surface.damping=0.5"};
+    ck_assert_msg(parse_set(2, two, &sc) == MS_OK, "%s", ms_last_error());
+    ck_assert_ptr_nonnull(strstr(ms_scene_text(sc), "surface.damping=0.5"));
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 /* ---- the tool ---- */
 
 static int tool(const char *args, char *out, size_t size)
@@ -163,6 +195,8 @@ START_TEST(tool_check_takes_set)
     ck_assert_ptr_nonnull(strstr(out, "--set surface.wave_speed=-1: surface.wave_speed"));
     ck_assert_int_eq(tool("check data/scenes/fig3.json --set nonsense", out, sizeof out), 2);
     ck_assert_ptr_nonnull(strstr(out, "not KEY=VALUE"));
+    ck_assert_int_ne(tool("check data/scenes/fig3.json --set overrides=1", out, sizeof out), 0);
+    ck_assert_msg(strstr(out, "--set overrides=1: \"overrides\" is the list") != NULL, "%s", out);
 }
 END_TEST
 
@@ -196,6 +230,7 @@ static Suite *override_suite(void)
     tcase_add_test(t, override_bad_syntax_and_index_refused);
     tcase_add_test(t, file_errors_still_name_the_file_line);
     tcase_add_test(t, stored_overrides_must_be_strings);
+    tcase_add_test(t, set_of_the_overrides_record_is_refused);
     tcase_add_test(t, tool_check_takes_set);
     tcase_add_test(t, tool_run_stores_overrides_info_shows_them);
     suite_add_tcase(s, t);

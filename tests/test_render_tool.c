@@ -126,6 +126,19 @@ START_TEST(render_pipes_a_video_to_ffmpeg_or_says_it_is_missing)
     struct stat sb;
     ck_assert_int_eq(stat(mp4, &sb), 0);
     ck_assert_int_gt(sb.st_size, 100);
+    /* a name with quotes and a command in it is a name: ffmpeg is started
+     * without a shell, so the video lands there and nothing runs */
+    /* (a shell would run touch in the tool's directory, this one) */
+    char odd[600];
+    const char *pwned = "PWNED_by_render_video";
+    snprintf(odd, sizeof odd, "%s/a'; touch %s; echo '$(touch %s).mp4", tmp_dir, pwned, pwned);
+    const char *hostile[] = {"render", run, "--size", "64x64", "--video", odd, NULL};
+    r = run_tool(hostile);
+    ck_assert_msg(r.status == 0, "render --video failed: %s", r.err);
+    free(r.err);
+    ck_assert_int_eq(stat(odd, &sb), 0);
+    ck_assert_int_gt(sb.st_size, 100);
+    ck_assert_int_ne(stat(pwned, &sb), 0);
     remove_tmp_dir();
 }
 END_TEST

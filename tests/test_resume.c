@@ -8,6 +8,7 @@
  */
 #define _GNU_SOURCE
 #include <dirent.h>
+#include <math.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
@@ -19,6 +20,7 @@
 
 #include <hdf5.h>
 
+#include "core/blob.h"
 #include "io/io_internal.h"
 #include "modesplit/modesplit.h"
 #include "support.h"
@@ -906,6 +908,325 @@ START_TEST(snapshot_of_a_desc_sim)
 }
 END_TEST
 
+/* ---- forged checkpoints: every value read is checked before use ---- */
+
+/* The payload of the nth record `name` of a snapshot blob (the layout of
+ * core/blob.h after the 72-byte header), its byte count in *len. */
+static unsigned char *blob_record(unsigned char *blob, size_t bytes, const char *name, int nth,
+                                  size_t *len)
+{
+    size_t pos = 72;
+    while (pos + 24 <= bytes) {
+        uint64_t n;
+        memcpy(&n, blob + pos + 16, sizeof n);
+        if (strncmp((const char *)blob + pos, name, 16) == 0 && nth-- == 0) {
+            *len = (size_t)n;
+            return blob + pos + 24;
+        }
+        pos += 24 + (((size_t)n + 7u) & ~(size_t)7u);
+    }
+    ck_abort_msg("no record '%s' in the snapshot", name);
+    return NULL;
+}
+
+/* What a forger does after an edit: the checksum the writer computes. */
+static void reseal(unsigned char *blob, size_t bytes)
+{
+    uint64_t sum = ms_blob_hash(MS_BLOB_HASH0, blob + 72, bytes - 72);
+    memcpy(blob + 32, &sum, sizeof sum);
+}
+
+/* A fresh sim of sc refuses the blob with `status` and a message holding
+ * both words; it is then failed, and refuses to step. */
+static void assert_forgery_refused(ms_scene *sc, const unsigned char *blob, size_t bytes,
+                                   ms_status status, const char *word, const char *bound)
+{
+    ms_sim *b = NULL;
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 2, &b), MS_OK);
+    MS_ASSERT_REFUSED(ms_sim_restore(b, blob, bytes), status, word);
+    ck_assert_msg(strstr(ms_last_error(), bound) != NULL, "message \"%s\" lacks \"%s\"",
+                  ms_last_error(), bound);
+    MS_ASSERT_REFUSED(ms_sim_step(b, ms_scene_frame_dt(sc)), MS_ERR_STATE, "restore failed");
+    /* what the engine can still read of it stays in bounds */
+    int n = 0;
+    const float *pos[3], *vel[3];
+    (void)ms_sim_particles(b, &n, pos, vel);
+    ms_sim_destroy(b);
+}
+
+typedef struct forgery {
+    const char *record;
+    int nth;
+    size_t offset; /* bytes into the payload */
+    int is_float;  /* 1: a float, 0: an int32 */
+    double value;
+    ms_status status;
+    const char *word, *bound; /* in the sentence: the value and its bound */
+} forgery;
+
+START_TEST(restore_refuses_a_forged_checkpoint)
+{
+    ms_scene *sc;
+    ms_sim *a = scene_sim(SCENE, 1, &sc);
+    float dt = ms_scene_frame_dt(sc);
+    for (int i = 0; i < 4; ++i)
+        ck_assert_int_eq(ms_sim_step(a, dt), MS_OK);
+    /* a drag queued for the next frame is state too */
+    const float dpos[2] = {0.4f, 0.5f}, dvel[2] = {0.5f, 0.0f};
+    ck_assert_int_eq(ms_sim_drag(a, dpos, dvel, 0.1f, 0.05f, 5.0f), MS_OK);
+    size_t bytes;
+    unsigned char *blob = take_snapshot(a, &bytes), *bad = malloc(bytes);
+    int n = 0;
+    const float *pos[3], *vel[3];
+    ck_assert_int_eq(ms_sim_particles(a, &n, pos, vel), MS_OK);
+    ck_assert_int_gt(n, 100);
+    const double nan = NAN;
+    const forgery cases[] = {
+        /* an id past the particles: the out-of-bounds write of the copy */
+        {"vol.id", 0, 5 * 4, 0, n + 1000.0, MS_ERR_INVALID_ARGUMENT, "id", "outside [0, "},
+        {"vol.id", 0, 7 * 4, 0, -3, MS_ERR_INVALID_ARGUMENT, "id -3", "outside [0, "},
+        {"vol.id", 0, 9 * 4, 0, 0, MS_ERR_INVALID_ARGUMENT, "id 0", "once each"},
+        /* counts no record backs, counts past the desc's bound */
+        {"vol.n", 0, 0, 0, 2e9, MS_ERR_INVALID_ARGUMENT, "2000000000", "outside [0, "},
+        {"vol.n", 0, 0, 0, n + 1, MS_ERR_INVALID_ARGUMENT, "vol.x", "count says"},
+        {"sim.x.n", 1, 0, 0, n + 1, MS_ERR_INVALID_ARGUMENT, "sim.x.x", "count says"},
+        {"sim.x.m", 1, 0, 0, n + 1, MS_ERR_INVALID_ARGUMENT, "marked", "at most all"},
+        {"sim.p.n", 0, 0, 0, 1 << 30, MS_ERR_INVALID_ARGUMENT, "sim.p.n", "outside [0, "},
+        {"sf.ndist", 0, 0, 0, 1 << 20, MS_ERR_INVALID_ARGUMENT, "1048576 disturbers", "bytes left"},
+        /* floats: NaN, infinite, far outside the domain */
+        {"vol.vx", 0, 3 * 4, 1, nan, MS_ERR_INVALID_ARGUMENT, "nan", "must be finite"},
+        {"vol.x", 0, 0, 1, 1e30, MS_ERR_INVALID_ARGUMENT, "1e+30 m", "outside ["},
+        {"sim.p.z", 1, 4, 1, -INFINITY, MS_ERR_INVALID_ARGUMENT, "-inf", "must be finite"},
+        {"sim.x.y", 1, 0, 1, nan, MS_ERR_INVALID_ARGUMENT, "nan", "must be finite"},
+        {"sf.h", 0, 400, 1, nan, MS_ERR_INVALID_ARGUMENT, "sf.h", "must be finite"},
+        {"sim.hfield", 0, 40, 1, INFINITY, MS_ERR_INVALID_ARGUMENT, "inf", "must be finite"},
+        {"vol.viscosity", 0, 0, 1, 1e9, MS_ERR_INVALID_ARGUMENT, "1e+09 Pa s",
+         "outside [0, 1e+06]"},
+        {"sim.dt_prev", 0, 0, 1, 1e9, MS_ERR_INVALID_ARGUMENT, "1e+09 s", "outside [0, 10]"},
+        {"sim.n_time_last", 0, 0, 0, 2e9, MS_ERR_INVALID_ARGUMENT, "2000000000", "[0, 10000000]"},
+        /* the settings that bound the extraction's work: this volume's own */
+        {"sim.x.R", 1, 0, 1, 1e-30, MS_ERR_INVALID_ARGUMENT, "extraction radius R 1e-30 m",
+         "this sim's volume has"},
+        {"sim.x.R", 0, 0, 1, 1e30, MS_ERR_INVALID_ARGUMENT, "extraction radius R 1e+30 m",
+         "this sim's volume has"},
+        {"sim.x.spacing", 1, 0, 1, 1e-30, MS_ERR_INVALID_ARGUMENT, "extraction spacing 1e-30",
+         "this sim's volume has 0.05 m"},
+        {"sim.x.smooth", 1, 0, 0, 2e9, MS_ERR_INVALID_ARGUMENT,
+         "extraction smoothing passes 2000000000", "this sim's volume has"},
+        {"sim.x.lo", 0, 4, 1, -1e30, MS_ERR_INVALID_ARGUMENT, "extraction domain min y",
+         "this sim's volume has"},
+        /* a drag's radius bounds the particles it visits: ms_sim_drag's range */
+        {"sim.drags", 0, 16, 1, 1e9, MS_ERR_INVALID_ARGUMENT, "sim.drags radius",
+         "outside [1e-06, 100] m"},
+        /* rain: the range and the drops-a-second cap of ms_surface_set_rain */
+        {"sf.rain", 0, 4, 1, 1e9, MS_ERR_INVALID_ARGUMENT, "rain rate 1e+09", "outside [0, 1e+06]"},
+        {"sf.rain", 0, 4, 1, 9e5, MS_ERR_INVALID_ARGUMENT, "rain rate 900000", "at most"},
+        {"sf.rain", 0, 4, 1, nan, MS_ERR_INVALID_ARGUMENT, "rain rate nan", "outside"},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; ++c) {
+        const forgery *f = &cases[c];
+        memcpy(bad, blob, bytes);
+        size_t len = 0;
+        unsigned char *p = blob_record(bad, bytes, f->record, f->nth, &len);
+        ck_assert_msg(f->offset + 4 <= len, "%s holds %zu bytes", f->record, len);
+        if (f->is_float) {
+            float v = (float)f->value;
+            memcpy(p + f->offset, &v, sizeof v);
+        } else {
+            int32_t v = (int32_t)f->value;
+            memcpy(p + f->offset, &v, sizeof v);
+        }
+        reseal(bad, bytes);
+        assert_forgery_refused(sc, bad, bytes, f->status, f->word, f->bound);
+    }
+    /* a fresh sim's snapshot (both extraction slots zeros, never filled)
+     * that claims frames were done: its zero radius and domain would reach
+     * the extraction, so the zeros are refused */
+    ms_sim *fresh = NULL;
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 1, &fresh), MS_OK);
+    size_t fbytes;
+    unsigned char *fblob = take_snapshot(fresh, &fbytes);
+    ms_sim_destroy(fresh);
+    size_t len = 0;
+    int64_t calls = 5;
+    memcpy(blob_record(fblob, fbytes, "sim.calls", 0, &len), &calls, sizeof calls);
+    reseal(fblob, fbytes);
+    assert_forgery_refused(sc, fblob, fbytes, MS_ERR_INVALID_ARGUMENT, "extraction radius R 0 m",
+                           "this sim's volume has");
+    free(fblob);
+    /* the untouched blob still restores */
+    ms_sim *b = NULL;
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 2, &b), MS_OK);
+    ck_assert_msg(ms_sim_restore(b, blob, bytes) == MS_OK, "%s", ms_last_error());
+    assert_same_sims(a, b);
+    ms_sim_destroy(b);
+    free(bad);
+    free(blob);
+    ms_sim_destroy(a);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* Read checkpoint slot `slot` of a run file: its blob (malloc'd), bytes
+ * and frame. */
+static unsigned char *read_slot(hid_t f, int slot, size_t *bytes, int64_t *frame)
+{
+    char name[32];
+    snprintf(name, sizeof name, "checkpoint/%d", slot);
+    hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+    ck_assert_int_ge(d, 0);
+    int64_t n = 0;
+    hid_t a = H5Aopen(d, "bytes", H5P_DEFAULT);
+    ck_assert_int_ge(H5Aread(a, H5T_NATIVE_INT64, &n), 0);
+    H5Aclose(a);
+    a = H5Aopen(d, "frame", H5P_DEFAULT);
+    ck_assert_int_ge(H5Aread(a, H5T_NATIVE_INT64, frame), 0);
+    H5Aclose(a);
+    hsize_t dims[1];
+    hid_t sp = H5Dget_space(d);
+    H5Sget_simple_extent_dims(sp, dims, NULL);
+    unsigned char *buf = malloc(dims[0]);
+    ck_assert_int_ge(H5Dread(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf), 0);
+    H5Sclose(sp);
+    H5Dclose(d);
+    *bytes = (size_t)n;
+    return buf;
+}
+
+static void write_slot(hid_t f, int slot, const unsigned char *buf)
+{
+    char name[32];
+    snprintf(name, sizeof name, "checkpoint/%d", slot);
+    hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
+    ck_assert_int_ge(H5Dwrite(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf), 0);
+    H5Dclose(d);
+}
+
+/* A run file whose checkpoints were forged with care (a particle id past
+ * the particles, the checksum recomputed): --resume refuses it in a
+ * sentence with a non-zero exit and leaves the file's frames as they were.
+ * A checkpoint claiming 3 GiB that the file does not store is not offered
+ * (nothing is allocated for it): the resume replays instead. */
+START_TEST(resume_refuses_a_forged_checkpoint_and_keeps_the_file)
+{
+    make_tmp_dir();
+    const char *part = tmp_path("part.h5");
+    const char *a[] = {"run", SCENE, "--frames", "4", "--quiet", "--out", part, NULL};
+    ck_assert_msg(run_tool(a) == 0, "%s", log_text);
+    hid_t f = H5Fopen(part, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    for (int slot = 0; slot < 2; ++slot) {
+        size_t bytes;
+        int64_t frame;
+        unsigned char *blob = read_slot(f, slot, &bytes, &frame);
+        size_t len;
+        unsigned char *ids = blob_record(blob, bytes, "vol.id", 0, &len);
+        int32_t id = 1 << 28;
+        memcpy(ids + 4 * 10, &id, sizeof id);
+        reseal(blob, bytes);
+        write_slot(f, slot, blob);
+        free(blob);
+    }
+    H5Fclose(f);
+    const char *r[] = {"run", SCENE, "--frames", "8", "--resume", part, NULL};
+    ck_assert_int_ne(run_tool(r), 0);
+    ck_assert_msg(strstr(log_text, "id 268435456") && strstr(log_text, "outside [0, "), "%s",
+                  log_text);
+    ck_assert_int_eq(frames_now(part), 4);
+
+    /* a slot that claims 3 GiB the file does not hold */
+    const char *sparse = tmp_path("sparse.h5");
+    const char *b[] = {"run", SCENE, "--frames", "4", "--quiet", "--out", sparse, NULL};
+    ck_assert_msg(run_tool(b) == 0, "%s", log_text);
+    f = H5Fopen(sparse, H5F_ACC_RDWR, H5P_DEFAULT);
+    hid_t d = H5Dopen2(f, "checkpoint/0", H5P_DEFAULT);
+    hsize_t big[1] = {(hsize_t)3 << 30};
+    ck_assert_int_ge(H5Dset_extent(d, big), 0);
+    hid_t at = H5Aopen(d, "bytes", H5P_DEFAULT);
+    int64_t claim = (int64_t)big[0];
+    ck_assert_int_ge(H5Awrite(at, H5T_NATIVE_INT64, &claim), 0);
+    H5Aclose(at);
+    H5Dclose(d);
+    H5Fclose(f);
+    ms_reader *rd;
+    ck_assert_int_eq(ms_reader_open(sparse, &rd), MS_OK);
+    long frames[2];
+    ck_assert_int_eq(ms_reader_checkpoints(rd, frames), 1);
+    size_t bytes = 0;
+    ck_assert_int_eq(ms_reader_checkpoint_size(rd, 0, &bytes), MS_OK);
+    ck_assert_uint_lt(bytes, (size_t)1 << 30);
+    ms_reader_close(rd);
+    const char *rs[] = {"run", SCENE, "--frames", "6", "--resume", sparse, NULL};
+    ck_assert_msg(run_tool(rs) == 0, "%s", log_text);
+    ck_assert_int_eq(frames_now(sparse), 6);
+    ms_test_remove_tree(tmp_dir);
+}
+END_TEST
+
+/* Start args and wait until `path` lists at least `at` frames; the pid. */
+static pid_t start_and_wait(const char *const *args, const char *path, long at)
+{
+    pid_t pid = start_tool(args);
+    int status;
+    while (frames_listed(path) < at) {
+        ck_assert_msg(waitpid(pid, &status, WNOHANG) == 0, "the run ended before frame %ld", at);
+        usleep(2000);
+    }
+    return pid;
+}
+
+/* SIGTERM: the tool finishes its frame and closes the file (exit 0 or
+ * the signal's). */
+static void stop(pid_t pid)
+{
+    int status;
+    kill(pid, SIGTERM);
+    ck_assert_int_eq(waitpid(pid, &status, 0), pid);
+}
+
+/* One writer per run file: while a run (or a resume) writes f.h5, a
+ * --resume of it and another run with --out f.h5 are refused in one
+ * sentence with exit 1, and the writer goes on: its file stays readable,
+ * its sidecar lists what the file holds, and it resumes afterwards. */
+START_TEST(a_second_writer_of_a_run_file_is_refused)
+{
+    make_tmp_dir();
+    const char *f = tmp_path("f.h5");
+    char xmf[600];
+    snprintf(xmf, sizeof xmf, "%s/f.xmf", tmp_dir);
+    const char *run[] = {"run", SCENE, "--frames", "100000", "--quiet", "--out", f, NULL};
+    const char *resume[] = {"run", SCENE, "--frames", "100000", "--quiet", "--resume", f, NULL};
+    const char *again[] = {"run", SCENE, "--frames", "3", "--quiet", "--out", f, NULL};
+    for (int round = 0; round < 2; ++round) {
+        /* pass 0: a run is writing; pass 1: a resume is */
+        pid_t first = start_and_wait(round == 0 ? run : resume, f, frames_listed(f) + 2);
+        ck_assert_int_eq(run_tool(resume), 1);
+        ck_assert_msg(strstr(log_text, "is being written by another process") &&
+                          strstr(log_text, "one writer per run file"),
+                      "%s", log_text);
+        ck_assert_int_eq(run_tool(again), 1);
+        ck_assert_msg(strstr(log_text, "is being written by another process"), "%s", log_text);
+        long before = frames_listed(f);
+        stop(first);
+        ck_assert(ms_test_wait_unused(f, 30.0));
+        long n = frames_now(f);
+        ck_assert_int_ge(n, before);
+        ck_assert_int_eq(frames_listed(f), n); /* the sidecar agrees with the file */
+    }
+    /* no writer left: a resume goes on */
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(f, &r), MS_OK);
+    long n = ms_reader_frames(r);
+    ms_reader_close(r);
+    char frames[32];
+    snprintf(frames, sizeof frames, "%ld", n + 2);
+    const char *more[] = {"run", SCENE, "--frames", frames, "--quiet", "--resume", f, NULL};
+    ck_assert_msg(run_tool(more) == 0, "%s", log_text);
+    ck_assert_int_eq(frames_now(f), n + 2);
+    ms_test_remove_tree(tmp_dir);
+}
+END_TEST
+
 static Suite *resume_suite(void)
 {
     Suite *s = suite_create("resume");
@@ -920,6 +1241,8 @@ static Suite *resume_suite(void)
     tcase_add_test(tc, resume_refuses_a_file_this_build_does_not_reproduce);
     tcase_add_test(tc, resume_from_an_older_checkpoint_or_none);
     tcase_add_test(tc, checkpoint_every_out_of_range_is_refused);
+    tcase_add_test(tc, resume_refuses_a_forged_checkpoint_and_keeps_the_file);
+    tcase_add_test(tc, a_second_writer_of_a_run_file_is_refused);
     suite_add_tcase(s, tc);
     TCase *api = tcase_create("snapshot");
     tcase_set_timeout(api, 120);
@@ -928,6 +1251,7 @@ static Suite *resume_suite(void)
     tcase_add_test(api, restore_refuses_another_version_scene_size_or_blob);
     tcase_add_test(api, restore_revives_a_failed_sim);
     tcase_add_test(api, snapshot_of_a_desc_sim);
+    tcase_add_test(api, restore_refuses_a_forged_checkpoint);
     suite_add_tcase(s, api);
     return s;
 }

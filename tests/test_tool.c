@@ -638,6 +638,84 @@ START_TEST(unwritable_outputs_exit_1_with_a_sentence)
 }
 END_TEST
 
+/* A copy of file `from` at tmp `to`; its bytes returned (malloc'd) in *text. */
+static void copy_file(const char *from, const char *to, char **text, size_t *len)
+{
+    FILE *f = fopen(from, "rb");
+    ck_assert_ptr_nonnull(f);
+    static char buf[1 << 16];
+    *len = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    char *p = tmp_path(to);
+    f = fopen(p, "wb");
+    ck_assert_ptr_nonnull(f);
+    ck_assert_uint_eq(fwrite(buf, 1, *len, f), *len);
+    fclose(f);
+    *text = malloc(*len);
+    memcpy(*text, buf, *len);
+}
+
+static int same_bytes(const char *name, const char *text, size_t len)
+{
+    char *p = tmp_path(name);
+    FILE *f = fopen(p, "rb");
+    if (!f)
+        return 0;
+    static char buf[1 << 16];
+    size_t n = fread(buf, 1, sizeof buf, f);
+    fclose(f);
+    return n == len && memcmp(buf, text, len) == 0;
+}
+
+static int tmp_exists(const char *name)
+{
+    struct stat sb;
+    return stat(tmp_path(name), &sb) == 0;
+}
+
+/* An output never overwrites an input: a run whose --out, or a sidecar of
+ * it, is the scene file (under any spelling, or a hard link) is refused
+ * with a sentence naming both and exit 1 before anything is written; the
+ * scene keeps its bytes. */
+START_TEST(run_refuses_an_output_that_is_its_scene)
+{
+    make_tmp_dir();
+    char *text;
+    size_t len;
+    static const struct {
+        const char *scene, *out, *word, *never; /* never: a file that must not appear */
+    } cases[] = {
+        {"s.json", "s.json", "s.json, the run file, is the scene file", "s.xmf"},
+        {"s.json", "./sub/../s.json", "the run file, is the scene file", "s.xmf"},
+        {"run.xmf", "run.h5", "run.xmf, the XDMF sidecar of", "run.h5"},
+        {"run.xdmf2", "run.h5", "the legacy XDMF sidecar of", "run.h5"},
+        {"a.json.part", "a.json", "(a temporary name of it), is the scene file", "a.json"},
+        {"linked.json", "other.h5", "other.h5, the run file, is the scene file", "other.xmf"},
+    };
+    char *sub = tmp_path("sub");
+    ck_assert_int_eq(mkdir(sub, 0777), 0);
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        copy_file(SMALL_SCENE, cases[i].scene, &text, &len);
+        if (!strcmp(cases[i].out, "other.h5")) {
+            char *a = tmp_path(cases[i].scene), *b = tmp_path("other.h5");
+            ck_assert_int_eq(link(a, b), 0); /* another name of the same file */
+        }
+        char *scene = tmp_path(cases[i].scene), *out = tmp_path(cases[i].out);
+        result r = run_tool(
+            (const char *[]){"run", scene, "--frames", "2", "--quiet", "--out", out, NULL});
+        ASSERT_EXIT(r, 1);
+        ck_assert_msg(strstr(r.err, cases[i].word) && strstr(r.err, "never overwrites an input"),
+                      "%s", r.err);
+        ck_assert_int_eq(count_lines(r.err), 1);
+        ck_assert_msg(same_bytes(cases[i].scene, text, len), "%s changed", cases[i].scene);
+        ck_assert_msg(!tmp_exists(cases[i].never), "%s was written", cases[i].never);
+        result_free(&r);
+        free(text);
+    }
+    remove_tmp_dir();
+}
+END_TEST
+
 /* A full disk: a 1 MiB tmpfs in a private mount namespace (root only; it
  * vanishes with the process). The run stops with status 1 and a sentence,
  * and the file keeps the frames written before. */
@@ -888,6 +966,7 @@ static Suite *tool_suite(void)
     tcase_add_test(tc, run_file_holds_what_the_sim_held_bit_for_bit);
     tcase_add_test(tc, writer_refuses_fields_the_sim_lacks);
     tcase_add_test(tc, unwritable_outputs_exit_1_with_a_sentence);
+    tcase_add_test(tc, run_refuses_an_output_that_is_its_scene);
     tcase_add_test(tc, full_disk_exits_1_and_keeps_the_frames);
     tcase_add_test(tc, progress_is_a_bar_on_a_terminal);
     tcase_add_test(tc, progress_line_fits_the_terminal_width);

@@ -460,6 +460,52 @@ START_TEST(without_a_display_it_says_so_and_exits_2)
 }
 END_TEST
 
+/* An output never overwrites an input: --out (or its sidecar) or
+ * --record-input naming the scene file, or --record-input naming the
+ * --script, is refused with a sentence and a non-zero exit; the input
+ * keeps its bytes. */
+START_TEST(view_refuses_an_output_that_is_an_input)
+{
+    NEED_X();
+    make_tmp_dir();
+    char *pool = ms_test_slurp(POOL);
+    ck_assert_ptr_nonnull(pool);
+    write_file("s.json", pool);
+    write_file("run.xmf", pool);
+    write_file("still.log", VIEW_LOG_HEADER "\n");
+    static const struct {
+        const char *scene, *opts, *word;
+        int rc;
+    } cases[] = {
+        {"s.json", "--out %s/s.json", "s.json, the run file, is the scene file", 1},
+        {"run.xmf", "--out %s/run.h5", "the XDMF sidecar of", 1},
+        {"s.json", "--record-input %s/s.json", "--record-input", 2},
+        {"s.json", "--script %s/still.log --record-input %s/still.log", "is the --script", 2},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        char opts[1200], args[2048], p[512];
+        snprintf(opts, sizeof opts, cases[i].opts, tmp_dir, tmp_dir);
+        snprintf(args, sizeof args, "%s/%s --fast --frames 2 %s", tmp_dir, cases[i].scene, opts);
+        ck_assert_int_eq(run_view("same", args), cases[i].rc);
+        snprintf(p, sizeof p, "%s/same.err", tmp_dir);
+        char *err = ms_test_slurp(p);
+        ck_assert_msg(strstr(err, cases[i].word) && strstr(err, "never overwrites an input"), "%s",
+                      err);
+        free(err);
+        snprintf(p, sizeof p, "%s/%s", tmp_dir, cases[i].scene);
+        char *now = ms_test_slurp(p);
+        ck_assert_str_eq(now, pool);
+        free(now);
+        snprintf(p, sizeof p, "%s/still.log", tmp_dir);
+        now = ms_test_slurp(p);
+        ck_assert_str_eq(now, VIEW_LOG_HEADER "\n");
+        free(now);
+    }
+    free(pool);
+    remove_tmp_dir();
+}
+END_TEST
+
 /* A left-drag from window (0.3, 0.55) to (0.7, 0.55) over frames 2..22. */
 static void write_drag_log(const char *name)
 {
@@ -749,6 +795,7 @@ static Suite *view_suite(void)
     tc = tcase_create("window");
     tcase_set_timeout(tc, 240);
     tcase_add_test(tc, without_a_display_it_says_so_and_exits_2);
+    tcase_add_test(tc, view_refuses_an_output_that_is_an_input);
     tcase_add_test(tc, scripted_drag_moves_the_water_and_the_particles_along_it);
     tcase_add_test(tc, keys_toggle_what_they_say_and_escape_exits_0);
     tcase_add_test(tc, closing_resizing_and_a_lost_context_are_handled);

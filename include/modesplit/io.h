@@ -78,7 +78,12 @@ extern "C" {
  * (ms_scene_output_fields), or MS_FIELD_COMBINED for a sim made from a desc.
  * Asking for a part the sim does not have (a surface field without a
  * surface, particles without a volume) is MS_ERR_INVALID_ARGUMENT. An
- * unwritable path or a full disk is MS_ERR_IO with the system's reason. */
+ * unwritable path or a full disk is MS_ERR_IO with the system's reason.
+ * A path whose file or sidecars (or their temporary names) would be the
+ * file the sim's scene was loaded from is MS_ERR_INVALID_ARGUMENT, before
+ * anything is created (ms_writer_open_append too). One writer per run
+ * file: a writer holds an exclusive flock on its file until it is closed,
+ * and a second writer of that file (in any process) is MS_ERR_STATE. */
 MS_API ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields,
                                 ms_writer **out);
 /* Append the sim's current frame (fields, particles, ms_sim_time) and flush

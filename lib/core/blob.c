@@ -103,3 +103,60 @@ uint64_t ms_blob_hash(uint64_t h, const void *data, size_t bytes)
     }
     return h;
 }
+
+ms_status ms_blob_expect(const ms_blob *b, const char *name, size_t bytes)
+{
+    size_t have = bytes;
+    ms_status st = ms_blob_peek(b, name, &have);
+    if (st == MS_OK && have != bytes)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "snapshot: record '%s' holds %zu bytes where its count says %zu (a "
+                       "forged or damaged snapshot)",
+                       name, have, bytes);
+    return st;
+}
+
+ms_status ms_blob_check_floats(const char *name, const float *p, size_t count, double lo, double hi,
+                               const char *unit)
+{
+    for (size_t i = 0; i < count; ++i) {
+        if (!isfinite(p[i]))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "snapshot: record '%s' value %zu is %g; every value must be finite",
+                           name, i, (double)p[i]);
+        if (p[i] < lo || p[i] > hi)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "snapshot: record '%s' value %zu is %g%s%s, outside [%g, %g]%s%s", name,
+                           i, (double)p[i], *unit ? " " : "", unit, lo, hi, *unit ? " " : "", unit);
+    }
+    return MS_OK;
+}
+
+ms_status ms_blob_check_int(const char *name, long v, long lo, long hi)
+{
+    if (v < lo || v > hi)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "snapshot: record '%s' is %ld, outside [%ld, %ld] for this sim", name, v, lo,
+                       hi);
+    return MS_OK;
+}
+
+ms_status ms_blob_floats(ms_blob *b, const char *name, float *p, size_t count, double lo, double hi,
+                         const char *unit)
+{
+    ms_status st = ms_blob_io(b, name, p, count * sizeof(float));
+    if (st == MS_OK && b->reading)
+        st = ms_blob_check_floats(name, p, count, lo, hi, unit);
+    return st;
+}
+
+ms_status ms_blob_double(ms_blob *b, const char *name, double *p, double lo, double hi,
+                         const char *unit)
+{
+    ms_status st = ms_blob_io(b, name, p, sizeof *p);
+    if (st == MS_OK && b->reading && (!isfinite(*p) || *p < lo || *p > hi))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "snapshot: record '%s' is %g%s%s, outside [%g, %g]%s%s (finite)", name, *p,
+                       *unit ? " " : "", unit, lo, hi, *unit ? " " : "", unit);
+    return st;
+}

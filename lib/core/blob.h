@@ -15,6 +15,7 @@
 #ifndef MS_CORE_BLOB_H
 #define MS_CORE_BLOB_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -43,6 +44,28 @@ ms_status ms_blob_peek(const ms_blob *b, const char *name, size_t *bytes);
  * [0, max] with a sentence naming it. */
 ms_status ms_blob_count(ms_blob *b, const char *name, int *n, int max);
 
+/* Reading a blob is reading untrusted input: its checksum finds damage,
+ * not forgery, so every value that indexes, sizes or bounds work is
+ * checked before use, as a desc's are. */
+
+/* Reading: the next record must be `name` of exactly `bytes` bytes,
+ * without moving on: a count read from the blob is checked against the
+ * record it sizes before anything is allocated for it. */
+ms_status ms_blob_expect(const ms_blob *b, const char *name, size_t bytes);
+/* `count` floats either way; read, each must be finite and in [lo, hi]
+ * (unit names their unit in the sentence; -INFINITY/INFINITY for "finite
+ * only"). */
+ms_status ms_blob_floats(ms_blob *b, const char *name, float *p, size_t count, double lo, double hi,
+                         const char *unit);
+/* One double either way; read, it must be finite and in [lo, hi]. */
+ms_status ms_blob_double(ms_blob *b, const char *name, double *p, double lo, double hi,
+                         const char *unit);
+/* Checks of values already read (the same sentences): each of p[0..count)
+ * finite and in [lo, hi]; an integer in [lo, hi]. */
+ms_status ms_blob_check_floats(const char *name, const float *p, size_t count, double lo, double hi,
+                               const char *unit);
+ms_status ms_blob_check_int(const char *name, long v, long lo, long hi);
+
 /* A 64-bit hash of bytes (8 bytes a step; FNV-1a for the tail),
  * continuing from h (start with MS_BLOB_HASH0). Not cryptographic: it
  * finds torn and damaged blobs, not forged ones. */
@@ -51,5 +74,9 @@ uint64_t ms_blob_hash(uint64_t h, const void *data, size_t bytes);
 
 /* One scalar or fixed array each way. */
 #define MS_BLOB_IO(b, name, var) ms_blob_io((b), (name), &(var), sizeof(var))
+/* A finite float scalar or fixed float array each way (any value). */
+#define MS_BLOB_FINITE(b, name, var)                                                               \
+    ms_blob_floats((b), (name), (float *)&(var), sizeof(var) / sizeof(float), -INFINITY, INFINITY, \
+                   "")
 
 #endif /* MS_CORE_BLOB_H */

@@ -37,6 +37,8 @@ typedef struct ms_writer_layout {
     ms_grid grid[MS_IO_NFIELDS];  /* where each height field lies */
     const char *scene_text;       /* may be NULL */
     const char *scene_name;       /* may be NULL */
+    const char *scene_path;       /* the file the scene came from, never written;
+                                     NULL or "" when there is none */
     double frame_dt;              /* s, of the simulation */
     int output_every;             /* frames of the sim per written frame, >= 1 */
     int deflate;                  /* height fields: deflate level 1..9 after shuffle;

@@ -164,9 +164,14 @@ static void read_checkpoints(ms_reader *r)
         hsize_t dims[1];
         hid_t d = open_dataset(r->file, name, H5T_INTEGER, 1, dims);
         int64_t at = -1, bytes = 0;
-        int ok = d >= 0 && ms_h5_read_int64(d, "frame", &at) >= 0 && at >= 0 &&
-                 at < r->frames && ms_h5_read_int64(d, "bytes", &bytes) >= 0 && bytes > 0 &&
-                 (hsize_t)bytes <= dims[0] && dims[0] <= (hsize_t)1 << 40;
+        /* the blob's bytes must be stored in the file: the writer's slots
+         * have no filters, so a slot claiming more than its chunks hold
+         * (a sparse or forged file) would only make a reader allocate
+         * memory for fill values */
+        int ok = d >= 0 && ms_h5_read_int64(d, "frame", &at) >= 0 && at >= 0 && at < r->frames &&
+                 ms_h5_read_int64(d, "bytes", &bytes) >= 0 && bytes > 0 &&
+                 (hsize_t)bytes <= dims[0] && dims[0] <= (hsize_t)1 << 40 &&
+                 (hsize_t)bytes <= H5Dget_storage_size(d);
         if (d >= 0)
             H5Dclose(d);
         if (!ok)

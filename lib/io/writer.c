@@ -33,6 +33,7 @@
 #define _GNU_SOURCE /* memfd_create */
 #include <errno.h>
 #include <fcntl.h>
+#include <sys/file.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -56,6 +57,7 @@
 #define META_SLACK_BYTES (256u * 1024u)
 
 struct ms_writer {
+    int lock_fd; /* holds flock(LOCK_EX) on the run file, -1 = none */
     char *path;
     char *xmf_path;
     char *xmf2_path;         /* the legacy reader's sidecar */
@@ -106,6 +108,8 @@ static void free_writer(ms_writer *w)
 {
     if (!w)
         return;
+    if (w->lock_fd >= 0)
+        close(w->lock_fd); /* after the file is closed: the lock ends last */
     ms_free(w->path);
     ms_free(w->xmf_path);
     ms_free(w->xmf2_path);
@@ -372,6 +376,77 @@ static ms_status probe_path(const char *path, const char *shown, const ms_writer
     return st;
 }
 
+/* An output never overwrites an input: none of the names this writer
+ * writes (the run file, its two XDMF sidecars, and the temporary names
+ * each is made under: ".part", ".before", ".tmp") may be the scene's own
+ * file, whatever the spelling (the same device and inode; a name that
+ * does not exist yet cannot be it). Checked before anything is created. */
+static ms_status check_not_input(const ms_writer *w, const char *scene)
+{
+    struct stat in, sb;
+    if (!scene || !scene[0] || stat(scene, &in) != 0)
+        return MS_OK;
+    const char *const base[3] = {w->path, w->xmf_path, w->xmf2_path};
+    static const char *const what[3] = {"the run file", "the XDMF sidecar of",
+                                        "the legacy XDMF sidecar of"};
+    static const char *const suffix[] = {"", ".part", ".before", ".part.before", ".tmp"};
+    for (int b = 0; b < 3; ++b)
+        for (size_t k = 0; k < sizeof suffix / sizeof suffix[0]; ++k) {
+            size_t n = strlen(base[b]) + strlen(suffix[k]) + 1;
+            char *name = ms_malloc(n);
+            if (!name)
+                return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+            snprintf(name, n, "%s%s", base[b], suffix[k]);
+            int same = stat(name, &sb) == 0 && sb.st_dev == in.st_dev && sb.st_ino == in.st_ino;
+            ms_status st = MS_OK;
+            if (same)
+                st = ms_fail(MS_ERR_INVALID_ARGUMENT,
+                             "io: %s, %s%s%s%s, is the scene file %s: an output never "
+                             "overwrites an input; choose another output name",
+                             name, what[b], b ? " " : "", b ? w->path : "",
+                             k ? " (a temporary name of it)" : "", scene);
+            ms_free(name);
+            if (st != MS_OK)
+                return st;
+        }
+    return MS_OK;
+}
+
+/* One writer per run file: an exclusive advisory lock (flock) on the
+ * file's inode, held until the writer is freed. A second writer of the
+ * same file (a --resume of a run still going, two resumes at once) is
+ * refused before it changes anything, instead of both writing HDF5
+ * metadata into one file. `name` is opened without truncating it (with
+ * `create`, made if missing); names that are not regular files (a
+ * device) are not locked. hold: keep the lock in *fd, else only test it. */
+static ms_status lock_file(const char *name, const char *shown, int create, int hold, int *fd)
+{
+    *fd = -1;
+    int f = open(name, (hold ? O_RDWR : O_RDONLY) | O_CLOEXEC | (create ? O_CREAT : 0), 0666);
+    struct stat sb;
+    if (f < 0 || fstat(f, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        if (f >= 0)
+            close(f);
+        return MS_OK; /* nothing to lock: opening it reports why, if it matters */
+    }
+    if (flock(f, LOCK_EX | LOCK_NB) != 0) {
+        int e = errno;
+        close(f);
+        if (e == EWOULDBLOCK)
+            return ms_fail(MS_ERR_STATE,
+                           "io: %s is being written by another process (it holds the file's "
+                           "lock); one writer per run file: wait until it ends, or write "
+                           "another file",
+                           shown);
+        return MS_OK; /* a file system without flock: no lock, as before */
+    }
+    if (hold)
+        *fd = f;
+    else
+        close(f);
+    return MS_OK;
+}
+
 /* The set-up both openers share: the arguments checked (*out = NULL) and
  * a writer of layout l for path with no file open yet (strings of the
  * layout not kept) in *wp. */
@@ -393,6 +468,7 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
     if (!w)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
     w->file = w->time_dset = w->frames_attr = w->floater_dset = -1;
+    w->lock_fd = -1;
     for (int i = 0; i < MS_IO_NFIELDS; ++i)
         w->dset[i] = -1;
     for (int i = 0; i < MS_IO_CHECKPOINTS; ++i) {
@@ -400,13 +476,17 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
         w->ckpt_frame[i] = -1;
     }
     w->layout = *l;
-    w->layout.scene_text = w->layout.scene_name = NULL;
+    w->layout.scene_text = w->layout.scene_name = w->layout.scene_path = NULL;
     w->path = ms_strdup(path);
     w->xmf_path = ms_xdmf_path_for(path);
     w->xmf2_path = ms_xdmf_legacy_path_for(path);
     if (!w->path || !w->xmf_path || !w->xmf2_path) {
         free_writer(w);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
+    }
+    if ((st = check_not_input(w, l->scene_path)) != MS_OK) {
+        free_writer(w);
+        return st;
     }
     *wp = w;
     return MS_OK;
@@ -456,12 +536,19 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
     if (st != MS_OK)
         return st;
 
-    int oom;
+    int oom, unused;
     char *part = part_path_for(path, &oom);
     const char *made = part ? part : path; /* the name HDF5 creates */
     if (oom)
         st = ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
-    else
+    /* a run file another writer holds is not replaced (the .part renamed
+     * over it), nor is a .part another writer is making truncated; the
+     * lock taken on `made` moves with it to path at the rename */
+    else if (part && (st = lock_file(path, path, 0, 0, &unused)) == MS_OK)
+        st = lock_file(made, path, 1, 1, &w->lock_fd);
+    else if (!part)
+        st = lock_file(made, path, 0, 1, &w->lock_fd);
+    if (st == MS_OK)
         st = probe_path(made, path, l);
     if (st != MS_OK) {
         ms_free(part);
@@ -1166,6 +1253,10 @@ ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout 
         return st;
     if (access(path, R_OK | W_OK) != 0) {
         st = ms_fail(MS_ERR_IO, "io: cannot resume %s: %s", path, strerror(errno));
+        free_writer(w);
+        return st;
+    }
+    if ((st = lock_file(path, path, 0, 1, &w->lock_fd)) != MS_OK) {
         free_writer(w);
         return st;
     }

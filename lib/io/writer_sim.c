@@ -45,6 +45,7 @@ static ms_status sim_layout(const ms_sim *sim, unsigned fields, ms_writer_layout
     }
     l.scene_text = sc ? ms_scene_text(sc) : NULL;
     l.scene_name = sc ? ms_scene_name(sc) : NULL;
+    l.scene_path = sc ? ms_scene_path(sc) : NULL;
     l.frame_dt = sc ? ms_scene_frame_dt(sc) : 0.0;
     l.output_every = sc ? ms_scene_output_every(sc) : 1;
     l.deflate = sc ? ms_scene_output_deflate(sc) : 1;

@@ -172,6 +172,17 @@ ms_status ms_scene_apply_overrides(const char *text, size_t len, int n, const ch
             return st;
         }
         const char *eq = strchr(set[i], '=');
+        /* "overrides" is the record of the --set a run was made with: a
+         * --set that replaced it would free the list appended to below */
+        const size_t klen = (size_t)(eq - set[i]), olen = strlen("overrides");
+        if (klen >= olen && strncmp(set[i], "overrides", olen) == 0 &&
+            (klen == olen || set[i][olen] == '.' || set[i][olen] == '[')) {
+            json_decref(root);
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "--set %s: \"overrides\" is the list of KEY=VALUE strings a run was "
+                           "made with, written by the tool; allowed: keys of the scene's sections",
+                           set[i]);
+        }
         json_t *value = json_loads(eq + 1, JSON_DECODE_ANY | JSON_REJECT_DUPLICATES, &err);
         if (!value)
             value = json_string(eq + 1);

@@ -12,6 +12,8 @@
  * (lib/volume/snapshot.c). Statistics are not state: they count what this
  * handle did.
  */
+#include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -61,11 +63,11 @@ static uint64_t sim_hash(const ms_sim *sim)
  * it or neither: the sims were made alike (the header's hash). */
 static ms_status buf_io(ms_blob *b, const char *name, float *p, size_t count)
 {
-    return ms_blob_io(b, name, p, p ? count * sizeof(float) : 0);
+    return ms_blob_floats(b, name, p, p ? count : 0, -INFINITY, INFINITY, "");
 }
 
 /* The extraction snapshot of a slot (phase A, volume/extract.h). */
-static ms_status extract_io(ms_blob *b, ms_extract_snap *s, int max)
+static ms_status extract_io(ms_blob *b, const ms_volume *v, ms_extract_snap *s, int max, int fresh)
 {
     int m = s->m, n = s->n_all;
     ms_status st;
@@ -73,9 +75,13 @@ static ms_status extract_io(ms_blob *b, ms_extract_snap *s, int max)
         (st = ms_blob_count(b, "sim.x.m", &m, max)) ||
         (st = ms_blob_count(b, "sim.x.n", &n, max)))
         return st;
-    if (b->reading && n < m)
-        return ms_fail(MS_ERR_PARSE, "sim: snapshot holds %d marked of %d particles; the marked "
-                       "are at most all", m, n);
+    if (b->reading && (n < m || n > max))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "sim: snapshot holds %d marked of %d particles; the marked are at most "
+                       "all, and all at most %d",
+                       m, n, max);
+    if (b->reading && (st = ms_blob_expect(b, "sim.x.x", (size_t)n * sizeof(float))))
+        return st;
     if (b->reading && n > s->cap) {
         float *q = ms_alloc_array((size_t)n * 3, sizeof(float));
         if (!q)
@@ -100,7 +106,7 @@ static ms_status extract_io(ms_blob *b, ms_extract_snap *s, int max)
         (st = MS_BLOB_IO(b, "sim.x.smooth", s->smooth_steps)) ||
         (st = MS_BLOB_IO(b, "sim.x.smooth_e", s->smooth_energy)))
         return st;
-    return MS_OK;
+    return b->reading ? ms_volume_snapshot_check_extract(v, s, fresh) : MS_OK;
 }
 
 /* The particle copy of a slot, in the layout volume_task.c makes
@@ -109,6 +115,8 @@ static ms_status particles_io(ms_blob *b, ms_sim *sim, int slot, int max)
 {
     int n = sim->pcount[slot];
     ms_status st = ms_blob_count(b, "sim.p.n", &n, max);
+    if (st == MS_OK && b->reading)
+        st = ms_blob_expect(b, "sim.p.x", (size_t)n * sizeof(float));
     if (st != MS_OK)
         return st;
     if (b->reading && n > sim->pcap[slot]) {
@@ -131,9 +139,14 @@ static ms_status particles_io(ms_blob *b, ms_sim *sim, int slot, int max)
         sim->pcount[slot] = n;
     static const char *const pn[3] = {"sim.p.x", "sim.p.y", "sim.p.z"};
     static const char *const vn[3] = {"sim.p.vx", "sim.p.vy", "sim.p.vz"};
-    for (int a = 0; st == MS_OK && a < 3; ++a)
-        if ((st = ms_blob_io(b, pn[a], sim->ppos[slot][a], (size_t)n * sizeof(float))) == MS_OK)
-            st = ms_blob_io(b, vn[a], sim->pvel[slot][a], (size_t)n * sizeof(float));
+    /* the copies are published as they are: finite, near the domain */
+    for (int a = 0; st == MS_OK && a < 3; ++a) {
+        const double lo = sim->domain_min[a], hi = sim->domain_max[a], ext = hi - lo;
+        if ((st = ms_blob_floats(b, pn[a], sim->ppos[slot][a], (size_t)n, lo - ext, hi + ext,
+                                 "m")) == MS_OK)
+            st =
+                ms_blob_floats(b, vn[a], sim->pvel[slot][a], (size_t)n, -INFINITY, INFINITY, "m/s");
+    }
     return st;
 }
 
@@ -144,13 +157,28 @@ static ms_status shapes_io(ms_blob *b, ms_sim *sim)
         ms_sim_shape *sh = &sim->shapes[i];
         if ((st = MS_BLOB_IO(b, "sim.sh.moving", sh->moving)) ||
             (st = MS_BLOB_IO(b, "sim.sh.api_set", sh->api_set)) ||
-            (st = MS_BLOB_IO(b, "sim.sh.api_pos", sh->api_pos)) ||
-            (st = MS_BLOB_IO(b, "sim.sh.api_vel", sh->api_vel)) ||
+            (st = MS_BLOB_FINITE(b, "sim.sh.api_pos", sh->api_pos)) ||
+            (st = MS_BLOB_FINITE(b, "sim.sh.api_vel", sh->api_vel)) ||
             (st = MS_BLOB_IO(b, "sim.sh.api_turn", sh->api_turn)) ||
-            (st = MS_BLOB_IO(b, "sim.sh.quat", sh->api_quat)) ||
-            (st = MS_BLOB_IO(b, "sim.sh.omega", sh->api_omega)))
+            (st = MS_BLOB_FINITE(b, "sim.sh.quat", sh->api_quat)) ||
+            (st = MS_BLOB_FINITE(b, "sim.sh.omega", sh->api_omega)))
             break;
     }
+    return st;
+}
+
+/* Drags an engine asked for, in the ranges ms_sim_drag accepts (views.c):
+ * a drag's radius bounds the particles it visits. */
+static ms_status check_drags(const ms_sim_drag_req *d, int n)
+{
+    ms_status st = MS_OK;
+    for (int i = 0; i < n && st == MS_OK; ++i)
+        if ((st = ms_blob_check_floats("sim.drags pos", d[i].pos, 2, -1e4, 1e4, "m")) ||
+            (st = ms_blob_check_floats("sim.drags vel", d[i].vel, 2, -1e3, 1e3, "m/s")) ||
+            (st = ms_blob_check_floats("sim.drags radius", &d[i].radius, 1, 1e-6, 100, "m")) ||
+            (st = ms_blob_check_floats("sim.drags depth", &d[i].depth, 1, 0, 100, "m")) ||
+            (st = ms_blob_check_floats("sim.drags strength", &d[i].strength, 1, 1e-6, 1e4, "1/s")))
+            break;
     return st;
 }
 
@@ -162,19 +190,24 @@ static ms_status sim_io(ms_sim *sim, ms_blob *b)
     const int ndrops = sim->scene ? sim->scene->ndrops : 0;
     ms_status st;
     /* clock and pipeline */
+    /* times within what ms_sim_step accepts: frame_dt in (0, 10] s, at
+     * most 1e7 wave steps a frame (step.c) */
     if ((st = MS_BLOB_IO(b, "sim.calls", sim->calls)) ||
-        (st = MS_BLOB_IO(b, "sim.t_volume", sim->t_volume)) ||
-        (st = MS_BLOB_IO(b, "sim.t_fields", sim->t_fields)) ||
-        (st = MS_BLOB_IO(b, "sim.dt_prev", sim->dt_prev)) ||
-        (st = MS_BLOB_IO(b, "sim.dt_cur", sim->dt_cur)) ||
+        (st = ms_blob_double(b, "sim.t_volume", &sim->t_volume, 0.0, 1e12, "s")) ||
+        (st = ms_blob_double(b, "sim.t_fields", &sim->t_fields, 0.0, 1e12, "s")) ||
+        (st = ms_blob_floats(b, "sim.dt_prev", &sim->dt_prev, 1, 0.0, 10.0, "s")) ||
+        (st = ms_blob_floats(b, "sim.dt_cur", &sim->dt_cur, 1, 0.0, 10.0, "s")) ||
         (st = MS_BLOB_IO(b, "sim.primed", sim->primed)) ||
         (st = MS_BLOB_IO(b, "sim.n_time_last", sim->n_time_last)) ||
-        (st = MS_BLOB_IO(b, "sim.wave_dt", sim->wave_dt_last)))
+        (st = ms_blob_floats(b, "sim.wave_dt", &sim->wave_dt_last, 1, 0.0, 10.0, "s")))
         return st;
-    if (b->reading && sim->calls < 0)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "snapshot: %ld frames done", sim->calls);
+    if (b->reading && ((st = ms_blob_check_int("sim.calls", sim->calls, 0, LONG_MAX)) ||
+                       (st = ms_blob_check_int("sim.primed", sim->primed, 0, 1)) ||
+                       (st = ms_blob_check_int("sim.n_time_last", sim->n_time_last, 0, 10000000))))
+        return st;
     for (int k = 0; st == MS_OK && k < 2; ++k) {
-        if (sim->volume && (st = extract_io(b, &sim->snap[k], maxp)) == MS_OK &&
+        if (sim->volume &&
+            (st = extract_io(b, sim->volume, &sim->snap[k], maxp, sim->calls == 0)) == MS_OK &&
             (st = particles_io(b, sim, k, maxp)) == MS_OK)
             st = buf_io(b, "sim.hfield", sim->hfield[k], nf);
         if (st == MS_OK && (st = buf_io(b, "sim.flow", sim->flow[k], 2 * nf)) == MS_OK)
@@ -192,7 +225,7 @@ static ms_status sim_io(ms_sim *sim, ms_blob *b)
         (st = ms_blob_count(b, "sim.next_drop", &next_drop, ndrops)) ||
         (st = ms_blob_count(b, "sim.ndrags", &ndrags, MS_SIM_MAX_DRAGS)) ||
         (st = ms_blob_io(b, "sim.drags", sim->drags, (size_t)ndrags * sizeof sim->drags[0])) ||
-        (st = shapes_io(b, sim)) ||
+        (b->reading && (st = check_drags(sim->drags, ndrags))) || (st = shapes_io(b, sim)) ||
         (st = buf_io(b, "sim.floater_xyz", sim->floater_xyz, 3 * (size_t)sim->nfloaters)) ||
         (st = buf_io(b, "sim.floater_vel", sim->floater_vel, 2 * (size_t)sim->nfloaters)))
         return st;

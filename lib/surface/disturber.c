@@ -33,7 +33,7 @@ ms_disturber_desc ms_disturber_desc_default(void)
     return d;
 }
 
-static ms_status check_desc(const ms_surface *s, const ms_disturber_desc *d)
+ms_status ms_surface_check_disturber(const ms_surface *s, const ms_disturber_desc *d)
 {
     ms_status st;
     if ((st = ms_check_finite(PART, "disturber x", d->x)) ||
@@ -74,9 +74,8 @@ ms_status ms_surface_add_disturber(ms_surface *s, const ms_disturber_desc *user,
     ms_status st;
     ms_disturber_desc desc = ms_disturber_desc_default(), *d = &desc;
     if ((st = ms_check_not_null(PART, "surface", s)) ||
-        (st = ms_struct_in(user, &desc,
-                           MS_SIZES_DISTURBER_DESC, PART)) ||
-        (st = check_desc(s, d)))
+        (st = ms_struct_in(user, &desc, MS_SIZES_DISTURBER_DESC, PART)) ||
+        (st = ms_surface_check_disturber(s, d)))
         return st;
     if (s->ndist == s->cap_dist &&
         (st = ms_surface_reserve_disturbers(s, s->cap_dist ? 2 * s->cap_dist : 4)))
@@ -112,7 +111,7 @@ ms_status ms_surface_move_disturber(ms_surface *s, int id, float x, float y, flo
     d.y = y;
     d.vx = vx;
     d.vy = vy;
-    if ((st = check_desc(s, &d)))
+    if ((st = ms_surface_check_disturber(s, &d)))
         return st;
     b->d = d;
     ms_free(b->path);

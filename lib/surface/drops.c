@@ -78,6 +78,24 @@ ms_rain ms_rain_default(void)
     return r;
 }
 
+ms_status ms_surface_check_rain(const ms_surface *s, const ms_rain *rain)
+{
+    ms_status st;
+    const float extent = (float)MS_MAX(s->nx, s->ny) * s->desc.dx;
+    if ((st = ms_check_range(PART, "rain rate", rain->rate, 0, 1e6, "drops/m^2/s")) ||
+        (st = ms_check_range(PART, "rain radius", rain->radius, 1e-9, extent, "m")) ||
+        (st = ms_check_finite(PART, "rain amplitude", rain->amplitude)))
+        return st;
+    const double area = (double)s->nx * s->desc.dx * ((double)s->ny * s->desc.dx);
+    if ((double)rain->rate * area > MAX_RAIN_DROPS_PER_S)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "surface: rain rate %g drops/m^2/s over the grid's %g m^2 is %g drops "
+                       "a second; at most %g (rate <= %g here)",
+                       (double)rain->rate, area, rain->rate * area, MAX_RAIN_DROPS_PER_S,
+                       MAX_RAIN_DROPS_PER_S / area);
+    return MS_OK;
+}
+
 ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *user)
 {
     ms_status st;
@@ -94,18 +112,8 @@ ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *user)
         s->rain.rate = 0;
         return MS_OK;
     }
-    const float extent = (float)MS_MAX(s->nx, s->ny) * s->desc.dx;
-    if ((st = ms_check_range(PART, "rain rate", rain->rate, 0, 1e6, "drops/m^2/s")) ||
-        (st = ms_check_range(PART, "rain radius", rain->radius, 1e-9, extent, "m")) ||
-        (st = ms_check_finite(PART, "rain amplitude", rain->amplitude)))
+    if ((st = ms_surface_check_rain(s, rain)))
         return st;
-    const double area = (double)s->nx * s->desc.dx * ((double)s->ny * s->desc.dx);
-    if ((double)rain->rate * area > MAX_RAIN_DROPS_PER_S)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "surface: rain rate %g drops/m^2/s over the grid's %g m^2 is %g drops "
-                       "a second; at most %g (rate <= %g here)",
-                       (double)rain->rate, area, rain->rate * area, MAX_RAIN_DROPS_PER_S,
-                       MAX_RAIN_DROPS_PER_S / area);
     s->rain = *rain;
     return MS_OK;
 }

@@ -106,6 +106,11 @@ float ms_surface_stable_dt(const ms_surface *s);
 ms_status ms_surface_step_calls(ms_surface *s, float dt, int calls);
 /* drops.c */
 void ms_surface_rain(ms_surface *s, float dt);
+/* The checks of ms_surface_set_rain (rate > 0: its ranges and the cap on
+ * drops a second) and ms_surface_add_disturber, for values a snapshot
+ * brings back (snapshot.c). */
+ms_status ms_surface_check_rain(const ms_surface *s, const ms_rain *rain);
+ms_status ms_surface_check_disturber(const ms_surface *s, const ms_disturber_desc *d);
 /* disturber.c */
 void ms_surface_disturbers_advance(ms_surface *s, float dt);
 void ms_surface_disturbers_positions(const ms_surface *s, float *xy);

@@ -5,6 +5,7 @@
 
 #include "core/blob.h"
 #include "modesplit/volume.h"
+#include "volume/extract.h"
 
 /* Write (b->reading = 0) or restore the state a step reads: the particles
  * in the solver's own (cell) order, which the next counting sort starts
@@ -14,6 +15,11 @@
  * neighbour lists, the grid) are rebuilt by the next pass from the same
  * positions in the same order: the same bits. */
 ms_status ms_volume_snapshot_io(ms_volume *v, ms_blob *b, int *recount);
+/* A restored extraction snapshot (phase A of a pipeline slot, extract.h)
+ * against this volume: its marked particles finite and near the domain,
+ * its constants this volume's own (or, with fresh = a sim before its
+ * first step, the zeros of a slot never filled). */
+ms_status ms_volume_snapshot_check_extract(const ms_volume *v, const ms_extract_snap *s, int fresh);
 /* After a restore that set *recount, once the colliders are where they
  * were at the snapshot: the neighbour counts the snapshot's volume held
  * (the surface particles the wave coupling moves, 3.5), rebuilt from the

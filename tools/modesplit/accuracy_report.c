@@ -4,10 +4,13 @@
  * cost on log-log axes (one curve per knob) and the Pareto chart of every
  * configuration. gnuplot draws the PNGs; a user may restyle the script.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "accuracy.h"
 
@@ -443,6 +446,35 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
     return fclose(f) == 0 ? 0 : -1;
 }
 
+/* Text of a part file (a study, knob or metric name) as a gnuplot
+ * string: single-quoted, because gnuplot runs `commands` in backquotes and
+ * expands @macros anywhere on a line but inside single quotes; a quote
+ * inside is doubled (gnuplot's escape there), a control character becomes
+ * '?' (a line break would end the command). */
+static void gp_string(FILE *gp, const char *text)
+{
+    fputc('\'', gp);
+    for (const char *p = text; *p; ++p) {
+        if (*p == '\'')
+            fputs("''", gp);
+        else
+            fputc((unsigned char)*p < 0x20 || *p == 0x7f ? '?' : *p, gp);
+    }
+    fputc('\'', gp);
+}
+
+/* A comment line's text: only characters with no meaning to gnuplot. */
+static void gp_comment_text(FILE *gp, const char *text)
+{
+    for (const char *p = text; *p; ++p) {
+        const char c = *p;
+        const int plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                          (c >= '0' && c <= '9') || c == '-' || c == '.' || c == '_' || c == '+' ||
+                          c == ' ';
+        fputc(plain ? c : '?', gp);
+    }
+}
+
 static int write_plots(const char *dir, const acc_row *rows, int n, const char *commit)
 {
     char path[1200], stem[256], png[256];
@@ -452,12 +484,13 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
         tool_error("accuracy: cannot write %s", path);
         return -1;
     }
-    fprintf(gp,
-            "# gnuplot script written by `modesplit accuracy` (commit %s); run it in this\n"
-            "# directory: gnuplot accuracy.gp. Restyle freely.\n"
-            "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\n"
-            "set logscale xy\nset format xy '%%g'\nset grid\nset key outside right\n",
-            commit);
+    fputs("# gnuplot script written by modesplit accuracy (commit ", gp);
+    gp_comment_text(gp, commit);
+    fputs("); run it in this\n"
+          "# directory: gnuplot accuracy.gp. Restyle freely.\n"
+          "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\n"
+          "set logscale xy\nset format xy '%g'\nset grid\nset key outside right\n",
+          gp);
     const char *st[MAXK];
     int ns = studies(rows, n, st);
     for (int s = 0; s < ns; ++s) {
@@ -492,25 +525,41 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
                 ++idx;
             }
             fclose(d);
+            /* names from the parts only as gp_string writes them */
             if (water) {
-                fprintf(gp,
-                        "set output '%s_error.png'\nset title 'water: the paper''s "
-                        "non-dispersive eq. 2 against real capillary-gravity waves, one "
-                        "curve per depth'\nset xlabel 'wavelength (m)'\nset ylabel '%s'\n",
-                        st[s], ms[m]);
+                snprintf(png, sizeof png, "%s_error.png", st[s]);
+                fputs("set output ", gp);
+                gp_string(gp, png);
+                fputs("\nset title 'water: the paper''s non-dispersive eq. 2 against real "
+                      "capillary-gravity waves, one curve per depth'\n"
+                      "set xlabel 'wavelength (m)'\nset ylabel ",
+                      gp);
+                gp_string(gp, ms[m]);
             } else {
+                char title[256];
                 metric_stem(png, sizeof png, st[s], m, ms[m], "_cost");
-                fprintf(gp,
-                        "set output '%s.png'\nset title '%s: %s against cost, one "
-                        "curve per knob'\nset xlabel '%s'\nset ylabel '%s'\n",
-                        png, st[s], ms[m], cost_label(rows, n, st[s]), ms[m]);
+                strncat(png, ".png", sizeof png - strlen(png) - 1);
+                snprintf(title, sizeof title, "%s: %s against cost, one curve per knob", st[s],
+                         ms[m]);
+                fputs("set output ", gp);
+                gp_string(gp, png);
+                fputs("\nset title ", gp);
+                gp_string(gp, title);
+                fputs("\nset xlabel ", gp);
+                gp_string(gp, cost_label(rows, n, st[s]));
+                fputs("\nset ylabel ", gp);
+                gp_string(gp, ms[m]);
             }
-            fprintf(gp, "plot ");
+            fprintf(gp, "\nplot ");
             idx = 0;
             for (int k = 0; k < nk; ++k)
                 if (has_rows(rows, n, st[s], kn[k], ms[m])) {
-                    fprintf(gp, "%s'%s.dat' index %d using 1:2 with linespoints pt 7 title '%s'",
-                            idx ? ", \\\n     " : "", stem, idx, kn[k]);
+                    char dat[300];
+                    snprintf(dat, sizeof dat, "%s.dat", stem);
+                    fputs(idx ? ", \\\n     " : "", gp);
+                    gp_string(gp, dat);
+                    fprintf(gp, " index %d using 1:2 with linespoints pt 7 title ", idx);
+                    gp_string(gp, kn[k]);
                     ++idx;
                 }
             fprintf(gp, "\n");
@@ -548,19 +597,55 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
                     rows[best].value);
         }
         fclose(d);
-        fprintf(
-            gp,
-            "set output '%s_pareto.png'\nset title \"%s: %s, every configuration;\\n"
-            "the line joins those no other beats on both cost and error\"\n"
-            "set xlabel '%s'\nset ylabel '%s'\n"
-            "plot '%s_pareto.dat' index 0 using 1:2 with points pt 6 title 'configuration', \\\n"
-            "     '%s_pareto.dat' index 1 using 1:2 with linespoints lw 2 pt 7 title 'Pareto "
-            "front', \\\n"
-            "     '%s_pareto.dat' index 1 using 1:2:3 with labels offset 1,0.7 left font ',8' "
-            "notitle\n",
-            st[s], st[s], metric, cost_label(rows, n, st[s]), metric, st[s], st[s], st[s]);
+        /* the title's line break is a double-quoted "\n" of its own,
+         * joined with gnuplot's string operator: no name from a part is
+         * ever inside double quotes */
+        char title[256], out[300], dat[300];
+        snprintf(title, sizeof title, "%s: %s, every configuration;", st[s], metric);
+        snprintf(out, sizeof out, "%s_pareto.png", st[s]);
+        snprintf(dat, sizeof dat, "%s_pareto.dat", st[s]);
+        fputs("set output ", gp);
+        gp_string(gp, out);
+        fputs("\nset title ", gp);
+        gp_string(gp, title);
+        fputs(" . \"\\n\" . 'the line joins those no other beats on both cost and error'\n"
+              "set xlabel ",
+              gp);
+        gp_string(gp, cost_label(rows, n, st[s]));
+        fputs("\nset ylabel ", gp);
+        gp_string(gp, metric);
+        fputs("\nplot ", gp);
+        gp_string(gp, dat);
+        fputs(" index 0 using 1:2 with points pt 6 title 'configuration', \\\n     ", gp);
+        gp_string(gp, dat);
+        fputs(" index 1 using 1:2 with linespoints lw 2 pt 7 title 'Pareto front', \\\n     ", gp);
+        gp_string(gp, dat);
+        fputs(" index 1 using 1:2:3 with labels offset 1,0.7 left font ',8' notitle\n", gp);
     }
     return fclose(gp) == 0 ? 0 : -1;
+}
+
+/* gnuplot accuracy.gp in dir, started without a shell (no path of ours is
+ * ever parsed by one): 0 it drew, 1 there is no gnuplot, -1 it failed. */
+static int run_gnuplot(const char *dir)
+{
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0)
+        return -1;
+    if (pid == 0) {
+        if (chdir(dir) != 0)
+            _exit(126);
+        execlp("gnuplot", "gnuplot", "accuracy.gp", (char *)NULL);
+        _exit(errno == ENOENT ? 127 : 126);
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR)
+            return -1;
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+        return 1;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
 
 int acc_report(const char *dir, const acc_row *rows, int n, const char *notes,
@@ -569,14 +654,12 @@ int acc_report(const char *dir, const acc_row *rows, int n, const char *notes,
     *plotted = 0;
     if (write_plots(dir, rows, n, commit) != 0)
         return -1;
-    char cmd[1400];
-    int have = system("command -v gnuplot >/dev/null 2>&1") == 0;
-    if (have) {
-        snprintf(cmd, sizeof cmd, "cd '%s' && gnuplot accuracy.gp", dir);
-        if (system(cmd) != 0) {
-            tool_error("accuracy: gnuplot failed on %s/accuracy.gp", dir);
-            return -1;
-        }
+    int drawn = run_gnuplot(dir);
+    if (drawn < 0) {
+        tool_error("accuracy: gnuplot failed on %s/accuracy.gp", dir);
+        return -1;
+    }
+    if (drawn == 0) {
         *plotted = 1;
     } else {
         tool_error("accuracy: gnuplot not found (Debian: gnuplot-nox): wrote the CSV, the "

@@ -225,6 +225,73 @@ static int split_csv(char *line, char **field, int max)
     return n;
 }
 
+/* A study or knob name of a part: a letter, then letters, digits, '_',
+ * '-' or '.', shorter than its field. They name output files (STUDY.dat,
+ * STUDY_pareto.png under --out) and appear in the plot script, so a name
+ * with a '/', "..", a quote or a backquote is refused, not cleaned. */
+static int is_identifier(const char *s, size_t size)
+{
+    size_t n = strlen(s);
+    if (n == 0 || n >= size || !((s[0] >= 'a' && s[0] <= 'z') || (s[0] >= 'A' && s[0] <= 'Z')))
+        return 0;
+    for (const char *p = s; *p; ++p)
+        if (!((*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') || (*p >= '0' && *p <= '9') ||
+              *p == '_' || *p == '-' || *p == '.'))
+            return 0;
+    return 1;
+}
+
+/* A text field of a part (metric, configuration, machine, commit): no
+ * control character, and it fits its field. */
+static int is_text(const char *s, size_t size)
+{
+    if (strlen(s) >= size)
+        return 0;
+    for (const unsigned char *p = (const unsigned char *)s; *p; ++p)
+        if (*p < 0x20 || *p == 0x7f)
+            return 0;
+    return 1;
+}
+
+/* The refusal of a part's row with a field that is not allowed (0: none):
+ * the field, its value (control characters as '?', cut at 60) and the
+ * rule it broke. */
+static int refuse_fields(const char *path, int lineno, char *const *fl)
+{
+    static const struct {
+        int field, name; /* name: 1 = an identifier, 0 = text */
+        size_t size;
+        const char *what;
+    } rule[] = {
+        {0, 1, sizeof((acc_row *)0)->study, "study"},
+        {1, 1, sizeof((acc_row *)0)->knob, "knob"},
+        {3, 0, sizeof((acc_row *)0)->config, "config"},
+        {4, 0, sizeof((acc_row *)0)->metric, "metric"},
+        {11, 0, sizeof((acc_row *)0)->machine, "machine"},
+        {12, 0, sizeof((acc_row *)0)->commit, "commit"},
+    };
+    for (size_t i = 0; i < sizeof rule / sizeof rule[0]; ++i) {
+        const char *v = fl[rule[i].field];
+        if (rule[i].name ? is_identifier(v, rule[i].size) : is_text(v, rule[i].size))
+            continue;
+        char shown[64];
+        size_t k = 0;
+        for (; v[k] && k < 60; ++k)
+            shown[k] = (unsigned char)v[k] < 0x20 || v[k] == 0x7f ? '?' : v[k];
+        shown[k] = '\0';
+        if (rule[i].name)
+            tool_error("accuracy: %s:%d: %s \"%s%s\" is refused; allowed: a letter, then "
+                       "letters, digits, '_', '-' and '.', at most %zu characters",
+                       path, lineno, rule[i].what, shown, v[k] ? "..." : "", rule[i].size - 1);
+        else
+            tool_error("accuracy: %s:%d: %s \"%s%s\" is refused; allowed: text without "
+                       "control characters, at most %zu characters",
+                       path, lineno, rule[i].what, shown, v[k] ? "..." : "", rule[i].size - 1);
+        return 1;
+    }
+    return 0;
+}
+
 static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, size_t size)
 {
     FILE *f = fopen(path, "r");
@@ -243,13 +310,19 @@ static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, 
             continue;
         }
         char *fl[13];
+        acc_row r;
+        memset(&r, 0, sizeof r);
         if (split_csv(line, fl, 13) != 13) {
             tool_error("accuracy: %s:%d: not 13 fields", path, lineno);
             rc = -1;
             break;
         }
-        acc_row r;
-        memset(&r, 0, sizeof r);
+        /* a newline ends the last field; fgets keeps it */
+        fl[12][strcspn(fl[12], "\r\n")] = '\0';
+        if (refuse_fields(path, lineno, fl)) {
+            rc = -1;
+            break;
+        }
         snprintf(r.study, sizeof r.study, "%s", fl[0]);
         snprintf(r.knob, sizeof r.knob, "%s", fl[1]);
         r.value = strtod(fl[2], NULL);
@@ -289,6 +362,19 @@ static int make_dir(const char *dir)
         return -1;
     }
     return 0;
+}
+
+/* s as one word of a POSIX shell line: in single quotes, a quote inside
+ * as '\'' (the shell gives every other character inside as it is). */
+static void shell_word(const char *s)
+{
+    putchar('\'');
+    for (const char *p = s; *p; ++p)
+        if (*p == '\'')
+            fputs("'\\''", stdout);
+        else
+            putchar(*p);
+    putchar('\'');
 }
 
 static int run_case(int k, int quick, const char *parts)
@@ -407,6 +493,12 @@ int cmd_accuracy(int argc, char **argv)
         } else if (tool_opt_value(argc, argv, &i, "--case", &v, &bad)) {
             if (bad)
                 return EXIT_USAGE;
+            if (one) {
+                tool_error("accuracy: --case %s after --case %s: one case a run (--jobs "
+                           "prints a line per case)",
+                           v, one);
+                return EXIT_USAGE;
+            }
             one = v;
         } else if (tool_opt_value(argc, argv, &i, "--merge", &v, &bad)) {
             if (bad || !*v) {
@@ -446,9 +538,15 @@ int cmd_accuracy(int argc, char **argv)
             snprintf(self, sizeof self, "modesplit");
         else
             self[n] = '\0';
-        for (int j = 0; j < NCASES; ++j)
-            printf("'%s' accuracy%s --case %s --out '%s/parts'\n", self, quick ? " --quick" : "",
-                   cases[j].name, out);
+        char pdir[1200];
+        snprintf(pdir, sizeof pdir, "%s/parts", out);
+        for (int j = 0; j < NCASES; ++j) {
+            /* lines for a shell: every path quoted as one word */
+            shell_word(self);
+            printf(" accuracy%s --case %s --out ", quick ? " --quick" : "", cases[j].name);
+            shell_word(pdir);
+            putchar('\n');
+        }
         return EXIT_OK;
     }
     if (parts)

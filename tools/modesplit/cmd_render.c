@@ -14,6 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "tool.h"
 
@@ -140,23 +142,56 @@ static int have_ffmpeg(void)
     return system("command -v ffmpeg >/dev/null 2>&1") == 0;
 }
 
-static FILE *open_video(const render_opts *o, int w, int h, double fps)
+/* ffmpeg reading raw frames from a pipe, started without a shell: the
+ * path is one argument, given to ffmpeg's file protocol ("file:"), so no
+ * character of it is parsed by a shell or read as an option or another
+ * protocol. *pid: the process, for close_video. */
+static FILE *open_video(const render_opts *o, int w, int h, double fps, pid_t *pid)
 {
-    char cmd[4096];
-    /* the path goes in single quotes; one with a quote is refused */
-    if (strchr(o->video, '\'')) {
-        tool_error("render: --video %s: a file name with a single quote is not supported",
-                   o->video);
+    char size[32], rate[32], *out = malloc(strlen(o->video) + 6);
+    int fd[2];
+    if (!out || pipe(fd) != 0) {
+        free(out);
+        tool_error("render: cannot start ffmpeg: %s", strerror(errno));
         return NULL;
     }
-    snprintf(cmd, sizeof cmd,
-             "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s %dx%d -r %.6g -i - "
-             "-vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2' -c:v libx264 -pix_fmt yuv420p '%s'",
-             w, h, fps, o->video);
-    FILE *f = popen(cmd, "w");
-    if (!f)
+    snprintf(size, sizeof size, "%dx%d", w, h);
+    snprintf(rate, sizeof rate, "%.6g", fps);
+    strcpy(out, "file:");
+    strcat(out, o->video);
+    fflush(NULL);
+    *pid = fork();
+    if (*pid == 0) {
+        dup2(fd[0], STDIN_FILENO);
+        close(fd[0]);
+        close(fd[1]);
+        execlp("ffmpeg", "ffmpeg", "-loglevel", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgba",
+               "-s", size, "-r", rate, "-i", "-", "-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2",
+               "-c:v", "libx264", "-pix_fmt", "yuv420p", out, (char *)NULL);
+        _exit(127);
+    }
+    free(out);
+    close(fd[0]);
+    FILE *f = *pid > 0 ? fdopen(fd[1], "w") : NULL;
+    if (!f) {
         tool_error("render: cannot start ffmpeg: %s", strerror(errno));
+        close(fd[1]);
+        if (*pid > 0)
+            waitpid(*pid, NULL, 0);
+    }
     return f;
+}
+
+/* Close ffmpeg's pipe and wait for it: its exit status, -1 if it did not
+ * exit. */
+static int close_video(FILE *f, pid_t pid)
+{
+    fclose(f);
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR)
+            return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 /* The file's floaters of frame f (/floaters) as leaves, drawn
@@ -199,6 +234,7 @@ typedef struct render_state {
     size_t n;
     long last; /* the last frame drawn */
     FILE *video;
+    pid_t video_pid;
     png_queue *pngq;
 } render_state;
 
@@ -280,7 +316,7 @@ static int render_outputs_open(render_state *s)
         double dt = ms_reader_frame_dt(s->rd) * ms_reader_output_every(s->rd);
         double fps = dt > 0 ? 1.0 / dt : 30.0;
         signal(SIGPIPE, SIG_IGN);
-        if (!(s->video = open_video(o, s->d.width, s->d.height, fps)))
+        if (!(s->video = open_video(o, s->d.width, s->d.height, fps, &s->video_pid)))
             return -1;
     }
     return 0;
@@ -315,7 +351,7 @@ static int render_frame(render_state *s, long f)
 static int render_finish(render_state *s, long written)
 {
     if (s->video) {
-        int vrc = pclose(s->video);
+        int vrc = close_video(s->video, s->video_pid);
         s->video = NULL;
         if (vrc != 0) {
             tool_error("render: ffmpeg failed writing %s (status %d)", s->o.video, vrc);
@@ -340,7 +376,7 @@ static void render_close(render_state *s)
 {
     png_queue_finish(s->pngq);
     if (s->video)
-        pclose(s->video);
+        close_video(s->video, s->video_pid);
     free(s->h);
     ms_renderer_destroy(s->r);
     ms_scene_destroy(s->sc);

@@ -614,6 +614,20 @@ int cmd_view(int argc, char **argv)
         tool_error("view: %s: cannot make the directory: %s", vw.o.record_dir, strerror(errno));
         goto done_sim;
     }
+    /* the outputs are checked against the inputs, and the run file (whose
+     * writer checks its own names against the scene) opened, before the
+     * input log is written */
+    if (tool_refuse_same_file("view", "--record-input", vw.o.record_input, "the scene file",
+                              vw.o.scene) != 0 ||
+        tool_refuse_same_file("view", "--record-input", vw.o.record_input, "the --script",
+                              vw.o.script) != 0) {
+        rc = EXIT_USAGE;
+        goto done_sim;
+    }
+    if (vw.o.out && ms_writer_open(vw.o.out, vw.sim, 0, &vw.writer) != MS_OK) {
+        tool_error("view: %s", ms_last_error());
+        goto done_sim;
+    }
     if (vw.o.record_input) {
         vw.log = fopen(vw.o.record_input, "w");
         if (!vw.log || fprintf(vw.log, "%s\n# scene %s\n", VIEW_LOG_HEADER,
@@ -622,10 +636,6 @@ int cmd_view(int argc, char **argv)
                        strerror(errno));
             goto done_sim;
         }
-    }
-    if (vw.o.out && ms_writer_open(vw.o.out, vw.sim, 0, &vw.writer) != MS_OK) {
-        tool_error("view: %s", ms_last_error());
-        goto done_sim;
     }
     rc = open_window(&vw);
     if (rc == EXIT_OK)

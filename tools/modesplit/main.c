@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -188,6 +189,18 @@ void tool_unknown_option(const char *cmd, const char *opt)
                    best, cmd);
     else
         tool_error("%s: unknown option %s (see modesplit %s --help)", cmd, opt, cmd);
+}
+
+int tool_refuse_same_file(const char *cmd, const char *option, const char *out, const char *what,
+                          const char *in)
+{
+    struct stat a, b;
+    if (!out || !in || stat(out, &a) != 0 || stat(in, &b) != 0 || a.st_dev != b.st_dev ||
+        a.st_ino != b.st_ino)
+        return 0;
+    tool_error("%s: %s %s is %s %s: an output never overwrites an input; choose another name", cmd,
+               option, out, what, in);
+    return -1;
 }
 
 void tool_error(const char *fmt, ...)

@@ -16,8 +16,12 @@
  * kill is dropped and written again. Without checkpoints
  * (checkpoint_every 0) the whole run is stepped again (a replay).
  */
+#include <errno.h>
+#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include "tool.h"
 
@@ -148,6 +152,19 @@ int resume_run(const char *path, ms_sim *sim, float dt, int every, long frames, 
 {
     *w = NULL;
     *done = *written = 0;
+    /* a file another writer holds (a run still going) is refused before it
+     * is read and replayed; ms_writer_open_append takes the lock itself */
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+        int held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+        close(fd); /* the probe's lock, if it got one, ends here */
+        if (held) {
+            tool_error("--resume: %s is being written by another process (it holds the file's "
+                       "lock); one writer per run file: wait until it ends",
+                       path);
+            return EXIT_RUNTIME;
+        }
+    }
     ms_reader *r = NULL;
     if (ms_reader_open(path, &r) != MS_OK) {
         tool_error("--resume: %s", ms_last_error());

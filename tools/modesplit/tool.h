@@ -21,6 +21,12 @@ enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
 
 /* Print "modesplit: <message>\n" to stderr. */
 void tool_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+/* An output never overwrites an input: 0 when `out` (an option's file to
+ * write) is not the existing file `in`, under any spelling or hard link
+ * (same device and inode); else prints "CMD: OPTION OUT is WHAT IN: ..."
+ * and returns -1. NULL names are never the same. */
+int tool_refuse_same_file(const char *cmd, const char *option, const char *out, const char *what,
+                          const char *in);
 /* The usage text (modesplit --help) to f. */
 void tool_usage(FILE *f);
 
