@@ -1637,53 +1637,79 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     return MS_OK;
 }
 
-/* The columns the marked particles cannot decide, searched again over
- * every particle. phi is a sum of non-negative terms, so the marked
- * spheres' phi_m <= phi everywhere, and phi_m = phi at every height more
- * than R above the highest unmarked particle within R of the column (B).
- * A column whose crossing zr of phi_m lies above B + R (with a margin for
- * the root's tolerance) therefore has the same topmost crossing with
- * every particle: nothing above zr reaches T, and phi(zr) = phi_m(zr) >= T.
- * Any other column (a crossing within R of an unmarked particle, or no
- * crossing with particles near: a sheet thinner than the walk's
- * half-spacing steps, as a dam break's front, is stepped over) is searched
- * again over all the particles by fine_height, whose walk takes a 32nd of
- * a spacing. So the field is eq. 16's over every particle, whatever the
- * marking; the marking decides only how many columns need the second
- * search. B is a
- * maximum over a box of bins of half-width ceil(R / cell) + 1, which holds
- * every particle within R of the column and every wall image within R (an
- * image is within R of a column only if its particle is). Runs on the
- * calling thread: one column's result does not depend on the others or on
- * the rectangle, so the bytes are those of any split. */
-/* The topmost crossing of a column's candidates (column_candidates) by a
- * walk down from the highest sphere top in steps of a 32nd of a spacing,
- * then bisection to a 256th: m above the floor, 0 if phi never reaches T. */
-static float fine_height(const ms_extract_snap *s, const float *cz, const float *ca, int mc,
+/* Every column checked against eq. 16 over every particle. phi is a sum
+ * of non-negative terms, so the marked spheres' phi_m <= phi everywhere,
+ * and phi_m = phi at every height more than R above the highest unmarked
+ * particle within R of the column (B). A column whose crossing zr of
+ * phi_m lies above B + R (with a margin for the root's tolerance) has the
+ * same crossing with every particle, if nothing above zr reaches T: the
+ * band search walks down in half-spacing steps and can step over a sheet
+ * thinner than that (a dam break's front over the liquid behind it), so
+ * an upper bound of phi above zr (each sphere at its largest there) must
+ * be under T, or the heights above zr are searched again (fine_search).
+ * Columns that fail the first test (a crossing within R of an unmarked
+ * particle, or no crossing with particles near) are searched again over
+ * every particle from the top. B is a maximum over a box of bins of
+ * half-width ceil(R / cell) + 1, which holds every particle within R of
+ * the column and every wall image within R (an image is within R of a
+ * column only if its particle is). Runs on the calling thread: one
+ * column's result does not depend on the others or on the rectangle, so
+ * the bytes are those of any split. */
+/* An upper bound of phi over the heights [z1, z2] of a column's
+ * candidates: each sphere at its largest there (at its centre's height
+ * clamped into the interval). */
+static float phi_bound(const float *cz, const float *ca, int mc, float z1, float z2, float inv_r2)
+{
+    float u = 0.0f;
+    for (int k = 0; k < mc; ++k) {
+        const float d = cz[k] < z1 ? z1 - cz[k] : (cz[k] > z2 ? cz[k] - z2 : 0.0f);
+        const float q = ca[k] - d * d * inv_r2;
+        u += q > 0.0f ? sqrtf(q) : 0.0f;
+    }
+    return u;
+}
+
+/* The topmost crossing of phi = T at or above zlow (m, absolute) of a
+ * column's candidates (column_candidates), m above the floor, or -1 if phi
+ * stays under T there. From the highest sphere top down in chunks of half
+ * a spacing: a chunk whose bound (phi_bound) is under T is skipped, the
+ * others walked in steps of a 32nd of a spacing; the crossing is then
+ * bisected to a 256th. A chunk's top is either the highest sphere top or
+ * the bottom of the chunk above, where phi is known to be under T. */
+static float fine_search(const ms_extract_snap *s, const float *cz, const float *ca, int mc,
                          float zlow)
 {
     const float R = s->R, inv_r2 = 1.0f / (R * R), T = s->iso;
-    const float step = s->spacing / 32.0f, tol = s->spacing / 256.0f;
+    const float chunk = 0.5f * s->spacing, step = s->spacing / 32.0f, tol = s->spacing / 256.0f;
     float top = -INFINITY;
     for (int k = 0; k < mc; ++k)
         if (ca[k] > 0.0f)
             top = fmaxf(top, cz[k] + R * sqrtf(ca[k]));
-    for (float z = top; z >= zlow; z -= step) {
-        if (phi_at(cz, ca, mc, z, inv_r2) < T)
+    for (float z2 = top; z2 > zlow; z2 -= chunk) {
+        const float z1 = fmaxf(z2 - chunk, zlow);
+        if (phi_bound(cz, ca, mc, z1, z2, inv_r2) < T)
             continue;
-        float zb = z, za = z + step; /* phi(zb) >= T > phi(za) */
-        while (za - zb > tol) {
-            const float zm = 0.5f * (za + zb);
-            if (!(zm > zb && zm < za))
-                break;
-            if (phi_at(cz, ca, mc, zm, inv_r2) >= T)
-                zb = zm;
-            else
-                za = zm;
+        for (float z = z2 - step; z >= z1 - step; z -= step) {
+            const float zz = fmaxf(z, z1);
+            if (phi_at(cz, ca, mc, zz, inv_r2) < T) {
+                if (zz <= z1)
+                    break;
+                continue;
+            }
+            float zb = zz, za = fminf(zz + step, z2); /* phi(zb) >= T > phi(za) */
+            while (za - zb > tol) {
+                const float zm = 0.5f * (za + zb);
+                if (!(zm > zb && zm < za))
+                    break;
+                if (phi_at(cz, ca, mc, zm, inv_r2) >= T)
+                    zb = zm;
+                else
+                    za = zm;
+            }
+            return fminf(fmaxf(0.5f * (za + zb) - s->lo[2], 0.0f), s->hi[2] - s->lo[2]);
         }
-        return fminf(fmaxf(0.5f * (za + zb) - s->lo[2], 0.0f), s->hi[2] - s->lo[2]);
     }
-    return 0.0f;
+    return -1.0f;
 }
 
 static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, int nx, int ny,
@@ -1693,7 +1719,7 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
     const size_t cells = (size_t)nx * ny;
     const float *lo = s->lo, *hi = s->hi;
     const float dxe = (hi[0] - lo[0]) / (float)nx, dye = (hi[1] - lo[1]) / (float)ny;
-    const float R = s->R, margin = s->spacing / 8.0f; /* > the searches' tolerance */
+    const float R = s->R, T = s->iso, margin = s->spacing / 8.0f; /* > the searches' tol */
     const int bx_r = (int)ceilf(R / dxe) + 1, by_r = (int)ceilf(R / dye) + 1;
     /* all the scratch at once, before any column needs it, so a run's
      * later frames allocate nothing (sized for the snapshot's capacity) */
@@ -1750,8 +1776,7 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
                 bad++;
             }
         }
-    if (!bad)
-        return MS_OK;
+    (void)bad;
     /* every particle binned on the field (the reference's bins) */
     int *cstart = w->vstart, *cfill = w->vstart + cells + 1, *ckey = w->vlist;
     int *reach = w->vlist + ncap;
@@ -1767,19 +1792,33 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
     bin_scatter(ckey, n, cells, s->x, s->y, s->z, cstart, cfill, vx, vy, vz);
     column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
                      .dye = dye, .cstart = cstart, .bx = vx, .by = vy, .bz = vz};
+    const float inv_r2 = 1.0f / (R * R), lift = s->spacing / 128.0f; /* 2 x the root's tol */
     for (int j = j0; j < j0 + rh; ++j) {
         int row_done = 0;
         for (int i = i0; i < i0 + rw; ++i) {
             float *h = raw + (size_t)(j - j0) * rw + (i - i0);
-            if (*h >= 0.0f)
-                continue;
+            if (*h == 0.0f)
+                continue; /* dry, and no particle near */
             if (!row_done) {
                 row_reaches(&cc, j, reach);
                 row_done = 1;
             }
             float zmax, zlow;
             const int mc = column_candidates(&cc, i, j, reach, 0, cz, ca, &zmax, &zlow);
-            *h = fine_height(s, cz, ca, mc, zlow);
+            if (*h < 0.0f) { /* the marked particles could not decide */
+                const float f = fine_search(s, cz, ca, mc, zlow);
+                *h = f > 0.0f ? f : 0.0f;
+                continue;
+            }
+            /* the search's crossing zr: nothing above it may reach T (a
+             * sheet the walk stepped over): certified by the bound, or
+             * searched */
+            const float za = *h + lo[2] + lift;
+            if (phi_bound(cz, ca, mc, za, INFINITY, inv_r2) < T)
+                continue;
+            const float f = fine_search(s, cz, ca, mc, za);
+            if (f > *h)
+                *h = f;
         }
     }
     return MS_OK;
