@@ -1712,6 +1712,52 @@ static float fine_search(const ms_extract_snap *s, const float *cz, const float 
     return -1.0f;
 }
 
+/* phi_bound over [za, inf) of column (i, j) straight from the bins,
+ * each sorted highest first: a bin is read down to the first particle
+ * more than R below za (it and those below add nothing there). The
+ * spheres and wall images of column_candidates. */
+static float bound_above(const column_ctx *cc, int i, int j, const int *reach_row, float za,
+                         float inv_r2)
+{
+    const ms_extract_snap *s = cc->s;
+    const float *lo = s->lo, *hi = s->hi, R = s->R;
+    const int rx = (int)ceilf(R / cc->dxe), ry = (int)ceilf(R / cc->dye);
+    const float px = lo[0] + ((float)i + 0.5f) * cc->dxe, py = lo[1] + ((float)j + 0.5f) * cc->dye;
+    const float wx = px - lo[0] <= hi[0] - px ? lo[0] : hi[0];
+    const float wy = py - lo[1] <= hi[1] - py ? lo[1] : hi[1];
+    const int nxm = fabsf(px - wx) < R ? 2 : 1, nym = fabsf(py - wy) < R ? 2 : 1;
+    const int images = nxm * nym > 1;
+    const float zcut = za - R;
+    float u = 0.0f;
+    for (int jj = j - ry; jj <= j + ry; ++jj) {
+        if (jj < 0 || jj >= cc->ny)
+            continue;
+        int reach = rx;
+        if (!images) {
+            reach = reach_row[jj - j + ry];
+            if (reach < 0)
+                continue;
+        }
+        const int a0 = i - reach < 0 ? 0 : i - reach;
+        const int a1 = i + reach > cc->nx - 1 ? cc->nx - 1 : i + reach;
+        for (int ii = a0; ii <= a1; ++ii) {
+            const int c = jj * cc->nx + ii;
+            for (int k = cc->cstart[c]; k < cc->cstart[c + 1] && cc->bz[k] > zcut; ++k) {
+                const float ex[2] = {cc->bx[k] - px, 2.0f * wx - cc->bx[k] - px};
+                const float ey[2] = {cc->by[k] - py, 2.0f * wy - cc->by[k] - py};
+                const float d = cc->bz[k] < za ? za - cc->bz[k] : 0.0f;
+                for (int my = 0; my < nym; ++my)
+                    for (int mx = 0; mx < nxm; ++mx) {
+                        const float q =
+                            1.0f - (ex[mx] * ex[mx] + ey[my] * ey[my]) * inv_r2 - d * d * inv_r2;
+                        u += q > 0.0f ? sqrtf(q) : 0.0f;
+                    }
+            }
+        }
+    }
+    return u;
+}
+
 static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, int nx, int ny,
                                 int i0, int j0, int rw, int rh, float *raw)
 {
@@ -1735,8 +1781,8 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
         st = scratch((void **)&w->vbuf, &w->vbuf_cap, 3 * ncap + cand_stride, sizeof(float));
     if (st != MS_OK)
         return st;
-    /* per bin the highest unmarked particle (ub) and whether any particle
-     * lies in it (ab), then their box maxima (ut, at) */
+    /* per bin the highest unmarked particle (ub) and the highest of all
+     * (ab), then their box maxima (ut, at) */
     float *ub = w->vtop, *ut = ub + cells, *ab = ut + cells, *at = ab + cells;
     for (size_t c = 0; c < cells; ++c)
         ub[c] = ab[c] = -INFINITY;
@@ -1744,7 +1790,7 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
         const int ix = (int)clampf((s->x[k] - lo[0]) / dxe, 0.0f, (float)(nx - 1));
         const int iy = (int)clampf((s->y[k] - lo[1]) / dye, 0.0f, (float)(ny - 1));
         const size_t c = (size_t)iy * nx + ix;
-        ab[c] = 0.0f;
+        ab[c] = s->z[k] > ab[c] ? s->z[k] : ab[c];
         if (k >= m)
             ub[c] = s->z[k] > ub[c] ? s->z[k] : ub[c];
     }
@@ -1766,6 +1812,7 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
                 b = ut[(size_t)q * nx + i] > b ? ut[(size_t)q * nx + i] : b;
                 a = at[(size_t)q * nx + i] > a ? at[(size_t)q * nx + i] : a;
             }
+            ab[(size_t)j * nx + i] = a; /* the highest particle near, for below */
             float *h = raw + (size_t)(j - j0) * rw + (i - i0);
             /* a dry column with particles near may be a thin sheet the
              * walk's half-spacing steps went over: searched again too */
@@ -1790,6 +1837,21 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
         cfill[ckey[k]]++;
     }
     bin_scatter(ckey, n, cells, s->x, s->y, s->z, cstart, cfill, vx, vy, vz);
+    /* each bin highest first (stable), so the bound above a height reads
+     * only the bins' tops */
+    for (size_t c = 0; c < cells; ++c)
+        for (int k = cstart[c] + 1; k < cstart[c + 1]; ++k) {
+            const float x = vx[k], y = vy[k], z = vz[k];
+            int q = k;
+            for (; q > cstart[c] && vz[q - 1] < z; --q) {
+                vx[q] = vx[q - 1];
+                vy[q] = vy[q - 1];
+                vz[q] = vz[q - 1];
+            }
+            vx[q] = x;
+            vy[q] = y;
+            vz[q] = z;
+        }
     column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
                      .dye = dye, .cstart = cstart, .bx = vx, .by = vy, .bz = vz};
     const float inv_r2 = 1.0f / (R * R), lift = s->spacing / 128.0f; /* 2 x the root's tol */
@@ -1803,6 +1865,15 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
                 row_reaches(&cc, j, reach);
                 row_done = 1;
             }
+            /* the search's crossing zr: nothing above it may reach T (a
+             * sheet the walk stepped over): certified by the bound, or
+             * searched */
+            const float za = *h + lo[2] + lift;
+            /* above every sphere's centre phi only falls: nothing above zr */
+            if (*h > 0.0f && *h + lo[2] >= ab[(size_t)j * nx + i])
+                continue;
+            if (*h > 0.0f && bound_above(&cc, i, j, reach, za, inv_r2) < T)
+                continue;
             float zmax, zlow;
             const int mc = column_candidates(&cc, i, j, reach, 0, cz, ca, &zmax, &zlow);
             if (*h < 0.0f) { /* the marked particles could not decide */
@@ -1810,12 +1881,6 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
                 *h = f > 0.0f ? f : 0.0f;
                 continue;
             }
-            /* the search's crossing zr: nothing above it may reach T (a
-             * sheet the walk stepped over): certified by the bound, or
-             * searched */
-            const float za = *h + lo[2] + lift;
-            if (phi_bound(cz, ca, mc, za, INFINITY, inv_r2) < T)
-                continue;
             const float f = fine_search(s, cz, ca, mc, za);
             if (f > *h)
                 *h = f;
