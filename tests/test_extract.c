@@ -1,7 +1,7 @@
 /* The extracted height field against eq. 16 itself: for every column of
  * the field, the topmost height where phi = sum_i sqrt(1 - r_i^2 / R^2)
- * over EVERY particle (and its images in the side walls, as the
- * extraction mirrors them) reaches the iso-level T, found here by brute
+ * over EVERY particle (and its images in the side walls and the floor,
+ * as the extraction mirrors them) reaches the iso-level T, found here by brute
  * force in double precision (every particle, no grid, no marking, no band
  * search: a walk down in steps of a 32nd of a spacing from the highest
  * sphere top, then bisection to 1e-7 m), compared with what
@@ -81,6 +81,11 @@ static double column_truth(const ms_volume *v, const float *pos, int n, double p
                     ca[m] = q;
                     top = fmax(top, z + R * sqrt(q));
                     m++;
+                    if (z - d.domain_min[2] < R) { /* the floor's image */
+                        cz[m] = 2.0 * d.domain_min[2] - z;
+                        ca[m] = q;
+                        m++;
+                    }
                 }
             }
     }
@@ -109,8 +114,8 @@ static diff compare_with_eq16(ms_volume *v)
 {
     const int n = ms_volume_count(v);
     float *pos = malloc(sizeof(float) * 3 * (size_t)n);
-    double *cz = malloc(sizeof(double) * 9 * (size_t)n + 8);
-    double *ca = malloc(sizeof(double) * 9 * (size_t)n + 8);
+    double *cz = malloc(sizeof(double) * 18 * (size_t)n + 8);
+    double *ca = malloc(sizeof(double) * 18 * (size_t)n + 8);
     float *field = malloc(sizeof(float) * NX * NY);
     ck_assert(pos && cz && ca && field);
     ck_assert_int_eq(ms_volume_get_particles(v, pos, NULL), MS_OK);

@@ -932,6 +932,10 @@ static int column_spheres(const ms_extract_snap *s, double px, double py, double
                     zc[n] = s->z[k];
                     ac[n++] = a;
                 }
+                if (a > 0.0 && n < cap && s->z[k] - s->lo[2] < R) { /* the floor's image */
+                    zc[n] = 2.0 * s->lo[2] - s->z[k];
+                    ac[n++] = a;
+                }
             }
     }
     ck_assert_int_lt(n, cap);
@@ -952,20 +956,21 @@ static double phi_minus_t(const ms_extract_snap *s, const double *zc, const doub
 }
 
 /* How far height h of the column at (px, py) is from the nearest root of
- * phi = T: sign changes on a grid of 1/128 of a spacing either side (half
- * a spacing out), then bisection in double. */
+ * phi = T: sign changes on a grid of 1/2048 of a spacing either side (half
+ * a spacing out; near a sphere's rim phi can wiggle across T within a
+ * 1/128 of a spacing), then bisection in double. */
 static double root_distance(const ms_extract_snap *s, double px, double py, double h)
 {
     enum { CAP = 4096 };
     static double zc[CAP], ac[CAP];
     const int n = column_spheres(s, px, py, zc, ac, CAP);
-    const double z0 = s->lo[2] + h, dz = s->spacing / 128.0;
+    const double z0 = s->lo[2] + h, dz = s->spacing / 2048.0; /* finer than a rim's wiggle */
     double best = INFINITY;
     for (int dir = -1; dir <= 1; dir += 2) {
         double za = z0, fa = phi_minus_t(s, zc, ac, n, za);
         if (fa == 0.0)
             return 0.0;
-        for (int k = 1; k <= 64; ++k) {
+        for (int k = 1; k <= 1024; ++k) {
             double zb = z0 + dir * k * dz, fb = phi_minus_t(s, zc, ac, n, zb);
             if ((fa < 0.0) != (fb < 0.0)) {
                 for (int it = 0; it < 40; ++it) {

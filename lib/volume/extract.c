@@ -10,9 +10,13 @@
  * they and every particle within h of one are the spheres. T is the phi of
  * a still cubic lattice at half a spacing above its top layer (averaged
  * over where the column lies between particles), so a flat liquid's height
- * is its volume over its area. The domain's side walls mirror the spheres
- * (the wall is a collider, the liquid goes on in its image), so the field
- * does not sag at the walls.
+ * is its volume over its area. The domain's side walls and its floor
+ * mirror the spheres (a wall is a collider, the liquid goes on in its
+ * image), so the field does not sag at the walls, and a film on the floor
+ * thinner than two layers, whose own spheres never reach T (a monolayer
+ * of a lattice gives phi = 7.3 against T = 10.0), shows as the puddle it
+ * is instead of vanishing: a glass emptied onto the floor left nothing to
+ * see.
  *
  * Eq. 18, adaptive smoothing. The paper: "If E_kin exceeds a defined
  * threshold, no smoothing occurs. Below this threshold, the number of
@@ -590,6 +594,13 @@ static inline __attribute__((always_inline)) int column_candidates(const column_
                 }
         }
     }
+    /* the floor's image of every sphere within R of it */
+    for (int k = 0, m0 = mc; k < m0; ++k)
+        if (cz[k] - lo[2] < R) {
+            cz[mc] = 2.0f * lo[2] - cz[k];
+            ca[mc] = ca[k];
+            mc++;
+        }
     float zmax = -INFINITY, zlow = INFINITY;
     if (mc > 0)
         column_span(cz, ca, mc, R, s->spacing, &zmax, &zlow);
@@ -1476,7 +1487,7 @@ static ms_status columns_reference(const ms_extract_snap *s, ms_extract_work *w,
                      mcap + cells + 1 + (size_t)parts * reach_stride, sizeof(int));
     /* buf: 3m binned positions, 3 fields, and for each thread 2 x 4m
      * candidates (a particle and its images) */
-    const size_t cand_stride = 8 * (mcap + MS_VOLUME_LANES);
+    const size_t cand_stride = 16 * (mcap + MS_VOLUME_LANES);
     const size_t padded = (size_t)(rw + 2) * (rh + 2);
     if (st == MS_OK)
         st = scratch((void **)&w->buf, &w->buf_cap,
@@ -1539,7 +1550,8 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
     const size_t ecells = (size_t)ex * ey;
     const int parts = ms_vpool_parts(pool);
     /* sized for the snapshot's capacity, not its m: no growth as m does */
-    const size_t mcap = (size_t)s->cap, icap = 4 * mcap; /* a particle and 3 images */
+    /* a particle, 3 side-wall images, and the floor's image of each */
+    const size_t mcap = (size_t)s->cap, icap = 8 * mcap;
     ms_status st = scratch((void **)&w->start, &w->start_cap, ecells + 1, sizeof(int));
     if (st == MS_OK)
         st = scratch((void **)&w->list, &w->list_cap,
@@ -1592,12 +1604,15 @@ static ms_status columns_band(const ms_extract_snap *s, ms_extract_work *w, ms_v
                                      (float)(ny + ry - 1));
                 /* x-major: a bin column's rows are one run (band_build) */
                 const int key = (ix + rx) * ey + iy + ry;
-                ckey[mi] = key;
-                cfill[key]++;
-                ux[mi] = mx ? xs[1] : x;
-                uy[mi] = my ? ys[1] : y;
-                uz[mi] = s->z[k];
-                mi++;
+                const float z = s->z[k];
+                for (int mz = 0; mz < (z - lo[2] < R ? 2 : 1); ++mz) {
+                    ckey[mi] = key;
+                    cfill[key]++;
+                    ux[mi] = mx ? xs[1] : x;
+                    uy[mi] = my ? ys[1] : y;
+                    uz[mi] = mz ? 2.0f * lo[2] - z : z;
+                    mi++;
+                }
             }
     }
     bin_scatter(ckey, mi, ecells, ux, uy, uz, cstart, cfill, bx, by, bz);
@@ -1746,12 +1761,17 @@ static float bound_above(const column_ctx *cc, int i, int j, const int *reach_ro
                 const float ex[2] = {cc->bx[k] - px, 2.0f * wx - cc->bx[k] - px};
                 const float ey[2] = {cc->by[k] - py, 2.0f * wy - cc->by[k] - py};
                 const float d = cc->bz[k] < za ? za - cc->bz[k] : 0.0f;
+                /* the floor's image, below the particle: farther from za */
+                const float df = za - (2.0f * lo[2] - cc->bz[k]);
+                const int nz = cc->bz[k] - lo[2] < R ? 2 : 1;
                 for (int my = 0; my < nym; ++my)
-                    for (int mx = 0; mx < nxm; ++mx) {
-                        const float q =
-                            1.0f - (ex[mx] * ex[mx] + ey[my] * ey[my]) * inv_r2 - d * d * inv_r2;
-                        u += q > 0.0f ? sqrtf(q) : 0.0f;
-                    }
+                    for (int mx = 0; mx < nxm; ++mx)
+                        for (int mz = 0; mz < nz; ++mz) {
+                            const float dd = mz ? df : d;
+                            const float q = 1.0f - (ex[mx] * ex[mx] + ey[my] * ey[my]) * inv_r2 -
+                                            dd * dd * inv_r2;
+                            u += q > 0.0f ? sqrtf(q) : 0.0f;
+                        }
             }
         }
     }
@@ -1770,7 +1790,7 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
     /* all the scratch at once, before any column needs it, so a run's
      * later frames allocate nothing (sized for the snapshot's capacity) */
     const size_t ncap = (size_t)s->cap;
-    const size_t cand_stride = 8 * (ncap + MS_VOLUME_LANES);
+    const size_t cand_stride = 16 * (ncap + MS_VOLUME_LANES);
     ms_status st = scratch((void **)&w->vtop, &w->vtop_cap, 4 * cells, sizeof(float));
     if (st == MS_OK)
         st = scratch((void **)&w->vstart, &w->vstart_cap, 2 * (cells + 1), sizeof(int));
