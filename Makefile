@@ -384,12 +384,15 @@ accuracy: all
 	$(BUILD)/bin/modesplit accuracy --merge $(ACCURACY_DIR)/parts --out $(ACCURACY_DIR)
 
 # The two long cases run side by side (one core each); both must pass.
-check-long: all $(BUILD)/tests/test_stability
+check-long: all $(BUILD)/tests/test_stability $(BUILD)/tests/test_view
 	@skips=$(abspath $(BUILD))/skipped-long.txt; rm -f $$skips; pids=; \
 	for c in coupled_top_gains coupled_every_scene still_pool; do \
 	    MS_TEST_LONG=1 CK_RUN_CASE=$$c MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) \
 	        MS_TEST_SKIP_FILE=$$skips $(BUILD)/tests/test_stability & pids="$$pids $$!"; \
-	done; fail=0; for p in $$pids; do wait $$p || fail=1; done; \
+	done; \
+	MS_TEST_LONG=1 CK_RUN_CASE=view_long MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) \
+	    MS_TEST_SKIP_FILE=$$skips $(BUILD)/tests/test_view & pids="$$pids $$!"; \
+	fail=0; for p in $$pids; do wait $$p || fail=1; done; \
 	if [ -s $$skips ]; then echo "make check-long: skipped:"; cat $$skips; fi; \
 	if [ $$fail -ne 0 ]; then echo "make check-long: FAILED"; exit 1; fi; \
 	echo "make check-long: passed ($(BUILD))"

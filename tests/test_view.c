@@ -779,6 +779,46 @@ START_TEST(real_x_events_drag_the_water_in_a_screenshot_and_replay_exactly)
 }
 END_TEST
 
+/* The viewer left open on a pool at rest for ten minutes (make
+ * check-long): screenshots at 60 s and at 600 s differ by less than 1
+ * (mean absolute 8-bit difference over the water), a drag across the
+ * water changes it by several times that, and 30 s after the drag two
+ * screenshots 10 s apart are within 1 again. The first minute is left
+ * out: the lattice the fill lays down compresses and rearranges for tens
+ * of seconds (screenshots at 10 s and 70 s differ by 2.3). */
+START_TEST(a_pool_left_open_for_10_minutes_stays_still_and_a_drag_shows)
+{
+    NEED_X();
+    if (!have("xdotool") || !have("import") || !have("compare"))
+        MS_SKIP("xdotool or ImageMagick is not installed (tools/deps.sh installs them)");
+    make_tmp_dir();
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd,
+             "xvfb-run -a -s '-screen 0 400x400x24' sh tests/view_still_x11.sh '%s' '%s' 60 540 "
+             "30 > '%s/still.log' 2>&1",
+             ms_test_tool_path(), tmp_dir, tmp_dir);
+    int st = system(cmd);
+    char p[512];
+    snprintf(p, sizeof p, "%s/still.log", tmp_dir);
+    char *log = ms_test_slurp(p);
+    ck_assert_msg(WIFEXITED(st) && WEXITSTATUS(st) == 0, "tests/view_still_x11.sh: %s", log);
+    double still = -1, dragged = -1, settled = -1;
+    const char *a = strstr(log, "still "), *b = strstr(log, "dragged "), *c = strstr(log, "settled ");
+    ck_assert_msg(a && b && c && sscanf(a, "still %lf", &still) == 1 &&
+                      sscanf(b, "dragged %lf", &dragged) == 1 &&
+                      sscanf(c, "settled %lf", &settled) == 1,
+                  "%s", log);
+    printf("viewer, pool at rest: 60 s vs 600 s %.3f, drag %.3f, settled %.3f\n", still, dragged,
+           settled);
+    ck_assert_msg(still < 1.0, "screenshots at 60 s and 600 s differ by %g (at most 1)", still);
+    ck_assert_msg(dragged > 3.0 * still + 0.5 && dragged > 1.0,
+                  "the drag changed the picture by %g, the still pool by %g", dragged, still);
+    ck_assert_msg(settled < 1.0, "30 s after the drag, 10 s apart: %g (at most 1)", settled);
+    free(log);
+    remove_tmp_dir();
+}
+END_TEST
+
 static Suite *view_suite(void)
 {
     Suite *s = suite_create("view");
@@ -801,6 +841,13 @@ static Suite *view_suite(void)
     tcase_add_test(tc, closing_resizing_and_a_lost_context_are_handled);
     tcase_add_test(tc, real_x_events_drag_the_water_in_a_screenshot_and_replay_exactly);
     suite_add_tcase(s, tc);
+    const char *lng = getenv("MS_TEST_LONG");
+    if (lng && lng[0] == '1') { /* make check-long */
+        tc = tcase_create("view_long");
+        tcase_set_timeout(tc, 1200);
+        tcase_add_test(tc, a_pool_left_open_for_10_minutes_stays_still_and_a_drag_shows);
+        suite_add_tcase(s, tc);
+    }
     return s;
 }
 
