@@ -52,7 +52,7 @@ static int parse_args(int argc, char **argv, view_opts *o)
         const char *v = NULL, *a = argv[i];
         int bad = 0;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "view");
             return -1;
         } else if (tool_opt_value(argc, argv, &i, "--size", &v, &bad)) {
             if (bad)
@@ -105,7 +105,7 @@ static int parse_args(int argc, char **argv, view_opts *o)
         } else if (!strcmp(a, "--fast")) {
             o->fast = 1;
         } else if (a[0] == '-' && a[1]) {
-            tool_error("view: unknown option %s (see modesplit --help)", a);
+            tool_error("view: unknown option %s (see modesplit view --help)", a);
             return EXIT_USAGE;
         } else if (o->scene) {
             tool_error("view: one scene at a time (got %s and %s)", o->scene, a);
