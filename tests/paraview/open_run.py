@@ -130,7 +130,8 @@ def check_reader(label, reader, h5):
                 # one vertex cell per particle: a point set without cells is
                 # read but not drawn
                 check(ds.GetNumberOfCells() == n,
-                      f"{label} frame {k}: {ds.GetNumberOfCells()} particle cells, file {n} particles")
+                      f"{label} frame {k}: {ds.GetNumberOfCells()} particle cells, "
+                      f"file {n} particles")
                 check(n == 0 or all(ds.GetCellType(i) in (1, 2) for i in (0, n // 2, n - 1)),
                       f"{label} frame {k}: particle cells are not vertices")
                 check(v.GetNumberOfComponents() == 3, f"{label}: velocity is not a 3-vector")
@@ -276,7 +277,8 @@ def main():
         if len(times) and "fields/combined" in h5:
             screenshot(r3, float(times[-1]), png)
         if len(times) and f"Step#{len(times) - 1}" in h5:
-            particle_screenshot(r3, float(times[-1]), png[:-4] + "_particles.png")
+            particle_screenshot(r3, float(times[-1]),
+                                png[:-4] + "_particles.png")
     if failures:
         print(f"{len(failures)} failures")
         sys.exit(1)

@@ -210,7 +210,8 @@ def export(run, usd_path, field=None):
             e_attr = points.CreateExtentAttr()
             spacing = 0.01
             try:
-                spacing = float(__import__("json").loads(text(f.attrs["scene"]))["volume"]["spacing"])
+                scene = __import__("json").loads(text(f.attrs["scene"]))
+                spacing = float(scene["volume"]["spacing"])
             except Exception:
                 pass
             points.CreateWidthsAttr(Vt.FloatArray([spacing]))
@@ -229,7 +230,8 @@ def export(run, usd_path, field=None):
                     lo, hi = p.min(0) - 0.5 * spacing, p.max(0) + 0.5 * spacing
                 else:
                     lo = hi = np.zeros(3, np.float32)
-                e_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))]), k)
+                e_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
+                                          Gf.Vec3f(*map(float, hi))]), k)
                 grow(k, lo, hi)
                 i_attr.Set(Vt.Int64Array.FromNumpy(ids.astype(np.int64)), k)
         model = UsdGeom.ModelAPI.Apply(root.GetPrim())
