@@ -403,6 +403,58 @@ START_TEST(resume_refuses_another_scene_and_leaves_the_file)
 }
 END_TEST
 
+/* FNV-1a 64 of a whole file: the checksum compared around each refusal. */
+static uint64_t file_checksum(const char *path, size_t *len)
+{
+    char *b = slurp(path, len);
+    uint64_t h = 1469598103934665603u;
+    for (size_t i = 0; i < *len; ++i)
+        h = (h ^ (unsigned char)b[i]) * 1099511628211u;
+    free(b);
+    return h;
+}
+
+/* A killed file has an unreferenced tail past its end of allocation (the
+ * frame the kill cut). A writable HDF5 open and close rewrites the
+ * superblock and drops that tail; a refusal must not get that far: every
+ * refusal below leaves the file's bytes and length as they were. */
+START_TEST(resume_refusals_leave_a_killed_file_byte_for_byte)
+{
+    make_tmp_dir();
+    const char *part = tmp_path("killed.h5");
+    const char *a[] = {"run", SCENE, "--frames", "100000", "--quiet", "--out", part, NULL};
+    kill_at(a, part, 3);
+    ck_assert(ms_test_wait_unused(part, 30.0));
+    size_t n0, n1;
+    uint64_t h0 = file_checksum(part, &n0);
+    struct {
+        const char *const args[12];
+        int status;
+        const char *word;
+    } refusals[] = {
+        {{"run", "data/scenes/fig1.json", "--frames", "100000", "--quiet", "--resume", part, NULL},
+         2,
+         "another scene"},
+        {{"run", SCENE, "--frames", "100000", "--quiet", "--set", "surface.damping=0.5", "--resume",
+          part, NULL},
+         2,
+         "damping"},
+        {{"run", SCENE, "--frames", "1", "--quiet", "--resume", part, NULL}, 2, "more than"},
+        {{"run", SCENE, "--quiet", "--resume", part, "--no-out", NULL}, 2, "--resume"},
+    };
+    for (size_t i = 0; i < sizeof refusals / sizeof refusals[0]; ++i) {
+        ck_assert_int_eq(run_tool(refusals[i].args), refusals[i].status);
+        ck_assert_msg(strstr(log_text, refusals[i].word) != NULL, "refusal %zu: %s", i, log_text);
+        uint64_t h1 = file_checksum(part, &n1);
+        ck_assert_msg(n1 == n0 && h1 == h0,
+                      "refusal %zu (%s) changed the file: %zu bytes, checksum %016llx; "
+                      "before %zu bytes, %016llx",
+                      i, refusals[i].word, n1, (unsigned long long)h1, n0, (unsigned long long)h0);
+    }
+    ms_test_remove_tree(tmp_dir);
+}
+END_TEST
+
 /* A file whose last frame is not what this build computes (another build
  * or platform wrote it): the replay's check refuses it before appending. */
 START_TEST(resume_refuses_a_file_this_build_does_not_reproduce)
@@ -1238,6 +1290,7 @@ static Suite *resume_suite(void)
     tcase_add_test(tc, resume_drops_a_frame_cut_by_the_kill);
     tcase_add_test(tc, resume_a_run_of_no_frame);
     tcase_add_test(tc, resume_refuses_another_scene_and_leaves_the_file);
+    tcase_add_test(tc, resume_refusals_leave_a_killed_file_byte_for_byte);
     tcase_add_test(tc, resume_refuses_a_file_this_build_does_not_reproduce);
     tcase_add_test(tc, resume_from_an_older_checkpoint_or_none);
     tcase_add_test(tc, checkpoint_every_out_of_range_is_refused);

@@ -884,15 +884,24 @@ START_TEST(each_command_has_its_help_and_typos_get_a_suggestion)
     ck_assert_ptr_nonnull(strstr(r.out, "--frames N"));
     ck_assert_ptr_null(strstr(r.out, "info [--scene]")); /* only run's part */
     result_free(&r);
-    const char *cmds[] = {"info", "check", "plugins", "export"};
-    for (int i = 0; i < 4; ++i) {
-        r = run_tool((const char *[]){cmds[i], "--help", NULL});
+    /* each command's own block: its options, no other command's line */
+    static const struct {
+        const char *cmd, *option;
+    } cmds[] = {{"info", "--scene"},     {"check", "--set"},         {"plugins", "plugins"},
+                {"export", "--usd"},     {"view", "--record-input"}, {"render", "--frames A:B"},
+                {"accuracy", "--quick"}, {"cubemap", "--sun"}};
+    for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; ++i) {
+        r = run_tool((const char *[]){cmds[i].cmd, "--help", NULL});
         ASSERT_EXIT(r, 0);
         char want[64];
-        snprintf(want, sizeof want, "usage: modesplit %s", cmds[i]);
+        snprintf(want, sizeof want, "usage: modesplit %s", cmds[i].cmd);
         ck_assert_msg(!strncmp(r.out, want, strlen(want)), "%s", r.out);
+        ck_assert_msg(strstr(r.out, cmds[i].option) != NULL, "%s --help: %s", cmds[i].cmd, r.out);
+        ck_assert_msg(!strstr(r.out, "<command>") &&
+                          (!strcmp(cmds[i].cmd, "run") || !strstr(r.out, "  run SCENE.json")),
+                      "%s --help prints more than its own usage: %s", cmds[i].cmd, r.out);
         result_free(&r);
-        r = run_tool((const char *[]){"help", cmds[i], NULL});
+        r = run_tool((const char *[]){"help", cmds[i].cmd, NULL});
         ASSERT_EXIT(r, 0);
         ck_assert_msg(!strncmp(r.out, want, strlen(want)), "%s", r.out);
         result_free(&r);

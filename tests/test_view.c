@@ -460,6 +460,96 @@ START_TEST(without_a_display_it_says_so_and_exits_2)
 }
 END_TEST
 
+/* DISPLAY naming a server nobody runs: SDL would fall back to its
+ * offscreen driver and run the scene in a window nobody sees; the viewer
+ * refuses in one line with exit 2 instead, and so for an offscreen driver
+ * asked for by name. */
+START_TEST(an_unreachable_display_or_an_offscreen_driver_is_refused_with_exit_2)
+{
+    if (!built_with_sdl())
+        MS_SKIP("modesplit was built without SDL2 (libsdl2-dev)");
+    make_tmp_dir();
+    static const char *const envs[] = {
+        "env -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER DISPLAY=:4093",
+        "env -u WAYLAND_DISPLAY DISPLAY=:4093 SDL_VIDEODRIVER=offscreen",
+        "env -u WAYLAND_DISPLAY DISPLAY=:4093 SDL_VIDEODRIVER=dummy",
+    };
+    for (size_t i = 0; i < sizeof envs / sizeof envs[0]; ++i) {
+        char cmd[2048];
+        snprintf(cmd, sizeof cmd, "%s timeout 60 %s view %s --frames 30 > %s/o 2> %s/e", envs[i],
+                 ms_test_tool_path(), POOL, tmp_dir, tmp_dir);
+        int st = system(cmd);
+        char p[512];
+        snprintf(p, sizeof p, "%s/e", tmp_dir);
+        char *err = ms_test_slurp(p);
+        ck_assert_msg(WIFEXITED(st) && WEXITSTATUS(st) == 2, "%s: exit %d, %s", envs[i],
+                      WIFEXITED(st) ? WEXITSTATUS(st) : -1, err);
+        ck_assert_msg(strstr(err, "no display to open a window on") != NULL, "%s: %s", envs[i],
+                      err);
+        ck_assert_msg(strchr(err, '\n') && strchr(err, '\n') - err + 1 == (long)strlen(err),
+                      "%s: more than one line: %s", envs[i], err);
+        free(err);
+        snprintf(p, sizeof p, "%s/o", tmp_dir);
+        char *out = ms_test_slurp(p);
+        ck_assert_msg(strstr(out, "frames stepped") == NULL, "%s: it ran: %s", envs[i], out);
+        free(out);
+    }
+    remove_tmp_dir();
+}
+END_TEST
+
+/* xdotool windowclose destroys the viewer's window from another client (no
+ * SDL event comes of it): the viewer ends with exit 0, not with Xlib's
+ * BadWindow exit 1 or a crash in GL drawing into the gone window. Three
+ * times, each at another moment of a frame. */
+START_TEST(a_window_destroyed_by_another_program_exits_0)
+{
+    NEED_X();
+    if (!have("xdotool"))
+        MS_SKIP("xdotool is not installed (tools/deps.sh --ci installs it)");
+    make_tmp_dir();
+    char script[2048];
+    snprintf(
+        script, sizeof script,
+        "#!/bin/sh\n"
+        "\"$1\" view %s --size 200x200 > \"$2/close.out\" 2> \"$2/close.err\" &\n"
+        "pid=$!\n"
+        "win=\"\"; i=0\n"
+        "while [ -z \"$win\" ] && [ $i -lt 120 ]; do sleep 0.25; i=$((i + 1)); "
+        "win=$(xdotool search --onlyvisible --name modesplit 2> /dev/null | head -n 1); done\n"
+        "[ -n \"$win\" ] || { echo 'no viewer window'; kill $pid; exit 3; }\n"
+        "sleep \"$3\"\n"
+        "xdotool windowclose \"$win\"\n"
+        "i=0; while kill -0 $pid 2> /dev/null && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done\n"
+        "kill $pid 2> /dev/null\n"
+        "wait $pid\n",
+        POOL);
+    write_file("close.sh", script);
+    static const char *const waits[] = {"0.5", "1.13", "1.71"};
+    for (int k = 0; k < 3; ++k) {
+        char cmd[2048];
+        snprintf(cmd, sizeof cmd,
+                 "xvfb-run -a -s '-screen 0 640x480x24' sh '%s/close.sh' '%s' '%s' %s > "
+                 "'%s/close.log' 2>&1",
+                 tmp_dir, ms_test_tool_path(), tmp_dir, waits[k], tmp_dir);
+        int st = system(cmd);
+        char p[512];
+        snprintf(p, sizeof p, "%s/close.err", tmp_dir);
+        char *err = ms_test_slurp(p);
+        snprintf(p, sizeof p, "%s/close.out", tmp_dir);
+        char *out = ms_test_slurp(p);
+        ck_assert_msg(WIFEXITED(st) && WEXITSTATUS(st) == 0,
+                      "closed after %s s: status %d; stderr: %s", waits[k],
+                      WIFEXITED(st) ? WEXITSTATUS(st) : -1, err);
+        ck_assert_msg(strstr(out, "closed by another program") != NULL, "%s", out);
+        ck_assert_msg(strstr(err, "X Error") == NULL, "%s", err);
+        free(err);
+        free(out);
+    }
+    remove_tmp_dir();
+}
+END_TEST
+
 /* An output never overwrites an input: --out (or its sidecar) or
  * --record-input naming the scene file, or --record-input naming the
  * --script, is refused with a sentence and a non-zero exit; the input
@@ -835,6 +925,8 @@ static Suite *view_suite(void)
     tc = tcase_create("window");
     tcase_set_timeout(tc, 240);
     tcase_add_test(tc, without_a_display_it_says_so_and_exits_2);
+    tcase_add_test(tc, an_unreachable_display_or_an_offscreen_driver_is_refused_with_exit_2);
+    tcase_add_test(tc, a_window_destroyed_by_another_program_exits_0);
     tcase_add_test(tc, view_refuses_an_output_that_is_an_input);
     tcase_add_test(tc, scripted_drag_moves_the_water_and_the_particles_along_it);
     tcase_add_test(tc, keys_toggle_what_they_say_and_escape_exits_0);

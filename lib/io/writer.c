@@ -1262,6 +1262,30 @@ ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout 
     }
     ms_h5_quiet q;
     ms_h5_hush(&q);
+    /* Checked first on a read-only open: HDF5 rewrites the superblock when
+     * a file opened for writing is closed, even with nothing written, and
+     * truncates it to its end of allocation (a killed run's file shrank by
+     * its unreferenced tail), so a refused file must never be opened for
+     * writing. The checks run again on the writable open below, which is
+     * the one that counts if the file changed in between. */
+    hid_t rapl = ms_h5_fapl();
+    w->file = rapl >= 0 ? H5Fopen(path, H5F_ACC_RDONLY, rapl) : -1;
+    if (rapl >= 0)
+        H5Pclose(rapl);
+    if (w->file < 0)
+        st = ms_h5_fail(MS_ERR_IO, "io: cannot open %s to resume it", path);
+    if (st == MS_OK)
+        st = check_resumable(w, l);
+    close_handles(w);
+    if (w->file >= 0)
+        H5Fclose(w->file);
+    w->file = -1;
+    if (st != MS_OK) {
+        H5Eclear2(H5E_DEFAULT);
+        ms_h5_loud(&q);
+        free_writer(w);
+        return st;
+    }
     hid_t fapl = ms_h5_fapl_atomic();
     w->file = fapl >= 0 ? H5Fopen(path, H5F_ACC_RDWR, fapl) : -1;
     if (fapl >= 0)
@@ -1270,8 +1294,7 @@ ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout 
         st = ms_h5_fail(MS_ERR_IO, "io: cannot open %s to resume it", path);
     if (st == MS_OK)
         st = check_resumable(w, l);
-    /* Nothing has been changed in the file before this point: a refused
-     * file is closed untouched. */
+    /* Nothing has been written to the file before this point. */
     if (st == MS_OK && trim_and_relist(w) != MS_OK)
         st = ms_h5_fail(MS_ERR_IO, "io: cannot drop the cut frame of %s", path);
     if (st == MS_OK)

@@ -16,10 +16,14 @@
  * collection with its <Time>, one uniform grid per distinct field grid
  * (combined and surface share the wave grid, volume has the SPH grid) and,
  * when the frame has particles, a poly-vertex grid of them with `velocity`
- * (3-vector) and `id`. The legacy reader names a block of such a file
- * after the grid *and the frame* ("volume[89]"), so a selected block does
- * not animate; it names blocks cleanly only for a spatial collection of
- * temporal collections, one per grid. run.xdmf2 is that: a spatial
+ * (3-vector) and `id`, one vertex cell per particle. The grids are named
+ * after what they hold, but ParaView 5.11's Xdmf3ReaderS (what File > Open
+ * picks) flattens every file into one unnamed multipiece, whatever its
+ * nesting: named blocks come from the legacy sidecar. The legacy reader
+ * names a block of such a file after the grid *and the frame*
+ * ("volume[89]"), so a selected block does not animate; it names blocks
+ * cleanly only for a spatial collection of temporal collections, one per
+ * grid. run.xdmf2 is that: a spatial
  * collection that XIncludes one file per grid, run.xdmf2.d/<grid>.xml,
  * each a temporal collection of that grid's frames. Grid names are the
  * fields they hold ("combined surface", "volume", "particles"), the same in
@@ -332,6 +336,11 @@ static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame,
     sb_printf(b, "    </Grid>\n");
 }
 
+/* The particles as one vertex cell each. Xdmf3 makes no cells of a
+ * Polyvertex topology without connectivity (ParaView's default reader then
+ * shows the points but draws nothing), so the connectivity is given: the
+ * step's `id` dataset, which holds 0 .. n-1 in array order (h5part.c,
+ * write_ids), so cell i is point i. The legacy reader reads the same. */
 static void particles_xml(sbuf *b, const ms_xdmf *x, long frame, int n, const char *time_xml)
 {
     char step[48];
@@ -339,7 +348,10 @@ static void particles_xml(sbuf *b, const ms_xdmf *x, long frame, int n, const ch
     sb_printf(b,
               "    <Grid Name=\"particles\" GridType=\"Uniform\">\n%s"
               "     <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%d\" "
-              "NodesPerElement=\"1\"/>\n"
+              "NodesPerElement=\"1\">\n"
+              "      <DataItem Dimensions=\"%d\" NumberType=\"Int\" Precision=\"4\" "
+              "Format=\"HDF\">%s:/%s/id</DataItem>\n"
+              "     </Topology>\n"
               "     <Geometry GeometryType=\"XYZ\">\n"
               "      <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"4\" "
               "Format=\"HDF\">%s:/particles/%ld/position</DataItem>\n"
@@ -353,7 +365,7 @@ static void particles_xml(sbuf *b, const ms_xdmf *x, long frame, int n, const ch
               "Format=\"HDF\">%s:/%s/id</DataItem>\n"
               "     </Attribute>\n"
               "    </Grid>\n",
-              time_xml, n, n, x->h5, frame, n, x->h5, frame, n, x->h5, step);
+              time_xml, n, n, x->h5, step, n, x->h5, frame, n, x->h5, frame, n, x->h5, step);
 }
 
 /* ---- legacy: run.xdmf2 + run.xdmf2.d/<grid>.xml ---- */

@@ -12,7 +12,10 @@ screenshot:
    file's count with `velocity` (3 components, the range of vx, vy, vz)
    and `id` (0 .. n-1); block names carry no frame number;
 3. a screenshot of the combined field at the last step, which must not be
-   blank (more than one colour, most pixels not the background).
+   blank (more than one colour, most pixels not the background);
+4. the particles have one vertex cell each (cells == particles) with both
+   readers, and a screenshot of them alone, drawn from the default reader's
+   output, shows their colour.
 Exit 0 when all holds, 1 with the reasons otherwise.
 
     ... open_run.py RUN.h5 SHOT.png --killed
@@ -124,6 +127,13 @@ def check_reader(label, reader, h5):
                 _, ids = got["id"][0]
                 check(ds.GetNumberOfPoints() == n,
                       f"{label} frame {k}: {ds.GetNumberOfPoints()} particles, file {n}")
+                # one vertex cell per particle: a point set without cells is
+                # read but not drawn
+                check(ds.GetNumberOfCells() == n,
+                      f"{label} frame {k}: {ds.GetNumberOfCells()} particle cells, "
+                      f"file {n} particles")
+                check(n == 0 or all(ds.GetCellType(i) in (1, 2) for i in (0, n // 2, n - 1)),
+                      f"{label} frame {k}: particle cells are not vertices")
                 check(v.GetNumberOfComponents() == 3, f"{label}: velocity is not a 3-vector")
                 for c, comp in enumerate(("vx", "vy", "vz")):
                     lo, hi = v.GetRange(c)
@@ -208,6 +218,49 @@ def screenshot(reader, t, png):
           f"{coloured:.0%} coloured)")
 
 
+def particle_screenshot(reader, t, png):
+    """The particles as the default reader gives them, drawn as a user
+    draws them (Show, points): pure red on white, nothing else in the view.
+    The Threshold on `id` keeps the cells of the particle grid only (a grid
+    without cells keeps nothing, so an undrawable point set fails here)."""
+    view = pv.CreateRenderView()
+    view.ViewSize = [480, 360]
+    view.ViewTime = t
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    view.OrientationAxesVisibility = 0
+    only = pv.Threshold(Input=reader, Scalars=["POINTS", "id"],
+                        LowerThreshold=-1, UpperThreshold=1e12)
+    pv.UpdatePipeline(time=t, proxy=only)
+    disp = pv.Show(only, view)
+    pv.ColorBy(disp, None)
+    disp.AmbientColor = [1, 0, 0]
+    disp.DiffuseColor = [1, 0, 0]
+    disp.Representation = "Points"
+    disp.PointSize = 3
+    disp.Ambient = 1.0
+    disp.Diffuse = 0.0
+    view.CameraPosition = [0.5, -1.2, 1.4]
+    view.CameraFocalPoint = [0.5, 0.5, 0.2]
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera()
+    pv.Render(view)
+    pv.SaveScreenshot(png, view, ImageResolution=[480, 360])
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    r = vtkPNGReader()
+    r.SetFileName(png)
+    r.Update()
+    img = vtk_to_numpy(r.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    red = np.mean((img[:, 0] > 150) & (img[:, 1] < 90) & (img[:, 2] < 90))
+    print(f"particle screenshot {png}: {red:.1%} particle-red pixels")
+    check(red > 0.002, f"particle screenshot {png}: the particles are not visible "
+          f"({red:.2%} red pixels)")
+
+
 def main():
     run, png = sys.argv[1], sys.argv[2]
     base = run[:-3] if run.endswith(".h5") else run
@@ -223,6 +276,9 @@ def main():
         times = h5["time"][:committed(h5)]
         if len(times) and "fields/combined" in h5:
             screenshot(r3, float(times[-1]), png)
+        if len(times) and f"Step#{len(times) - 1}" in h5:
+            particle_screenshot(r3, float(times[-1]),
+                                png[:-4] + "_particles.png")
     if failures:
         print(f"{len(failures)} failures")
         sys.exit(1)

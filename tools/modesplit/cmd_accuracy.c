@@ -478,7 +478,7 @@ int cmd_accuracy(int argc, char **argv)
     for (int i = 1; i < argc; ++i) {
         const char *v = NULL, *a = argv[i];
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "accuracy");
             return EXIT_OK;
         } else if (!strcmp(a, "--quick")) {
             quick = 1;
@@ -507,7 +507,7 @@ int cmd_accuracy(int argc, char **argv)
             }
             parts = v;
         } else {
-            tool_error("accuracy: unknown argument %s (see modesplit --help)", a);
+            tool_error("accuracy: unknown argument %s (see modesplit accuracy --help)", a);
             return EXIT_USAGE;
         }
     }

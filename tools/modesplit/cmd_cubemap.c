@@ -17,7 +17,7 @@ int cmd_cubemap(int argc, char **argv)
         const char *a = argv[i], *v = NULL;
         int bad = 0;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "cubemap");
             return EXIT_OK;
         } else if (tool_opt_value(argc, argv, &i, "--out", &v, &bad)) {
             if (bad || !v[0]) {

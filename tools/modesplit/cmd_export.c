@@ -89,11 +89,25 @@ int cmd_export(int argc, char **argv)
                    "beside the tool and in the source tree); reinstall modesplit");
         return EXIT_RUNTIME;
     }
+    /* The script by its path, not `-m modesplit.usd_export`: -m imports the
+     * package first, which needs numpy and the C library, so a Python
+     * without numpy would stop in a traceback before the script could say
+     * what to install. The script itself imports only h5py, numpy and pxr,
+     * each behind its own sentence. */
+    size_t sn = strlen(dir) + sizeof "/modesplit/usd_export.py";
+    char *script = malloc(sn);
+    if (!script) {
+        free(dir);
+        tool_error("export: out of memory");
+        return EXIT_RUNTIME;
+    }
+    snprintf(script, sn, "%s/modesplit/usd_export.py", dir);
     const char *old = getenv("PYTHONPATH");
     size_t n = strlen(dir) + (old ? strlen(old) : 0) + 2;
     char *pp = malloc(n);
     if (!pp) {
         free(dir);
+        free(script);
         tool_error("export: out of memory");
         return EXIT_RUNTIME;
     }
@@ -107,8 +121,7 @@ int cmd_export(int argc, char **argv)
     const char *args[10];
     int k = 0;
     args[k++] = py;
-    args[k++] = "-m";
-    args[k++] = "modesplit.usd_export";
+    args[k++] = script;
     args[k++] = run;
     args[k++] = "--usd";
     args[k++] = usd;
@@ -122,5 +135,6 @@ int cmd_export(int argc, char **argv)
     execvp(py, (char *const *)args);
     tool_error("export: cannot run %s: %s (install python3 with usd-core, h5py and numpy, or "
                "set MODESPLIT_PYTHON)", py, strerror(errno));
+    free(script);
     return EXIT_RUNTIME;
 }

@@ -63,7 +63,7 @@ static int parse_args(int argc, char **argv, render_opts *o)
         const char *a = argv[i], *v = NULL;
         int bad = 0;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "render");
             return -1;
         } else if (tool_opt_value(argc, argv, &i, "--shader", &v, &bad)) {
             if (bad || !v[0]) {
@@ -114,7 +114,7 @@ static int parse_args(int argc, char **argv, render_opts *o)
             }
             o->first = a0, o->last = b0;
         } else if (a[0] == '-' && a[1]) {
-            tool_error("render: unknown option %s (see modesplit --help)", a);
+            tool_error("render: unknown option %s (see modesplit render --help)", a);
             return EXIT_USAGE;
         } else if (o->run) {
             tool_error("render: one run file at a time (got %s and %s)", o->run, a);

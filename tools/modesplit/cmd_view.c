@@ -27,9 +27,104 @@ int cmd_view(int argc, char **argv)
 }
 #else
 #include <SDL.h>
+#include <SDL_syswm.h>
+#include <dlfcn.h>
 
 #include "view.h"
 #include "view_gl.h"
+
+/* A window destroyed by another client (xdotool windowclose, a window
+ * manager's kill) gets no SDL event: the next request SDL or GLX makes on
+ * it fails with BadWindow or BadDrawable, which Xlib's default handler
+ * (SDL chains to it) reports by ending the process with status 1. So the
+ * viewer puts its own handler in front: an error about its own window
+ * marks it gone, and the loop ends as if the window had been closed; any
+ * other X error goes on to the handler that was there. Xlib keeps one
+ * handler per process, hence the file-static state. libX11 is already
+ * loaded by SDL; its XSetErrorHandler is looked up, not linked, so the
+ * tool links no X library. */
+typedef int (*x_error_handler)(Display *, XErrorEvent *);
+static x_error_handler x_previous;
+static unsigned long x_window; /* the viewer's X window, 0: not on X11 */
+static volatile int x_window_gone;
+
+static int x_error(Display *d, XErrorEvent *e)
+{
+    if (x_window && e->resourceid == x_window) {
+        x_window_gone = 1;
+        return 0;
+    }
+    return x_previous ? x_previous(d, e) : 0;
+}
+
+static Display *x_display;
+static Status (*x_get_attributes)(Display *, Window, XWindowAttributes *);
+static int (*x_grab)(Display *), (*x_ungrab)(Display *), (*x_flush)(Display *);
+static int x_grab_frames; /* software GLX: each frame's drawing under a server grab */
+
+/* 1 while the viewer's window exists, asked of the X server in one round
+ * trip (a failure reaches x_error, which marks the window gone). Asked
+ * before each frame's drawing: Mesa's software GLX draws into a window
+ * the server no longer has at a size of 0 and its rasteriser threads then
+ * write out of bounds (a SIGSEGV in llvmpipe, 1 run in 3 of a window
+ * closed by xdotool), so no GL call may reach a destroyed window. With
+ * software GLX the check and the frame's drawing run under a server grab
+ * (x_frame_begin), so no other client can destroy the window in between;
+ * its swap is an XPutImage that waits for no other client, so the grab
+ * lasts one frame's drawing. A hardware driver's swap may wait for a
+ * compositor, which a grab would block: there the check alone is made. */
+static int x_window_alive(void)
+{
+    if (!x_window || x_window_gone)
+        return !x_window_gone;
+    XWindowAttributes a;
+    if (x_get_attributes && !x_get_attributes(x_display, (Window)x_window, &a))
+        x_window_gone = 1;
+    return !x_window_gone;
+}
+
+static void x_frame_begin(void)
+{
+    if (x_grab_frames && x_window && !x_window_gone)
+        x_grab(x_display);
+}
+
+static void x_frame_end(void)
+{
+    if (x_grab_frames && x_window) {
+        x_ungrab(x_display);
+        x_flush(x_display);
+    }
+}
+
+static void *x_symbol(const char *name)
+{
+    return dlsym(RTLD_DEFAULT, name);
+}
+
+static void watch_x_window(SDL_Window *win)
+{
+    SDL_SysWMinfo info;
+    SDL_VERSION(&info.version);
+    if (!SDL_GetWindowWMInfo(win, &info) || info.subsystem != SDL_SYSWM_X11)
+        return;
+    x_error_handler (*set)(x_error_handler) = NULL;
+    void *sym = dlsym(RTLD_DEFAULT, "XSetErrorHandler");
+    memcpy(&set, &sym, sizeof set); /* a data pointer to a function pointer, as POSIX allows */
+    if (!set)
+        return;
+    sym = x_symbol("XGetWindowAttributes");
+    memcpy(&x_get_attributes, &sym, sizeof x_get_attributes);
+    sym = x_symbol("XGrabServer");
+    memcpy(&x_grab, &sym, sizeof x_grab);
+    sym = x_symbol("XUngrabServer");
+    memcpy(&x_ungrab, &sym, sizeof x_ungrab);
+    sym = x_symbol("XFlush");
+    memcpy(&x_flush, &sym, sizeof x_flush);
+    x_display = info.info.x11.display;
+    x_window = (unsigned long)info.info.x11.window;
+    x_previous = set(x_error);
+}
 
 typedef struct view_opts {
     const char *scene, *record_dir, *record_input, *script, *out;
@@ -52,7 +147,7 @@ static int parse_args(int argc, char **argv, view_opts *o)
         const char *v = NULL, *a = argv[i];
         int bad = 0;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            tool_usage(stdout);
+            tool_command_usage(stdout, "view");
             return -1;
         } else if (tool_opt_value(argc, argv, &i, "--size", &v, &bad)) {
             if (bad)
@@ -105,7 +200,7 @@ static int parse_args(int argc, char **argv, view_opts *o)
         } else if (!strcmp(a, "--fast")) {
             o->fast = 1;
         } else if (a[0] == '-' && a[1]) {
-            tool_error("view: unknown option %s (see modesplit --help)", a);
+            tool_error("view: unknown option %s (see modesplit view --help)", a);
             return EXIT_USAGE;
         } else if (o->scene) {
             tool_error("view: one scene at a time (got %s and %s)", o->scene, a);
@@ -375,7 +470,7 @@ static int save_png(viewer *vw, const char *path)
     return 0;
 }
 
-static int draw(viewer *vw, int stepped)
+static int draw_frame(viewer *vw, int stepped)
 {
     view_state *v = &vw->v;
     const view_gl *gl = &view_gl_fn;
@@ -459,6 +554,16 @@ static int draw(viewer *vw, int stepped)
     return 0;
 }
 
+/* One frame's drawing, none once another program destroyed the window
+ * (run() then ends the loop). */
+static int draw(viewer *vw, int stepped)
+{
+    x_frame_begin();
+    int rc = x_window_alive() ? draw_frame(vw, stepped) : 0;
+    x_frame_end();
+    return rc;
+}
+
 static int mkdirs(const char *dir)
 {
     char buf[4096];
@@ -484,9 +589,26 @@ static int open_window(viewer *vw)
                    "desktop session or under xvfb-run");
         return EXIT_USAGE;
     }
+    /* Without a Wayland display SDL may only use X11: left to choose, it
+     * would try Wayland (which prints its own complaint) and then fall back
+     * to its offscreen driver when DISPLAY names a server it cannot reach,
+     * and run the scene with no window. A driver the user names is kept. */
+    const char *asked = getenv("SDL_VIDEODRIVER");
+    if ((!asked || !*asked) && (!wayland || !*wayland))
+        setenv("SDL_VIDEODRIVER", "x11", 1);
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
-        tool_error("view: no display to open a window on (%s); run it in a desktop session or "
-                   "under xvfb-run", SDL_GetError());
+        tool_error("view: no display to open a window on (DISPLAY=%s: %s); run it in a desktop "
+                   "session or under xvfb-run",
+                   display && *display ? display : "(unset)", SDL_GetError());
+        return EXIT_USAGE;
+    }
+    /* the offscreen and dummy drivers make windows nobody sees */
+    const char *driver = SDL_GetCurrentVideoDriver();
+    if (!driver || !strcmp(driver, "offscreen") || !strcmp(driver, "dummy")) {
+        tool_error("view: no display to open a window on (SDL's only video driver here is "
+                   "\"%s\", which shows no window); run it in a desktop session or under "
+                   "xvfb-run",
+                   driver ? driver : "none");
         return EXIT_USAGE;
     }
     SDL_GL_SetAttribute(SDL_GL_CONTEXT_MAJOR_VERSION, 2);
@@ -501,9 +623,15 @@ static int open_window(viewer *vw)
                    SDL_GetError());
         return EXIT_RUNTIME;
     }
+    watch_x_window(vw->win);
     /* the window manager may not give the size asked for */
     SDL_GL_GetDrawableSize(vw->win, &vw->v.w, &vw->v.h);
-    return make_context(vw) == 0 ? EXIT_OK : EXIT_RUNTIME;
+    if (make_context(vw) != 0)
+        return EXIT_RUNTIME;
+    const char *gpu = (const char *)view_gl_fn.GetString(GL_RENDERER);
+    x_grab_frames = x_grab && x_ungrab && x_flush && gpu &&
+                    (strstr(gpu, "llvmpipe") || strstr(gpu, "softpipe") || strstr(gpu, "swrast"));
+    return EXIT_OK;
 }
 
 static int run(viewer *vw)
@@ -517,6 +645,8 @@ static int run(viewer *vw)
     while (!v->quit) {
         if (input(vw) != 0)
             return EXIT_RUNTIME;
+        if (x_window_gone)
+            break;
         if (v->quit) {
             if (v->screenshot && draw(vw, 0) != 0) /* F12 then Esc: the picture first */
                 return EXIT_RUNTIME;
@@ -535,8 +665,10 @@ static int run(viewer *vw)
             stepped = 1;
             stepped_total++;
         }
-        if (draw(vw, stepped) != 0)
+        if (draw(vw, stepped) != 0 && !x_window_gone)
             return EXIT_RUNTIME;
+        if (x_window_gone)
+            break;
         if (vw->o.frames >= 0 && ms_sim_frame(vw->sim) >= vw->o.frames)
             break;
         /* pacing: one frame each frame_dt of wall time (paused: about
@@ -551,6 +683,8 @@ static int run(viewer *vw)
                 next = now;
         }
     }
+    if (x_window_gone)
+        printf("view: the window was closed by another program\n");
     double wall = tool_now() - t_start;
     const double per = stepped_total > 0 ? 1.0 / (double)stepped_total : 0.0;
     printf("view: %ld frames stepped in %.2f s (%.1f frames/s), %ld recorded; per frame: "
@@ -562,6 +696,12 @@ static int run(viewer *vw)
 
 static void close_all(viewer *vw)
 {
+    /* A window another program destroyed is left as it is: destroying it
+     * again is an X error that arrives after SDL_Quit has put Xlib's
+     * default handler back, which ends the process with status 1. Its GL
+     * context and renderer go with the process, which ends next. */
+    if (x_window_gone)
+        vw->ctx = NULL, vw->win = NULL;
     if (vw->ctx) {
         SDL_GL_MakeCurrent(vw->win, vw->ctx);
         ms_renderer_destroy(vw->r);
@@ -569,7 +709,8 @@ static void close_all(viewer *vw)
     }
     if (vw->win)
         SDL_DestroyWindow(vw->win);
-    SDL_Quit();
+    if (!x_window_gone)
+        SDL_Quit();
     free(vw->pixels);
     view_script_free(&vw->script);
     if (vw->log)

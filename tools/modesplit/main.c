@@ -308,7 +308,8 @@ static int dispatch(int argc, char **argv)
         if (argc > 2 && !strcmp(cmd, "help")) {
             if (tool_command_usage(stdout, argv[2]) == 0)
                 return EXIT_OK;
-            tool_error("help: no command \"%s\"; commands: run, info, check, plugins, export",
+            tool_error("help: no command \"%s\"; commands: run, info, check, plugins, export, "
+                       "view, render, cubemap, accuracy",
                        argv[2]);
             return EXIT_USAGE;
         }

@@ -1,10 +1,12 @@
 """Handles that own (or borrow) a C object, desc helpers, views and inputs."""
 import ctypes
+import functools
+import threading
 import weakref
 
 import numpy as np
 
-from ._lib import ABI, STRUCTS, ctype, lib
+from ._lib import ABI, STRUCTS, check_int, ctype, int_range, lib
 from .errors import Closed, InvalidArgument
 
 
@@ -38,6 +40,7 @@ class Handle:
         self._deps = []   # handles this one holds (released after destroy)
         self._finalizer = (weakref.finalize(self, _finish, destroy, ptr, self._deps)
                            if destroy is not None else None)
+        self._lock = threading.RLock()  # one call at a time (serialised)
 
     @classmethod
     def _borrow(cls, ptr, owner):
@@ -115,12 +118,34 @@ class Handle:
     def closed(self):
         return self._h is None or (self._owner is not None and self._owner.closed)
 
+    def _busy(self):
+        """The handle's lock for one call, refused with StateError while
+        another thread is in a call on the same handle (or on its owner or
+        what it owns: they share the root's lock)."""
+        lock = self._root()._lock
+        if not lock.acquire(blocking=False):
+            from .errors import StateError
+            raise StateError("modesplit: the %s is in a call from another thread; a handle takes "
+                             "one call at a time (use one handle per thread, or a lock of your "
+                             "own around the calls)" % self._kind)
+        return lock
+
     def close(self):
         """Close the object (idempotent): further use raises Closed; the C
-        object is freed now, or when the last view or user of it goes."""
-        self._h = None
-        if self._holds == 0:
-            self._destroy_now()
+        object is freed now, or when the last view or user of it goes. A
+        close() from another thread while a call runs waits for that call."""
+        with self._root()._lock:
+            self._h = None
+            if self._holds == 0:
+                self._destroy_now()
+
+    def _no_copy(self, *args):
+        raise TypeError("modesplit: a %s is a handle to C memory and cannot be copied or "
+                        "pickled (a copy would share, then free, the same C object); copy its "
+                        "state instead: Sim.snapshot() / Sim.restore(blob) between processes, "
+                        "or .copy() of the arrays it returns" % type(self).__name__)
+
+    __copy__ = __deepcopy__ = __reduce__ = __reduce_ex__ = __getstate__ = _no_copy
 
     def __enter__(self):
         return self
@@ -131,6 +156,35 @@ class Handle:
     def __repr__(self):
         return "<modesplit.%s %s>" % (type(self).__name__,
                                       "closed" if self.closed else hex(self._h))
+
+
+def _serial(fn):
+    @functools.wraps(fn)
+    def call(self, *args, **kwargs):
+        lock = self._busy()
+        try:
+            return fn(self, *args, **kwargs)
+        finally:
+            lock.release()
+    return call
+
+
+def serialised(cls):
+    """Class decorator: every public method and property of cls runs under
+    the handle's lock (Handle._busy). The rule, one for Surface, Volume and
+    Sim: a call while another thread is in a call on the same handle raises
+    StateError at once; close() waits for the running call. A call that
+    re-enters from the same thread (a method using a property) is fine."""
+    for name, attr in list(vars(cls).items()):
+        if name.startswith("_") or name == "close":
+            continue
+        if isinstance(attr, property):
+            setattr(cls, name, property(_serial(attr.fget) if attr.fget else None,
+                                        _serial(attr.fset) if attr.fset else None,
+                                        attr.fdel, attr.__doc__))
+        elif callable(attr) and not isinstance(attr, (classmethod, staticmethod, type)):
+            setattr(cls, name, _serial(attr))
+    return cls
 
 
 SIZE_FIELDS = ("size", "struct_size")
@@ -185,6 +239,11 @@ def set_fields(struct_name, s, values, what):
             v = ct(*seq)
         elif ct is ctypes.c_char_p and isinstance(v, str):
             v = v.encode()
+        elif int_range(ct) is not None:
+            v = check_int(v, ct, "%s: %s" % (what, key))
+        elif ct in (ctypes.c_float, ctypes.c_double) and (
+                isinstance(v, bool) or not isinstance(v, (int, float, np.number))):
+            raise InvalidArgument("%s: %s = %r is not a number" % (what, key, v))
         try:
             setattr(s, key, v)
         except TypeError as e:
@@ -209,17 +268,19 @@ def view(ptr, shape, dtype, owner, writeable=False, particles=False):
     `particles`: it counts as a particle view of owner's (see
     Handle._no_particle_views) while it or any array made from it lives."""
     n = int(np.prod(shape))
-    if not ptr or n == 0:
-        a = np.zeros(shape, dtype)
-        a.flags.writeable = False
-        return a
+    if not ptr or n == 0:  # zeros over an immutable buffer: read-only too
+        return np.frombuffer(bytes(n * np.dtype(dtype).itemsize), dtype=dtype).reshape(shape)
     ct = np.ctypeslib.as_ctypes_type(np.dtype(dtype))
     buf = (ct * n).from_address(ptr)
     buf._modesplit_owner = owner
     owner._view_made(buf)
     if particles:
         owner._particle_view_made(buf)
-    a = np.frombuffer(buf, dtype=dtype).reshape(shape)
+    # A view that must not write is made over a read-only buffer, so that
+    # a.flags.writeable = True fails (numpy refuses it for an array whose
+    # base does not export write access); the memoryview keeps buf alive.
+    src = buf if writeable else memoryview(buf).cast("B").toreadonly()
+    a = np.frombuffer(src, dtype=dtype).reshape(shape)
     a.flags.writeable = writeable
     return a
 

@@ -16,6 +16,7 @@ Where the library is looked for, in order (the error lists every place):
   4. the system loader (ld.so: LD_LIBRARY_PATH, ldconfig's cache).
 """
 import ctypes
+import operator
 import ctypes.util
 import json
 import os
@@ -160,6 +161,61 @@ def _build_structs():
 _build_structs()
 
 
+_INTS = (ctypes.c_int, ctypes.c_uint, ctypes.c_long, ctypes.c_ulong, ctypes.c_size_t,
+         ctypes.c_uint32, ctypes.c_uint64, ctypes.c_int32, ctypes.c_int64, ctypes.c_ubyte)
+
+
+def int_range(ct):
+    """(lo, hi) of a ctypes integer type, None for other types. ctypes
+    stores an out-of-range Python int modulo 2**bits without a word
+    (nx = 2**32 + 64 became 64), so every int is checked against this
+    before ctypes sees it."""
+    if ct not in _INTS:
+        return None
+    bits = 8 * ctypes.sizeof(ct)
+    signed = ct(-1).value < 0
+    return (-(1 << (bits - 1)), (1 << (bits - 1)) - 1) if signed else (0, (1 << bits) - 1)
+
+
+def check_int(v, ct, what):
+    """v as a Python int within ct's range; InvalidArgument otherwise (a
+    bool, a float or a str is not an int here)."""
+    from .errors import InvalidArgument
+    r = int_range(ct)
+    if isinstance(v, bool) or isinstance(v, float):
+        raise InvalidArgument("%s: %r is not an integer" % (what, v))
+    try:
+        i = operator.index(v)
+    except TypeError:
+        raise InvalidArgument("%s: %r is not an integer" % (what, v)) from None
+    if not r[0] <= i <= r[1]:
+        raise InvalidArgument("%s: %d is out of the range of a C %s (%d .. %d)"
+                              % (what, i, ct.__name__[2:], r[0], r[1]))
+    return i
+
+
+def _checked(cfn, name, argtypes):
+    """cfn with its integer arguments range-checked and a wrong argument
+    type raised as modesplit.InvalidArgument instead of ctypes.ArgumentError."""
+    ints = [(i, t) for i, t in enumerate(argtypes) if int_range(t) is not None]
+
+    def call(*args):
+        if ints:
+            args = list(args)
+            for i, t in ints:
+                if i < len(args) and not isinstance(args[i], ctypes._SimpleCData):
+                    args[i] = check_int(args[i], t, "%s argument %d" % (name, i + 1))
+        try:
+            return cfn(*args)
+        except ctypes.ArgumentError as e:
+            from .errors import InvalidArgument
+            raise InvalidArgument("%s: %s" % (name, e)) from None
+    call.__name__ = name
+    call.raw = cfn
+    call.argtypes, call.restype = cfn.argtypes, cfn.restype
+    return call
+
+
 def enum_values(enum_name):
     return ABI["enums"][enum_name]
 
@@ -180,7 +236,7 @@ class Lib:
                 continue
             cfn.restype = ctype(fn["returns"])
             cfn.argtypes = [ctype(p["type"], param=True) for p in fn["params"]]
-            setattr(self, name, cfn)
+            setattr(self, name, _checked(cfn, name, cfn.argtypes))
         if missing:
             raise LibraryNotFound("modesplit: %s lacks %d functions of the headers the package "
                                   "was built for (an older library?): %s"

@@ -3,7 +3,7 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, filled, new_struct, set_fields, soa_view, to_dict, view
+from ._base import Handle, L, filled, new_struct, set_fields, soa_view, to_dict, view, serialised
 from ._lib import ABI
 from .errors import InvalidArgument, check
 from .surface import Surface, surface_desc
@@ -27,6 +27,7 @@ def field_bits(fields):
     return bits
 
 
+@serialised
 class Sim(Handle):
     """A mode-splitting simulation.
 
@@ -83,6 +84,27 @@ class Sim(Handle):
                 raise InvalidArgument("sim: step needs frame_dt for a sim made from descs")
             frame_dt = self._frame_dt
         check(L().ms_sim_step(ptr, frame_dt))
+
+    def snapshot(self):
+        """The sim's whole state between two steps as bytes (ms_sim_snapshot):
+        restore() it into a sim made the same way, in this process or another
+        (the way to copy a sim; the handle itself cannot be copied or pickled)."""
+        ptr = self._ptr
+        n = ctypes.c_size_t()
+        check(L().ms_sim_snapshot_size(ptr, ctypes.byref(n)))
+        buf = ctypes.create_string_buffer(n.value)
+        written = ctypes.c_size_t()
+        check(L().ms_sim_snapshot(ptr, buf, n.value, ctypes.byref(written)))
+        return buf.raw[:written.value]
+
+    def restore(self, blob):
+        """Load a snapshot() of a sim made the same way (refused, unchanged,
+        for another scene, version or a corrupt blob)."""
+        if not isinstance(blob, (bytes, bytearray, memoryview)):
+            raise InvalidArgument("sim: restore needs the bytes of snapshot(), not %s"
+                                  % type(blob).__name__)
+        data = bytes(blob)
+        check(L().ms_sim_restore(self._ptr, data, len(data)))
 
     def _field(self, fn):
         nx, ny = ctypes.c_int(), ctypes.c_int()

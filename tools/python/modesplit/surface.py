@@ -3,10 +3,12 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, as_input, cint, filled, new_struct, set_fields, to_dict, view
+from ._base import (Handle, L, as_input, cint, filled, new_struct, serialised, set_fields,
+                    to_dict, view)
 from .errors import check
 
 
+@serialised
 class Surface(Handle):
     """A wave-equation height field.
 

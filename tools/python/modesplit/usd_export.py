@@ -8,7 +8,10 @@ only; it imports nothing else from modesplit, so it works on any run file
 without the C library.
 
 The stage (metres, z up, one time code per written frame, time codes per
-second = frames per second of the file = 1 / (frame_dt * output_every)):
+second = frames per second of the file = 1 / (frame_dt * output_every),
+exactly n when that is n within 1e-4; each prim has its extent per frame,
+/Run its children's union as the model's extentsHint; text attributes as
+text):
   /Run                 Xform
   /Run/Surface         Mesh: the height field (combined, or --field) as a
                        grid of (nx x ny) points at the cell centres, z = the
@@ -24,17 +27,57 @@ Exit status: 0 written; 1 a read or write failure; 2 bad arguments or not a
 modesplit run file (the message names the file and what is missing).
 """
 import argparse
+import os
 import sys
 
-import h5py
-import numpy as np
+# Run by its path (as `modesplit export` does), Python puts this file's own
+# folder first on sys.path, where the package's modules (io.py, errors.py,
+# ...) would shadow top-level modules of the same name: take it off.
+if __name__ == "__main__" and sys.path and \
+        os.path.abspath(sys.path[0]) == os.path.dirname(os.path.abspath(__file__)):
+    del sys.path[0]
 
 FIELDS = ("combined", "surface", "volume")
+INSTALL = "pip install usd-core h5py numpy"
 
 
 def fail(code, msg):
     print(f"modesplit export: {msg}", file=sys.stderr)
     sys.exit(code)
+
+
+try:
+    import h5py
+    import numpy as np
+except ImportError as e:  # the tool's sentence, not a traceback
+    fail(1, f"this Python ({sys.executable}) lacks {e.name or 'numpy or h5py'}, which the "
+            f"export needs: {INSTALL} (or set MODESPLIT_PYTHON to a Python that has them)")
+
+
+def text(v):
+    """An HDF5 string attribute as text: h5py gives variable-length strings
+    as str and fixed-length ones as bytes (the C writer's are fixed), and
+    str(bytes) would store the repr "b'fig10'"."""
+    if isinstance(v, bytes):
+        return v.decode("utf-8", "replace")
+    if isinstance(v, np.ndarray) and v.shape == ():
+        return text(v.item())
+    return str(v)
+
+
+def frame_rate(frame_dt, every):
+    """Time codes per second: 1 / (frame_dt * every), and exactly n when that
+    is within 1e-4 (relative) of a whole number n: a scene's frame_dt is
+    written in decimal (0.016667 for 1/60 s, 1.7e-5 off), so the rate a
+    player expects is 60, not 59.9988. A rate no whole number is near (say
+    frame_dt 0.3) is kept as it is."""
+    if not frame_dt > 0:
+        return 24.0
+    fps = 1.0 / (frame_dt * every)
+    n = round(fps)
+    if n >= 1 and abs(fps - n) <= 1e-4 * n:
+        return float(n)
+    return fps
 
 
 def grid_of(ds):
@@ -73,19 +116,23 @@ def vertex_normals(h, dx, dy):
 
 
 def export(run, usd_path, field=None):
-    from pxr import Gf, Sdf, Usd, UsdGeom, Vt
+    try:
+        from pxr import Gf, Sdf, Usd, UsdGeom, Vt
+    except ImportError:
+        fail(1, f"this Python ({sys.executable}) lacks Pixar's USD library (pxr), which the "
+                f"export needs: {INSTALL} (or set MODESPLIT_PYTHON to a Python that has it)")
 
     try:
         f = h5py.File(run, "r")
     except OSError as e:
         fail(1, f"cannot open {run}: {e}")
     with f:
-        if f.attrs.get("format") not in ("modesplit", b"modesplit"):
+        if text(f.attrs.get("format", "")) != "modesplit":
             fail(2, f"{run} is not a modesplit run file (no root attribute format = \"modesplit\")")
         frames = frames_in(f)
         frame_dt = float(f.attrs.get("frame_dt", 0.0))
         every = int(f.attrs.get("output_every", 1))
-        fps = 1.0 / (frame_dt * every) if frame_dt > 0 else 24.0
+        fps = frame_rate(frame_dt, every)
         present = [n for n in FIELDS if f"fields/{n}" in f]
         if field is None:
             field = present[0] if present else None
@@ -104,8 +151,17 @@ def export(run, usd_path, field=None):
         root = UsdGeom.Xform.Define(stage, "/Run")
         stage.SetDefaultPrim(root.GetPrim())
         root.GetPrim().SetCustomDataByKey("modesplit:scene_name",
-                                          str(f.attrs.get("scene_name", "")))
+                                          text(f.attrs.get("scene_name", "")))
         root.GetPrim().SetCustomDataByKey("modesplit:source", run)
+
+        # /Run is an Xform, which has no extent of its own: its children's
+        # union per frame goes into the model's extentsHint, so every prim
+        # states its bounds.
+        union = {}
+
+        def grow(k, lo, hi):
+            a, b = union.get(k, (lo, hi))
+            union[k] = (np.minimum(a, lo), np.maximum(b, hi))
 
         bad = 0
         if field is not None:
@@ -141,6 +197,7 @@ def export(run, usd_path, field=None):
                 nrm_attr.Set(Vt.Vec3fArray.FromNumpy(vertex_normals(h, dx, dy)), k)
                 lo, hi = p.min(0), p.max(0)
                 ext_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))]), k)
+                grow(k, lo, hi)
         if bad:
             print(f"modesplit export: {bad} frames of {field} had non-finite heights, "
                   "written as 0", file=sys.stderr)
@@ -150,9 +207,11 @@ def export(run, usd_path, field=None):
             p_attr = points.CreatePointsAttr()
             v_attr = points.CreateVelocitiesAttr()
             i_attr = points.CreateIdsAttr()
+            e_attr = points.CreateExtentAttr()
             spacing = 0.01
             try:
-                spacing = float(__import__("json").loads(f.attrs["scene"])["volume"]["spacing"])
+                scene = __import__("json").loads(text(f.attrs["scene"]))
+                spacing = float(scene["volume"]["spacing"])
             except Exception:
                 pass
             points.CreateWidthsAttr(Vt.FloatArray([spacing]))
@@ -166,7 +225,19 @@ def export(run, usd_path, field=None):
                 ids = step["id"][:] if "id" in step else np.arange(len(p))
                 p_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
                 v_attr.Set(Vt.Vec3fArray.FromNumpy(v), k)
+                # the points' box grown by half the width (UsdGeom.Points' rule)
+                if len(p):
+                    lo, hi = p.min(0) - 0.5 * spacing, p.max(0) + 0.5 * spacing
+                else:
+                    lo = hi = np.zeros(3, np.float32)
+                e_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
+                                          Gf.Vec3f(*map(float, hi))]), k)
+                grow(k, lo, hi)
                 i_attr.Set(Vt.Int64Array.FromNumpy(ids.astype(np.int64)), k)
+        model = UsdGeom.ModelAPI.Apply(root.GetPrim())
+        for k, (lo, hi) in sorted(union.items()):
+            model.SetExtentsHint(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
+                                                Gf.Vec3f(*map(float, hi))]), k)
         stage.GetRootLayer().Save()
     return frames
 

@@ -3,10 +3,11 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, as_input, filled, set_fields, soa_view, to_dict, vec, view
+from ._base import Handle, L, as_input, filled, set_fields, soa_view, to_dict, vec, view, serialised
 from .errors import check
 
 
+@serialised
 class Volume(Handle):
     """SPH particles in a box.
 
