@@ -233,19 +233,97 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TEST_SUPPORT) $(STATIC) | plugins too
 deps:
 	@tools/deps.sh
 
-# Every suite runs even if one fails; the target fails if any did.
+# make check: the checks of the tree (headers, exports, the README's
+# example, the docs, the ABI listing, the bench figures), then every suite,
+# each a target of its own, so that `make -j2 check` runs two at a time.
+# Every suite runs even if one fails; one summary at the end; the target
+# fails if any suite did. `make check-suites` runs the suites alone (with
+# the summary), building what they need.
+CHECK_PRE := check-headers check-exports check-readme check-docs check-abi check-bench-figures
 check: deps
 	@$(MAKE) --no-print-directory all tests
-	@$(MAKE) --no-print-directory check-headers check-exports check-readme check-docs
-	@$(MAKE) --no-print-directory check-abi
-	@$(MAKE) --no-print-directory check-bench-figures
+	@$(MAKE) --no-print-directory --output-sync=target $(CHECK_PRE)
+	@$(MAKE) --no-print-directory check-suites
+
+# One run of a suite, $(CHECK_DIR)/<suite>[.<case>].result: its output in
+# .log, the cases it could not run in .skipped (MS_TEST_SKIP_FILE), the
+# paths this machine does not have in .na (MS_TEST_NA_FILE), and "passed
+# SECONDS" or "failed SECONDS" in .result. The recipe succeeds either way,
+# so the other suites still run; check-suites counts.
+CHECK_DIR := $(BUILD)/check
+# A suite listed in CHECK_SPLIT runs as one job per Check case (CK_RUN_CASE)
+# instead of one for the whole suite: test_volume takes as long as a
+# third of the others together, and would be the last job left running.
+# The cases are read from the suite's tcase_create("...") calls, so a new
+# case runs without a change here; a suite whose cases are not all named
+# by a literal there runs whole.
+CHECK_SPLIT ?= volume
+LP := (
+split_cases = $(if $(filter $(words $(shell grep -o 'tcase_create$(LP)' tests/test_$(1).c)),\
+    $(words $(shell grep -o 'tcase_create("[A-Za-z0-9_]*")' tests/test_$(1).c))),\
+    $(shell sed -n 's/.*tcase_create("\([A-Za-z0-9_]*\)").*/\1/p' tests/test_$(1).c))
+SUITE_NAMES := $(TESTS:$(BUILD)/tests/test_%=%)
+SUITE_JOBS  := $(foreach n,$(SUITE_NAMES),$(or $(if $(filter $(n),$(CHECK_SPLIT)),\
+    $(addprefix $(n).,$(call split_cases,$(n)))),$(n)))
+# The longest jobs start first, so that none of them starts last (each
+# job's seconds are in `make check`'s output); the rest in name order.
+CHECK_FIRST ?= colliders io render resume stability volume.hard volume.model alloc tool accuracy
+SUITE_JOBS  := $(foreach j,$(CHECK_FIRST),$(filter $(j),$(SUITE_JOBS))) \
+               $(filter-out $(CHECK_FIRST),$(SUITE_JOBS))
+# Suites that must have the machine to themselves run after all the
+# others, one at a time:
+#   view: tests/view_x11.sh drags the water with real X events and takes
+#   its screenshots after fixed sleeps (2 s after the drag), and a frame
+#   of llvmpipe can take half a second on a loaded core; a suite on the
+#   other core would push the drag's frames past the screenshot.
+# No other suite needs this: their temporary files are mkdtemp/mkstemp
+# names (ms_test_tmp_dir), none listens on a port or writes into the tree,
+# the full-disk cases mount their tmpfs in a private mount namespace, and
+# the cases that signal a running tool wait for what they check (frames in
+# the file, the process's exit) instead of a fixed time.
+CHECK_ALONE ?= view
+CHECK_ALONE    := $(filter $(CHECK_ALONE),$(SUITE_JOBS))
+CHECK_SHARED   := $(filter-out $(CHECK_ALONE),$(SUITE_JOBS))
+SHARED_RESULTS := $(addprefix $(CHECK_DIR)/,$(addsuffix .result,$(CHECK_SHARED)))
+CHECK_RESULTS  := $(SHARED_RESULTS) $(addprefix $(CHECK_DIR)/,$(addsuffix .result,$(CHECK_ALONE)))
+define suite_job
+$(CHECK_DIR)/$(1).result: $(BUILD)/tests/test_$(firstword $(subst ., ,$(1))) FORCE $(2)
+endef
+$(foreach j,$(CHECK_SHARED),$(eval $(call suite_job,$(j))))
+# each suite of CHECK_ALONE after every shared job and every suite before it
+ALONE_BEFORE := $(SHARED_RESULTS)
+$(foreach j,$(CHECK_ALONE),$(eval $(call suite_job,$(j),$(ALONE_BEFORE)))\
+    $(eval ALONE_BEFORE += $(CHECK_DIR)/$(j).result))
+
+.PHONY: check-suites FORCE
+FORCE:
+# $* is <suite> or <suite>.<case>
+$(CHECK_DIR)/%.result:
+	@mkdir -p $(@D); rm -f $@ $(@:.result=.skipped) $(@:.result=.na)
+	@suite=$(firstword $(subst ., ,$*)); case_=$(word 2,$(subst ., ,$*)); t0=$$(date +%s); \
+	if env $${case_:+CK_RUN_CASE=$$case_} MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) \
+	    MS_TEST_SKIP_FILE=$(abspath $(@:.result=.skipped)) MS_TEST_NA_FILE=$(abspath $(@:.result=.na)) \
+	    $(BUILD)/tests/test_$$suite > $(@:.result=.log) 2>&1; then r=passed; else r=failed; fi; \
+	s=$$(($$(date +%s) - t0)); echo "$$r $$s" > $@; \
+	echo "== $(BUILD)/tests/test_$$suite$${case_:+ (case $$case_)}: $$r in $$s s;" \
+	    "$$(grep '^[0-9]*%: Checks' $(@:.result=.log) | tail -n 1)"
+
+check-suites: $(CHECK_RESULTS)
 	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS))";) \
-	skips=$(abspath $(BUILD))/skipped.txt; rm -f $$skips; \
-	pass=0; fail=0; for t in $(TESTS); do \
-	    echo "== $$t"; \
-	    if MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) MS_TEST_SKIP_FILE=$$skips $$t; \
-	    then pass=$$((pass + 1)); else fail=$$((fail + 1)); fi; \
+	failed=""; for r in $(CHECK_RESULTS); do \
+	    res=failed; [ -f "$$r" ] && read -r res sec < "$$r"; [ "$$res" = passed ] && continue; \
+	    job=$${r##*/}; job=$${job%.result}; failed="$$failed $${job%%.*}"; \
+	    echo "== $(BUILD)/tests/test_$${job%%.*}$$(case $$job in *.*) echo " (case $${job#*.})";; esac): FAILED;" \
+	        "its log ($${r%.result}.log):"; cat "$${r%.result}.log"; \
 	done; \
+	fail=$$(printf '%s\n' $$failed | sort -u | grep -c .); pass=$$(($(words $(SUITE_NAMES)) - fail)); \
+	skips=$(abspath $(BUILD))/skipped.txt; nas=$(abspath $(BUILD))/not-applicable.txt; \
+	: > $$skips; : > $$nas; for r in $(CHECK_RESULTS:.result=); do \
+	    if [ -f $$r.skipped ]; then cat $$r.skipped >> $$skips; fi; \
+	    if [ -f $$r.na ]; then cat $$r.na >> $$nas; fi; \
+	done; \
+	if [ -s $$nas ]; then echo "make check: $$(wc -l < $$nas) cases checked only the paths this machine has;" \
+	    "not applicable here (not a skip):"; sed 's/^/  /' $$nas; fi; \
 	nskip=0; if [ -s $$skips ]; then nskip=$$(wc -l < $$skips); \
 	    echo "make check: $$nskip cases could not run here and were skipped:"; sed 's/^/  /' $$skips; fi; \
 	echo "suites: $$pass passed, $$fail failed, $$nskip skipped"; \

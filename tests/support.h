@@ -23,6 +23,15 @@ void ms_test_skip(const char *file, int line, const char *why);
         return;                                                                        \
     } while (0)
 
+/* A path this machine does not have (an instruction set the CPU lacks):
+ * MS_NOT_APPLICABLE("what") records it and the case goes on to check the
+ * paths the machine has. Not a skip: nothing that could run here was left
+ * out, so MS_TEST_NO_SKIP=1 accepts it. The record goes to the file named
+ * by MS_TEST_NA_FILE (one line "file:line case: what"), which `make check`
+ * prints apart from the skips. */
+void ms_test_not_applicable(const char *file, int line, const char *what);
+#define MS_NOT_APPLICABLE(what) ms_test_not_applicable(__FILE__, __LINE__, (what))
+
 /* support_tools.c: a fresh directory $TMPDIR/<prefix>_XXXXXX (or /tmp)
  * into buf (0, or -1); remove a directory and everything below it; a
  * file's whole text (malloc'd, "" when it cannot be read; free() it). */

@@ -1,4 +1,5 @@
-/* The one main loop every suite shares, and the skip record. */
+/* The one main loop every suite shares, and the skip and not-applicable
+ * records. */
 #include "support.h"
 
 #include <stdio.h>
@@ -29,5 +30,18 @@ void ms_test_skip(const char *file, int line, const char *why)
     if (!f)
         return;
     fprintf(f, "%s:%d %s: %s\n", file, line, tcase_name(), why);
+    fclose(f);
+}
+
+void ms_test_not_applicable(const char *file, int line, const char *what)
+{
+    fprintf(stderr, "N/A %s: %s\n", tcase_name(), what);
+    const char *path = getenv("MS_TEST_NA_FILE");
+    if (!path || !path[0])
+        return;
+    FILE *f = fopen(path, "a");
+    if (!f)
+        return;
+    fprintf(f, "%s:%d %s: %s\n", file, line, tcase_name(), what);
     fclose(f);
 }
