@@ -17,10 +17,10 @@ int ms_test_run(Suite *s);
  * `make check` counts and prints; with MS_TEST_NO_SKIP=1 (.ci/run) a skip
  * fails the case instead, so CI fails when something it must run did not. */
 void ms_test_skip(const char *file, int line, const char *why);
-#define MS_SKIP(why)                                                                   \
-    do {                                                                               \
-        ms_test_skip(__FILE__, __LINE__, (why));                                       \
-        return;                                                                        \
+#define MS_SKIP(why)                             \
+    do {                                         \
+        ms_test_skip(__FILE__, __LINE__, (why)); \
+        return;                                  \
     } while (0)
 
 /* A path this machine does not have (an instruction set the CPU lacks):
@@ -63,24 +63,24 @@ int ms_test_h5dump(const char *path);
  * finishing the flush it was given, lib/io/h5_atomic.c), at most `seconds`:
  * 1 when none does, 0 on time out. */
 int ms_test_wait_unused(const char *path, double seconds);
-#define MS_ASSERT_H5DUMP_READS(path)                                                   \
-    do {                                                                               \
-        const char *p_ = (path);                                                       \
-        int r_ = ms_test_h5dump(p_);                                                   \
-        if (r_ < 0)                                                                    \
-            MS_SKIP("h5dump is not installed (apt-get install hdf5-tools)");           \
-        ck_assert_msg(r_ == 1, "h5dump fails on %s", p_);                              \
+#define MS_ASSERT_H5DUMP_READS(path)                                         \
+    do {                                                                     \
+        const char *p_ = (path);                                             \
+        int r_ = ms_test_h5dump(p_);                                         \
+        if (r_ < 0)                                                          \
+            MS_SKIP("h5dump is not installed (apt-get install hdf5-tools)"); \
+        ck_assert_msg(r_ == 1, "h5dump fails on %s", p_);                    \
     } while (0)
 
 /* Assert a call failed with `status` and that ms_last_error() contains
  * `word`: every refusal is tested like a feature. */
-#define MS_ASSERT_REFUSED(call, status, word)                                          \
-    do {                                                                               \
-        ms_status st_ = (call);                                                        \
-        ck_assert_msg(st_ == (status), "%s returned %s, expected %s (%s)", #call,      \
-                      ms_status_name(st_), ms_status_name(status), ms_last_error());   \
-        ck_assert_msg(strstr(ms_last_error(), (word)) != NULL,                         \
-                      "message \"%s\" lacks \"%s\"", ms_last_error(), (word));         \
+#define MS_ASSERT_REFUSED(call, status, word)                                                 \
+    do {                                                                                      \
+        ms_status st_ = (call);                                                               \
+        ck_assert_msg(st_ == (status), "%s returned %s, expected %s (%s)", #call,             \
+                      ms_status_name(st_), ms_status_name(status), ms_last_error());          \
+        ck_assert_msg(strstr(ms_last_error(), (word)) != NULL, "message \"%s\" lacks \"%s\"", \
+                      ms_last_error(), (word));                                               \
     } while (0)
 
 #endif

@@ -19,8 +19,8 @@ void ms_test_skip(const char *file, int line, const char *why)
 {
     const char *no_skip = getenv("MS_TEST_NO_SKIP");
     if (no_skip && no_skip[0] == '1')
-        ck_abort_msg("%s:%d: %s: cannot run here (%s), and MS_TEST_NO_SKIP=1 forbids a skip",
-                     file, line, tcase_name(), why);
+        ck_abort_msg("%s:%d: %s: cannot run here (%s), and MS_TEST_NO_SKIP=1 forbids a skip", file,
+                     line, tcase_name(), why);
     fprintf(stderr, "SKIP %s: %s\n", tcase_name(), why);
     const char *path = getenv("MS_TEST_SKIP_FILE");
     if (!path || !path[0])

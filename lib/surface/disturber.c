@@ -74,9 +74,7 @@ ms_status ms_surface_add_disturber(ms_surface *s, const ms_disturber_desc *user,
     ms_status st;
     ms_disturber_desc desc = ms_disturber_desc_default(), *d = &desc;
     if ((st = ms_check_not_null(PART, "surface", s)) ||
-        (st = ms_struct_in(user, &desc,
-                           MS_SIZES_DISTURBER_DESC, PART)) ||
-        (st = check_desc(s, d)))
+        (st = ms_struct_in(user, &desc, MS_SIZES_DISTURBER_DESC, PART)) || (st = check_desc(s, d)))
         return st;
     if (s->ndist == s->cap_dist &&
         (st = ms_surface_reserve_disturbers(s, s->cap_dist ? 2 * s->cap_dist : 4)))

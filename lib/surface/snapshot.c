@@ -82,8 +82,8 @@ ms_status ms_surface_snapshot_io(ms_surface *s, ms_blob *b)
                        dims[0], dims[1], dims[2], s->nx, s->ny, s->stride);
     /* the fields and the coefficients as stepped (a, delta belong to coef_dt) */
     if ((st = ms_blob_io(b, "sf.h", s->h, fb)) || (st = ms_blob_io(b, "sf.v", s->v, fb)) ||
-        (st = ms_blob_io(b, "sf.speed", s->speed, fb)) ||
-        (st = ms_blob_io(b, "sf.a", s->a, fb)) || (st = ms_blob_io(b, "sf.delta", s->delta, fb)))
+        (st = ms_blob_io(b, "sf.speed", s->speed, fb)) || (st = ms_blob_io(b, "sf.a", s->a, fb)) ||
+        (st = ms_blob_io(b, "sf.delta", s->delta, fb)))
         return st;
     /* maps set at run time */
     if ((st = opt_plane(b, "sf.speed_map", (void **)&s->speed_map, fb)) ||
@@ -95,8 +95,7 @@ ms_status ms_surface_snapshot_io(ms_surface *s, ms_blob *b)
         (st = MS_BLOB_IO(b, "sf.v_dt", s->v_dt)) || (st = MS_BLOB_IO(b, "sf.time", s->time)) ||
         (st = MS_BLOB_IO(b, "sf.substeps", s->substeps)) ||
         (st = MS_BLOB_IO(b, "sf.drops", s->drops)) || (st = MS_BLOB_IO(b, "sf.rng", s->rng)) ||
-        (st = MS_BLOB_IO(b, "sf.rain", s->rain)) ||
-        (st = MS_BLOB_IO(b, "sf.next_id", s->next_id)))
+        (st = MS_BLOB_IO(b, "sf.rain", s->rain)) || (st = MS_BLOB_IO(b, "sf.next_id", s->next_id)))
         return st;
     s->uniform = -1; /* a and delta as read: wave.c looks again */
     if ((st = disturbers_io(s, b)))

@@ -41,8 +41,8 @@ static ms_status wave_io(ms_volume *v, ms_blob *b)
         if (v->wave_grid.nx < 1 || v->wave_grid.ny < 1 || v->wave_grid.nx > 1 << 16 ||
             v->wave_grid.ny > 1 << 16)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "snapshot: a coupling wave grid of %d x %d cells",
-                           v->wave_grid.nx, v->wave_grid.ny);
+                           "snapshot: a coupling wave grid of %d x %d cells", v->wave_grid.nx,
+                           v->wave_grid.ny);
         if (cells > v->wave_cap) {
             float *p = ms_alloc_array(cells, sizeof(float));
             if (!p)
