@@ -500,10 +500,11 @@ check-bench-figures:
 bench-commit:
 	$(Q)$(PYTHON) tools/bench/figures.py --commit bench
 
-# ---- the layout of changed lines (CI) ----
-# format-check: the C lines changed since a base (tools/format_check.sh says
-# which) follow .clang-format. It needs a CI-only tool (clang-format:
-# tools/deps.sh --ci), so it is not part of `make check`; .ci/run runs it.
+# ---- the layout of the C files (CI) ----
+# format-check: every C file under lib/ include/ tools/ tests/ plugins/
+# follows .clang-format, whole files (tools/format_check.sh; --fix lays them
+# out). It needs a CI-only tool (clang-format: tools/deps.sh --ci), so it is
+# not part of `make check`; .ci/run runs it.
 .PHONY: format-check
 format-check:
 	@tools/format_check.sh
