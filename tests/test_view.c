@@ -76,12 +76,12 @@ static void write_file(const char *name, const char *text)
     fclose(f);
 }
 
-#define NEED_X()                                                                     \
-    do {                                                                             \
-        if (!built_with_sdl())                                                       \
-            MS_SKIP("modesplit was built without SDL2 (libsdl2-dev)");               \
-        if (!have("xvfb-run"))                                                       \
-            MS_SKIP("xvfb-run is not installed (tools/deps.sh --ci installs xvfb)"); \
+#define NEED_X()                                                                \
+    do {                                                                        \
+        if (!built_with_sdl())                                                  \
+            MS_SKIP("modesplit was built without SDL2 (libsdl2-dev)");          \
+        if (!have("xvfb-run"))                                                  \
+            MS_SKIP("xvfb-run is not installed (tools/deps.sh installs xvfb)"); \
     } while (0)
 
 /* An RGBA8 PNG; NULL if it does not read. */
@@ -684,7 +684,7 @@ START_TEST(real_x_events_drag_the_water_in_a_screenshot_and_replay_exactly)
 {
     NEED_X();
     if (!have("xdotool") || !have("import") || !have("compare"))
-        MS_SKIP("xdotool or ImageMagick is not installed (tools/deps.sh --ci installs them)");
+        MS_SKIP("xdotool or ImageMagick is not installed (tools/deps.sh installs them)");
     make_tmp_dir();
     char cmd[2048];
     snprintf(cmd, sizeof cmd,
