@@ -17,11 +17,20 @@ int ms_test_run(Suite *s);
  * `make check` counts and prints; with MS_TEST_NO_SKIP=1 (.ci/run) a skip
  * fails the case instead, so CI fails when something it must run did not. */
 void ms_test_skip(const char *file, int line, const char *why);
-#define MS_SKIP(why)                                                                   \
-    do {                                                                               \
-        ms_test_skip(__FILE__, __LINE__, (why));                                       \
-        return;                                                                        \
+#define MS_SKIP(why)                             \
+    do {                                         \
+        ms_test_skip(__FILE__, __LINE__, (why)); \
+        return;                                  \
     } while (0)
+
+/* A path this machine does not have (an instruction set the CPU lacks):
+ * MS_NOT_APPLICABLE("what") records it and the case goes on to check the
+ * paths the machine has. Not a skip: nothing that could run here was left
+ * out, so MS_TEST_NO_SKIP=1 accepts it. The record goes to the file named
+ * by MS_TEST_NA_FILE (one line "file:line case: what"), which `make check`
+ * prints apart from the skips. */
+void ms_test_not_applicable(const char *file, int line, const char *what);
+#define MS_NOT_APPLICABLE(what) ms_test_not_applicable(__FILE__, __LINE__, (what))
 
 /* support_tools.c: a fresh directory $TMPDIR/<prefix>_XXXXXX (or /tmp)
  * into buf (0, or -1); remove a directory and everything below it; a
@@ -54,24 +63,24 @@ int ms_test_h5dump(const char *path);
  * finishing the flush it was given, lib/io/h5_atomic.c), at most `seconds`:
  * 1 when none does, 0 on time out. */
 int ms_test_wait_unused(const char *path, double seconds);
-#define MS_ASSERT_H5DUMP_READS(path)                                                   \
-    do {                                                                               \
-        const char *p_ = (path);                                                       \
-        int r_ = ms_test_h5dump(p_);                                                   \
-        if (r_ < 0)                                                                    \
-            MS_SKIP("h5dump is not installed (apt-get install hdf5-tools)");           \
-        ck_assert_msg(r_ == 1, "h5dump fails on %s", p_);                              \
+#define MS_ASSERT_H5DUMP_READS(path)                                         \
+    do {                                                                     \
+        const char *p_ = (path);                                             \
+        int r_ = ms_test_h5dump(p_);                                         \
+        if (r_ < 0)                                                          \
+            MS_SKIP("h5dump is not installed (apt-get install hdf5-tools)"); \
+        ck_assert_msg(r_ == 1, "h5dump fails on %s", p_);                    \
     } while (0)
 
 /* Assert a call failed with `status` and that ms_last_error() contains
  * `word`: every refusal is tested like a feature. */
-#define MS_ASSERT_REFUSED(call, status, word)                                          \
-    do {                                                                               \
-        ms_status st_ = (call);                                                        \
-        ck_assert_msg(st_ == (status), "%s returned %s, expected %s (%s)", #call,      \
-                      ms_status_name(st_), ms_status_name(status), ms_last_error());   \
-        ck_assert_msg(strstr(ms_last_error(), (word)) != NULL,                         \
-                      "message \"%s\" lacks \"%s\"", ms_last_error(), (word));         \
+#define MS_ASSERT_REFUSED(call, status, word)                                                 \
+    do {                                                                                      \
+        ms_status st_ = (call);                                                               \
+        ck_assert_msg(st_ == (status), "%s returned %s, expected %s (%s)", #call,             \
+                      ms_status_name(st_), ms_status_name(status), ms_last_error());          \
+        ck_assert_msg(strstr(ms_last_error(), (word)) != NULL, "message \"%s\" lacks \"%s\"", \
+                      ms_last_error(), (word));                                               \
     } while (0)
 
 #endif

@@ -16,8 +16,8 @@
  * (MS_SKIP): they exercise no threads, and run in the plain and ASan
  * builds. The threaded ones still run. (make check SAN=tsan runs only the
  * threaded suites, TSAN_SUITES, so CI does not get here.) */
-#define TSAN_WHY                                                                          \
-    "single-threaded physics run, too slow under ThreadSanitizer; the plain and ASan "    \
+#define TSAN_WHY                                                                       \
+    "single-threaded physics run, too slow under ThreadSanitizer; the plain and ASan " \
     "builds run it"
 static inline int skip_under_tsan(void)
 {

@@ -131,7 +131,8 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
     int m = select_rows(rows, n, "waves", "cells_per_wavelength", "frequency", sel);
     ck_assert_int_ge(m, 3);
     for (int i = 0; i + 1 < m; ++i) {
-        double order = log(sel[i]->error / sel[i + 1]->error) / log(sel[i + 1]->value / sel[i]->value);
+        double order =
+            log(sel[i]->error / sel[i + 1]->error) / log(sel[i + 1]->value / sel[i]->value);
         ck_assert_msg(order >= 1.9, "wave order %.3f between %.1f and %.1f cells per wavelength",
                       order, sel[i]->value, sel[i + 1]->value);
         /* the cost columns are wall clock, which a loaded machine makes
@@ -166,8 +167,7 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
     for (int k = 0; k < 3; ++k) {
         m = select_rows(rows, n, "sph", laws[k], "front Z rel.", sel);
         if (m == 0) {
-            ck_assert_msg(strstr(text, "is not in this build"), "%s: no row and no note",
-                          laws[k]);
+            ck_assert_msg(strstr(text, "is not in this build"), "%s: no row and no note", laws[k]);
             continue;
         }
         ck_assert_int_eq(m, 1);
@@ -352,8 +352,8 @@ START_TEST(bad_options_are_refused)
     ck_assert_int_eq(tool("accuracy --jobs --merge x", out, sizeof out), 2);
     ck_assert_ptr_nonnull(strstr(out, "one of"));
     ck_assert_int_eq(tool("accuracy --bogus", out, sizeof out), 2);
-    ck_assert_int_eq(tool("accuracy --merge /nonexistent/parts --out /tmp/ms_acc_none", out,
-                          sizeof out), 1);
+    ck_assert_int_eq(
+        tool("accuracy --merge /nonexistent/parts --out /tmp/ms_acc_none", out, sizeof out), 1);
     ck_assert_ptr_nonnull(strstr(out, "no part"));
 }
 END_TEST

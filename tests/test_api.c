@@ -351,8 +351,8 @@ START_TEST(a_hostile_run_file_is_printed_as_text_and_its_denormal_dx_refused)
 
     char cmd[1024], out[256];
     snprintf(out, sizeof out, "%s/info.txt", dir);
-    snprintf(cmd, sizeof cmd, "%s/bin/modesplit info %s > %s 2>&1", getenv("MS_TEST_BUILD") ?
-             getenv("MS_TEST_BUILD") : "build", path, out);
+    snprintf(cmd, sizeof cmd, "%s/bin/modesplit info %s > %s 2>&1",
+             getenv("MS_TEST_BUILD") ? getenv("MS_TEST_BUILD") : "build", path, out);
     int rc = system(cmd);
     (void)rc;
     FILE *in = fopen(out, "rb");
@@ -397,7 +397,8 @@ START_TEST(a_terrain_png_is_relative_to_the_scene_file)
     ck_assert_ptr_nonnull(mkdtemp(dir));
     char png[256], json[256];
     snprintf(png, sizeof png, "%s/ground.png", dir);
-    unsigned char grey[16] = {0, 40, 80, 120, 40, 80, 120, 160, 80, 120, 160, 200, 120, 160, 200, 255};
+    unsigned char grey[16] = {0,  40,  80,  120, 40,  80,  120, 160,
+                              80, 120, 160, 200, 120, 160, 200, 255};
     png_image img;
     memset(&img, 0, sizeof img);
     img.version = PNG_IMAGE_VERSION;
@@ -410,7 +411,8 @@ START_TEST(a_terrain_png_is_relative_to_the_scene_file)
     fputs("{\"domain\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0.5]},"
           " \"surface\": {\"cells\": [32, 32]},"
           " \"obstacles\": [{\"shape\": \"terrain\", \"params\": {\"png\": \"ground.png\","
-          " \"size\": [1, 1], \"height_range\": [0, 0.05]}}]}", f);
+          " \"size\": [1, 1], \"height_range\": [0, 0.05]}}]}",
+          f);
     fclose(f);
     ck_assert_int_eq(chdir("/"), 0); /* anywhere but the scene's folder */
     ms_scene *sc = NULL;
@@ -434,8 +436,7 @@ START_TEST(a_late_drop_too_large_is_refused_at_load)
     ms_scene *sc = NULL;
     ck_assert_int_eq(ms_scene_parse(text, strlen(text), &sc), MS_OK);
     ms_sim *sim = NULL;
-    MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 1, &sim), MS_ERR_INVALID_ARGUMENT,
-                      "radius 5 m");
+    MS_ASSERT_REFUSED(ms_sim_create_from_scene(sc, 1, &sim), MS_ERR_INVALID_ARGUMENT, "radius 5 m");
     ck_assert_ptr_null(sim);
     ms_scene_destroy(sc);
 }

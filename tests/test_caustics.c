@@ -19,8 +19,8 @@
 
 static ms_caustics_desc caustics_desc(int n, float lx, float ly)
 {
-    ms_caustics_desc d = {.pool = {0, 0, 1, 1}, .floor_z = 0, .ior = 1.333f,
-                          .intensity = 1, .resolution = n};
+    ms_caustics_desc d = {
+        .pool = {0, 0, 1, 1}, .floor_z = 0, .ior = 1.333f, .intensity = 1, .resolution = n};
     double l = sqrt((double)lx * lx + (double)ly * ly + 1);
     d.light_dir[0] = (float)(lx / l);
     d.light_dir[1] = (float)(ly / l);
@@ -52,9 +52,11 @@ START_TEST(flat_water_lights_the_floor_evenly)
     d = caustics_desc(n, 0.3f, 0.2f);
     ck_assert_int_eq(ms_caustics_trace(&c, &d, h, &g), MS_OK);
     /* refracted: tan t = sin(i)/n / cos t; shift = depth * tan t, per axis */
-    double sin_i = sqrt(0.13 / 1.13), sin_t = sin_i / 1.333, tan_t = sin_t / sqrt(1 - sin_t * sin_t);
+    double sin_i = sqrt(0.13 / 1.13), sin_t = sin_i / 1.333,
+           tan_t = sin_t / sqrt(1 - sin_t * sin_t);
     double shift = 0.25 * tan_t; /* m, along (0.3, 0.2) / |.| */
-    int lost_x = (int)ceil(shift * 0.3 / sqrt(0.13) * n) + 2, lost_y = (int)ceil(shift * 0.2 / sqrt(0.13) * n) + 2;
+    int lost_x = (int)ceil(shift * 0.3 / sqrt(0.13) * n) + 2,
+        lost_y = (int)ceil(shift * 0.2 / sqrt(0.13) * n) + 2;
     for (int j = lost_y; j < n - 2; ++j)
         for (int i = lost_x; i < n - 2; ++i)
             ck_assert_msg(fabsf(c.map[j * n + i] - 1) < 1e-4f, "texel (%d, %d): %g", i, j,
@@ -93,8 +95,8 @@ static void lens(float depth, float R, float rho, double *peak, double *mean, do
     for (int i = 0; i < n * n; ++i)
         *peak = MS_MAX(*peak, c.map[i]);
     *mean = map_mean(c.map, n);
-    *centre = 0.25 * (c.map[63 * n + 63] + c.map[63 * n + 64] + c.map[64 * n + 63] +
-                      c.map[64 * n + 64]);
+    *centre =
+        0.25 * (c.map[63 * n + 63] + c.map[63 * n + 64] + c.map[64 * n + 63] + c.map[64 * n + 64]);
     ms_caustics_free(&c);
     free(h);
 }

@@ -21,8 +21,12 @@
 
 static ms_caustics_desc walls_desc(float lx, float ly)
 {
-    ms_caustics_desc d = {.pool = {0, 0, 1, 1}, .floor_z = 0, .ior = 1.333f,
-                          .intensity = 1, .resolution = RES, .depth = DEPTH};
+    ms_caustics_desc d = {.pool = {0, 0, 1, 1},
+                          .floor_z = 0,
+                          .ior = 1.333f,
+                          .intensity = 1,
+                          .resolution = RES,
+                          .depth = DEPTH};
     const double l = sqrt((double)lx * lx + (double)ly * ly + 1);
     d.light_dir[0] = (float)(lx / l);
     d.light_dir[1] = (float)(ly / l);
@@ -56,13 +60,12 @@ static double total_light(const ms_caustics *c, const ms_caustics_desc *d)
     for (int i = 0; i < c->n * c->n; ++i)
         floor += c->map[i];
     const double floor_texel = (d->pool[2] / c->n) * (d->pool[3] / c->n);
-    const double wall_texel[4] = {d->pool[3] / c->n * d->depth / c->wall_rows,
-                                  d->pool[3] / c->n * d->depth / c->wall_rows,
-                                  d->pool[2] / c->n * d->depth / c->wall_rows,
-                                  d->pool[2] / c->n * d->depth / c->wall_rows};
+    const double wall_texel[4] = {
+        d->pool[3] / c->n * d->depth / c->wall_rows, d->pool[3] / c->n * d->depth / c->wall_rows,
+        d->pool[2] / c->n * d->depth / c->wall_rows, d->pool[2] / c->n * d->depth / c->wall_rows};
     for (int s = 0; s < 4; ++s)
-        walls += strip_mean(c, s, 0, c->n, 0, c->wall_rows) * c->n * c->wall_rows *
-                 wall_texel[s] / floor_texel;
+        walls += strip_mean(c, s, 0, c->n, 0, c->wall_rows) * c->n * c->wall_rows * wall_texel[s] /
+                 floor_texel;
     return floor + walls;
 }
 

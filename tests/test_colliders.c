@@ -114,25 +114,30 @@ static void obstacle_at_20_m_s(ms_pressure law)
             int moved = 0, checked = 0;
             for (int i = 0; i < n; ++i) {
                 float dy = p0[3 * i + 1] - y0, dz = p0[3 * i + 2] - z0;
-                if (!(dy * dy + dz * dz < R * R && p0[3 * i] > 0.1f + R &&
-                      p0[3 * i] < x_stop - R))
+                if (!(dy * dy + dz * dz < R * R && p0[3 * i] > 0.1f + R && p0[3 * i] < x_stop - R))
                     continue;
                 float ex = p[3 * i] - p0[3 * i], ey = p[3 * i + 1] - p0[3 * i + 1],
                       ez = p[3 * i + 2] - p0[3 * i + 2];
                 moved += ex * ex + ey * ey + ez * ez > R * R;
                 ++checked;
             }
-            ck_assert_msg(moved >= 0.9 * checked, "only %d of the %d particles in its path "
-                          "moved out of its way", moved, checked);
+            ck_assert_msg(moved >= 0.9 * checked,
+                          "only %d of the %d particles in its path "
+                          "moved out of its way",
+                          moved, checked);
         } else if (e_stop > 0.0) {
-            ck_assert_msg(e <= 1.02 * e_stop, "frame %d: mechanical energy %g J rose above "
-                          "%g J at the stop", f, e, e_stop);
+            ck_assert_msg(e <= 1.02 * e_stop,
+                          "frame %d: mechanical energy %g J rose above "
+                          "%g J at the stop",
+                          f, e, e_stop);
         }
     }
     ck_assert_msg(e_stop > 0.0, "the ball never stopped");
     ck_assert_int_eq(ms_volume_count(v), n);
-    ck_assert_msg(px_max >= bound, "liquid momentum peaked at %g kg m/s, under the added "
-                  "mass bound %g", px_max, bound);
+    ck_assert_msg(px_max >= bound,
+                  "liquid momentum peaked at %g kg m/s, under the added "
+                  "mass bound %g",
+                  px_max, bound);
     ck_assert_msg(vmax < 80.0f, "a particle reached %g m/s", vmax);
     free(p0);
     free(p);
@@ -293,9 +298,9 @@ static int in_turned_glass(const ms_volume *v, const ms_shape *glass)
     /* R^T r by the conjugate quaternion: r' = r + 2 u x (u x r - w r)... in
      * matrix form, R from q, then its transpose */
     const float w = q[0], x = q[1], y = q[2], z = q[3];
-    const float R[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
-                        2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-                        2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)};
+    const float R[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
+                        2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
+                        2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
     for (int i = 0; i < n; ++i) {
         float r[3] = {p[3 * i] - pos[0], p[3 * i + 1] - pos[1], p[3 * i + 2] - pos[2]}, l[3];
         for (int k = 0; k < 3; ++k)

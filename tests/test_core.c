@@ -61,8 +61,7 @@ START_TEST(checks_name_value_and_bound)
 {
     ck_assert_int_eq(ms_check_positive("surface", "dx", 0.0, "m"), MS_ERR_INVALID_ARGUMENT);
     ck_assert_str_eq(ms_last_error(), "surface: dx 0 m must be finite and > 0");
-    ck_assert_int_eq(ms_check_range("surface", "damping", 1.5, 0, 1, ""),
-                     MS_ERR_INVALID_ARGUMENT);
+    ck_assert_int_eq(ms_check_range("surface", "damping", 1.5, 0, 1, ""), MS_ERR_INVALID_ARGUMENT);
     ck_assert_str_eq(ms_last_error(), "surface: damping 1.5 is outside [0, 1]");
     ck_assert_int_eq(ms_check_int_range("surface", "nx", 1, 2, 16384), MS_ERR_INVALID_ARGUMENT);
     ck_assert_str_eq(ms_last_error(), "surface: nx 1 is outside [2, 16384]");
@@ -136,14 +135,14 @@ END_TEST
 START_TEST(closest_name_is_within_the_edit_bound)
 {
     static const char *const names[] = {"rain", "boat", "floaters", "wave_speed", "nx", NULL};
-    ck_assert_str_eq(ms_closest_name("rian", names), "rain");      /* transposition: 1 */
-    ck_assert_str_eq(ms_closest_name("bot", names), "boat");       /* deletion: 1 */
+    ck_assert_str_eq(ms_closest_name("rian", names), "rain");        /* transposition: 1 */
+    ck_assert_str_eq(ms_closest_name("bot", names), "boat");         /* deletion: 1 */
     ck_assert_str_eq(ms_closest_name("flaoter", names), "floaters"); /* 2 */
     ck_assert_str_eq(ms_closest_name("wavespeed", names), "wave_speed");
     ck_assert_str_eq(ms_closest_name("ny", names), "nx");
-    ck_assert_ptr_null(ms_closest_name("ab", names));   /* 2 edits from "nx": too far for 2 */
+    ck_assert_ptr_null(ms_closest_name("ab", names));      /* 2 edits from "nx": too far for 2 */
     ck_assert_ptr_null(ms_closest_name("flotsam", names)); /* 4 edits from "floaters" */
-    ck_assert_ptr_null(ms_closest_name("rain", names)); /* a known name needs no guess */
+    ck_assert_ptr_null(ms_closest_name("rain", names));    /* a known name needs no guess */
     ck_assert_ptr_null(ms_closest_name("", names));
     ck_assert_ptr_null(ms_closest_name(NULL, names));
     char longname[200];

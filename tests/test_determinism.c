@@ -14,7 +14,7 @@
 #include "support.h"
 
 #define POOL_DOMAIN "\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]}"
-#define POOL_VOLUME                                                                           \
+#define POOL_VOLUME                                                                        \
     "\"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.4, " \
     "0.12]}], \"field\": [16, 16]}"
 #define POOL_SURFACE "\"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.9}"
@@ -22,26 +22,31 @@
 /* Every effect at once, for the determinism test: obstacles (one moving),
  * a container on a path, rain, a boat, drops, floaters, the pointer, both
  * couplings. */
-#define EE_HEAD                                                                           \
-    "{\"seed\": 3, " POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE ","                        \
+#define EE_HEAD                                                         \
+    "{\"seed\": 3, " POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "," \
     " \"coupling\": {\"surface_from_volume\": 0.1, \"volume_from_surface\": 0.3},"
-#define EE_OBSTACLES                                                                      \
-    " \"obstacles\": ["                                                                     \
-    "   {\"shape\": \"sphere\", \"params\": {\"radius\": 0.04},"                              \
-    "    \"path\": {\"points\": [[0.1, 0.1, 0.1], [0.3, 0.3, 0.1]], \"speed\": 0.2, \"loop\": true}}," \
-    "   {\"shape\": \"box\", \"params\": {\"size\": [0.05, 0.05, 0.3]}, \"position\": [0.3, 0.1, 0.15]}],"
-#define EE_EFFECTS                                                                        \
-    " \"effects\": {"                                                                       \
-    "   \"rain\": {\"rate\": 60, \"radius\": 0.01, \"amplitude\": -0.002},"                     \
-    "   \"boat\": {\"path\": {\"points\": [[0.1, 0.3], [0.3, 0.3]], \"speed\": 0.3, \"loop\": true}," \
-    "              \"radius\": 0.02, \"depth\": 0.005},"                                     \
-    "   \"drops\": [{\"at\": [0.2, 0.2], \"time\": 0.05}, {\"at\": [0.1, 0.25], \"time\": 0.5}],"  \
-    "   \"floaters\": {\"count\": 5},"                                                      \
-    "   \"drag\": {\"path\": {\"points\": [[0.1, 0.2], [0.3, 0.2]], \"speed\": 0.3, \"loop\": true}," \
+#define EE_OBSTACLES                                                                               \
+    " \"obstacles\": ["                                                                            \
+    "   {\"shape\": \"sphere\", \"params\": {\"radius\": 0.04},"                                   \
+    "    \"path\": {\"points\": [[0.1, 0.1, 0.1], [0.3, 0.3, 0.1]], \"speed\": 0.2, \"loop\": "    \
+    "true}},"                                                                                      \
+    "   {\"shape\": \"box\", \"params\": {\"size\": [0.05, 0.05, 0.3]}, \"position\": [0.3, 0.1, " \
+    "0.15]}],"
+#define EE_EFFECTS                                                                                \
+    " \"effects\": {"                                                                             \
+    "   \"rain\": {\"rate\": 60, \"radius\": 0.01, \"amplitude\": -0.002},"                       \
+    "   \"boat\": {\"path\": {\"points\": [[0.1, 0.3], [0.3, 0.3]], \"speed\": 0.3, \"loop\": "   \
+    "true},"                                                                                      \
+    "              \"radius\": 0.02, \"depth\": 0.005},"                                          \
+    "   \"drops\": [{\"at\": [0.2, 0.2], \"time\": 0.05}, {\"at\": [0.1, 0.25], \"time\": 0.5}]," \
+    "   \"floaters\": {\"count\": 5},"                                                            \
+    "   \"drag\": {\"path\": {\"points\": [[0.1, 0.2], [0.3, 0.2]], \"speed\": 0.3, \"loop\": "   \
+    "true},"                                                                                      \
     "             \"radius\": 0.08, \"strength\": 5}"
-#define EE_CONTAINER                                                                      \
-    ",  \"container\": {\"shape\": \"box\", \"params\": {\"size\": [0.04, 0.04, 0.3]},"        \
-    "                   \"path\": {\"points\": [[0.05, 0.35, 0.15], [0.35, 0.35, 0.15]], \"speed\": 0.1}}"
+#define EE_CONTAINER                                                                       \
+    ",  \"container\": {\"shape\": \"box\", \"params\": {\"size\": [0.04, 0.04, 0.3]},"    \
+    "                   \"path\": {\"points\": [[0.05, 0.35, 0.15], [0.35, 0.35, 0.15]], " \
+    "\"speed\": 0.1}}"
 
 static const char *const every_effect = EE_HEAD EE_OBSTACLES EE_EFFECTS EE_CONTAINER " }}";
 
@@ -196,8 +201,8 @@ END_TEST
  * core: still the same bytes as one. */
 START_TEST(volume_only_on_two_threads_gives_the_same_bytes)
 {
-    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME
-                         ", \"effects\": {\"floaters\": {\"count\": 4}}}");
+    ms_scene *sc =
+        scene("{" POOL_DOMAIN ", " POOL_VOLUME ", \"effects\": {\"floaters\": {\"count\": 4}}}");
     ms_sim *one = sim_of(sc, 1), *two = sim_of(sc, 2);
     for (int f = 0; f < 60; ++f) {
         step(one, 1.0f / 60);

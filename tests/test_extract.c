@@ -126,7 +126,8 @@ static diff compare_with_eq16(ms_volume *v)
     diff r = {0};
     for (int j = 0; j < NY; ++j)
         for (int i = 0; i < NX; ++i) {
-            const double px = d.domain_min[0] + (i + 0.5) * dx, py = d.domain_min[1] + (j + 0.5) * dy;
+            const double px = d.domain_min[0] + (i + 0.5) * dx,
+                         py = d.domain_min[1] + (j + 0.5) * dy;
             const double ref = column_truth(v, pos, n, px, py, cz, ca);
             const double ext = field[j * NX + i];
             if (fabs(ext - ref) > r.worst) {

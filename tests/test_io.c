@@ -62,10 +62,10 @@ static ms_writer_layout test_layout(unsigned fields)
     ms_writer_layout l = {0};
     l.fields = fields;
     for (int i = 0; i < 2; ++i)
-        l.grid[i] = (ms_grid){.nx = 37, .ny = 23, .dx = 0.01f, .dy = 0.02f,
-                              .origin = {-0.185f, 0.5f}};
-    l.grid[MS_IO_VOLUME] = (ms_grid){.nx = 9, .ny = 6, .dx = 0.04f, .dy = 0.08f,
-                                     .origin = {-0.18f, 0.48f}};
+        l.grid[i] =
+            (ms_grid){.nx = 37, .ny = 23, .dx = 0.01f, .dy = 0.02f, .origin = {-0.185f, 0.5f}};
+    l.grid[MS_IO_VOLUME] =
+        (ms_grid){.nx = 9, .ny = 6, .dx = 0.04f, .dy = 0.08f, .origin = {-0.18f, 0.48f}};
     l.scene_text = "{\"name\": \"test scene\", \"frame_dt\": 0.02}";
     l.scene_name = "test scene";
     l.frame_dt = 0.02;
@@ -103,8 +103,8 @@ static void frame_fill(frame_buf *b, const ms_writer_layout *l, long k)
         for (size_t i = 0; i < n; ++i) {
             uint32_t bits = mix((uint32_t)(k * 7919 + s * 104729 + (long)i));
             if (i % 2 == 0) {
-                b->field[s][i] = 0.01f * sinf(0.3f * (float)(i % (size_t)g->nx) + 0.1f * (float)k) +
-                                 0.3f;
+                b->field[s][i] =
+                    0.01f * sinf(0.3f * (float)(i % (size_t)g->nx) + 0.1f * (float)k) + 0.3f;
             } else {
                 memcpy(&b->field[s][i], &bits, 4);
             }
@@ -986,7 +986,8 @@ START_TEST(writer_refuses_bad_layouts_and_frames)
     MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "output_every");
     l = test_layout(MS_FIELD_COMBINED);
     l.deflate = 10;
-    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "deflate level 10");
+    MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT,
+                      "deflate level 10");
     l.deflate = -1;
     MS_ASSERT_REFUSED(ms_writer_open_layout(p, &l, &w), MS_ERR_INVALID_ARGUMENT, "0 .. 9");
     l = test_layout(MS_FIELD_COMBINED);
@@ -1140,7 +1141,7 @@ START_TEST(preview_has_north_up_and_the_water_ramp)
     const unsigned char *top = rgb, *bottom = rgb + (NY - 1) * NX * 3;
     ck_assert_int_eq(top[0], 242); /* foam 0.95 * 255 */
     ck_assert_int_eq(top[2], 255);
-    ck_assert_int_eq(bottom[0], 5); /* navy 0.02 * 255 */
+    ck_assert_int_eq(bottom[0], 5);  /* navy 0.02 * 255 */
     ck_assert_int_eq(bottom[2], 71); /* 0.28 * 255 */
     /* every pixel of a row equal */
     for (int x = 1; x < NX; ++x)
@@ -1240,8 +1241,7 @@ START_TEST(preview_refuses_bad_arguments)
                       "sun_elevation");
     d = ms_preview_desc_default();
     d.height_min = 1;
-    MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT,
-                      "height_min");
+    MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT, "height_min");
     d = ms_preview_desc_default();
     d.dx = NAN;
     MS_ASSERT_REFUSED(ms_field_shade(h, 2, 2, &d, rgb, 64), MS_ERR_INVALID_ARGUMENT, "dx");

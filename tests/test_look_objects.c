@@ -14,10 +14,10 @@
 #include "support.h"
 #include "support_render.h"
 
-#define REQUIRE_GL()                                                                   \
-    do {                                                                               \
-        if (!MS_HAVE_GL)                                                               \
-            MS_SKIP("built without OSMesa and EGL: nothing can draw");                 \
+#define REQUIRE_GL()                                                   \
+    do {                                                               \
+        if (!MS_HAVE_GL)                                               \
+            MS_SKIP("built without OSMesa and EGL: nothing can draw"); \
     } while (0)
 
 #define N 64  /* field cells per side */
@@ -59,9 +59,13 @@ static unsigned char *picture(const ms_renderer_desc *d, const ms_scene *sc, con
     ms_status st = ms_renderer_create_desc(d, &r);
     ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
     float *h = field(N, d->water_level - d->pool_min[2]);
-    ms_grid g = {N, N, (d->pool_max[0] - d->pool_min[0]) / N, (d->pool_max[1] - d->pool_min[1]) / N,
+    ms_grid g = {N,
+                 N,
+                 (d->pool_max[0] - d->pool_min[0]) / N,
+                 (d->pool_max[1] - d->pool_min[1]) / N,
                  {d->pool_min[0], d->pool_min[1]}};
-    st = sc ? ms_renderer_draw_scene_field(r, sc, h, &g, 0.0) : ms_renderer_draw_field(r, h, &g, 0.0);
+    st = sc ? ms_renderer_draw_scene_field(r, sc, h, &g, 0.0)
+            : ms_renderer_draw_field(r, h, &g, 0.0);
     ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
     ms_test_dump_png(r, name);
     unsigned char *copy = malloc((size_t)W * W * 4);
@@ -104,23 +108,26 @@ static int project(const ms_renderer_desc *d, const float p[3], double *col, dou
 START_TEST(an_obstacle_under_the_water_is_seen_refracted)
 {
     REQUIRE_GL();
-    ms_scene *sc = parse_ok("{\"domain\": {\"min\": [0, 0, 0], \"max\": [1, 1, 1]},"
-                            " \"surface\": {\"cells\": [64, 64], \"level\": 0.9},"
-                            " \"obstacles\": [{\"shape\": \"sphere\", \"params\": {\"radius\": 0.15},"
-                            "   \"position\": [0.5, 0.5, 0.2]}]}");
+    ms_scene *sc =
+        parse_ok("{\"domain\": {\"min\": [0, 0, 0], \"max\": [1, 1, 1]},"
+                 " \"surface\": {\"cells\": [64, 64], \"level\": 0.9},"
+                 " \"obstacles\": [{\"shape\": \"sphere\", \"params\": {\"radius\": 0.15},"
+                 "   \"position\": [0.5, 0.5, 0.2]}]}");
     const float R = 0.15f, zc = 0.2f, H = 0.3f;
-    ms_renderer_desc probe = camera_desc(sc, (float[3]){0.5f, 0.5f, 2}, (float[3]){0.5f, 0.5f, 0},
-                                         60);
+    ms_renderer_desc probe =
+        camera_desc(sc, (float[3]){0.5f, 0.5f, 2}, (float[3]){0.5f, 0.5f, 0}, 60);
     const float L = probe.water_level;
     ck_assert_float_eq_tol(L, 0.9f, 1e-6f);
-    ms_renderer_desc d = camera_desc(sc, (float[3]){0.5f, 0.5f, L + H},
-                                     (float[3]){0.5f, 0.5f, L}, 60);
+    ms_renderer_desc d =
+        camera_desc(sc, (float[3]){0.5f, 0.5f, L + H}, (float[3]){0.5f, 0.5f, L}, 60);
     unsigned char *plain = picture(&d, NULL, "under_plain");
     unsigned char *with = picture(&d, sc, "under_sphere");
     /* the sphere's centre: changed (the pool's floor was there) */
     const double centre = window_diff(with, plain, W / 2, W / 2, 2);
-    ck_assert_msg(centre > 30, "the sphere under the water changes its centre by %.1f only "
-                               "(hidden by the surface?)", centre);
+    ck_assert_msg(centre > 30,
+                  "the sphere under the water changes its centre by %.1f only "
+                  "(hidden by the surface?)",
+                  centre);
     /* far from it: the same picture */
     const double away = window_diff(with, plain, W / 8, W / 8, 4);
     ck_assert_msg(away < 3, "the pool's corner changed by %.1f", away);
@@ -133,10 +140,12 @@ START_TEST(an_obstacle_under_the_water_is_seen_refracted)
     /* seen without water the sphere's outline is R/(H + D) wide (D its
      * centre's depth), through the water R/(H + D/n) (paraxial Snell) */
     const double t = tan(30.0 * PI / 180.0), n = 1.333, D = L - zc;
-    const double dry = 2 * R / ((H + D) * t) * (0.5 * W), wet = 2 * R / ((H + D / n) * t) * (0.5 * W);
+    const double dry = 2 * R / ((H + D) * t) * (0.5 * W),
+                 wet = 2 * R / ((H + D / n) * t) * (0.5 * W);
     ck_assert_msg(fabs(seen - wet) < 3 && seen > dry + 2,
                   "the sphere is %.0f pixels wide; refracted it should be %.1f (%.1f without "
-                  "the water)", seen, wet, dry);
+                  "the water)",
+                  seen, wet, dry);
     free(with);
     free(plain);
     ms_scene_destroy(sc);
@@ -148,14 +157,15 @@ END_TEST
 START_TEST(an_obstacle_above_the_water_is_seen_in_its_reflection)
 {
     REQUIRE_GL();
-    ms_scene *sc = parse_ok("{\"surface\": {\"cells\": [64, 64], \"level\": 0.25},"
-                            " \"obstacles\": [{\"shape\": \"box\", \"params\": {\"size\": [0.4, 0.1, 0.8]},"
-                            "   \"position\": [0.5, 0.85, 0.4]}]}");
-    ms_renderer_desc probe = camera_desc(sc, (float[3]){0.5f, 0.5f, 1}, (float[3]){0.5f, 0.5f, 0},
-                                         45);
+    ms_scene *sc =
+        parse_ok("{\"surface\": {\"cells\": [64, 64], \"level\": 0.25},"
+                 " \"obstacles\": [{\"shape\": \"box\", \"params\": {\"size\": [0.4, 0.1, 0.8]},"
+                 "   \"position\": [0.5, 0.85, 0.4]}]}");
+    ms_renderer_desc probe =
+        camera_desc(sc, (float[3]){0.5f, 0.5f, 1}, (float[3]){0.5f, 0.5f, 0}, 45);
     const float L = probe.water_level;
-    ms_renderer_desc d = camera_desc(sc, (float[3]){0.5f, -0.3f, L + 0.45f},
-                                     (float[3]){0.5f, 0.55f, L}, 50);
+    ms_renderer_desc d =
+        camera_desc(sc, (float[3]){0.5f, -0.3f, L + 0.45f}, (float[3]){0.5f, 0.55f, L}, 50);
     d.shader = "oil"; /* reflection only: nothing under the water to confuse it */
     unsigned char *plain = picture(&d, NULL, "above_plain");
     unsigned char *with = picture(&d, sc, "above_box");
@@ -166,8 +176,10 @@ START_TEST(an_obstacle_above_the_water_is_seen_in_its_reflection)
     const int mx = (int)lround(mc), my = (int)lround(mr);
     ck_assert_msg(my > fr + 8 && my < W - 4, "the mirror image (row %d) is not below the slab", my);
     const double reflected = window_diff(with, plain, mx, my, 2);
-    ck_assert_msg(reflected > 12, "the water in front of the slab changed by %.1f only "
-                                  "(no reflection?)", reflected);
+    ck_assert_msg(reflected > 12,
+                  "the water in front of the slab changed by %.1f only "
+                  "(no reflection?)",
+                  reflected);
     /* beside the mirror image (its width is 0.4 m: 0.35 m to the side),
      * the same water */
     const float side[3] = {0.15f, 0.8f, L - 0.15f};
@@ -188,16 +200,17 @@ END_TEST
 START_TEST(a_moving_obstacle_leaves_no_trace_in_the_environment)
 {
     REQUIRE_GL();
-    ms_scene *sc = parse_ok("{\"surface\": {\"cells\": [64, 64], \"level\": 0.28},"
-                            " \"obstacles\": [{\"shape\": \"sphere\", \"params\": {\"radius\": 0.08},"
-                            "   \"path\": {\"points\": [[0.3, 0.3, 0.1], [0.7, 0.7, 0.1]], \"speed\": 0.2}},"
-                            "  {\"shape\": \"box\", \"params\": {\"size\": [0.1, 0.1, 0.5]},"
-                            "   \"path\": {\"points\": [[0.2, 0.8, 0.25], [0.8, 0.8, 0.25]], \"speed\": 0.2}}]}");
-    ms_renderer_desc probe = camera_desc(sc, (float[3]){0.5f, 0.5f, 2}, (float[3]){0.5f, 0.5f, 0},
-                                         45);
+    ms_scene *sc = parse_ok(
+        "{\"surface\": {\"cells\": [64, 64], \"level\": 0.28},"
+        " \"obstacles\": [{\"shape\": \"sphere\", \"params\": {\"radius\": 0.08},"
+        "   \"path\": {\"points\": [[0.3, 0.3, 0.1], [0.7, 0.7, 0.1]], \"speed\": 0.2}},"
+        "  {\"shape\": \"box\", \"params\": {\"size\": [0.1, 0.1, 0.5]},"
+        "   \"path\": {\"points\": [[0.2, 0.8, 0.25], [0.8, 0.8, 0.25]], \"speed\": 0.2}}]}");
+    ms_renderer_desc probe =
+        camera_desc(sc, (float[3]){0.5f, 0.5f, 2}, (float[3]){0.5f, 0.5f, 0}, 45);
     const float L = probe.water_level;
-    ms_renderer_desc d = camera_desc(sc, (float[3]){0.5f, -0.4f, L + 0.7f},
-                                     (float[3]){0.5f, 0.5f, L}, 50);
+    ms_renderer_desc d =
+        camera_desc(sc, (float[3]){0.5f, -0.4f, L + 0.7f}, (float[3]){0.5f, 0.5f, L}, 50);
     ms_renderer *r = NULL;
     ms_status st = ms_renderer_create_desc(&d, &r);
     ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
@@ -228,7 +241,8 @@ START_TEST(a_moving_obstacle_leaves_no_trace_in_the_environment)
     ms_renderer *first = NULL;
     ck_assert_int_eq(ms_renderer_create_desc(&d, &first), MS_OK);
     ck_assert_int_eq(ms_renderer_draw_scene_field(first, sc, h, &g, times[0]), MS_OK);
-    const double moved = window_diff(ms_renderer_pixels(first, NULL, NULL), b, W / 2, W / 2, W / 2 - 1);
+    const double moved =
+        window_diff(ms_renderer_pixels(first, NULL, NULL), b, W / 2, W / 2, W / 2 - 1);
     ck_assert_msg(moved > 1, "moving the obstacles changed the picture by %.2f only", moved);
     ms_renderer_destroy(first);
     ms_renderer_destroy(fresh);

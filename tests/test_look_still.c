@@ -40,7 +40,8 @@ static const char still_pool[] =
     "   \"fill\": [{\"min\": [0, 0, 0], \"max\": [1, 1, 0.25]}], \"field\": [50, 50]},"
     " \"surface\": {\"cells\": [200, 200], \"wave_speed\": 0.2, \"damping\": 0.8},"
     " \"coupling\": {\"n_time\": 0, \"surface_from_volume\": 0.05, \"volume_from_surface\": 0.3},"
-    " \"render\": {\"width\": 256, \"height\": 256, \"shader\": \"water\", \"cubemap\": \"builtin\"}}";
+    " \"render\": {\"width\": 256, \"height\": 256, \"shader\": \"water\", \"cubemap\": "
+    "\"builtin\"}}";
 
 /* The distance (pixels) by which (x, y) lies outside the convex quad q
  * (negative inside). */
@@ -74,8 +75,8 @@ static double speckle(const unsigned char *px, const unsigned char *in)
             if (!in[y * W + x])
                 continue;
             const unsigned char *c = px + 4 * ((size_t)y * W + x);
-            const double l = 4 * luma(c) - luma(c - 4) - luma(c + 4) - luma(c - 4 * W) -
-                             luma(c + 4 * W);
+            const double l =
+                4 * luma(c) - luma(c - 4) - luma(c + 4) - luma(c - 4 * W) - luma(c + 4 * W);
             sum += fabs(l);
             n++;
         }
@@ -154,13 +155,19 @@ START_TEST(a_still_pool_after_30_s_looks_like_still_water)
     printf("still pool at 30 s: %ld pixels of water, mean |diff| %.2f, worst %d (RGB sum), %d "
            "clipped, speckle %.2f against the flat sheet's %.2f\n",
            inside, mean, worst, clipped, sa, sb);
-    ck_assert_msg(far == 0, "%d pixels of the water more than %d apart from flat water (the "
-                  "worst %d): the backdrop shows through", far, FAR_APART, worst);
-    ck_assert_msg(mean <= MEAN_APART, "the water is %.2f apart from flat water on average (at "
-                  "most %.1f)", mean, MEAN_APART);
+    ck_assert_msg(far == 0,
+                  "%d pixels of the water more than %d apart from flat water (the "
+                  "worst %d): the backdrop shows through",
+                  far, FAR_APART, worst);
+    ck_assert_msg(mean <= MEAN_APART,
+                  "the water is %.2f apart from flat water on average (at "
+                  "most %.1f)",
+                  mean, MEAN_APART);
     ck_assert_msg(clipped == 0, "%d clipped pixels in the water", clipped);
-    ck_assert_msg(sa <= SPECKLE_FACTOR * sb, "speckle: high-frequency energy %.2f, flat water "
-                  "%.2f (at most %.1f x)", sa, sb, SPECKLE_FACTOR);
+    ck_assert_msg(sa <= SPECKLE_FACTOR * sb,
+                  "speckle: high-frequency energy %.2f, flat water "
+                  "%.2f (at most %.1f x)",
+                  sa, sb, SPECKLE_FACTOR);
     free(in);
     free(flat);
     ms_renderer_destroy(a);

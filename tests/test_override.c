@@ -28,9 +28,8 @@ static ms_status parse_set(int n, const char *const *set, ms_scene **sc)
 
 START_TEST(override_sets_number_array_string_and_index)
 {
-    const char *set[] = {"volume.spacing=0.025", "surface.cells=[128,128]",
-                         "volume.pressure=tait", "obstacles[0].position=[0.25,0.75,0.1]",
-                         "duration=2"};
+    const char *set[] = {"volume.spacing=0.025", "surface.cells=[128,128]", "volume.pressure=tait",
+                         "obstacles[0].position=[0.25,0.75,0.1]", "duration=2"};
     ms_scene *sc = NULL;
     ms_status st = parse_set(5, set, &sc);
     ck_assert_msg(st == MS_OK, "%s", ms_last_error());
@@ -187,11 +186,11 @@ static int tool(const char *args, char *out, size_t size)
 START_TEST(tool_check_takes_set)
 {
     char out[8192];
-    ck_assert_int_eq(tool("check data/scenes/fig3.json --set surface.cells=[96,96]", out,
-                          sizeof out), 0);
+    ck_assert_int_eq(
+        tool("check data/scenes/fig3.json --set surface.cells=[96,96]", out, sizeof out), 0);
     ck_assert_ptr_nonnull(strstr(out, "ok"));
-    ck_assert_int_eq(tool("check --set=surface.wave_speed=-1 data/scenes/fig3.json", out,
-                          sizeof out), 2);
+    ck_assert_int_eq(
+        tool("check --set=surface.wave_speed=-1 data/scenes/fig3.json", out, sizeof out), 2);
     ck_assert_ptr_nonnull(strstr(out, "--set surface.wave_speed=-1: surface.wave_speed"));
     ck_assert_int_eq(tool("check data/scenes/fig3.json --set nonsense", out, sizeof out), 2);
     ck_assert_ptr_nonnull(strstr(out, "not KEY=VALUE"));

@@ -21,13 +21,13 @@
 static char tmp[256];
 
 static const char *const variants[][2] = {
-    {"no_entry", "-DNO_ENTRY"},     {"abi_major", "-DABI_MAJOR"},
-    {"abi_newer", "-DABI_NEWER"},   {"size_zero", "-DSIZE_ZERO"},
-    {"size_trunc", "-DSIZE_TRUNC"}, {"null_info", "-DNULL_INFO"},
-    {"bad_kind", "-DBAD_KIND"},     {"bad_name", "-DBAD_NAME"},
-    {"no_vtable", "-DNO_VTABLE"},   {"vt_trunc", "-DVT_TRUNC"},
+    {"no_entry", "-DNO_ENTRY"},       {"abi_major", "-DABI_MAJOR"},
+    {"abi_newer", "-DABI_NEWER"},     {"size_zero", "-DSIZE_ZERO"},
+    {"size_trunc", "-DSIZE_TRUNC"},   {"null_info", "-DNULL_INFO"},
+    {"bad_kind", "-DBAD_KIND"},       {"bad_name", "-DBAD_NAME"},
+    {"no_vtable", "-DNO_VTABLE"},     {"vt_trunc", "-DVT_TRUNC"},
     {"no_distance", "-DNO_DISTANCE"}, {"testball", ""},
-    {"testball_again", ""},         {"fake_sphere", "-DNAME=\\\"sphere\\\""},
+    {"testball_again", ""},           {"fake_sphere", "-DNAME=\\\"sphere\\\""},
 };
 #define N_VARIANTS (int)(sizeof variants / sizeof variants[0])
 #define N_BAD 11 /* the first N_BAD variants are refused */
@@ -287,7 +287,7 @@ START_TEST(search_path_scan_skips_bad_files_and_earlier_names_win)
         }
     }
     ck_assert_int_eq(testball, 1);
-    ck_assert_int_eq(sphere_from_tmp, 1);  /* MODESPLIT_PLUGIN_PATH wins */
+    ck_assert_int_eq(sphere_from_tmp, 1); /* MODESPLIT_PLUGIN_PATH wins */
     ck_assert_int_eq(sphere_from_build, 0);
     int shadowed = 0;
     for (int i = 0; i < ms_plugin_problem_count(); ++i)

@@ -23,10 +23,10 @@ enum { N = 4096 };
 
 typedef struct loop_ctx {
     float out[N];
-    atomic_int runs[2];       /* chunks run, per part */
-    atomic_int part1_done;    /* part 1 has finished */
-    pthread_t part1_thread;   /* who ran part 1 */
-    int wait_for_part1;       /* part 0 holds until part 1 is done */
+    atomic_int runs[2];     /* chunks run, per part */
+    atomic_int part1_done;  /* part 1 has finished */
+    pthread_t part1_thread; /* who ran part 1 */
+    int wait_for_part1;     /* part 0 holds until part 1 is done */
 } loop_ctx;
 
 static pthread_t caller;
@@ -462,8 +462,7 @@ START_TEST(a_sims_volume_loops_run_through_the_engines_tasks)
         ck_assert_int_eq(vi.threads, 2); /* the calling thread and the engine's */
         for (int f = 0; f < FRAMES; ++f) {
             if (f == FRAMES / 2) /* handed to the engine mid-run */
-                ck_assert_int_eq(ms_sim_set_tasks(late, engine_enqueue, engine_finish, &el),
-                                 MS_OK);
+                ck_assert_int_eq(ms_sim_set_tasks(late, engine_enqueue, engine_finish, &el), MS_OK);
             ck_assert_int_eq(ms_sim_step(one, 1.0f / 60), MS_OK);
             ck_assert_int_eq(ms_sim_step(two, 1.0f / 60), MS_OK);
             ck_assert_int_eq(ms_sim_step(eng, 1.0f / 60), MS_OK);
@@ -531,8 +530,8 @@ START_TEST(the_pooled_grid_sort_gives_the_bytes_of_one_thread)
             ck_assert_msg(memcmp(p0, pk, sizeof(float) * 6 * (size_t)n) == 0,
                           "volume %d frame %d: particles differ", k, f);
             ck_assert_int_eq(ms_volume_extract_height(v[k], NX, NX, hk), MS_OK);
-            ck_assert_msg(memcmp(h0, hk, sizeof h0) == 0, "volume %d frame %d: heights differ",
-                          k, f);
+            ck_assert_msg(memcmp(h0, hk, sizeof h0) == 0, "volume %d frame %d: heights differ", k,
+                          f);
         }
     }
     /* it moved, and the engine ran loops: the sort's two and the rest */

@@ -29,14 +29,14 @@
 
 /* A case that draws needs a GL context backend: in a build without OSMesa
  * and EGL it is recorded as skipped (MS_SKIP), not compiled out. */
-#define REQUIRE_GL()                                                                   \
-    do {                                                                               \
-        if (!MS_HAVE_GL)                                                               \
-            MS_SKIP("built without OSMesa and EGL: nothing can draw");                 \
+#define REQUIRE_GL()                                                   \
+    do {                                                               \
+        if (!MS_HAVE_GL)                                               \
+            MS_SKIP("built without OSMesa and EGL: nothing can draw"); \
     } while (0)
 
-#define N 64   /* field cells per side in the image tests */
-#define W 128  /* image side */
+#define N 64  /* field cells per side in the image tests */
+#define W 128 /* image side */
 
 /* ---- helpers ------------------------------------------------------------ */
 
@@ -109,8 +109,8 @@ static double box_mean_abs_diff(const unsigned char *a, const unsigned char *b, 
     return s / (3.0 * (x1 - x0) * (y1 - y0));
 }
 
-static int box_max_abs_diff(const unsigned char *a, const unsigned char *b, int x0, int y0,
-                            int x1, int y1)
+static int box_max_abs_diff(const unsigned char *a, const unsigned char *b, int x0, int y0, int x1,
+                            int y1)
 {
     int m = 0;
     for (int y = y0; y < y1; ++y)
@@ -166,7 +166,6 @@ static void remove_tmpdir(void)
     ck_assert_int_eq(system(cmd), 0);
 }
 
-
 /* ---- descs, scenes, refusals (no GL needed) ----------------------------- */
 
 START_TEST(a_scene_gives_the_desc_of_its_render_section)
@@ -212,8 +211,8 @@ START_TEST(a_scene_gives_the_desc_of_its_render_section)
     sc = NULL;
     ck_assert_int_ne(ms_scene_parse(gpu, strlen(gpu), &sc), MS_OK);
     ck_assert_ptr_null(sc);
-    ck_assert_msg(strstr(ms_last_error(), "backend") && strstr(ms_last_error(), "osmesa"),
-                  "%s", ms_last_error());
+    ck_assert_msg(strstr(ms_last_error(), "backend") && strstr(ms_last_error(), "osmesa"), "%s",
+                  ms_last_error());
 
     /* no render section: the desc still has the pool, but create refuses */
     const char *bare = "{\"surface\": {}}";
@@ -234,12 +233,12 @@ START_TEST(bad_descs_are_refused_with_the_value)
 {
     ms_renderer *r = NULL;
     ms_renderer_desc d = top_down("water");
-#define REFUSE(field_set, status, word)                                            \
-    do {                                                                           \
-        d = top_down("water");                                                     \
-        field_set;                                                                 \
-        MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), (status), (word));      \
-        ck_assert_ptr_null(r);                                                     \
+#define REFUSE(field_set, status, word)                                       \
+    do {                                                                      \
+        d = top_down("water");                                                \
+        field_set;                                                            \
+        MS_ASSERT_REFUSED(ms_renderer_create_desc(&d, &r), (status), (word)); \
+        ck_assert_ptr_null(r);                                                \
     } while (0)
     REFUSE(d.width = 0, MS_ERR_INVALID_ARGUMENT, "width 0 is outside [16, 8192]");
     REFUSE(d.height = 100000, MS_ERR_INVALID_ARGUMENT, "height 100000");
@@ -299,9 +298,9 @@ END_TEST
  * of the linear colours is the reflected share of the sky. */
 static double measured_reflectance(const ms_renderer_desc *base)
 {
-    static const unsigned char black[6][3] = {{0}}, white[6][3] = {
-        {255, 255, 255}, {255, 255, 255}, {255, 255, 255},
-        {255, 255, 255}, {255, 255, 255}, {255, 255, 255}};
+    static const unsigned char black[6][3] = {{0}},
+                               white[6][3] = {{255, 255, 255}, {255, 255, 255}, {255, 255, 255},
+                                              {255, 255, 255}, {255, 255, 255}, {255, 255, 255}};
     char dark[300], bright[300];
     snprintf(dark, sizeof dark, "%s/black", tmpdir);
     snprintf(bright, sizeof bright, "%s/white", tmpdir);
@@ -371,8 +370,10 @@ START_TEST(a_bump_changes_the_image_where_it_is_only)
     int by = (int)(-(0.7 - 0.5) / half * (W / 2) + W / 2);
     double near = box_mean_abs_diff(a, b, bx - 6, by - 6, bx + 6, by + 6);
     int most = box_max_abs_diff(a, b, bx - 6, by - 6, bx + 6, by + 6);
-    ck_assert_msg(near > 2 && most > 20, "the bump changed its pixels by %g levels on average, "
-                  "%d at most", near, most);
+    ck_assert_msg(near > 2 && most > 20,
+                  "the bump changed its pixels by %g levels on average, "
+                  "%d at most",
+                  near, most);
     /* the opposite quadrant, well away from the bump and its light */
     int far = box_max_abs_diff(a, b, W / 2 + 16, W / 2 + 16, W - 8, W - 8);
     ck_assert_msg(far <= 1, "pixels far from the bump changed by %d levels", far);
@@ -584,7 +585,7 @@ START_TEST(cubemaps_load_from_a_directory_or_a_strip)
 {
     REQUIRE_GL();
     make_tmpdir();
-    static const unsigned char colours[6][3] = {{200, 40, 40}, {40, 200, 40}, {40, 40, 200},
+    static const unsigned char colours[6][3] = {{200, 40, 40},  {40, 200, 40},  {40, 40, 200},
                                                 {200, 200, 40}, {40, 200, 200}, {200, 40, 200}};
     char dir[300], strip[300];
     snprintf(dir, sizeof dir, "%s/sky", tmpdir);
@@ -617,8 +618,8 @@ START_TEST(cubemaps_load_from_a_directory_or_a_strip)
     ck_assert_int_eq(memcmp(a, b, (size_t)W * W * 4), 0);
     const unsigned char *top = a + ((size_t)4 * W + W / 2) * 4;
     for (int c = 0; c < 3; ++c)
-        ck_assert_msg(abs((int)top[c] - colours[2][c]) <= 2, "sky pixel %d %d %d", top[0],
-                      top[1], top[2]);
+        ck_assert_msg(abs((int)top[c] - colours[2][c]) <= 2, "sky pixel %d %d %d", top[0], top[1],
+                      top[2]);
     free(a);
     free(b);
 
@@ -700,7 +701,8 @@ static const char broken_shader[] =
     "static const ms_shader_vtable vt = {\n"
     "    .size = sizeof(ms_shader_vtable), .passes = MS_SHADER_NEEDS_REFLECTION,\n"
     "    .vertex_source = \"#version 120\\nvoid main() { gl_Position = ftransform(); }\\n\",\n"
-    "    .fragment_source = \"#version 120\\nvoid main() { gl_FragColor = vec4(undeclared_thing, 1.0); }\\n\"};\n"
+    "    .fragment_source = \"#version 120\\nvoid main() { gl_FragColor = vec4(undeclared_thing, "
+    "1.0); }\\n\"};\n"
     "static const ms_plugin_info info = {.abi = MS_PLUGIN_ABI, .size = sizeof(ms_plugin_info),\n"
     "    .name = \"broken_glsl\", .version = \"1.0\", .kind = MS_PLUGIN_SHADER,\n"
     "    .description = \"a shader that does not compile\", .vtable = &vt};\n"
@@ -746,9 +748,9 @@ START_TEST(a_coarser_mesh_keeps_the_fields_normals)
                             0.002f * sinf(2.6f * (float)i + 1.3f * (float)j);
     for (int j = 0; j < N / 2; ++j)
         for (int i = 0; i < N / 2; ++i)
-            half[j * (N / 2) + i] = 0.25f * (h[2 * j * N + 2 * i] + h[2 * j * N + 2 * i + 1] +
-                                             h[(2 * j + 1) * N + 2 * i] +
-                                             h[(2 * j + 1) * N + 2 * i + 1]);
+            half[j * (N / 2) + i] =
+                0.25f * (h[2 * j * N + 2 * i] + h[2 * j * N + 2 * i + 1] +
+                         h[(2 * j + 1) * N + 2 * i] + h[(2 * j + 1) * N + 2 * i + 1]);
     ms_renderer_desc d = top_down("milk"); /* no caustics: they trace the full field */
     d.mesh_step = 2;
     ms_renderer *r = create_ok(&d);
@@ -796,8 +798,8 @@ START_TEST(a_coarser_mesh_keeps_the_fields_normals)
                   "waves of 3 cm: step %d, mesh %d", auto_step, st.mesh_nx);
     ck_assert_int_ge(auto_step, 2);
     /* the eye straight above the pool: metres per pixel at the water */
-    const double px = 2.0 * (d.eye[2] - d.water_level) * tan(0.5 * d.fov * 3.14159265358979 / 180.0) /
-                      d.height;
+    const double px =
+        2.0 * (d.eye[2] - d.water_level) * tan(0.5 * d.fov * 3.14159265358979 / 180.0) / d.height;
     const double flat_err = ms_mesh_height_error(fine, &g256, 60, scratch);
     const double auto_err = ms_mesh_height_error(fine, &g256, auto_step, scratch);
     ck_assert_msg(flat_err > MS_MESH_AUTO_ERROR_PX * px && auto_err <= MS_MESH_AUTO_ERROR_PX * px,
@@ -843,16 +845,13 @@ START_TEST(floating_discs_are_drawn_on_the_surface)
     bad.color[1] = 1.5f;
     MS_ASSERT_REFUSED(ms_renderer_set_discs(r, &bad, 1), MS_ERR_INVALID_ARGUMENT,
                       "disc 0 color[1] 1.5");
-    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, discs, -1), MS_ERR_INVALID_ARGUMENT,
-                      "discs n -1");
-    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, NULL, 1), MS_ERR_INVALID_ARGUMENT,
-                      "discs is NULL");
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, discs, -1), MS_ERR_INVALID_ARGUMENT, "discs n -1");
+    MS_ASSERT_REFUSED(ms_renderer_set_discs(r, NULL, 1), MS_ERR_INVALID_ARGUMENT, "discs is NULL");
     ms_renderer_destroy(r);
     free(plain);
     free(h);
 }
 END_TEST
-
 
 /* Mean over the window's pixels and channels of |a - b| (sRGB levels). */
 static double window_mean_abs_diff(const unsigned char *a, const unsigned char *b, int cx, int cy,
@@ -863,7 +862,8 @@ static double window_mean_abs_diff(const unsigned char *a, const unsigned char *
     for (int y = cy - half; y <= cy + half; ++y)
         for (int x = cx - half; x <= cx + half; ++x)
             for (int k = 0; k < 3; ++k, ++n)
-                sum += abs((int)a[((size_t)y * W + x) * 4 + k] - (int)b[((size_t)y * W + x) * 4 + k]);
+                sum +=
+                    abs((int)a[((size_t)y * W + x) * 4 + k] - (int)b[((size_t)y * W + x) * 4 + k]);
     return sum / n;
 }
 
@@ -908,8 +908,10 @@ START_TEST(obstacles_and_the_glass_are_drawn_with_their_shapes)
     /* through the glass's floor the pool still shows, tinted: changed,
      * less than by the opaque box */
     const double glass = window_mean_abs_diff(px, plain, gx, W / 2, half);
-    ck_assert_msg(glass > 3 && glass < box, "the glass changes its footprint by %.1f levels "
-                  "(the box by %.1f)", glass, box);
+    ck_assert_msg(glass > 3 && glass < box,
+                  "the glass changes its footprint by %.1f levels "
+                  "(the box by %.1f)",
+                  glass, box);
     /* where neither is (their paths' start at t = 0), nothing changed */
     const double away = window_mean_abs_diff(px, plain, W / 2, W / 2, half);
     ck_assert_msg(away < 1, "the pool's centre changed by %.1f levels", away);
@@ -917,8 +919,8 @@ START_TEST(obstacles_and_the_glass_are_drawn_with_their_shapes)
      * footprint shows the water again */
     st = ms_renderer_draw_scene_field(r, sc, h, &g, 0.0);
     ck_assert_msg(st == MS_OK, "%s: %s", ms_status_name(st), ms_last_error());
-    const double moved = window_mean_abs_diff(ms_renderer_pixels(r, NULL, NULL), plain, bx,
-                                              W / 2, half);
+    const double moved =
+        window_mean_abs_diff(ms_renderer_pixels(r, NULL, NULL), plain, bx, W / 2, half);
     ck_assert_msg(moved < 1, "the box left its t = 1 place changed by %.1f levels", moved);
     ms_renderer_destroy(r);
     ms_scene_destroy(sc);
@@ -1139,7 +1141,8 @@ START_TEST(a_scene_renders_and_every_shader_draws)
         free(px);
     }
     ck_assert_msg(rgb[0][2] > rgb[0][0], "water is not blue");
-    ck_assert_msg(lum[1] > lum[0] && lum[1] > lum[2] && lum[1] > lum[3], "milk is not the brightest");
+    ck_assert_msg(lum[1] > lum[0] && lum[1] > lum[2] && lum[1] > lum[3],
+                  "milk is not the brightest");
     ck_assert_msg(lum[2] < 0.1f, "oil is not dark: %g", lum[2]);
     ck_assert_msg(rgb[3][0] > rgb[3][1] && rgb[3][1] > rgb[3][2], "honey is not amber");
     free(h);
@@ -1218,9 +1221,9 @@ static double luma(const unsigned char *px, size_t i)
 }
 
 typedef struct look {
-    double clipped;    /* share of pixels with a channel at 255 */
-    double mean, sd;   /* luma, levels */
-    double rgb[3];     /* mean bytes */
+    double clipped;  /* share of pixels with a channel at 255 */
+    double mean, sd; /* luma, levels */
+    double rgb[3];   /* mean bytes */
 } look;
 
 /* The look of the middle of a top-down image (all liquid). */
@@ -1313,9 +1316,9 @@ static float *golden_field(const ms_renderer_desc *d, int n, ms_grid *g)
 }
 
 #define GOLDEN_SIDE 160
-#define MIN_RIPPLE_CHANGE 2.0 /* levels of luma: the ripples against still water */
-#define GOLDEN_MEAN_TOL 1.5   /* levels: mean |difference| over all channels */
-#define GOLDEN_FAR_TOL 24     /* levels: a channel this far off is a visible change... */
+#define MIN_RIPPLE_CHANGE 2.0  /* levels of luma: the ripples against still water */
+#define GOLDEN_MEAN_TOL 1.5    /* levels: mean |difference| over all channels */
+#define GOLDEN_FAR_TOL 24      /* levels: a channel this far off is a visible change... */
 #define GOLDEN_FAR_SHARE 0.005 /* ...allowed on at most this share of the pixels */
 
 /* Each shipped scene's render section draws the golden field (at 160 x 160,
@@ -1551,7 +1554,7 @@ START_TEST(refracted_tile_edges_are_straight_lines)
             double off = grout_line_residual(px, &lines);
             ck_assert_msg(lines >= 3, "%d grout lines found (tilted %d, step %d)", lines, tilted,
                           step);
-                    ck_assert_msg(off < 0.75,
+            ck_assert_msg(off < 0.75,
                           "a refracted grout line leaves its straight fit by %.2f pixels "
                           "(tilted %d, step %d, %d lines)",
                           off, tilted, step, lines);

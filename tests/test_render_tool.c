@@ -48,14 +48,14 @@ static result run_tool(const char *const *args)
     return r;
 }
 
-#define ASSERT_TOOL(args, code, word)                                                          \
-    do {                                                                                       \
-        result r_ = run_tool(args);                                                            \
-        ck_assert_msg(r_.status == (code), "exit %d, expected %d; stderr: %s", r_.status,       \
-                      (code), r_.err);                                                         \
-        ck_assert_msg(strstr(r_.err, (word)) != NULL, "stderr \"%s\" lacks \"%s\"", r_.err,    \
-                      (word));                                                                 \
-        free(r_.err);                                                                          \
+#define ASSERT_TOOL(args, code, word)                                                             \
+    do {                                                                                          \
+        result r_ = run_tool(args);                                                               \
+        ck_assert_msg(r_.status == (code), "exit %d, expected %d; stderr: %s", r_.status, (code), \
+                      r_.err);                                                                    \
+        ck_assert_msg(strstr(r_.err, (word)) != NULL, "stderr \"%s\" lacks \"%s\"", r_.err,       \
+                      (word));                                                                    \
+        free(r_.err);                                                                             \
     } while (0)
 
 static void png_size(const char *path, int *w, int *h)
@@ -86,9 +86,10 @@ START_TEST(render_draws_a_finished_run_again)
     snprintf(run, sizeof run, "%s/run.h5", tmp_dir);
     snprintf(dir, sizeof dir, "%s/frames", tmp_dir);
     make_run(run);
-    const char *args[] = {"render", run,        "--shader", "milk",  "--size", "64x48",
-                          "--frames", "1:2",    "--camera", "0.6,-0.8,1.2,0.6,0.45,0.1,40",
-                          "--png",  dir,        NULL};
+    const char *args[] = {
+        "render", run,        "--shader", "milk",     "--size",
+        "64x48",  "--frames", "1:2",      "--camera", "0.6,-0.8,1.2,0.6,0.45,0.1,40",
+        "--png",  dir,        NULL};
     result r = run_tool(args);
     ck_assert_msg(r.status == 0, "render failed: %s", r.err);
     free(r.err);
@@ -180,8 +181,7 @@ START_TEST(cubemap_writes_six_faces_a_renderer_loads)
     make_tmp_dir();
     char dir[300], face[320];
     snprintf(dir, sizeof dir, "%s/sky/evening", tmp_dir); /* parents made too */
-    const char *args[] = {"cubemap", "--out", dir, "--size", "32", "--sun", "0.2,0.9,-0.4",
-                          NULL};
+    const char *args[] = {"cubemap", "--out", dir, "--size", "32", "--sun", "0.2,0.9,-0.4", NULL};
     result r = run_tool(args);
     ck_assert_msg(r.status == 0, "cubemap failed: %s", r.err);
     free(r.err);
@@ -259,8 +259,8 @@ START_TEST(png_frames_encoded_off_the_render_thread_keep_their_bytes_and_order)
     snprintf(run, sizeof run, "%s/run.h5", tmp_dir);
     snprintf(all, sizeof all, "%s/all", tmp_dir);
     make_run(run);
-    const char *args[] = {"render", run, "--shader", "water", "--size", "80x60", "--png", all,
-                          NULL};
+    const char *args[] = {"render", run,     "--shader", "water", "--size",
+                          "80x60",  "--png", all,        NULL};
     result r = run_tool(args);
     ck_assert_msg(r.status == 0, "render failed: %s", r.err);
     free(r.err);
@@ -334,12 +334,12 @@ START_TEST(sigint_during_run_png_loses_no_queued_frame)
     *brace = '\0';
     FILE *f = fopen(scene, "w");
     ck_assert_ptr_nonnull(f);
-    fprintf(f, "%s, \"render\": {\"width\": 160, \"height\": 120, \"shader\": \"water\"}}\n",
-            text);
+    fprintf(f, "%s, \"render\": {\"width\": 160, \"height\": 120, \"shader\": \"water\"}}\n", text);
     fclose(f);
     free(text);
-    const char *argv[] = {ms_test_tool_path(), "run", scene, "--frames", "100000", "--out", out,
-                          "--png", dir, "--quiet", NULL};
+    const char *argv[] = {
+        ms_test_tool_path(), "run", scene, "--frames", "100000", "--out", out, "--png", dir,
+        "--quiet",           NULL};
     pid_t pid = fork();
     ck_assert_int_ge(pid, 0);
     if (pid == 0) {

@@ -211,8 +211,8 @@ static char *slurp(const char *path, size_t *len)
 /* The unbroken run, at `threads`. */
 static void unbroken(const char *out, const char *threads)
 {
-    const char *args[] = {"run", SCENE, "--frames", FRAMES_ARG, "--threads", threads,
-                          "--quiet", "--out", out, NULL};
+    const char *args[] = {"run",   SCENE,     "--frames", FRAMES_ARG, "--threads",
+                          threads, "--quiet", "--out",    out,        NULL};
     ck_assert_msg(run_tool(args) == 0, "%s", log_text);
 }
 
@@ -222,13 +222,13 @@ static void kill_and_resume(const char *threads, const char *resume_threads)
     make_tmp_dir();
     unbroken(tmp_path("full.h5"), "1");
     const char *part = tmp_path("part.h5");
-    const char *args[] = {"run", SCENE, "--frames", FRAMES_ARG, "--threads", threads,
-                          "--quiet", "--out", part, NULL};
+    const char *args[] = {"run",   SCENE,     "--frames", FRAMES_ARG, "--threads",
+                          threads, "--quiet", "--out",    part,       NULL};
     kill_at(args, part, random_frame(1, FRAMES - 4));
     long kept = frames_now(part);
     ck_assert_int_lt(kept, FRAMES);
-    const char *res[] = {"run", SCENE, "--frames", FRAMES_ARG, "--threads", resume_threads,
-                         "--resume", part, NULL};
+    const char *res[] = {"run",          SCENE,      "--frames", FRAMES_ARG, "--threads",
+                         resume_threads, "--resume", part,       NULL};
     ck_assert_msg(run_tool(res) == 0, "%s", log_text);
     ck_assert_msg(strstr(log_text, "resuming") != NULL, "%s", log_text);
     /* from the checkpoint of the last complete frame: nothing is stepped twice */
@@ -267,22 +267,22 @@ START_TEST(resume_twice_with_output_every_3)
 {
     make_tmp_dir();
     const char *full = tmp_path("full.h5");
-    const char *a1[] = {"run", SCENE, "--frames", FRAMES_ARG, "--set", "output.every=3",
-                        "--quiet", "--out", full, NULL};
+    const char *a1[] = {"run",     SCENE,   "--frames", FRAMES_ARG, "--set", "output.every=3",
+                        "--quiet", "--out", full,       NULL};
     ck_assert_msg(run_tool(a1) == 0, "%s", log_text);
     const char *part = tmp_path("part.h5");
-    const char *a2[] = {"run", SCENE, "--frames", FRAMES_ARG, "--set", "output.every=3",
-                        "--threads", "2", "--quiet", "--out", part, NULL};
+    const char *a2[] = {"run",       SCENE, "--frames", FRAMES_ARG, "--set", "output.every=3",
+                        "--threads", "2",   "--quiet",  "--out",    part,    NULL};
     kill_at(a2, part, 2);
     /* the first resume is stopped after 15 frames (5 written), the second
      * goes to the end */
-    const char *r1[] = {"run", SCENE, "--frames", "15", "--set", "output.every=3", "--quiet",
-                        "--resume", part, NULL};
+    const char *r1[] = {"run",     SCENE,      "--frames", "15", "--set", "output.every=3",
+                        "--quiet", "--resume", part,       NULL};
     ck_assert_msg(run_tool(r1) == 0, "%s", log_text);
     ck_assert_int_eq(frames_now(part), 5);
     assert_same_run(full, part, 5);
-    const char *r2[] = {"run", SCENE, "--frames", FRAMES_ARG, "--set", "output.every=3",
-                        "--quiet", "--resume", part, NULL};
+    const char *r2[] = {"run",     SCENE,      "--frames", FRAMES_ARG, "--set", "output.every=3",
+                        "--quiet", "--resume", part,       NULL};
     ck_assert_msg(run_tool(r2) == 0, "%s", log_text);
     assert_same_run(full, part, 8); /* frames 0, 3, ..., 21 */
     ms_test_remove_tree(tmp_dir);
@@ -375,13 +375,13 @@ START_TEST(resume_refuses_another_scene_and_leaves_the_file)
     size_t n0, n1;
     char *before = slurp(part, &n0);
 
-    const char *other[] = {"run", SCENE, "--frames", "6", "--quiet", "--set",
-                           "surface.damping=0.5", "--resume", part, NULL};
+    const char *other[] = {
+        "run",      SCENE, "--frames", "6", "--quiet", "--set", "surface.damping=0.5",
+        "--resume", part,  NULL};
     ck_assert_int_eq(run_tool(other), 2);
-    ck_assert_msg(strstr(log_text, "another scene") && strstr(log_text, "damping"), "%s",
-                  log_text);
-    const char *scene3[] = {"run", "data/scenes/fig3.json", "--frames", "6", "--quiet",
-                            "--resume", part, NULL};
+    ck_assert_msg(strstr(log_text, "another scene") && strstr(log_text, "damping"), "%s", log_text);
+    const char *scene3[] = {
+        "run", "data/scenes/fig3.json", "--frames", "6", "--quiet", "--resume", part, NULL};
     ck_assert_int_eq(run_tool(scene3), 2);
     ck_assert_msg(strstr(log_text, "another scene") != NULL, "%s", log_text);
     const char *fewer[] = {"run", SCENE, "--frames", "1", "--quiet", "--resume", part, NULL};
@@ -395,8 +395,7 @@ START_TEST(resume_refuses_another_scene_and_leaves_the_file)
     ck_assert_msg(strstr(log_text, "none.h5") != NULL, "%s", log_text);
 
     char *after = slurp(part, &n1);
-    ck_assert_msg(n0 == n1 && memcmp(before, after, n0) == 0,
-                  "a refused resume changed the file");
+    ck_assert_msg(n0 == n1 && memcmp(before, after, n0) == 0, "a refused resume changed the file");
     free(before);
     free(after);
     ms_test_remove_tree(tmp_dir);
@@ -493,12 +492,12 @@ START_TEST(resume_from_an_older_checkpoint_or_none)
 {
     make_tmp_dir();
     const char *full = tmp_path("full.h5");
-    const char *a1[] = {"run", SCENE, "--frames", "14", "--set", "output.checkpoint_every=3",
-                        "--quiet", "--out", full, NULL};
+    const char *a1[] = {"run",     SCENE,   "--frames", "14", "--set", "output.checkpoint_every=3",
+                        "--quiet", "--out", full,       NULL};
     ck_assert_msg(run_tool(a1) == 0, "%s", log_text);
     const char *part = tmp_path("part.h5");
-    const char *a2[] = {"run", SCENE, "--frames", "8", "--set", "output.checkpoint_every=3",
-                        "--quiet", "--out", part, NULL};
+    const char *a2[] = {"run",     SCENE,   "--frames", "8", "--set", "output.checkpoint_every=3",
+                        "--quiet", "--out", part,       NULL};
     ck_assert_msg(run_tool(a2) == 0, "%s", log_text);
     ms_reader *r;
     ck_assert_int_eq(ms_reader_open(part, &r), MS_OK);
@@ -507,8 +506,8 @@ START_TEST(resume_from_an_older_checkpoint_or_none)
     ck_assert_int_eq(at[0], 6);
     ck_assert_int_eq(at[1], 3);
     ms_reader_close(r);
-    const char *r1[] = {"run", SCENE, "--frames", "10", "--set", "output.checkpoint_every=3",
-                        "--resume", part, NULL};
+    const char *r1[] = {"run",      SCENE, "--frames", "10", "--set", "output.checkpoint_every=3",
+                        "--resume", part,  NULL};
     ck_assert_msg(run_tool(r1) == 0, "%s", log_text);
     ck_assert_msg(strstr(log_text, "checkpoint of frame 6") &&
                       strstr(log_text, "replaying 1 steps"),
@@ -543,8 +542,8 @@ START_TEST(resume_from_an_older_checkpoint_or_none)
     }
     H5Fclose(f);
     ck_assert(torn);
-    const char *r2[] = {"run", SCENE, "--frames", "14", "--set", "output.checkpoint_every=3",
-                        "--resume", part, NULL};
+    const char *r2[] = {"run",      SCENE, "--frames", "14", "--set", "output.checkpoint_every=3",
+                        "--resume", part,  NULL};
     ck_assert_msg(run_tool(r2) == 0, "%s", log_text);
     ck_assert_msg(strstr(log_text, "cannot use the checkpoint of frame 9") &&
                       strstr(log_text, "checksum") &&
@@ -555,16 +554,16 @@ START_TEST(resume_from_an_older_checkpoint_or_none)
 
     /* no checkpoints: the replay */
     const char *none = tmp_path("none.h5");
-    const char *a3[] = {"run", SCENE, "--frames", "5", "--set", "output.checkpoint_every=0",
-                        "--quiet", "--out", none, NULL};
+    const char *a3[] = {"run",     SCENE,   "--frames", "5", "--set", "output.checkpoint_every=0",
+                        "--quiet", "--out", none,       NULL};
     ck_assert_msg(run_tool(a3) == 0, "%s", log_text);
     ck_assert_int_eq(ms_reader_open(none, &r), MS_OK);
     ck_assert_int_eq(ms_reader_checkpoints(r, at), 0);
     MS_ASSERT_REFUSED(ms_reader_checkpoint_size(r, 0, &(size_t){0}), MS_ERR_INVALID_ARGUMENT,
                       "does not exist");
     ms_reader_close(r);
-    const char *r3[] = {"run", SCENE, "--frames", "14", "--set", "output.checkpoint_every=0",
-                        "--resume", none, NULL};
+    const char *r3[] = {"run",      SCENE, "--frames", "14", "--set", "output.checkpoint_every=0",
+                        "--resume", none,  NULL};
     ck_assert_msg(run_tool(r3) == 0, "%s", log_text);
     ck_assert_msg(strstr(log_text, "replaying 5 steps") != NULL, "%s", log_text);
     assert_same_run(full, none, 14);
@@ -576,12 +575,14 @@ END_TEST
 START_TEST(checkpoint_every_out_of_range_is_refused)
 {
     make_tmp_dir();
-    const char *neg[] = {"run", SCENE, "--frames", "2", "--set", "output.checkpoint_every=-1",
-                         "--quiet", "--out", tmp_path("x.h5"), NULL};
+    const char *neg[] = {
+        "run",     SCENE,   "--frames",       "2", "--set", "output.checkpoint_every=-1",
+        "--quiet", "--out", tmp_path("x.h5"), NULL};
     ck_assert_int_eq(run_tool(neg), 2);
     ck_assert_msg(strstr(log_text, "checkpoint_every") != NULL, "%s", log_text);
-    const char *frac[] = {"run", SCENE, "--frames", "2", "--set", "output.checkpoint_every=1.5",
-                          "--quiet", "--out", tmp_path("x.h5"), NULL};
+    const char *frac[] = {
+        "run",     SCENE,   "--frames",       "2", "--set", "output.checkpoint_every=1.5",
+        "--quiet", "--out", tmp_path("x.h5"), NULL};
     ck_assert_int_eq(run_tool(frac), 2);
     ck_assert_msg(strstr(log_text, "checkpoint_every") != NULL, "%s", log_text);
     ms_scene *sc;
@@ -593,8 +594,7 @@ START_TEST(checkpoint_every_out_of_range_is_refused)
     ck_assert_int_eq(ms_writer_open(tmp_path("w.h5"), sim, 0, &w), MS_OK);
     MS_ASSERT_REFUSED(ms_writer_set_checkpoint_every(w, -2), MS_ERR_INVALID_ARGUMENT,
                       "checkpoint_every");
-    MS_ASSERT_REFUSED(ms_writer_set_checkpoint_every(NULL, 1), MS_ERR_INVALID_ARGUMENT,
-                      "writer");
+    MS_ASSERT_REFUSED(ms_writer_set_checkpoint_every(NULL, 1), MS_ERR_INVALID_ARGUMENT, "writer");
     ck_assert_int_eq(ms_writer_set_checkpoint_every(w, 2), MS_OK);
     float leaves[5][64 * 3];
     int nleaves = 0;
@@ -620,10 +620,8 @@ START_TEST(checkpoint_every_out_of_range_is_refused)
         ck_assert(memcmp(got, leaves[i], (size_t)nleaves * 3 * sizeof(float)) == 0);
     }
     float few[3];
-    MS_ASSERT_REFUSED(ms_reader_read_floaters(r, 0, few, 1), MS_ERR_INVALID_ARGUMENT,
-                      "capacity");
-    MS_ASSERT_REFUSED(ms_reader_read_floaters(r, 5, few, 64), MS_ERR_INVALID_ARGUMENT,
-                      "outside");
+    MS_ASSERT_REFUSED(ms_reader_read_floaters(r, 0, few, 1), MS_ERR_INVALID_ARGUMENT, "capacity");
+    MS_ASSERT_REFUSED(ms_reader_read_floaters(r, 5, few, 64), MS_ERR_INVALID_ARGUMENT, "outside");
     size_t bytes = 0;
     ck_assert_int_eq(ms_reader_checkpoint_size(r, 0, &bytes), MS_OK);
     void *blob = malloc(bytes);
@@ -640,8 +638,8 @@ START_TEST(checkpoint_every_out_of_range_is_refused)
     free(blob);
     ms_reader_close(r);
     /* a scene without floaters writes none */
-    const char *waves[] = {"run", "data/scenes/fig3.json", "--frames", "2", "--quiet", "--out",
-                           tmp_path("waves.h5"), NULL};
+    const char *waves[] = {"run",   "data/scenes/fig3.json", "--frames", "2", "--quiet",
+                           "--out", tmp_path("waves.h5"),    NULL};
     ck_assert_msg(run_tool(waves) == 0, "%s", log_text);
     ck_assert_int_eq(ms_reader_open(tmp_path("waves.h5"), &r), MS_OK);
     ck_assert_int_eq(ms_reader_floater_count(r), 0);
@@ -675,8 +673,8 @@ static void *take_snapshot(const ms_sim *sim, size_t *bytes)
     return blob;
 }
 
-static void assert_same_field(const float *a, int anx, int any, const float *b, int bnx,
-                              int bny, const char *what)
+static void assert_same_field(const float *a, int anx, int any, const float *b, int bnx, int bny,
+                              const char *what)
 {
     ck_assert_int_eq(anx, bnx);
     ck_assert_int_eq(any, bny);
@@ -837,8 +835,7 @@ START_TEST(restore_refuses_another_version_scene_size_or_blob)
     ms_sim *a = scene_sim("data/scenes/fig10.json", 1, &sc);
     ms_sim *other = scene_sim("data/scenes/fig3.json", 1, &sc3);
     const char *set[] = {"surface.damping=0.5"};
-    ck_assert_int_eq(ms_scene_load_with_overrides("data/scenes/fig10.json", 1, set, &damp),
-                     MS_OK);
+    ck_assert_int_eq(ms_scene_load_with_overrides("data/scenes/fig10.json", 1, set, &damp), MS_OK);
     ms_sim *damped = NULL;
     ck_assert_int_eq(ms_sim_create_from_scene(damp, 1, &damped), MS_OK);
     float dt = ms_scene_frame_dt(sc);
@@ -852,21 +849,17 @@ START_TEST(restore_refuses_another_version_scene_size_or_blob)
 
     MS_ASSERT_REFUSED(ms_sim_restore(NULL, blob, bytes), MS_ERR_INVALID_ARGUMENT, "sim");
     MS_ASSERT_REFUSED(ms_sim_restore(a, NULL, bytes), MS_ERR_INVALID_ARGUMENT, "buf");
-    MS_ASSERT_REFUSED(ms_sim_snapshot(a, blob, bytes - 1, NULL), MS_ERR_INVALID_ARGUMENT,
-                      "needs");
+    MS_ASSERT_REFUSED(ms_sim_snapshot(a, blob, bytes - 1, NULL), MS_ERR_INVALID_ARGUMENT, "needs");
     MS_ASSERT_REFUSED(ms_sim_snapshot_size(a, NULL), MS_ERR_INVALID_ARGUMENT, "bytes");
     /* another scene, and the same scene with one key changed */
-    MS_ASSERT_REFUSED(ms_sim_restore(other, blob, bytes), MS_ERR_INVALID_ARGUMENT,
-                      "another scene");
+    MS_ASSERT_REFUSED(ms_sim_restore(other, blob, bytes), MS_ERR_INVALID_ARGUMENT, "another scene");
     MS_ASSERT_REFUSED(ms_sim_restore(damped, blob, bytes), MS_ERR_INVALID_ARGUMENT,
                       "another scene");
     /* cut, padded, not a snapshot, corrupt */
     MS_ASSERT_REFUSED(ms_sim_restore(other, blob, bytes - 8), MS_ERR_INVALID_ARGUMENT, "cut");
-    MS_ASSERT_REFUSED(ms_sim_restore(other, blob, 10), MS_ERR_INVALID_ARGUMENT,
-                      "not a snapshot");
+    MS_ASSERT_REFUSED(ms_sim_restore(other, blob, 10), MS_ERR_INVALID_ARGUMENT, "not a snapshot");
     memset(bad, 'x', bytes);
-    MS_ASSERT_REFUSED(ms_sim_restore(other, bad, bytes), MS_ERR_INVALID_ARGUMENT,
-                      "not a snapshot");
+    MS_ASSERT_REFUSED(ms_sim_restore(other, bad, bytes), MS_ERR_INVALID_ARGUMENT, "not a snapshot");
     memcpy(bad, blob, bytes);
     bad[bytes / 2] ^= 1;
     MS_ASSERT_REFUSED(ms_sim_restore(a, bad, bytes), MS_ERR_INVALID_ARGUMENT, "checksum");

@@ -231,16 +231,16 @@ START_TEST(inconsistent_sections_are_refused)
     REFUSED("{}", MS_ERR_INVALID_ARGUMENT, "neither a \"volume\" nor a \"surface\"");
     REFUSED("{\"volume\": {}, \"effects\": {\"rain\": {}}}", MS_ERR_INVALID_ARGUMENT,
             "effects.rain needs a \"surface\" section");
-    REFUSED("{\"surface\": {}, \"output\": {\"fields\": [\"particles\"]}}",
-            MS_ERR_INVALID_ARGUMENT, "\"particles\" needs a \"volume\" section");
+    REFUSED("{\"surface\": {}, \"output\": {\"fields\": [\"particles\"]}}", MS_ERR_INVALID_ARGUMENT,
+            "\"particles\" needs a \"volume\" section");
     REFUSED("{\"volume\": {}, \"output\": {\"fields\": [\"surface\"]}}", MS_ERR_INVALID_ARGUMENT,
             "\"surface\" needs a \"surface\" section");
-    REFUSED("{\"surface\": {}, \"output\": {\"fields\": [\"pressure\"]}}",
-            MS_ERR_INVALID_ARGUMENT, "not a field name");
+    REFUSED("{\"surface\": {}, \"output\": {\"fields\": [\"pressure\"]}}", MS_ERR_INVALID_ARGUMENT,
+            "not a field name");
     REFUSED("{\"surface\": {}, \"effects\": {\"boat\": {\"radius\": 0.1}}}",
             MS_ERR_INVALID_ARGUMENT, "effects.boat lacks the required key \"path\"");
-    REFUSED("{\"surface\": {}, \"obstacles\": [{\"position\": [0,0,0]}]}",
-            MS_ERR_INVALID_ARGUMENT, "obstacles[0] lacks the required key \"shape\"");
+    REFUSED("{\"surface\": {}, \"obstacles\": [{\"position\": [0,0,0]}]}", MS_ERR_INVALID_ARGUMENT,
+            "obstacles[0] lacks the required key \"shape\"");
     REFUSED("{\"surface\": {}, \"render\": {\"camera\": {\"eye\": [1,1,1], "
             "\"target\": [1,1,1]}}}",
             MS_ERR_INVALID_ARGUMENT, "equals camera.eye");
@@ -267,8 +267,8 @@ END_TEST
 START_TEST(shapes_are_checked_by_their_plugins)
 {
     ms_scene *sc = NULL;
-    REFUSED("{\"surface\": {}, \"obstacles\": [{\"shape\": \"teapot\"}]}",
-            MS_ERR_INVALID_ARGUMENT, "1:32: obstacles[0].shape \"teapot\" is not a shape plugin");
+    REFUSED("{\"surface\": {}, \"obstacles\": [{\"shape\": \"teapot\"}]}", MS_ERR_INVALID_ARGUMENT,
+            "1:32: obstacles[0].shape \"teapot\" is not a shape plugin");
     /* the registry's sentence lists what is available */
     ck_assert_ptr_nonnull(strstr(ms_last_error(), "sphere"));
     REFUSED("{\"surface\": {}, \"obstacles\": [{\"shape\": \"sphere\",\n"
@@ -347,8 +347,7 @@ START_TEST(misspelt_key_names_the_closest_allowed_one)
     REFUSED("{\"surface\": {}, \"effects\": {\"rian\": {}}}", MS_ERR_PARSE,
             "effects.rian is an unknown key \"rian\" (did you mean \"rain\"?)");
     REFUSED("{\"surface\": {\"wavespeed\": 2}}", MS_ERR_PARSE, "(did you mean \"wave_speed\"?)");
-    REFUSED("{\"surface\": {}, \"obstacels\": []}", MS_ERR_PARSE,
-            "(did you mean \"obstacles\"?)");
+    REFUSED("{\"surface\": {}, \"obstacels\": []}", MS_ERR_PARSE, "(did you mean \"obstacles\"?)");
     REFUSED("{\"surface\": {\"commnet\": \"x\"}}", MS_ERR_PARSE, "(did you mean \"comment\"?)");
     /* an enum value too */
     REFUSED("{\"surface\": {\"boundary\": \"absorbs\"}}", MS_ERR_INVALID_ARGUMENT,
@@ -363,8 +362,9 @@ END_TEST
 
 START_TEST(output_section_sets_fields_and_every)
 {
-    ms_scene *sc = parse_ok("{\"volume\": {}, \"surface\": {}, \"output\": {\"fields\": "
-                            "[\"combined\", \"surface\", \"volume\", \"particles\"], \"every\": 3}}");
+    ms_scene *sc =
+        parse_ok("{\"volume\": {}, \"surface\": {}, \"output\": {\"fields\": "
+                 "[\"combined\", \"surface\", \"volume\", \"particles\"], \"every\": 3}}");
     ck_assert_uint_eq(ms_scene_output_fields(sc),
                       MS_FIELD_COMBINED | MS_FIELD_SURFACE | MS_FIELD_VOLUME | MS_FIELD_PARTICLES);
     ck_assert_int_eq(ms_scene_output_every(sc), 3);
@@ -411,8 +411,9 @@ START_TEST(mutated_scenes_never_crash)
     static char base[65536];
     size_t n = fread(base, 1, sizeof base - 1, f);
     fclose(f);
-    static const char *const tokens[] = {"-1", "1e308", "\"x\"", "[]", "{}", "null", "true",
-                                         "0", "1e-300", "[[", "\"\\u0000\"", ",", ":"};
+    static const char *const tokens[] = {"-1",          "1e308", "\"x\"", "[]",     "{}",
+                                         "null",        "true",  "0",     "1e-300", "[[",
+                                         "\"\\u0000\"", ",",     ":"};
     ms_rng r;
     ms_rng_seed(&r, 42);
     static char buf[70000];
@@ -435,8 +436,8 @@ START_TEST(mutated_scenes_never_crash)
         }
         ms_scene *sc = NULL;
         ms_status st = ms_scene_parse(buf, len, &sc);
-        ck_assert_msg(st == MS_OK || st == MS_ERR_PARSE || st == MS_ERR_INVALID_ARGUMENT,
-                      "%s: %s", ms_status_name(st), ms_last_error());
+        ck_assert_msg(st == MS_OK || st == MS_ERR_PARSE || st == MS_ERR_INVALID_ARGUMENT, "%s: %s",
+                      ms_status_name(st), ms_last_error());
         if (st == MS_OK) {
             ++ok;
             ms_scene_destroy(sc);

@@ -167,8 +167,8 @@ START_TEST(each_shader_sets_exactly_its_own_uniforms)
                 known |= strcmp(contract[i], name) == 0;
             for (int i = 0; i < r.n; ++i)
                 known |= strcmp(r.names[i], name) == 0;
-            ck_assert_msg(known, "%s declares %s: neither the renderer's nor set by it",
-                          shaders[k], name);
+            ck_assert_msg(known, "%s declares %s: neither the renderer's nor set by it", shaders[k],
+                          name);
         }
         ms_shader_instance_destroy(&in);
     }
@@ -192,8 +192,11 @@ START_TEST(bad_parameters_name_the_key)
                       "available shaders: honey, milk, oil, water");
     MS_ASSERT_REFUSED(ms_shader_instance_create("sphere", NULL, &in), MS_ERR_PLUGIN,
                       "is a shape plugin, not a shader");
-    ck_assert_int_eq(ms_shader_instance_create("oil", "{\"color\": [0.1, 0.1, 0.1], "
-                                                      "\"shininess\": 50}", &in), MS_OK);
+    ck_assert_int_eq(ms_shader_instance_create("oil",
+                                               "{\"color\": [0.1, 0.1, 0.1], "
+                                               "\"shininess\": 50}",
+                                               &in),
+                     MS_OK);
     ms_shader_instance_destroy(&in);
 }
 END_TEST
@@ -345,8 +348,8 @@ START_TEST(each_shader_compiles_and_draws_its_liquid)
     ck_assert_msg(c[0][2] > c[0][0], "water is not blue: %g %g %g", c[0][0], c[0][1], c[0][2]);
     ck_assert_msg(lum[1] > 0.6f, "milk is not bright: %g", lum[1]);
     ck_assert_msg(lum[2] < 0.2f, "oil is not dark: %g", lum[2]);
-    ck_assert_msg(c[3][0] > c[3][1] && c[3][1] > c[3][2], "honey is not amber: %g %g %g",
-                  c[3][0], c[3][1], c[3][2]);
+    ck_assert_msg(c[3][0] > c[3][1] && c[3][1] > c[3][2], "honey is not amber: %g %g %g", c[3][0],
+                  c[3][1], c[3][2]);
     ck_assert_msg(lum[1] > lum[0] && lum[0] > lum[2], "luma milk %g, water %g, oil %g", lum[1],
                   lum[0], lum[2]);
 }

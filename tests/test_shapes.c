@@ -232,8 +232,8 @@ START_TEST(box_normals_are_continuous_across_edges)
             ck_assert_msg(worst < 0.02, "box %d offset %g: normal jumps by %g", b, e, worst);
             /* starts with the top face's normal, ends with the side's */
             ck_assert_msg(fabsf(n0[2] - 1) < 1e-3f && fabsf(n1[0] - 1) < 1e-3f,
-                          "box %d offset %g: normals (%g %g %g) .. (%g %g %g)", b, e, n0[0],
-                          n0[1], n0[2], n1[0], n1[1], n1[2]);
+                          "box %d offset %g: normals (%g %g %g) .. (%g %g %g)", b, e, n0[0], n0[1],
+                          n0[2], n1[0], n1[1], n1[2]);
         }
         ms_shape_destroy(s);
     }
@@ -323,7 +323,8 @@ START_TEST(orientation_turns_distance_normal_velocity_and_bounds)
             double cross = 0;
             if (i != j) {
                 int k = 3 - i - j;
-                double sign = ((i == 0 && j == 1) || (i == 1 && j == 2) || (i == 2 && j == 0)) ? -1 : 1;
+                double sign =
+                    ((i == 0 && j == 1) || (i == 1 && j == 2) || (i == 2 && j == 0)) ? -1 : 1;
                 cross = sign * ax[k];
             }
             R[3 * i + j] = (i == j ? c : 0) + (1 - c) * ax[i] * ax[j] + sn * cross;
@@ -343,8 +344,8 @@ START_TEST(orientation_turns_distance_normal_velocity_and_bounds)
         float d = ms_shape_distance(s, p, n), dr = ms_shape_distance(ref, l, nr);
         ck_assert_msg(fabsf(d - dr) < 2e-6f, "point %d: %g != %g", t, d, dr);
         for (int k = 0; k < 3; ++k)
-            ck_assert_float_eq_tol(n[k], R[3 * k] * nr[0] + R[3 * k + 1] * nr[1] + R[3 * k + 2] * nr[2],
-                                   2e-5f);
+            ck_assert_float_eq_tol(
+                n[k], R[3 * k] * nr[0] + R[3 * k + 1] * nr[1] + R[3 * k + 2] * nr[2], 2e-5f);
         float u[3];
         ms_shape_velocity(s, p, u);
         ck_assert_float_eq_tol(u[0], 0.1f - 3 * (p[1] - pos[1]), 1e-6f);
@@ -369,7 +370,7 @@ START_TEST(orientation_turns_distance_normal_velocity_and_bounds)
         depth[i] = 1.0f;
     ck_assert_int_eq(ms_shape_depth(tall, &g, 0.0f, depth), MS_OK);
     ck_assert_float_eq_tol(depth[5 * 10 + 5], 0.2f, 1e-4f); /* top at -0.3 + 0.1 */
-    ck_assert_float_eq(depth[0], 1.0f);                    /* beside it */
+    ck_assert_float_eq(depth[0], 1.0f);                     /* beside it */
     unsigned char mask[100] = {0};
     ck_assert_int_eq(ms_shape_footprint(tall, &g, -0.25f, mask), MS_OK);
     int cells = 0; /* 0.4 x 0.1 m at the level: 4 x 1 cells of 0.1 m */
@@ -389,7 +390,8 @@ START_TEST(orientation_turns_distance_normal_velocity_and_bounds)
     ck_assert_float_eq(gw[2], 3.0f);
     /* back to (1, 0, 0, 0) at rest: the plain translated shape again */
     ck_assert_int_eq(ms_shape_set_orientation(s, (float[4]){1, 0, 0, 0}, NULL), MS_OK);
-    ck_assert_float_eq(ms_shape_distance(s, pos, NULL), ms_shape_distance(ref, (float[3]){0, 0, 0}, NULL));
+    ck_assert_float_eq(ms_shape_distance(s, pos, NULL),
+                       ms_shape_distance(ref, (float[3]){0, 0, 0}, NULL));
     ms_shape_destroy(tall);
     ms_shape_destroy(ref);
     ms_shape_destroy(s);
@@ -399,8 +401,8 @@ END_TEST
 START_TEST(bad_parameters_name_the_key)
 {
     ms_shape *s = (ms_shape *)&s;
-    MS_ASSERT_REFUSED(ms_shape_create("sphere", "{\"radius\": -1}", &s),
-                      MS_ERR_INVALID_ARGUMENT, "radius -1 m");
+    MS_ASSERT_REFUSED(ms_shape_create("sphere", "{\"radius\": -1}", &s), MS_ERR_INVALID_ARGUMENT,
+                      "radius -1 m");
     ck_assert_ptr_null(s);
     MS_ASSERT_REFUSED(ms_shape_create("sphere", "{\"radius\": \"big\"}", &s), MS_ERR_PARSE,
                       "radius must be a number");
@@ -410,8 +412,8 @@ START_TEST(bad_parameters_name_the_key)
     MS_ASSERT_REFUSED(ms_shape_create("sphere", "[1]", &s), MS_ERR_PARSE, "JSON object");
     MS_ASSERT_REFUSED(ms_shape_create("box", "{\"size\": [1, 2]}", &s), MS_ERR_PARSE,
                       "size must be an array of 3");
-    MS_ASSERT_REFUSED(ms_shape_create("box", "{\"size\": [1, 0, 1]}", &s),
-                      MS_ERR_INVALID_ARGUMENT, "size[1] 0 m");
+    MS_ASSERT_REFUSED(ms_shape_create("box", "{\"size\": [1, 0, 1]}", &s), MS_ERR_INVALID_ARGUMENT,
+                      "size[1] 0 m");
     MS_ASSERT_REFUSED(ms_shape_create("box", "{\"size\": [1, 1, 1], \"radius\": 0.6}", &s),
                       MS_ERR_INVALID_ARGUMENT, "radius 0.6 m is outside [0, 0.5]");
     MS_ASSERT_REFUSED(ms_shape_create("box", "{\"radius\": 0.2, \"smooth\": 0.1}", &s),
@@ -465,8 +467,7 @@ START_TEST(footprints_match_analytic_areas)
     ck_assert_int_eq(ms_shape_footprint(s, &g, 0.3f, mask), MS_OK);
     for (int i = 0; i < g.nx * g.ny; ++i)
         ck_assert_int_eq(mask[i], 0);
-    MS_ASSERT_REFUSED(ms_shape_footprint(s, &g, NAN, mask), MS_ERR_INVALID_ARGUMENT,
-                      "water level");
+    MS_ASSERT_REFUSED(ms_shape_footprint(s, &g, NAN, mask), MS_ERR_INVALID_ARGUMENT, "water level");
     ms_grid bad = g;
     bad.dx = 0;
     MS_ASSERT_REFUSED(ms_shape_footprint(s, &bad, 0, mask), MS_ERR_INVALID_ARGUMENT, "grid dx");
@@ -503,8 +504,9 @@ START_TEST(depth_over_a_submerged_sphere)
                     want = fmin(0.6, z - (c[2] + sqrt(0.16 - r2)));
                     ++over;
                 }
-                ck_assert_msg(fabs(depth[j * g.nx + i] - want) < 2e-5, "mode %d cell %d %d: %g != %g",
-                              mode, i, j, depth[j * g.nx + i], want);
+                ck_assert_msg(fabs(depth[j * g.nx + i] - want) < 2e-5,
+                              "mode %d cell %d %d: %g != %g", mode, i, j, depth[j * g.nx + i],
+                              want);
             }
         ck_assert_int_gt(over, 1000);
         free(depth);
@@ -567,8 +569,8 @@ END_TEST
 /* The glass profile in (rho, z), sampled densely: brute-force distance. */
 static double glass_brute(double R, double H, double w, double f, double rho, double z)
 {
-    const double e[5][4] = {{0, 0, R, 0}, {R, 0, R, H}, {R, H, R - w, H},
-                            {R - w, H, R - w, f}, {R - w, f, 0, f}};
+    const double e[5][4] = {
+        {0, 0, R, 0}, {R, 0, R, H}, {R, H, R - w, H}, {R - w, H, R - w, f}, {R - w, f, 0, f}};
     double best = 1e30;
     for (int k = 0; k < 5; ++k)
         for (int i = 0; i <= 4000; ++i) {
@@ -599,7 +601,8 @@ START_TEST(glass_matches_closed_form)
         in_wall += d < 0 && rho > R - w && l[2] > f;
         in_cavity += rho < R - w && l[2] > f && l[2] < H;
         int ok = normal_is_gradient(s, p, n, 2e-2);
-        ck_assert_msg(ok != 0, "normal (%g %g %g) at (%g %g %g)", n[0], n[1], n[2], l[0], l[1], l[2]);
+        ck_assert_msg(ok != 0, "normal (%g %g %g) at (%g %g %g)", n[0], n[1], n[2], l[0], l[1],
+                      l[2]);
         checked += ok == 1;
     }
     ck_assert_int_gt(in_wall, 10);
@@ -665,7 +668,8 @@ END_TEST
 
 START_TEST(glass_footprint_and_depth)
 {
-    const ms_grid g = {.nx = 120, .ny = 120, .dx = 0.002f, .dy = 0.002f, .origin = {-0.12f, -0.12f}};
+    const ms_grid g = {
+        .nx = 120, .ny = 120, .dx = 0.002f, .dy = 0.002f, .origin = {-0.12f, -0.12f}};
     ms_shape *s = make("glass", "{\"radius\": 0.1, \"height\": 0.12, \"wall\": 0.03, "
                                 "\"floor\": 0.02}");
     unsigned char *mask = calloc((size_t)g.nx * g.ny, 1);
@@ -674,7 +678,8 @@ START_TEST(glass_footprint_and_depth)
     for (int i = 0; i < g.nx * g.ny; ++i)
         cells += mask[i];
     double area = PI * (0.01 - 0.0049), err = fabs(cells * 4e-6 - area);
-    ck_assert_msg(err < 2 * PI * (0.1 + 0.07) * 0.002 * 0.5, "annulus %g vs %g", cells * 4e-6, area);
+    ck_assert_msg(err < 2 * PI * (0.1 + 0.07) * 0.002 * 0.5, "annulus %g vs %g", cells * 4e-6,
+                  area);
     memset(mask, 0, (size_t)g.nx * g.ny);
     ck_assert_int_eq(ms_shape_footprint(s, &g, 0.01f, mask), MS_OK); /* the floor: a disc */
     cells = 0;
@@ -835,11 +840,11 @@ START_TEST(terrain_from_png)
         snprintf(path, sizeof path, "%s/bowl%d.png", dir, wide);
         write_png(path, 33, 33, wide, bowl);
         snprintf(json, sizeof json,
-                 "{\"png\": \"%s\", \"size\": [0.64, 0.64], \"height_range\": [-0.3, -0.1]}",
-                 path);
+                 "{\"png\": \"%s\", \"size\": [0.64, 0.64], \"height_range\": [-0.3, -0.1]}", path);
         ms_shape *s = make("terrain", json);
         /* at the samples the height is the pixel's, quantised */
-        const ms_grid g = {.nx = 33, .ny = 33, .dx = 0.02f, .dy = 0.02f, .origin = {-0.01f, -0.01f}};
+        const ms_grid g = {
+            .nx = 33, .ny = 33, .dx = 0.02f, .dy = 0.02f, .origin = {-0.01f, -0.01f}};
         float depth[33 * 33];
         for (int i = 0; i < 33 * 33; ++i)
             depth[i] = 9;
@@ -902,11 +907,15 @@ START_TEST(terrain_from_png)
                       MS_ERR_PARSE, "heights[1][1]");
     MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"heights\": [[0, 1]]}", &bad), MS_ERR_PARSE,
                       "at least 2 rows");
-    MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"heights\": [[0, 1], [0, 1]], "
-                                                 "\"height_range\": [0, 1]}", &bad),
+    MS_ASSERT_REFUSED(ms_shape_create("terrain",
+                                      "{\"heights\": [[0, 1], [0, 1]], "
+                                      "\"height_range\": [0, 1]}",
+                                      &bad),
                       MS_ERR_INVALID_ARGUMENT, "height_range");
-    MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"heights\": [[0, 1], [0, 1]], "
-                                                 "\"png\": \"a.png\"}", &bad),
+    MS_ASSERT_REFUSED(ms_shape_create("terrain",
+                                      "{\"heights\": [[0, 1], [0, 1]], "
+                                      "\"png\": \"a.png\"}",
+                                      &bad),
                       MS_ERR_INVALID_ARGUMENT, "both");
     MS_ASSERT_REFUSED(ms_shape_create("terrain", "{\"size\": [1, -1]}", &bad),
                       MS_ERR_INVALID_ARGUMENT, "size[1]");

@@ -42,7 +42,7 @@ static void steps(ms_sim *sim, int n, float dt)
 /* A small pool: 10 x 10 x 3 = 300 particles, a 16 x 16 SPH field, a
  * 64 x 64 wave grid. */
 #define POOL_DOMAIN "\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]}"
-#define POOL_VOLUME                                                                           \
+#define POOL_VOLUME                                                                        \
     "\"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.4, " \
     "0.12]}], \"field\": [16, 16]}"
 #define POOL_SURFACE "\"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.9}"
@@ -205,9 +205,10 @@ END_TEST
 START_TEST(absent_effects_cost_nothing)
 {
     ms_scene *plain = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
-    ms_scene *fx = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE ","
-                         " \"coupling\": {\"surface_from_volume\": 0.1, \"volume_from_surface\": 0.3},"
-                         " \"effects\": {\"rain\": {\"rate\": 100}, \"floaters\": {\"count\": 7}}}");
+    ms_scene *fx =
+        scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE ","
+              " \"coupling\": {\"surface_from_volume\": 0.1, \"volume_from_surface\": 0.3},"
+              " \"effects\": {\"rain\": {\"rate\": 100}, \"floaters\": {\"count\": 7}}}");
     ms_sim *a = sim_of(plain, 1), *b = sim_of(fx, 1);
     steps(a, 6, 1.0f / 60);
     steps(b, 6, 1.0f / 60);
@@ -296,7 +297,8 @@ START_TEST(upsampling_is_exact_for_linear_fields)
         /* f(x, y) = 0.3 + 0.2 x - 0.1 y on the unit square, at cell centres */
         for (int j = 0; j < sim.fny; ++j)
             for (int i = 0; i < sim.fnx; ++i)
-                f[j * sim.fnx + i] = 0.3f + 0.2f * (i + 0.5f) / sim.fnx - 0.1f * (j + 0.5f) / sim.fny;
+                f[j * sim.fnx + i] =
+                    0.3f + 0.2f * (i + 0.5f) / sim.fnx - 0.1f * (j + 0.5f) / sim.fny;
         ms_sim_upsample(&sim, f, sim.rowtmp, out);
         for (int j = 0; j < sim.sny; ++j)
             for (int i = 0; i < sim.snx; ++i) {
@@ -565,12 +567,12 @@ END_TEST
  * vary and end in a fraction (eq. 18). */
 START_TEST(split_extraction_is_the_volumes_bytes)
 {
-    ms_scene *sc = scene(
-        "{" POOL_DOMAIN ", \"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0],"
-        " \"max\": [0.2, 0.4, 0.2]}], \"field\": [16, 16], \"smooth_steps\": 3,"
-        " \"smooth_energy\": 0.5}, " POOL_SURFACE ","
-        " \"effects\": {\"drag\": {\"path\": {\"points\": [[0.05, 0.2], [0.35, 0.2]],"
-        " \"speed\": 0.5}, \"radius\": 0.1, \"strength\": 10}}}");
+    ms_scene *sc =
+        scene("{" POOL_DOMAIN ", \"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0],"
+              " \"max\": [0.2, 0.4, 0.2]}], \"field\": [16, 16], \"smooth_steps\": 3,"
+              " \"smooth_energy\": 0.5}, " POOL_SURFACE ","
+              " \"effects\": {\"drag\": {\"path\": {\"points\": [[0.05, 0.2], [0.35, 0.2]],"
+              " \"speed\": 0.5}, \"radius\": 0.1, \"strength\": 10}}}");
     ms_sim *sim = sim_of(sc, 2), *plain = sim_of(sc, 1);
     ms_volume *v = ms_sim_volume(sim);
     const int nx = 16, ny = 16, nf = nx * ny;
@@ -600,12 +602,12 @@ START_TEST(split_extraction_is_the_volumes_bytes)
                 ck_assert_int_eq(ms_extract_cell(s, &sim->work_v, nx, ny, c % nx, c / nx, &one),
                                  MS_OK);
                 ck_assert_msg(memcmp(&one, &ref[n % 2][c], sizeof one) == 0,
-                              "frame %d cell %d: alone %.9g, in the field %.9g", n, c,
-                              (double)one, (double)ref[n % 2][c]);
+                              "frame %d cell %d: alone %.9g, in the field %.9g", n, c, (double)one,
+                              (double)ref[n % 2][c]);
             }
     }
-    ck_assert_msg(smoothed >= 10 && fractions >= 10, "smoothed %d, fractional %d frames",
-                  smoothed, fractions);
+    ck_assert_msg(smoothed >= 10 && fractions >= 10, "smoothed %d, fractional %d frames", smoothed,
+                  fractions);
     ms_sim_destroy(sim);
     ms_sim_destroy(plain);
     ms_scene_destroy(sc);
@@ -665,11 +667,12 @@ END_TEST
  * do not grow (no feedback loop between the two couplings). */
 START_TEST(two_way_coupling_stays_bounded)
 {
-    ms_scene *sc = scene("{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]},"
-                         " \"volume\": {\"spacing\": 0.04, \"field\": [16, 16], \"fill\": "
-                         "[{\"min\": [0, 0, 0], \"max\": [0.2, 0.4, 0.2]}]},"
-                         " \"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.5},"
-                         " \"coupling\": {\"surface_from_volume\": 0.2, \"volume_from_surface\": 1}}");
+    ms_scene *sc =
+        scene("{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]},"
+              " \"volume\": {\"spacing\": 0.04, \"field\": [16, 16], \"fill\": "
+              "[{\"min\": [0, 0, 0], \"max\": [0.2, 0.4, 0.2]}]},"
+              " \"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.5},"
+              " \"coupling\": {\"surface_from_volume\": 0.2, \"volume_from_surface\": 1}}");
     ms_sim *sim = sim_of(sc, 2);
     double peak[3] = {0, 0, 0}; /* max |wave| in frames 0-99, 100-199, 200-299 */
     for (int f = 0; f < 300; ++f) {
@@ -716,9 +719,10 @@ static double mean_vx(const ms_sim *sim)
 /* Fig. 1: dragging the water moves it along, from the scene and by API. */
 START_TEST(dragging_moves_the_water)
 {
-    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME ","
-                         " \"effects\": {\"drag\": {\"path\": {\"points\": [[0.05, 0.2], [0.35, 0.2]],"
-                         " \"speed\": 0.5}, \"radius\": 0.1, \"strength\": 10}}}");
+    ms_scene *sc =
+        scene("{" POOL_DOMAIN ", " POOL_VOLUME ","
+              " \"effects\": {\"drag\": {\"path\": {\"points\": [[0.05, 0.2], [0.35, 0.2]],"
+              " \"speed\": 0.5}, \"radius\": 0.1, \"strength\": 10}}}");
     ms_scene *still = scene("{" POOL_DOMAIN ", " POOL_VOLUME "}");
     ms_sim *a = sim_of(sc, 1), *b = sim_of(still, 1), *c = sim_of(still, 1);
     for (int f = 0; f < 20; ++f) {
@@ -747,10 +751,11 @@ END_TEST
  * wave grid along its path; moved by API it follows the engine. */
 START_TEST(moving_obstacle_stirs_water_and_blocks_waves)
 {
-    ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE ","
-                         " \"obstacles\": [{\"shape\": \"sphere\", \"params\": {\"radius\": 0.06},"
-                         "  \"path\": {\"points\": [[0.08, 0.2, 0.1], [0.32, 0.2, 0.1]], \"speed\": 0.4}}],"
-                         " \"effects\": {\"rain\": {\"rate\": 400, \"amplitude\": 0.003}}}");
+    ms_scene *sc =
+        scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE ","
+              " \"obstacles\": [{\"shape\": \"sphere\", \"params\": {\"radius\": 0.06},"
+              "  \"path\": {\"points\": [[0.08, 0.2, 0.1], [0.32, 0.2, 0.1]], \"speed\": 0.4}}],"
+              " \"effects\": {\"rain\": {\"rate\": 400, \"amplitude\": 0.003}}}");
     ms_scene *still = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
     ms_sim *sim = sim_of(sc, 2), *ref = sim_of(still, 2);
     steps(sim, 20, 1.0f / 60);
@@ -849,9 +854,11 @@ START_TEST(turned_glass_pours_its_water)
                          " \"position\": [0.12, 0.15, 0.05]}}}");
     ms_sim *sim = sim_of(sc, 2);
     steps(sim, 20, 1.0f / 60); /* settle */
-    ms_shape *probe; /* a twin of the glass, to test where particles are */
-    ck_assert_int_eq(ms_shape_create("glass", "{\"radius\": 0.06, \"height\": 0.15, "
-                                              "\"wall\": 0.01, \"floor\": 0.01}", &probe),
+    ms_shape *probe;           /* a twin of the glass, to test where particles are */
+    ck_assert_int_eq(ms_shape_create("glass",
+                                     "{\"radius\": 0.06, \"height\": 0.15, "
+                                     "\"wall\": 0.01, \"floor\": 0.01}",
+                                     &probe),
                      MS_OK);
     ck_assert_int_eq(ms_shape_set_pose(probe, (float[3]){0.12f, 0.15f, 0.05f}, NULL), MS_OK);
     float angle = 0.0f;
@@ -891,13 +898,14 @@ END_TEST
  * twin on the wave grid turns too, and it stirs the water its way. */
 START_TEST(a_spinning_scene_paddle_turns_and_stirs)
 {
-    ms_scene *sc = scene("{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.2, 0.2, 0.1]},"
-                         " \"volume\": {\"spacing\": 0.01, \"fill\":"
-                         " [{\"min\": [0, 0, 0], \"max\": [0.2, 0.2, 0.05]}], \"field\": [20, 20]},"
-                         " \"surface\": {\"cells\": [40, 40], \"level\": 0.05},"
-                         " \"obstacles\": [{\"shape\": \"box\", \"params\": {\"size\": [0.12, 0.02, 0.2]},"
-                         " \"position\": [0.1, 0.1, 0.05], \"orientation\": [0.70710678, 0, 0, 0.70710678],"
-                         " \"spin\": [0, 0, 4]}]}");
+    ms_scene *sc =
+        scene("{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.2, 0.2, 0.1]},"
+              " \"volume\": {\"spacing\": 0.01, \"fill\":"
+              " [{\"min\": [0, 0, 0], \"max\": [0.2, 0.2, 0.05]}], \"field\": [20, 20]},"
+              " \"surface\": {\"cells\": [40, 40], \"level\": 0.05},"
+              " \"obstacles\": [{\"shape\": \"box\", \"params\": {\"size\": [0.12, 0.02, 0.2]},"
+              " \"position\": [0.1, 0.1, 0.05], \"orientation\": [0.70710678, 0, 0, 0.70710678],"
+              " \"spin\": [0, 0, 4]}]}");
     ms_sim *sim = sim_of(sc, 1);
     const int frames = 48; /* 0.4 s at 1/120 */
     steps(sim, frames, 1.0f / 120);
@@ -1059,12 +1067,14 @@ START_TEST(bad_descs_are_refused)
     MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "threads 3");
     d.threads = 2;
     d.couple_surface_from_volume = NAN;
-    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "couple_surface_from_volume");
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT,
+                      "couple_surface_from_volume");
     d.couple_surface_from_volume = 0.3f; /* above 0.25 the coupled waves grow (check-long) */
     MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "[0, 0.25]");
     d.couple_surface_from_volume = 0;
     d.couple_volume_from_surface = 2;
-    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "couple_volume_from_surface 2");
+    MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT,
+                      "couple_volume_from_surface 2");
     d.couple_volume_from_surface = 0;
     d.surface_substeps = -1;
     MS_ASSERT_REFUSED(ms_sim_create(&d, &sim), MS_ERR_INVALID_ARGUMENT, "surface_substeps");
@@ -1161,8 +1171,8 @@ START_TEST(particle_arrays_are_one_block)
     steps(sim, 2, 1.0f / 60);
     assert_one_block(sim, n0);
     /* more particles than the copy holds: it is reallocated */
-    ck_assert_int_eq(ms_volume_fill_box(vol, (float[3]){0.4f, 0.4f, 0},
-                                        (float[3]){1, 1, 0.12f}), MS_OK);
+    ck_assert_int_eq(ms_volume_fill_box(vol, (float[3]){0.4f, 0.4f, 0}, (float[3]){1, 1, 0.12f}),
+                     MS_OK);
     int n1 = ms_volume_count(vol);
     ck_assert_int_gt(n1, n0 + n0 / 8 + 64);
     steps(sim, 2, 1.0f / 60);

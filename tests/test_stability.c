@@ -129,8 +129,7 @@ static uint64_t hundredfold(void)
     ms_surface_info after = ms_surface_info_init();
     ms_surface_get_info(s, &after);
     ck_assert_int_ge(after.substeps, 20 * 100); /* sub-stepped, not unstable */
-    ck_assert_msg(ms_surface_energy(s) <= 1.02 * e0, "energy %g over %g", ms_surface_energy(s),
-                  e0);
+    ck_assert_msg(ms_surface_energy(s) <= 1.02 * e0, "energy %g over %g", ms_surface_energy(s), e0);
     uint64_t h = wave_hash(s);
     ms_surface_destroy(s);
     return h;
@@ -152,8 +151,7 @@ static uint64_t drop_every_step(void)
     for (int k = 0; k < 10000; ++k) {
         double before = ms_surface_energy(s);
         /* one cell wide, on the same cell every step */
-        ck_assert_int_eq(ms_surface_add_drop(s, 0.5f + 0.5f / n, 0.5f + 0.5f / n, 0.5f / n,
-                                             0.001f),
+        ck_assert_int_eq(ms_surface_add_drop(s, 0.5f + 0.5f / n, 0.5f + 0.5f / n, 0.5f / n, 0.001f),
                          MS_OK);
         double after = ms_surface_energy(s);
         entered += fmax(after - before, 0);
@@ -288,10 +286,10 @@ static ms_volume *sph(int law, float L, float H, float spacing, float courant)
 }
 
 typedef struct sph_check {
-    double e_max;  /* J, the bound of kinetic + potential energy above the floor */
-    int n;         /* particles that must remain */
+    double e_max;          /* J, the bound of kinetic + potential energy above the floor */
+    int n;                 /* particles that must remain */
     const ms_shape *shape; /* a collider none may be inside (NULL: only the box) */
-    float tol;     /* m, how far inside a wall or collider a particle may be */
+    float tol;             /* m, how far inside a wall or collider a particle may be */
 } sph_check;
 
 /* No NaN, none lost, none outside the box or inside the collider, energy
@@ -412,7 +410,8 @@ static uint64_t one_point(int law, int *skipped)
     const double h = 0.06, rho = N * in.particle_mass * 15 / (3.14159265358979 * h * h * h);
     const double mass = (double)N * in.particle_mass;
     sph_check c = {.e_max = potential(v) + mass * elastic(law, SOUND, rho / 1000) * 1.02,
-                   .n = N, .tol = 1e-4f};
+                   .n = N,
+                   .tol = 1e-4f};
     for (int f = 0; f < 60; ++f)
         ck_assert_int_eq(ms_volume_step(v, 1.0f / 60), MS_OK);
     uint64_t r = check_state(v, &c);
@@ -456,8 +455,8 @@ static uint64_t packed_twice(int law, int *skipped)
     ms_volume_info in = ms_volume_info_init();
     ms_volume_get_info(v, &in);
     const double mass = (double)n * in.particle_mass;
-    sph_check c = {.e_max = 1.02 * (potential(v) + mass * elastic(law, SOUND, 2.0)), .n = n,
-                   .tol = 1e-4f};
+    sph_check c = {
+        .e_max = 1.02 * (potential(v) + mass * elastic(law, SOUND, 2.0)), .n = n, .tol = 1e-4f};
     /* the released energy is dissipated: kinetic energy after half a
      * second under a tenth of the first frame's (measured 0.3-4.5 %) */
     const int frames = 30;
@@ -469,8 +468,8 @@ static uint64_t packed_twice(int law, int *skipped)
             ke_first = ms_volume_kinetic_energy(v);
     }
     ck_assert_msg(ms_volume_kinetic_energy(v) < 0.1 * ke_first,
-                  "%s: kinetic energy %g J after %d frames, %g J after the first",
-                  law_name[law], ms_volume_kinetic_energy(v), frames, ke_first);
+                  "%s: kinetic energy %g J after %d frames, %g J after the first", law_name[law],
+                  ms_volume_kinetic_energy(v), frames, ke_first);
     /* it relaxes toward rest density: max rho/rho0 - 1 is 2.86 at the
      * first density pass (the lattice and its wall images) */
     ms_volume_get_info(v, &in);
@@ -503,8 +502,10 @@ static uint64_t fast_obstacle(int law, int *skipped)
      * ploughing at 20 m/s through water filling its whole path, generously
      * the kinetic energy of the water it sweeps taken to 2 x 20 m/s */
     const double swept = 3.14159 * 0.08 * 0.08 * 1.2 * 1000;
-    sph_check c = {.e_max = potential(v) + 0.5 * swept * 40 * 40, .n = ms_volume_count(v),
-                   .shape = ball, .tol = 0.02f};
+    sph_check c = {.e_max = potential(v) + 0.5 * swept * 40 * 40,
+                   .n = ms_volume_count(v),
+                   .shape = ball,
+                   .tol = 0.02f};
     for (int f = 0; f < 4; ++f) { /* 1.2 m across in 60 ms, 15 ms frames */
         ck_assert_int_eq(ms_volume_step(v, 0.015f), MS_OK);
         pos[0] += 20 * 0.015f;
@@ -565,8 +566,8 @@ static uint64_t jerk(int law, int *skipped)
     ms_volume_get_info(v, &in);
     const double mass = ms_volume_count(v) * (double)in.particle_mass;
     /* the work of 10 g over the box's width, plus the potential energy */
-    sph_check c = {.e_max = potential(v) + mass * 98.1 * 0.5 * 1.02, .n = ms_volume_count(v),
-                   .tol = 1e-4f};
+    sph_check c = {
+        .e_max = potential(v) + mass * 98.1 * 0.5 * 1.02, .n = ms_volume_count(v), .tol = 1e-4f};
     for (int f = 0; f < 6; ++f) { /* 0.1 s of jerk */
         ck_assert_int_eq(ms_volume_push(v, centre, 100.0f, accel), MS_OK);
         ck_assert_int_eq(ms_volume_step(v, 1.0f / 60), MS_OK);
@@ -695,8 +696,7 @@ START_TEST(refuse_an_sph_step_over_max_substeps)
     d.max_substeps = 3;
     ms_volume *v = NULL;
     ck_assert_int_eq(ms_volume_create(&d, &v), MS_OK);
-    ck_assert_int_eq(ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.3f, 1, 0.5f}),
-                     MS_OK);
+    ck_assert_int_eq(ms_volume_fill_box(v, (float[3]){0, 0, 0}, (float[3]){0.3f, 1, 0.5f}), MS_OK);
     MS_ASSERT_REFUSED(ms_volume_step(v, 1.0f), MS_ERR_UNSTABLE, "max_substeps 3");
     ms_volume_destroy(v);
 }
@@ -855,8 +855,8 @@ static void assert_no_hole(const char *name, double t, const ms_volume *v, const
 }
 
 typedef struct run_limits {
-    double h_max;  /* m, the combined field's top bound */
-    int driven;    /* the scene moves the liquid all along */
+    double h_max; /* m, the combined field's top bound */
+    int driven;   /* the scene moves the liquid all along */
 } run_limits;
 
 static uint64_t run_scene(const ms_scene *sc, int threads, double seconds, run_limits lim)
@@ -869,8 +869,8 @@ static uint64_t run_scene(const ms_scene *sc, int threads, double seconds, run_l
     ms_volume *vol = ms_sim_volume(sim);
     int n0 = vol ? ms_volume_count(vol) : 0;
     ms_volume_desc vd = vol ? ms_volume_get_desc(vol) : ms_volume_desc_default();
-    const double mass = vol ? (double)vd.rest_density * vd.spacing * vd.spacing * vd.spacing * n0
-                            : 0.0;
+    const double mass =
+        vol ? (double)vd.rest_density * vd.spacing * vd.spacing * vd.spacing * n0 : 0.0;
     const double ke_budget = mass * 9.81 * (vd.domain_max[2] - vd.domain_min[2]);
     const long tenth = frames / 10;
     double ke_first = 0.0, ke_last = 0.0, ke_max = 0.0;
@@ -941,8 +941,8 @@ static run_limits scene_limits(const ms_scene *sc)
     ck_assert_int_eq(sscanf(strchr(mn, '['), "[%lf , %lf , %lf", &a[0], &a[1], &a[2]), 3);
     ck_assert_int_eq(sscanf(strchr(mx, '['), "[%lf , %lf , %lf", &b[0], &b[1], &b[2]), 3);
     lim.h_max = b[2] - a[2];
-    lim.driven = strstr(t, "\"drag\"") || strstr(t, "\"container\"") ||
-                 strstr(t, "\"spin\"") || strstr(t, "\"boat\"") || strstr(t, "\"rain\"") ||
+    lim.driven = strstr(t, "\"drag\"") || strstr(t, "\"container\"") || strstr(t, "\"spin\"") ||
+                 strstr(t, "\"boat\"") || strstr(t, "\"rain\"") ||
                  (strstr(t, "\"obstacles\"") && strstr(t, "\"path\""));
     return lim;
 }
@@ -1065,18 +1065,24 @@ START_TEST(a_pool_at_rest_stays_at_rest_for_10_minutes)
         }
         worst_spread = fmax(worst_spread, hi - lo);
         lowest = fmin(lowest, lo);
-        ck_assert_msg(lo >= 0.9 * level, "%s t = %.0f s: a cell at %.4f m, under 0.9 of the "
-                      "settled level %.4f m", laws[_i], f * dt, lo, level);
-        ck_assert_msg(fabs(mean - level) <= 0.01 * level, "%s t = %.0f s: mean level %.4f m, "
-                      "more than 1 %% from the settled %.4f m", laws[_i], f * dt, mean, level);
+        ck_assert_msg(lo >= 0.9 * level,
+                      "%s t = %.0f s: a cell at %.4f m, under 0.9 of the "
+                      "settled level %.4f m",
+                      laws[_i], f * dt, lo, level);
+        ck_assert_msg(fabs(mean - level) <= 0.01 * level,
+                      "%s t = %.0f s: mean level %.4f m, "
+                      "more than 1 %% from the settled %.4f m",
+                      laws[_i], f * dt, mean, level);
         ck_assert_msg(hi - lo <= spread_max[_i], "%s t = %.0f s: spread %.4f m over %.4f m",
                       laws[_i], f * dt, hi - lo, spread_max[_i]);
     }
     printf("still pool, %s, 10 min: level %.4f m, worst spread %.2f mm, lowest cell %.4f m, "
            "E_kin first minute %.3g J, last minute %.3g J\n",
            laws[_i], level, 1e3 * worst_spread, lowest, ke_first, ke_last);
-    ck_assert_msg(ke_last <= ke_first, "%s: kinetic energy grew from %.3g J (first minute) to "
-                  "%.3g J (last minute)", laws[_i], ke_first, ke_last);
+    ck_assert_msg(ke_last <= ke_first,
+                  "%s: kinetic energy grew from %.3g J (first minute) to "
+                  "%.3g J (last minute)",
+                  laws[_i], ke_first, ke_last);
     ms_sim_destroy(sim);
     ms_scene_destroy(sc);
 }

@@ -60,8 +60,7 @@ START_TEST(a_desc_of_size_zero_or_unknown_is_refused)
     MS_ASSERT_REFUSED(ms_struct_in(&bad, &d, V2_SIZES, "test"), MS_ERR_INVALID_ARGUMENT,
                       "start from v2_default()");
     bad.size = (uint32_t)sizeof(v2) + 8; /* a newer caller than the library */
-    MS_ASSERT_REFUSED(ms_struct_in(&bad, &d, V2_SIZES, "test"), MS_ERR_INVALID_ARGUMENT,
-                      "newer");
+    MS_ASSERT_REFUSED(ms_struct_in(&bad, &d, V2_SIZES, "test"), MS_ERR_INVALID_ARGUMENT, "newer");
     bad.size = 8; /* smaller than the first released layout */
     MS_ASSERT_REFUSED(ms_struct_in(&bad, &d, V2_SIZES, "test"), MS_ERR_INVALID_ARGUMENT,
                       "not a size");

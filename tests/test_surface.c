@@ -127,21 +127,19 @@ START_TEST(inputs_are_refused_with_the_value)
                       "radius 0");
     MS_ASSERT_REFUSED(ms_surface_add_drop(s, 0.5f, 0.5f, 50, 1), MS_ERR_INVALID_ARGUMENT,
                       "grid's extent");
-    MS_ASSERT_REFUSED(ms_surface_add_drop(s, 0.5f, 0.5f, 0.1f, INFINITY),
-                      MS_ERR_INVALID_ARGUMENT, "amplitude");
+    MS_ASSERT_REFUSED(ms_surface_add_drop(s, 0.5f, 0.5f, 0.1f, INFINITY), MS_ERR_INVALID_ARGUMENT,
+                      "amplitude");
     f[37] = NAN;
     MS_ASSERT_REFUSED(ms_surface_set_height(s, f), MS_ERR_INVALID_ARGUMENT, "h[37]");
     MS_ASSERT_REFUSED(ms_surface_excite(s, f, 1), MS_ERR_INVALID_ARGUMENT, "dh[37]");
     MS_ASSERT_REFUSED(ms_surface_set_height(s, NULL), MS_ERR_INVALID_ARGUMENT, "NULL");
-    MS_ASSERT_REFUSED(ms_surface_set_speed_map(s, f), MS_ERR_INVALID_ARGUMENT,
-                      "speed map[37]");
+    MS_ASSERT_REFUSED(ms_surface_set_speed_map(s, f), MS_ERR_INVALID_ARGUMENT, "speed map[37]");
     f[37] = -2;
     MS_ASSERT_REFUSED(ms_surface_set_speed_map(s, f), MS_ERR_INVALID_ARGUMENT, ">= 0");
     for (int i = 0; i < 16 * 8; ++i)
         f[i] = 0.5f;
     f[5] = 0;
-    MS_ASSERT_REFUSED(ms_surface_set_damping_map(s, f), MS_ERR_INVALID_ARGUMENT,
-                      "damping map[5]");
+    MS_ASSERT_REFUSED(ms_surface_set_damping_map(s, f), MS_ERR_INVALID_ARGUMENT, "damping map[5]");
     f[5] = 1.01f;
     MS_ASSERT_REFUSED(ms_surface_set_damping_map(s, f), MS_ERR_INVALID_ARGUMENT, "(0, 1]");
     ms_rain rain = {.size = sizeof(ms_rain), .rate = -1, .radius = 0.1f, .amplitude = 0.01f};
@@ -149,8 +147,8 @@ START_TEST(inputs_are_refused_with_the_value)
     rain.rate = 10;
     rain.radius = 0;
     MS_ASSERT_REFUSED(ms_surface_set_rain(s, &rain), MS_ERR_INVALID_ARGUMENT, "rain radius");
-    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
-                           .x = 0.5f, .y = 0.5f, .radius = 0.01f, .depth = 0.01f};
+    ms_disturber_desc b = {
+        .size = sizeof(ms_disturber_desc), .x = 0.5f, .y = 0.5f, .radius = 0.01f, .depth = 0.01f};
     int id;
     MS_ASSERT_REFUSED(ms_surface_add_disturber(s, &b, &id), MS_ERR_INVALID_ARGUMENT,
                       "disturber radius 0.01");
@@ -163,10 +161,10 @@ START_TEST(inputs_are_refused_with_the_value)
     b.vx = 0;
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, &id), MS_OK);
     float path[4] = {0, 0, 1, NAN};
-    MS_ASSERT_REFUSED(ms_surface_set_disturber_path(s, id, 2, path, 1, 0),
-                      MS_ERR_INVALID_ARGUMENT, "path point 1");
-    MS_ASSERT_REFUSED(ms_surface_set_disturber_path(s, id, 0, path, 1, 0),
-                      MS_ERR_INVALID_ARGUMENT, "npoints 0");
+    MS_ASSERT_REFUSED(ms_surface_set_disturber_path(s, id, 2, path, 1, 0), MS_ERR_INVALID_ARGUMENT,
+                      "path point 1");
+    MS_ASSERT_REFUSED(ms_surface_set_disturber_path(s, id, 0, path, 1, 0), MS_ERR_INVALID_ARGUMENT,
+                      "npoints 0");
     MS_ASSERT_REFUSED(ms_surface_remove_disturber(s, id + 1), MS_ERR_INVALID_ARGUMENT, "id");
     float depth[2] = {1, NAN}, c[2];
     MS_ASSERT_REFUSED(ms_surface_speed_from_depth(depth, 2, 9.81f, c), MS_ERR_INVALID_ARGUMENT,
@@ -241,8 +239,8 @@ static void check_second_order(double lx, double ly, int m, int n)
     for (int k = 0; k + 1 < 4; ++k) {
         double order = log2(err[k] / err[k + 1]);
         ck_assert_msg(order > 1.85 && order < 2.15,
-                      "order %.3f between N=%d (err %.3e) and N=%d (err %.3e)", order, N[k],
-                      err[k], N[k + 1], err[k + 1]);
+                      "order %.3f between N=%d (err %.3e) and N=%d (err %.3e)", order, N[k], err[k],
+                      N[k + 1], err[k + 1]);
     }
     ck_assert_msg(err[3] < 1e-3, "relative error %.3e at N=128", err[3]);
 }
@@ -378,7 +376,11 @@ START_TEST(mean_height_is_conserved_with_drops_and_disturbers)
     ck_assert_int_eq(ms_surface_add_drop(s, 0.7f, 0.2f, 0.04f, -0.01f), MS_OK);
     const double m0 = mean_height(s);
     ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
-                           .x = 0.2f, .y = 0.3f, .vx = 0.3f, .vy = 0, .radius = 0.04f,
+                           .x = 0.2f,
+                           .y = 0.3f,
+                           .vx = 0.3f,
+                           .vy = 0,
+                           .radius = 0.04f,
                            .depth = 0.005f};
     int id;
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, &id), MS_OK);
@@ -400,8 +402,8 @@ START_TEST(long_run_with_rain_and_disturber_stays_bounded)
     ms_surface *s = make(128, 128, 0.01f, 0.5f, 0.9f, MS_BOUNDARY_REFLECT);
     ms_rain rain = {.size = sizeof(ms_rain), .rate = 20, .radius = 0.03f, .amplitude = -0.004f};
     ck_assert_int_eq(ms_surface_set_rain(s, &rain), MS_OK);
-    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
-                           .x = 0.3f, .y = 0.3f, .radius = 0.05f, .depth = 0.004f};
+    ms_disturber_desc b = {
+        .size = sizeof(ms_disturber_desc), .x = 0.3f, .y = 0.3f, .radius = 0.05f, .depth = 0.004f};
     int id;
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, &id), MS_OK);
     float path[8] = {0.3f, 0.3f, 1.0f, 0.3f, 1.0f, 1.0f, 0.3f, 1.0f};
@@ -452,8 +454,8 @@ START_TEST(damping_is_per_second_and_decays_energy)
                       e_end[k]);
         ms_surface_destroy(s);
     }
-    ck_assert_msg(fabs(e_end[0] - e_end[1]) < 0.02, "frame-rate dependent: %.4f vs %.4f",
-                  e_end[0], e_end[1]);
+    ck_assert_msg(fabs(e_end[0] - e_end[1]) < 0.02, "frame-rate dependent: %.4f vs %.4f", e_end[0],
+                  e_end[1]);
 }
 END_TEST
 
@@ -618,8 +620,7 @@ START_TEST(drop_is_smooth_and_keeps_its_volume)
     ck_assert_int_eq(ms_surface_add_drop(s, 0.645f, 0.645f, 0.002f, 0.5f), MS_OK);
     vol = mean_height(s) * 128 * 128 * 1e-4;
     expect = 0.5 * PI * 0.002 * 0.002 * (0.5 - 2 / (PI * PI));
-    ck_assert_msg(fabs(vol - expect) < 0.05 * expect, "widened volume %.4e vs %.4e", vol,
-                  expect);
+    ck_assert_msg(fabs(vol - expect) < 0.05 * expect, "widened volume %.4e vs %.4e", vol, expect);
     int nx, ny;
     const float *h = ms_surface_height(s, &nx, &ny);
     int nonzero = 0;
@@ -657,8 +658,8 @@ START_TEST(rain_is_seeded_and_falls_at_its_rate)
     ck_assert_int_ne(memcmp(a, c, sizeof a), 0);
     /* 50 drops/m^2/s on 0.64^2 m^2 for 4 s: 81.9 expected, sd 9 */
     double expect = 50 * 0.64 * 0.64 * 4;
-    ck_assert_msg(fabs(ia.drops - expect) < 4 * sqrt(expect), "%ld drops, expected %.1f",
-                  ia.drops, expect);
+    ck_assert_msg(fabs(ia.drops - expect) < 4 * sqrt(expect), "%ld drops, expected %.1f", ia.drops,
+                  expect);
 }
 END_TEST
 
@@ -682,8 +683,8 @@ END_TEST
 START_TEST(still_disturber_settles_into_its_dent)
 {
     ms_surface *s = make(96, 96, 0.01f, 0.5f, 0.2f, MS_BOUNDARY_REFLECT);
-    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
-                           .x = 0.48f, .y = 0.48f, .radius = 0.1f, .depth = 0.01f};
+    ms_disturber_desc b = {
+        .size = sizeof(ms_disturber_desc), .x = 0.48f, .y = 0.48f, .radius = 0.1f, .depth = 0.01f};
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, NULL), MS_OK);
     ck_assert_int_eq(ms_surface_step(s, 8.0f), MS_OK);
     const float *h = ms_surface_height(s, NULL, NULL);
@@ -696,8 +697,8 @@ START_TEST(still_disturber_settles_into_its_dent)
     const double r = sqrt(2.0) * 0.005 / 0.1, dent = -0.01 * 0.5 * (1 + cos(PI * r));
     /* measured 1.1e-6 off (the ringing left after 8 s at damping 0.2/s and
      * the discrete Laplacian); 5e-6 is 4.5x that, a 5 % wrong dent is 5e-4 */
-    ck_assert_msg(fabs(centre - lift - dent) < 5e-6, "dent %.7f m, analytic %.7f m",
-                  centre - lift, dent);
+    ck_assert_msg(fabs(centre - lift - dent) < 5e-6, "dent %.7f m, analytic %.7f m", centre - lift,
+                  dent);
     ck_assert_double_lt(fabs(mean_height(s)), 1e-9);
     ms_surface_destroy(s);
 }
@@ -706,8 +707,8 @@ END_TEST
 START_TEST(moving_disturber_follows_its_path_and_leaves_a_wake)
 {
     ms_surface *s = make(200, 100, 0.01f, 0.5f, 0.95f, MS_BOUNDARY_ABSORB);
-    ms_disturber_desc b = {.size = sizeof(ms_disturber_desc),
-                           .x = 0.2f, .y = 0.5f, .radius = 0.04f, .depth = 0.005f};
+    ms_disturber_desc b = {
+        .size = sizeof(ms_disturber_desc), .x = 0.2f, .y = 0.5f, .radius = 0.04f, .depth = 0.005f};
     int id;
     ck_assert_int_eq(ms_surface_add_disturber(s, &b, &id), MS_OK);
     float path[4] = {0.2f, 0.5f, 1.8f, 0.5f};
@@ -890,7 +891,11 @@ static void run_fused(ms_boundary b, int fused, float *out)
     ms_surface *s = make(40, 24, 0.01f, 0.5f, 0.8f, b);
     ck_assert_int_eq(ms_surface_add_drop(s, 0.1f, 0.1f, 0.04f, 0.01f), MS_OK);
     ms_disturber_desc d = {.size = sizeof(ms_disturber_desc),
-                           .x = 0.2f, .y = 0.12f, .vx = 0.3f, .radius = 0.03f, .depth = 0.003f};
+                           .x = 0.2f,
+                           .y = 0.12f,
+                           .vx = 0.3f,
+                           .radius = 0.03f,
+                           .depth = 0.003f};
     ck_assert_int_eq(ms_surface_add_disturber(s, &d, NULL), MS_OK);
     ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(s, &info);

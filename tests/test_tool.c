@@ -72,7 +72,6 @@ static const char *tool_dir(void)
     return d;
 }
 
-
 static int count_lines(const char *s)
 {
     int n = 0;
@@ -109,9 +108,9 @@ static int exited(const result *r, int code)
     return WIFEXITED(r->status) && WEXITSTATUS(r->status) == code;
 }
 
-#define ASSERT_EXIT(r, code)                                                                 \
-    ck_assert_msg(exited(&(r), code), "exit %d (signal %d), expected %d; stderr: %s",       \
-                  WIFEXITED((r).status) ? WEXITSTATUS((r).status) : -1,                      \
+#define ASSERT_EXIT(r, code)                                                          \
+    ck_assert_msg(exited(&(r), code), "exit %d (signal %d), expected %d; stderr: %s", \
+                  WIFEXITED((r).status) ? WEXITSTATUS((r).status) : -1,               \
                   WIFSIGNALED((r).status) ? WTERMSIG((r).status) : 0, code, (r).err)
 
 /* Frames a run file holds right now (-1 if it does not open). */
@@ -199,11 +198,10 @@ START_TEST(help_version_and_usage_errors)
         {"check", "--deep", NULL},
         {"plugins", "extra", NULL},
     };
-    static const char *const word[] = {"which scene",  "--frames many", "needs a value",
-                                       "--duration -1", "not both",      "--threads 3",
-                                       "not both",      "--fast",        "one scene",
-                                       "which run file", "one run file", "which scenes",
-                                       "--deep",        "no arguments"};
+    static const char *const word[] = {
+        "which scene",  "--frames many", "needs a value", "--duration -1", "not both",
+        "--threads 3",  "not both",      "--fast",        "one scene",     "which run file",
+        "one run file", "which scenes",  "--deep",        "no arguments"};
     for (size_t i = 0; i < sizeof word / sizeof *word; ++i) {
         const char *args[8] = {0};
         for (int k = 0; k < 6 && bad[i][k]; ++k)
@@ -260,8 +258,7 @@ START_TEST(every_malformed_scene_exits_2_naming_the_problem)
                                        (const char *[]){"run", path, "--no-out", NULL}};
         for (int m = 0; m < 2; ++m) {
             result r = run_tool(modes[m]);
-            ck_assert_msg(WIFEXITED(r.status), "%s crashed (signal %d)", name,
-                          WTERMSIG(r.status));
+            ck_assert_msg(WIFEXITED(r.status), "%s crashed (signal %d)", name, WTERMSIG(r.status));
             ck_assert_msg(exited(&r, 2), "%s: exit %d, stderr: %s", name, WEXITSTATUS(r.status),
                           r.err);
             ck_assert_msg(count_lines(r.err) == 1, "%s: not one line: %s", name, r.err);
@@ -323,8 +320,8 @@ START_TEST(run_writes_hdf5_xdmf_png_and_a_summary)
     make_tmp_dir();
     const char *out = tmp_path("demo.h5");
     const char *png = tmp_path("png/frames");
-    result r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "6", "--out", out,
-                                         "--png", png, NULL});
+    result r = run_tool(
+        (const char *[]){"run", DEFAULT_SCENE, "--frames", "6", "--out", out, "--png", png, NULL});
     ASSERT_EXIT(r, 0);
     ck_assert_msg(strstr(r.out, "6 of 6 frames"), "%s", r.out);
     ck_assert_ptr_nonnull(strstr(r.out, "per frame: volume"));
@@ -393,10 +390,9 @@ START_TEST(run_file_holds_what_the_sim_held_bit_for_bit)
     ms_sim *sim;
     ck_assert_msg(ms_sim_create_from_scene(sc, 1, &sim) == MS_OK, "%s", ms_last_error());
     ms_writer *w;
-    const unsigned all = MS_FIELD_COMBINED | MS_FIELD_SURFACE | MS_FIELD_VOLUME |
-                         MS_FIELD_PARTICLES;
-    ck_assert_msg(ms_writer_open(tmp_path("rt.h5"), sim, all, &w) == MS_OK, "%s",
-                  ms_last_error());
+    const unsigned all =
+        MS_FIELD_COMBINED | MS_FIELD_SURFACE | MS_FIELD_VOLUME | MS_FIELD_PARTICLES;
+    ck_assert_msg(ms_writer_open(tmp_path("rt.h5"), sim, all, &w) == MS_OK, "%s", ms_last_error());
     enum { FRAMES = 4 };
     float *copy[FRAMES][3];
     float *pcopy[FRAMES][6];
@@ -408,7 +404,7 @@ START_TEST(run_file_holds_what_the_sim_held_bit_for_bit)
         int nx, ny;
         const float *v[3] = {ms_sim_height(sim, &nx, &ny), NULL, NULL};
         for (int s = 0; s < 3; ++s) {
-            v[s] = s == 0 ? ms_sim_height(sim, &nx, &ny)
+            v[s] = s == 0   ? ms_sim_height(sim, &nx, &ny)
                    : s == 1 ? ms_sim_surface_height(sim, &nx, &ny)
                             : ms_sim_volume_height(sim, &nx, &ny);
             copy[k][s] = malloc(sizeof(float) * (size_t)nx * ny);
@@ -439,8 +435,7 @@ START_TEST(run_file_holds_what_the_sim_held_bit_for_bit)
             size_t n = (size_t)g.nx * g.ny;
             float *got = malloc(n * sizeof *got);
             ck_assert_int_eq(ms_reader_read_field(r, 1u << s, k, got, n), MS_OK);
-            ck_assert_msg(memcmp(got, copy[k][s], n * sizeof *got) == 0, "field %d frame %d", s,
-                          k);
+            ck_assert_msg(memcmp(got, copy[k][s], n * sizeof *got) == 0, "field %d frame %d", s, k);
             free(got);
             free(copy[k][s]);
         }
@@ -483,7 +478,8 @@ START_TEST(writer_refuses_fields_the_sim_lacks)
     ck_assert_int_eq(ms_writer_close(w), MS_OK);
     ms_reader *r;
     ck_assert_int_eq(ms_reader_open(tmp_path("x.h5"), &r), MS_OK);
-    ck_assert_uint_eq(ms_reader_fields(r), ms_scene_output_fields(sc) & ~(unsigned)MS_FIELD_PARTICLES);
+    ck_assert_uint_eq(ms_reader_fields(r),
+                      ms_scene_output_fields(sc) & ~(unsigned)MS_FIELD_PARTICLES);
     ms_reader_close(r);
     ms_sim_destroy(sim);
     ms_scene_destroy(sc);
@@ -619,8 +615,8 @@ START_TEST(unwritable_outputs_exit_1_with_a_sentence)
     ck_assert_ptr_nonnull(strstr(r.err, "/no/such/dir/run.h5"));
     ck_assert_int_eq(count_lines(r.err), 1);
     result_free(&r);
-    r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--out", "/dev/full",
-                                  NULL});
+    r = run_tool(
+        (const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--out", "/dev/full", NULL});
     ASSERT_EXIT(r, 1);
     ck_assert_ptr_nonnull(strstr(r.err, "No space left on device"));
     ck_assert_int_eq(count_lines(r.err), 1);
@@ -629,8 +625,8 @@ START_TEST(unwritable_outputs_exit_1_with_a_sentence)
     fclose(f);
     char png[600];
     snprintf(png, sizeof png, "%s/file/frames", tmp_dir);
-    r = run_tool((const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--no-out", "--png", png,
-                                  NULL});
+    r = run_tool(
+        (const char *[]){"run", DEFAULT_SCENE, "--frames", "2", "--no-out", "--png", png, NULL});
     ASSERT_EXIT(r, 1);
     ck_assert_ptr_nonnull(strstr(r.err, "Not a directory"));
     result_free(&r);
@@ -738,8 +734,8 @@ START_TEST(full_disk_exits_1_and_keeps_the_frames)
     }
     char out[700];
     snprintf(out, sizeof out, "%s/run.h5", disk);
-    result r = run_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000", "--out", out,
-                                         "--quiet", NULL});
+    result r = run_tool(
+        (const char *[]){"run", SMALL_SCENE, "--frames", "100000", "--out", out, "--quiet", NULL});
     ASSERT_EXIT(r, 1);
     ck_assert_msg(strstr(r.err, "are free on the file system") || strstr(r.err, "No space left"),
                   "%s", r.err);
@@ -779,8 +775,8 @@ static char *run_on_terminal(int cols)
         dup2(s, 2);
         dup2(o, 1);
         unsetenv("COLUMNS");
-        execl(ms_test_tool_path(), ms_test_tool_path(), "run", SMALL_SCENE, "--frames", "8", "--no-out",
-              (char *)NULL);
+        execl(ms_test_tool_path(), ms_test_tool_path(), "run", SMALL_SCENE, "--frames", "8",
+              "--no-out", (char *)NULL);
         _exit(127);
     }
     char *buf = malloc(65536);
@@ -849,7 +845,8 @@ START_TEST(installed_tool_does_not_search_the_build_tree)
     /* the tool and the shared library it loads ($ORIGIN/../lib) */
     snprintf(cmd, sizeof cmd,
              "mkdir -p '%s' '%s/../lib' && cp '%s' '%s' && cp -L '%s/../lib/libmodesplit.so.0' "
-             "'%s/../lib/'", bin, bin, ms_test_tool_path(), exe, tool_dir(), bin);
+             "'%s/../lib/'",
+             bin, bin, ms_test_tool_path(), exe, tool_dir(), bin);
     ck_assert_int_eq(system(cmd), 0);
     char out[700], err[700];
     snprintf(out, sizeof out, "%s/out.txt", tmp_dir);
@@ -921,8 +918,8 @@ START_TEST(each_command_has_its_help_and_typos_get_a_suggestion)
     /* nothing close: no guess */
     r = run_tool((const char *[]){"run", SMALL_SCENE, "--xyzzy", NULL});
     ASSERT_EXIT(r, 2);
-    ck_assert_msg(strstr(r.err, "unknown option --xyzzy") && !strstr(r.err, "did you mean"),
-                  "%s", r.err);
+    ck_assert_msg(strstr(r.err, "unknown option --xyzzy") && !strstr(r.err, "did you mean"), "%s",
+                  r.err);
     result_free(&r);
     r = run_tool((const char *[]){"rnu", NULL});
     ASSERT_EXIT(r, 2);

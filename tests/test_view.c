@@ -76,12 +76,12 @@ static void write_file(const char *name, const char *text)
     fclose(f);
 }
 
-#define NEED_X()                                                                       \
-    do {                                                                               \
-        if (!built_with_sdl())                                                         \
-            MS_SKIP("modesplit was built without SDL2 (libsdl2-dev)");                 \
-        if (!have("xvfb-run"))                                                         \
-            MS_SKIP("xvfb-run is not installed (tools/deps.sh --ci installs xvfb)");   \
+#define NEED_X()                                                                \
+    do {                                                                        \
+        if (!built_with_sdl())                                                  \
+            MS_SKIP("modesplit was built without SDL2 (libsdl2-dev)");          \
+        if (!have("xvfb-run"))                                                  \
+            MS_SKIP("xvfb-run is not installed (tools/deps.sh installs xvfb)"); \
     } while (0)
 
 /* An RGBA8 PNG; NULL if it does not read. */
@@ -145,8 +145,13 @@ START_TEST(overlay_stage_times_equal_sim_stats)
         after = ms_stats_init();
         ms_sim_get_stats(sim, &after);
     }
-    view_overlay_info in = {.scene = "view_pool", .frame = 3, .fps = 30, .paced = 1,
-                            .particles = 2000, .threads = 1, .shader = "water"};
+    view_overlay_info in = {.scene = "view_pool",
+                            .frame = 3,
+                            .fps = 30,
+                            .paced = 1,
+                            .particles = 2000,
+                            .threads = 1,
+                            .shader = "water"};
     char text[1024];
     ck_assert_int_eq(view_overlay_text(&in, &before, &after, text, sizeof text), 4);
     double vol, ext, wav, com, ren;
@@ -206,7 +211,9 @@ START_TEST(input_log_round_trips_and_refuses_bad_lines)
     }
     view_script_free(&s);
 
-    static const struct { const char *text, *word; } bad[] = {
+    static const struct {
+        const char *text, *word;
+    } bad[] = {
         {"1 explode\n", "unknown event"},
         {"1 button-down 1 1.5 0.5 0\n", "bad arguments"},
         {"1 motion 0.5\n", "bad arguments"},
@@ -249,7 +256,6 @@ START_TEST(pointer_ray_meets_the_water_where_the_camera_looks)
     ck_assert_int_eq(view_camera_unproject(&c, 1.0f, 0.5f, 0.0f, 0.25f, xy), 0);
 }
 END_TEST
-
 
 /* ---- the library calls the viewer added -------------------------------- */
 
@@ -335,7 +341,6 @@ START_TEST(the_container_pose_is_where_it_was_moved)
     ms_scene_destroy(sc);
 }
 END_TEST
-
 
 /* view_input.c reports through the tool's tool_error (main.c) */
 void tool_error(const char *fmt, ...)
@@ -600,8 +605,9 @@ END_TEST
 static void write_drag_log(const char *name)
 {
     char text[4096];
-    int n = snprintf(text, sizeof text, "%s\n2 motion 0.300000 0.550000\n"
-                                        "2 button-down 1 0.300000 0.550000 0\n",
+    int n = snprintf(text, sizeof text,
+                     "%s\n2 motion 0.300000 0.550000\n"
+                     "2 button-down 1 0.300000 0.550000 0\n",
                      VIEW_LOG_HEADER);
     for (int f = 3; f <= 22; ++f)
         n += snprintf(text + n, sizeof text - (size_t)n, "%d motion %.6f 0.550000\n", f,
@@ -641,12 +647,14 @@ START_TEST(scripted_drag_moves_the_water_and_the_particles_along_it)
     write_drag_log("drag.log");
     write_file("still.log", VIEW_LOG_HEADER "\n");
     char args[1536];
-    snprintf(args, sizeof args, "%s --fast --frames 24 --script %s/drag.log --out %s/drag.h5 "
-                                "--record %s/drag_png",
+    snprintf(args, sizeof args,
+             "%s --fast --frames 24 --script %s/drag.log --out %s/drag.h5 "
+             "--record %s/drag_png",
              POOL, tmp_dir, tmp_dir, tmp_dir);
     ck_assert_int_eq(run_view("drag", args), 0);
-    snprintf(args, sizeof args, "%s --fast --frames 24 --script %s/still.log --out %s/still.h5 "
-                                "--record %s/still_png",
+    snprintf(args, sizeof args,
+             "%s --fast --frames 24 --script %s/still.log --out %s/still.h5 "
+             "--record %s/still_png",
              POOL, tmp_dir, tmp_dir, tmp_dir);
     ck_assert_int_eq(run_view("still", args), 0);
 
@@ -739,13 +747,13 @@ START_TEST(keys_toggle_what_they_say_and_escape_exits_0)
     NEED_X();
     make_tmp_dir();
     write_file("keys.log", VIEW_LOG_HEADER "\n"
-                           "1 key-down R\n1 key-up R\n"
-                           "1 key-down C\n"
-                           "2 key-down 2\n"
-                           "3 key-down Space\n"   /* pause at frame 3 */
-                           "3 key-down N\n"       /* one frame: 4 */
-                           "4 key-down F12\n"
-                           "4 key-down Escape\n");
+                                           "1 key-down R\n1 key-up R\n"
+                                           "1 key-down C\n"
+                                           "2 key-down 2\n"
+                                           "3 key-down Space\n" /* pause at frame 3 */
+                                           "3 key-down N\n"     /* one frame: 4 */
+                                           "4 key-down F12\n"
+                                           "4 key-down Escape\n");
     char args[1536];
     snprintf(args, sizeof args, "%s --fast --script %s/keys.log --out %s/keys.h5 --record %s/png",
              POOL, tmp_dir, tmp_dir, tmp_dir);
@@ -783,9 +791,9 @@ START_TEST(closing_resizing_and_a_lost_context_are_handled)
     /* the window closed by the window manager (SDL_QUIT) after a resize and
      * a lost GL context: exit 0, and the frames after both are pictures */
     write_file("life.log", VIEW_LOG_HEADER "\n"
-                           "2 resize 160 128\n"
-                           "4 lose-context\n"
-                           "8 quit\n");
+                                           "2 resize 160 128\n"
+                                           "4 lose-context\n"
+                                           "8 quit\n");
     char args[1536];
     snprintf(args, sizeof args, "%s --fast --script %s/life.log --record %s/png", POOL, tmp_dir,
              tmp_dir);
@@ -812,11 +820,12 @@ START_TEST(real_x_events_drag_the_water_in_a_screenshot_and_replay_exactly)
 {
     NEED_X();
     if (!have("xdotool") || !have("import") || !have("compare"))
-        MS_SKIP("xdotool or ImageMagick is not installed (tools/deps.sh --ci installs them)");
+        MS_SKIP("xdotool or ImageMagick is not installed (tools/deps.sh installs them)");
     make_tmp_dir();
     char cmd[2048];
-    snprintf(cmd, sizeof cmd, "xvfb-run -a -s '-screen 0 400x400x24' sh tests/view_x11.sh '%s' "
-                              "'%s' > '%s/x11.log' 2>&1",
+    snprintf(cmd, sizeof cmd,
+             "xvfb-run -a -s '-screen 0 400x400x24' sh tests/view_x11.sh '%s' "
+             "'%s' > '%s/x11.log' 2>&1",
              ms_test_tool_path(), tmp_dir, tmp_dir);
     int st = system(cmd);
     char p[512];
@@ -841,8 +850,9 @@ START_TEST(real_x_events_drag_the_water_in_a_screenshot_and_replay_exactly)
     const long frames = ms_reader_frames(live);
     ck_assert_int_gt(frames, 10);
     char args[1536];
-    snprintf(args, sizeof args, "tests/data/view_waves.json --fast --script %s/live.log --out "
-                                "%s/again.h5",
+    snprintf(args, sizeof args,
+             "tests/data/view_waves.json --fast --script %s/live.log --out "
+             "%s/again.h5",
              tmp_dir, tmp_dir);
     ck_assert_int_eq(run_view("again", args), 0);
     snprintf(p, sizeof p, "%s/again.h5", tmp_dir);
@@ -893,7 +903,8 @@ START_TEST(a_pool_left_open_for_10_minutes_stays_still_and_a_drag_shows)
     char *log = ms_test_slurp(p);
     ck_assert_msg(WIFEXITED(st) && WEXITSTATUS(st) == 0, "tests/view_still_x11.sh: %s", log);
     double still = -1, dragged = -1, settled = -1;
-    const char *a = strstr(log, "still "), *b = strstr(log, "dragged "), *c = strstr(log, "settled ");
+    const char *a = strstr(log, "still "), *b = strstr(log, "dragged "),
+               *c = strstr(log, "settled ");
     ck_assert_msg(a && b && c && sscanf(a, "still %lf", &still) == 1 &&
                       sscanf(b, "dragged %lf", &dragged) == 1 &&
                       sscanf(c, "settled %lf", &settled) == 1,

@@ -3,8 +3,8 @@
 # As root it runs apt-get; otherwise it prints the one command to run.
 #   tools/deps.sh          check, install what the product uses (root)
 #   tools/deps.sh --ci     the same, plus the real clients the CI-only
-#                          checks drive (ParaView's pvpython, Xvfb + xdotool,
-#                          h5py, ImageMagick, valgrind, clang)
+#                          checks drive (ParaView's pvpython, h5py, valgrind,
+#                          clang, clang-format)
 #   tools/deps.sh --list   print the package list (with --ci: both lists)
 set -eu
 
@@ -20,11 +20,16 @@ PACKAGES="$PACKAGES libegl-dev libegl-mesa0"
 # it: the viewer (`modesplit view`, SDL2), the accuracy study's plots
 # (gnuplot), `modesplit render --video` (ffmpeg)
 PACKAGES="$PACKAGES libsdl2-dev gnuplot-nox ffmpeg"
-# the clients users run against the library's output and the drivers of the
-# viewer's window tests: installed by `tools/deps.sh --ci` (.ci/run), left to
-# the user otherwise (the tests that need them report themselves skipped).
-CI_PACKAGES="xvfb xauth xdotool x11-apps imagemagick \
-paraview python3-paraview python3-h5py python3-venv"
+# what `make check`'s suites drive, so that it runs every case instead of
+# skipping some: tests/test_view.c runs the viewer under xvfb-run (xvfb, and
+# xauth, which xvfb-run needs and --no-install-recommends leaves out), with
+# real X events (xdotool) and screenshots compared by ImageMagick (import,
+# compare; tests/view_x11.sh)
+PACKAGES="$PACKAGES xvfb xauth xdotool imagemagick"
+# the clients users run against the library's output, driven only by CI's
+# own stages (`make check-paraview`, `make check-python`): installed by
+# `tools/deps.sh --ci` (.ci/run), left to the user otherwise
+CI_PACKAGES="x11-apps paraview python3-paraview python3-h5py python3-venv"
 # valgrind and clang with its runtimes (libFuzzer, ASan: libclang-rt-14-dev,
 # which --no-install-recommends leaves out) run only in CI (.ci/valgrind,
 # .ci/fuzz): `make check` of a user without them must not fail for their

@@ -60,31 +60,31 @@ typedef struct ms_renderer ms_renderer; /* OSMesa off-screen renderer */
 typedef struct ms_writer ms_writer;     /* HDF5 output */
 
 /* X-macro of the status codes: name, value, short description. */
-#define MS_STATUS_MAP(X)                                                      \
-    X(OK, 0, "success")                                                       \
-    X(ERR_INVALID_ARGUMENT, -1, "invalid argument")                           \
-    X(ERR_OUT_OF_MEMORY, -2, "out of memory")                                 \
-    X(ERR_UNSTABLE, -3, "parameters cannot be made numerically stable")       \
-    X(ERR_IO, -4, "input/output error")                                       \
-    X(ERR_PARSE, -5, "parse error")                                           \
-    X(ERR_PLUGIN, -6, "plugin error")                                         \
-    X(ERR_UNSUPPORTED, -7, "not supported by this build")                     \
-    X(ERR_STATE, -8, "call not allowed in the current state")                 \
+#define MS_STATUS_MAP(X)                                                \
+    X(OK, 0, "success")                                                 \
+    X(ERR_INVALID_ARGUMENT, -1, "invalid argument")                     \
+    X(ERR_OUT_OF_MEMORY, -2, "out of memory")                           \
+    X(ERR_UNSTABLE, -3, "parameters cannot be made numerically stable") \
+    X(ERR_IO, -4, "input/output error")                                 \
+    X(ERR_PARSE, -5, "parse error")                                     \
+    X(ERR_PLUGIN, -6, "plugin error")                                   \
+    X(ERR_UNSUPPORTED, -7, "not supported by this build")               \
+    X(ERR_STATE, -8, "call not allowed in the current state")           \
     X(ERR_CANCELED, -9, "stopped by a cancel request")
 
 typedef enum ms_status {
 #define MS_STATUS_ENUM_(name, value, text) MS_##name = value,
     MS_STATUS_MAP(MS_STATUS_ENUM_)
 #undef MS_STATUS_ENUM_
-    MS_STATUS_FORCE_32BIT_ = 0x7fffffff /* public enums are 32-bit */
+        MS_STATUS_FORCE_32BIT_ = 0x7fffffff /* public enums are 32-bit */
 } ms_status;
 
 /* The fields of a run, as bits (scene `output.fields`, ms_writer_open). */
 enum {
-    MS_FIELD_COMBINED = 1u << 0,  /* SPH field up-sampled + wave field (eq. 20) */
-    MS_FIELD_SURFACE = 1u << 1,   /* the wave-equation field alone */
-    MS_FIELD_VOLUME = 1u << 2,    /* the SPH height field alone (eq. 16) */
-    MS_FIELD_PARTICLES = 1u << 3  /* SPH particle positions and velocities */
+    MS_FIELD_COMBINED = 1u << 0, /* SPH field up-sampled + wave field (eq. 20) */
+    MS_FIELD_SURFACE = 1u << 1,  /* the wave-equation field alone */
+    MS_FIELD_VOLUME = 1u << 2,   /* the SPH height field alone (eq. 16) */
+    MS_FIELD_PARTICLES = 1u << 3 /* SPH particle positions and velocities */
 };
 
 /* A regular grid placed in the world (a fixed value type: it never grows
@@ -92,8 +92,8 @@ enum {
  * [origin + (i, j) * (dx, dy), origin + (i+1, j+1) * (dx, dy)]. */
 typedef struct ms_grid {
     int nx, ny;
-    float dx, dy;      /* m */
-    float origin[2];   /* m, corner of cell (0, 0) */
+    float dx, dy;    /* m */
+    float origin[2]; /* m, corner of cell (0, 0) */
 } ms_grid;
 
 /* Struct sizes (ABI). Every public desc and every struct the library fills
@@ -113,11 +113,14 @@ typedef struct ms_grid {
  *     that returns ms_status refuses it with MS_ERR_INVALID_ARGUMENT.
  * FFI callers set size to the struct's sizeof from the ABI listing.
  * Small value types that never grow (ms_grid, ms_render_disc) carry no size. */
+/* one line each: clang-format 14 spreads a braced macro body over four */
+/* clang-format off */
 #ifdef __cplusplus
 #define MS_ZERO_INIT {}
 #else
 #define MS_ZERO_INIT {0}
 #endif
+/* clang-format on */
 
 /* Threads. A game engine that owns its threads can run the library's
  * parallel work itself (as Box2D v3's enqueueTask/finishTask): enqueue

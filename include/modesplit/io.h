@@ -134,10 +134,10 @@ MS_API unsigned ms_reader_fields(const ms_reader *r);
 MS_API int ms_reader_format_version(const ms_reader *r);
 /* Strings held by the reader; "" when the file lacks them. */
 MS_API const char *ms_reader_library_version(const ms_reader *r);
-MS_API const char *ms_reader_scene(const ms_reader *r);       /* scene JSON text */
+MS_API const char *ms_reader_scene(const ms_reader *r); /* scene JSON text */
 MS_API const char *ms_reader_scene_name(const ms_reader *r);
-MS_API double ms_reader_frame_dt(const ms_reader *r);         /* s, NAN if absent */
-MS_API int ms_reader_output_every(const ms_reader *r);        /* 1 if absent */
+MS_API double ms_reader_frame_dt(const ms_reader *r);  /* s, NAN if absent */
+MS_API int ms_reader_output_every(const ms_reader *r); /* 1 if absent */
 
 /* Time of a frame, s. */
 MS_API ms_status ms_reader_time(const ms_reader *r, long frame, double *t);
@@ -147,8 +147,8 @@ MS_API ms_status ms_reader_field_grid(const ms_reader *r, unsigned field, ms_gri
 MS_API ms_status ms_reader_field_bytes(const ms_reader *r, unsigned field, uint64_t *stored,
                                        uint64_t *raw);
 /* Copy one frame of a field into out (capacity `count` floats, >= nx*ny). */
-MS_API ms_status ms_reader_read_field(const ms_reader *r, unsigned field, long frame,
-                                      float *out, size_t count);
+MS_API ms_status ms_reader_read_field(const ms_reader *r, unsigned field, long frame, float *out,
+                                      size_t count);
 /* Particles stored for a frame (0 when the file has none). */
 MS_API ms_status ms_reader_particle_count(const ms_reader *r, long frame, int *n);
 /* Copy the particles of a frame: pos[0..2] = x, y, z and vel[0..2] = vx,
@@ -177,22 +177,20 @@ MS_API int ms_reader_checkpoints(const ms_reader *r, long frames[2]);
  * of it into buf (capacity bytes); then ms_sim_restore it into a sim of the
  * file's scene. */
 MS_API ms_status ms_reader_checkpoint_size(const ms_reader *r, int i, size_t *bytes);
-MS_API ms_status ms_reader_read_checkpoint(const ms_reader *r, int i, void *buf,
-                                           size_t capacity);
+MS_API ms_status ms_reader_read_checkpoint(const ms_reader *r, int i, void *buf, size_t capacity);
 
 /* Floating objects (the scene's effects.floaters, fig10's leaves) per
  * frame: /floaters, float32 [frame][n][3], m (what ms_sim_floaters showed
  * when the frame was written). The count n (0 when the file has none), and
  * frame's positions x, y, z into xyz (capacity >= n triples). */
 MS_API int ms_reader_floater_count(const ms_reader *r);
-MS_API ms_status ms_reader_read_floaters(const ms_reader *r, long frame, float *xyz,
-                                         int capacity);
+MS_API ms_status ms_reader_read_floaters(const ms_reader *r, long frame, float *xyz, int capacity);
 
 /* ---- shaded-relief preview (PNG) ---------------------------------------- */
 
 typedef struct ms_preview_desc {
     uint32_t size; /* sizeof, set by ms_preview_desc_default() (core.h: struct sizes) */
-    float dx, dy;                 /* m, cell size: sets the slopes of the shading; > 0 */
+    float dx, dy;  /* m, cell size: sets the slopes of the shading; > 0 */
     float height_min, height_max; /* m, the colour ramp's range; equal: the field's own */
     float relief;                 /* vertical exaggeration of the shading; 0 .. 1e6 */
     float sun_azimuth;            /* degrees clockwise from +y (north); any finite value */

@@ -96,19 +96,19 @@ extern "C" {
 
 /* ms_plugin_info.kind */
 enum {
-    MS_PLUGIN_SHAPE = 1u,  /* vtable is a const ms_shape_vtable * */
-    MS_PLUGIN_SHADER = 2u  /* vtable is a const ms_shader_vtable * */
+    MS_PLUGIN_SHAPE = 1u, /* vtable is a const ms_shape_vtable * */
+    MS_PLUGIN_SHADER = 2u /* vtable is a const ms_shader_vtable * */
 };
 
 /* What ms_plugin_entry returns. Static, constant, valid while loaded. */
 typedef struct ms_plugin_info {
-    uint32_t abi;              /* MS_PLUGIN_ABI of the headers it was built with */
-    uint32_t size;             /* sizeof(ms_plugin_info) it was built with */
-    const char *name;          /* "sphere": the kind name users ask for */
-    const char *version;       /* the plugin's own version, free text ("1.0") */
-    uint32_t kind;             /* MS_PLUGIN_SHAPE or MS_PLUGIN_SHADER */
-    const char *description;   /* one line, for listings */
-    const void *vtable;        /* the kind's vtable; starts with uint32_t size */
+    uint32_t abi;            /* MS_PLUGIN_ABI of the headers it was built with */
+    uint32_t size;           /* sizeof(ms_plugin_info) it was built with */
+    const char *name;        /* "sphere": the kind name users ask for */
+    const char *version;     /* the plugin's own version, free text ("1.0") */
+    uint32_t kind;           /* MS_PLUGIN_SHAPE or MS_PLUGIN_SHADER */
+    const char *description; /* one line, for listings */
+    const void *vtable;      /* the kind's vtable; starts with uint32_t size */
 } ms_plugin_info;
 
 typedef const ms_plugin_info *(*ms_plugin_entry_fn)(void);
@@ -119,8 +119,8 @@ MS_PLUGIN_EXPORT const ms_plugin_info *ms_plugin_entry(void);
 #define MS_PLUGIN_OK 0
 #define MS_PLUGIN_ERR_INVALID_ARGUMENT (-1) /* a parameter is out of range */
 #define MS_PLUGIN_ERR_OUT_OF_MEMORY (-2)
-#define MS_PLUGIN_ERR_IO (-4)               /* a file named in the parameters */
-#define MS_PLUGIN_ERR_PARSE (-5)            /* the JSON text or a key's type */
+#define MS_PLUGIN_ERR_IO (-4)    /* a file named in the parameters */
+#define MS_PLUGIN_ERR_PARSE (-5) /* the JSON text or a key's type */
 
 /* ---- collision shapes ------------------------------------------------ */
 
@@ -241,10 +241,10 @@ typedef struct ms_shader_vtable {
 /* One registered plugin, as listed by `modesplit plugins`. The strings
  * stay valid until the process ends. */
 typedef struct ms_plugin_description {
-    uint32_t size; /* sizeof, set by ms_plugin_description_init() (core.h: struct sizes) */
-    const char *name;        /* "sphere" */
-    const char *kind;        /* "shape" or "shader" */
-    const char *version;     /* the plugin's version */
+    uint32_t size;       /* sizeof, set by ms_plugin_description_init() (core.h: struct sizes) */
+    const char *name;    /* "sphere" */
+    const char *kind;    /* "shape" or "shader" */
+    const char *version; /* the plugin's version */
     const char *description; /* one line */
     const char *path;        /* the file it was loaded from */
     uint32_t abi;            /* the ABI it was built with */

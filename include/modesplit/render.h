@@ -60,32 +60,32 @@ extern "C" {
 #define MS_RENDER_MAX_CAUSTICS 4096
 
 typedef struct ms_renderer_desc {
-    uint32_t size; /* sizeof, set by ms_renderer_desc_default() (core.h: struct sizes) */
-    int width, height;           /* pixels, [16, MS_RENDER_MAX_SIDE]; default 950 x 950 */
-    const char *shader;          /* shader plugin name; default "water" */
-    const char *shader_params;   /* its parameters as a JSON object text; NULL = defaults */
+    uint32_t size;      /* sizeof, set by ms_renderer_desc_default() (core.h: struct sizes) */
+    int width, height;  /* pixels, [16, MS_RENDER_MAX_SIDE]; default 950 x 950 */
+    const char *shader; /* shader plugin name; default "water" */
+    const char *shader_params; /* its parameters as a JSON object text; NULL = defaults */
     /* "builtin" (a procedural sky), a directory holding six PNG faces
      * px.png nx.png py.png ny.png pz.png nz.png (or posx.png ... negz.png),
      * or one PNG holding the six square faces stacked top to bottom in
      * that order (height = 6 x width). Faces are named by world axes (z up)
      * and laid out as OpenGL cube map faces. Default "builtin". */
     const char *cubemap;
-    int caustics;                /* 1: trace the caustics light map (if the shader uses it); default 1 */
-    int caustics_resolution;     /* light map texels per side, [16, MS_RENDER_MAX_CAUSTICS]; 512 */
-    float caustics_intensity;    /* contrast of the light map, [0, 100]; 1 = physical */
-    float light_dir[3];          /* direction the sun's light travels (not all 0); [0.3, 0.2, -1] */
-    float light_color[3];        /* linear RGB, each [0, 100]; default [1, 1, 1] */
-    float ior;                   /* refractive index used to trace caustics, [1, 3]; 1.333 */
+    int caustics; /* 1: trace the caustics light map (if the shader uses it); default 1 */
+    int caustics_resolution;  /* light map texels per side, [16, MS_RENDER_MAX_CAUSTICS]; 512 */
+    float caustics_intensity; /* contrast of the light map, [0, 100]; 1 = physical */
+    float light_dir[3];       /* direction the sun's light travels (not all 0); [0.3, 0.2, -1] */
+    float light_color[3];     /* linear RGB, each [0, 100]; default [1, 1, 1] */
+    float ior;                /* refractive index used to trace caustics, [1, 3]; 1.333 */
     float eye[3], target[3], up[3]; /* camera, m; default: from the -y side, above the pool */
-    float fov;                   /* degrees, vertical, [1, 179]; default 45 */
+    float fov;                      /* degrees, vertical, [1, 179]; default 45 */
     /* The pool: pool_min = x, y of one corner and z of the floor; pool_max =
      * x, y of the other corner and z of the rim (top of the walls). The
      * height field's values are heights above the floor (the scene's
      * heights above domain.min z). Default [0, 0, 0] .. [1, 1, 0.3]. */
     float pool_min[3], pool_max[3]; /* m */
-    float water_level;           /* m (world z) of still water, in [floor, rim]; default 0.25 */
-    float tile_size;             /* m, edge of a floor tile, >= 0; 0 = 1/12 of the shorter side */
-    float floor_color[3];        /* linear RGB of the tiles, each [0, 1]; [0.30, 0.52, 0.60] */
+    float water_level;              /* m (world z) of still water, in [floor, rim]; default 0.25 */
+    float tile_size;      /* m, edge of a floor tile, >= 0; 0 = 1/12 of the shorter side */
+    float floor_color[3]; /* linear RGB of the tiles, each [0, 1]; [0.30, 0.52, 0.60] */
     /* The mesh has a vertex every mesh_step cells (heights averaged over
      * the step x step block), [0, 64]. 0 = automatic, a screen-space-error
      * LOD: vertices at most 32 pixels apart where the water is nearest the
@@ -186,7 +186,7 @@ MS_API ms_status ms_renderer_write_png(const ms_renderer *r, const char *path);
 
 /* What the last draw cost and did. */
 typedef struct ms_render_stats {
-    uint32_t size; /* sizeof, set by ms_render_stats_init() (core.h: struct sizes) */
+    uint32_t size;        /* sizeof, set by ms_render_stats_init() (core.h: struct sizes) */
     unsigned passes;      /* MS_SHADER_NEEDS_* bits of the passes that run (plugin.h) */
     long frames;          /* draws finished */
     double mesh_ms;       /* normals and vertex upload, last draw */

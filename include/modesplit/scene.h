@@ -17,14 +17,14 @@ MS_API ms_status ms_scene_parse(const char *json, size_t len, ms_scene **out);
 MS_API void ms_scene_destroy(ms_scene *sc);
 
 MS_API const char *ms_scene_name(const ms_scene *sc);
-MS_API const char *ms_scene_text(const ms_scene *sc);  /* the JSON text as loaded */
-MS_API const char *ms_scene_path(const ms_scene *sc);  /* file it came from; "" when parsed */
-MS_API double ms_scene_duration(const ms_scene *sc);    /* s */
-MS_API float ms_scene_frame_dt(const ms_scene *sc);     /* s */
+MS_API const char *ms_scene_text(const ms_scene *sc);       /* the JSON text as loaded */
+MS_API const char *ms_scene_path(const ms_scene *sc);       /* file it came from; "" when parsed */
+MS_API double ms_scene_duration(const ms_scene *sc);        /* s */
+MS_API float ms_scene_frame_dt(const ms_scene *sc);         /* s */
 MS_API unsigned ms_scene_output_fields(const ms_scene *sc); /* MS_FIELD_* bits asked for */
-MS_API int ms_scene_output_every(const ms_scene *sc);   /* write every n-th frame, >= 1 */
-MS_API int ms_scene_output_deflate(const ms_scene *sc); /* 0..9, 0 = no compression */
-MS_API int ms_scene_has_render(const ms_scene *sc);     /* a `render` section exists */
+MS_API int ms_scene_output_every(const ms_scene *sc);       /* write every n-th frame, >= 1 */
+MS_API int ms_scene_output_deflate(const ms_scene *sc);     /* 0..9, 0 = no compression */
+MS_API int ms_scene_has_render(const ms_scene *sc);         /* a `render` section exists */
 
 /* A scene with overrides "KEY=VALUE" of keys by their dotted path
  * ("volume.spacing=0.025", "surface.cells=[512,512]",
@@ -34,8 +34,8 @@ MS_API int ms_scene_has_render(const ms_scene *sc);     /* a `render` section ex
  * key lists the allowed ones). The file alone must be valid. The scene text
  * (ms_scene_text) is the merged JSON, listing the overrides under
  * "overrides". n = 0 is ms_scene_load / ms_scene_parse. */
-MS_API ms_status ms_scene_load_with_overrides(const char *path, int n,
-                                              const char *const *overrides, ms_scene **out);
+MS_API ms_status ms_scene_load_with_overrides(const char *path, int n, const char *const *overrides,
+                                              ms_scene **out);
 MS_API ms_status ms_scene_parse_with_overrides(const char *json, size_t len, int n,
                                                const char *const *overrides, ms_scene **out);
 

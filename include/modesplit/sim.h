@@ -39,13 +39,13 @@ extern "C" {
  * the start. ms_sim_volume / ms_sim_surface may be used between steps
  * (to add particles, drops, ...), never during one. */
 typedef struct ms_sim_desc {
-    uint32_t size; /* sizeof, set by ms_sim_desc_default() (core.h: struct sizes) */
-    const ms_volume_desc *volume;    /* NULL: no volume flow */
-    const ms_surface_desc *surface;  /* NULL: no surface waves */
-    int field_nx, field_ny;          /* X_SPH x Y_SPH; N_surf = surface nx / field_nx (eq. 20) */
-    int surface_substeps;            /* N_time (eq. 19); 0 = derived from the CFL bound */
+    uint32_t size;                /* sizeof, set by ms_sim_desc_default() (core.h: struct sizes) */
+    const ms_volume_desc *volume; /* NULL: no volume flow */
+    const ms_surface_desc *surface; /* NULL: no surface waves */
+    int field_nx, field_ny;         /* X_SPH x Y_SPH; N_surf = surface nx / field_nx (eq. 20) */
+    int surface_substeps;           /* N_time (eq. 19); 0 = derived from the CFL bound */
     float couple_surface_from_volume, couple_volume_from_surface; /* [0, 0.25], [0, 1] */
-    int threads;                     /* 1 = sequential, 2 = two-core split */
+    int threads; /* 1 = sequential, 2 = two-core split */
     /* --- grown at the end (ABI: descs only grow) --- */
     ms_enqueue_task_fn *enqueue_task;
     ms_finish_task_fn *finish_task;
@@ -92,8 +92,8 @@ MS_API ms_status ms_sim_field_grid(const ms_sim *sim, unsigned field, ms_grid *o
  * one (n, 3) array with strides (sizeof(float), pos[1] - pos[0]). */
 MS_API ms_status ms_sim_particles(const ms_sim *sim, int *n, const float *pos[3],
                                   const float *vel[3]);
-MS_API double ms_sim_time(const ms_sim *sim);   /* s, time of the fields above */
-MS_API long ms_sim_frame(const ms_sim *sim);    /* frames finished */
+MS_API double ms_sim_time(const ms_sim *sim);           /* s, time of the fields above */
+MS_API long ms_sim_frame(const ms_sim *sim);            /* frames finished */
 MS_API const ms_scene *ms_sim_scene(const ms_sim *sim); /* NULL when made from a desc */
 
 /* Statistics since creation. The stage times are the milliseconds each
@@ -138,14 +138,14 @@ MS_API void ms_sim_stats(const ms_sim *sim, ms_stats *out);
 typedef struct ms_sim_info {
     uint32_t size; /* sizeof, set by ms_sim_info_init() (core.h: struct sizes) */
     int has_volume, has_surface;
-    int threads;             /* 1 or 2 as created */
-    int field_nx, field_ny;  /* X_SPH x Y_SPH (0 without a volume) */
+    int threads;                /* 1 or 2 as created */
+    int field_nx, field_ny;     /* X_SPH x Y_SPH (0 without a volume) */
     int surface_nx, surface_ny; /* X_WE x Y_WE (0 without a surface) */
     float n_surf_x, n_surf_y;   /* eq. 20: X_WE / X_SPH, Y_WE / Y_SPH (0 if either is absent) */
-    int n_time;              /* eq. 19: as given, or 0 = derived each frame */
-    int particles;           /* particles now */
-    int floaters;            /* floating objects */
-    int obstacles;           /* obstacles + container */
+    int n_time;                 /* eq. 19: as given, or 0 = derived each frame */
+    int particles;              /* particles now */
+    int floaters;               /* floating objects */
+    int obstacles;              /* obstacles + container */
 } ms_sim_info;
 static inline ms_sim_info ms_sim_info_init(void)
 {
@@ -218,8 +218,7 @@ MS_API ms_status ms_sim_container_pose(const ms_sim *sim, float pos[3], float or
  * naming what differs) before it changes anything; a restore clears a
  * failed sim. */
 MS_API ms_status ms_sim_snapshot_size(const ms_sim *sim, size_t *bytes);
-MS_API ms_status ms_sim_snapshot(const ms_sim *sim, void *buf, size_t capacity,
-                                 size_t *written);
+MS_API ms_status ms_sim_snapshot(const ms_sim *sim, void *buf, size_t capacity, size_t *written);
 MS_API ms_status ms_sim_restore(ms_sim *sim, const void *buf, size_t bytes);
 
 #ifdef __cplusplus

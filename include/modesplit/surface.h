@@ -40,18 +40,18 @@ typedef enum ms_boundary {
 } ms_boundary;
 
 typedef struct ms_surface_desc {
-    uint32_t size; /* sizeof, set by ms_surface_desc_default() (core.h: struct sizes) */
-    int nx, ny;          /* cells; 2 .. 16384 each                         */
-    float dx;            /* m, cell size; > 0                              */
-    float wave_speed;    /* m/s, c of eq. 2 where no speed map is set; > 0 */
-    float damping;       /* in (0, 1]: fraction of the wave velocity kept
+    uint32_t size;    /* sizeof, set by ms_surface_desc_default() (core.h: struct sizes) */
+    int nx, ny;       /* cells; 2 .. 16384 each                         */
+    float dx;         /* m, cell size; > 0                              */
+    float wave_speed; /* m/s, c of eq. 2 where no speed map is set; > 0 */
+    float damping;    /* in (0, 1]: fraction of the wave velocity kept
                             after one second (1 = no damping). Per second,
                             not per step, so the result does not depend on
                             how many sub-steps are taken.                  */
     ms_boundary boundary;
     /* --- grown at the end (ABI: descs only grow) --- */
-    uint64_t seed;       /* seeds the rain RNG held in the handle          */
-    int max_substeps;    /* refuse a step needing more sub-steps (MS_ERR_UNSTABLE); >= 1 */
+    uint64_t seed;    /* seeds the rain RNG held in the handle          */
+    int max_substeps; /* refuse a step needing more sub-steps (MS_ERR_UNSTABLE); >= 1 */
 } ms_surface_desc;
 
 /* nx = ny = 256, dx = 0.01 m, wave_speed = 0.5 m/s, damping = 0.9,
@@ -106,7 +106,7 @@ MS_API ms_status ms_surface_speed_from_depth(const float *depth, size_t n, float
  * seed, same steps -> same bytes). NULL or rate 0 turns rain off (then no
  * random numbers are drawn). */
 typedef struct ms_rain {
-    uint32_t size; /* sizeof, set by ms_rain_default() (core.h: struct sizes) */
+    uint32_t size;   /* sizeof, set by ms_rain_default() (core.h: struct sizes) */
     float rate;      /* drops per m^2 per s, >= 0 */
     float radius;    /* m, > 0 */
     float amplitude; /* m, finite (negative = dents, as real drops make) */
@@ -122,10 +122,10 @@ MS_API ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *rain);
  * leaves bow waves and a wake. */
 typedef struct ms_disturber_desc {
     uint32_t size; /* sizeof, set by ms_disturber_desc_default() (core.h: struct sizes) */
-    float x, y;      /* m, start position */
-    float vx, vy;    /* m/s, velocity (used when no path is set) */
-    float radius;    /* m, > 0 */
-    float depth;     /* m, finite: how deep it presses */
+    float x, y;    /* m, start position */
+    float vx, vy;  /* m/s, velocity (used when no path is set) */
+    float radius;  /* m, > 0 */
+    float depth;   /* m, finite: how deep it presses */
 } ms_disturber_desc;
 /* At (0, 0), still, radius 0.05 m, depth 0.01 m. */
 MS_API ms_disturber_desc ms_disturber_desc_default(void);
@@ -136,8 +136,8 @@ MS_API ms_status ms_surface_move_disturber(ms_surface *s, int id, float x, float
 /* Let it travel along a polyline of npoints (x, y) pairs (m) at speed m/s;
  * loop != 0 returns to the first point and goes round again, otherwise it
  * stops at the last point. The path is copied. */
-MS_API ms_status ms_surface_set_disturber_path(ms_surface *s, int id, int npoints,
-                                               const float *xy, float speed, int loop);
+MS_API ms_status ms_surface_set_disturber_path(ms_surface *s, int id, int npoints, const float *xy,
+                                               float speed, int loop);
 /* Where it is now (m), for objects that ride on it. */
 MS_API ms_status ms_surface_disturber_position(const ms_surface *s, int id, float *x, float *y);
 MS_API ms_status ms_surface_remove_disturber(ms_surface *s, int id);
@@ -153,13 +153,13 @@ MS_API const float *ms_surface_height(const ms_surface *s, int *nx, int *ny);
 MS_API double ms_surface_energy(const ms_surface *s);
 
 typedef struct ms_surface_info {
-    uint32_t size; /* sizeof, set by ms_surface_info_init() (core.h: struct sizes) */
-    double time;        /* s simulated                                  */
-    long substeps;      /* leapfrog steps taken                         */
-    float max_dt;       /* s, largest stable sub-step for the current maps */
-    float max_speed;    /* m/s, fastest cell                            */
-    size_t bytes;       /* memory held                                  */
-    long drops;         /* drops added (by hand and by rain)            */
+    uint32_t size;   /* sizeof, set by ms_surface_info_init() (core.h: struct sizes) */
+    double time;     /* s simulated                                  */
+    long substeps;   /* leapfrog steps taken                         */
+    float max_dt;    /* s, largest stable sub-step for the current maps */
+    float max_speed; /* m/s, fastest cell                            */
+    size_t bytes;    /* memory held                                  */
+    long drops;      /* drops added (by hand and by rain)            */
 } ms_surface_info;
 static inline ms_surface_info ms_surface_info_init(void)
 {

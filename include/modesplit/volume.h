@@ -85,9 +85,9 @@ typedef struct ms_volume_desc {
                             the height field is not smoothed; > 0 */
     ms_density_kernel density_kernel;
     /* --- DFSPH (MS_PRESSURE_DFSPH; unused by the other laws) --- */
-    float max_density_error;    /* average predicted compression (rho/rho0 - 1) the
+    float max_density_error;       /* average predicted compression (rho/rho0 - 1) the
                                    constant-density solve stops at; (0, 0.1] */
-    float max_divergence_error; /* average dt (D rho/Dt) / rho0 the divergence-free
+    float max_divergence_error;    /* average dt (D rho/Dt) / rho0 the divergence-free
                                    solve stops at; (0, 0.1] */
     int max_density_iterations;    /* cap of the constant-density solve, 1 .. 10000;
                                       beyond it the sub-step goes on with the error
@@ -208,36 +208,36 @@ MS_API ms_status ms_volume_set_viscosity(ms_volume *v, float viscosity);
  * energy it adds is bounded by the waves' own; u is also capped at a
  * tenth of the sound speed. The first call (or a call with another grid)
  * only records the field. gain 0 = off (nothing is recorded). */
-MS_API ms_status ms_volume_adapt_to_waves(ms_volume *v, const float *wave_height,
-                                          const ms_grid *g, float gain);
+MS_API ms_status ms_volume_adapt_to_waves(ms_volume *v, const float *wave_height, const ms_grid *g,
+                                          float gain);
 
 /* --- what a coupler needs --- */
 
 typedef struct ms_volume_info {
-    uint32_t size; /* sizeof, set by ms_volume_info_init() (core.h: struct sizes) */
-    double time;          /* s simulated                                       */
-    long steps;           /* ms_volume_step calls that advanced time           */
-    long substeps;        /* SPH sub-steps taken                               */
-    float last_dt;        /* s, the last sub-step                              */
-    float max_dt;         /* s, largest stable sub-step at the current state   */
-    const char *dt_limit; /* which bound set max_dt: "cfl", "viscous", "force" */
-    float max_speed;      /* m/s, fastest particle                             */
-    float sound_speed;    /* m/s, of the pressure law at rest density (DFSPH:
+    uint32_t size;           /* sizeof, set by ms_volume_info_init() (core.h: struct sizes) */
+    double time;             /* s simulated                                       */
+    long steps;              /* ms_volume_step calls that advanced time           */
+    long substeps;           /* SPH sub-steps taken                               */
+    float last_dt;           /* s, the last sub-step                              */
+    float max_dt;            /* s, largest stable sub-step at the current state   */
+    const char *dt_limit;    /* which bound set max_dt: "cfl", "viscous", "force" */
+    float max_speed;         /* m/s, fastest particle                             */
+    float sound_speed;       /* m/s, of the pressure law at rest density (DFSPH:
                              desc.sound_speed, used only to cap the coupling) */
     float max_density_error; /* max rho/rho0 - 1: the liquid's compression     */
-    float particle_mass;  /* kg                                                */
-    int count;            /* particles                                         */
-    int surface_count;    /* surface particles at the last density pass        */
-    double pairs;         /* neighbour pairs (i != j, r < h) of the last sub-step */
-    size_t bytes;         /* memory held                                       */
-    int threads;          /* threads used inside a step                        */
+    float particle_mass;     /* kg                                                */
+    int count;               /* particles                                         */
+    int surface_count;       /* surface particles at the last density pass        */
+    double pairs;            /* neighbour pairs (i != j, r < h) of the last sub-step */
+    size_t bytes;            /* memory held                                       */
+    int threads;             /* threads used inside a step                        */
     /* --- grown at the end: DFSPH (0 for the other laws) --- */
-    int density_iterations;    /* of the last sub-step's constant-density solve */
-    int divergence_iterations; /* of the last sub-step's divergence-free solve  */
-    long density_iterations_total;    /* over all sub-steps                    */
+    int density_iterations;        /* of the last sub-step's constant-density solve */
+    int divergence_iterations;     /* of the last sub-step's divergence-free solve  */
+    long density_iterations_total; /* over all sub-steps                    */
     long divergence_iterations_total;
-    float density_error;       /* average predicted rho/rho0 - 1 the last solve reached */
-    float divergence_error;    /* average dt (D rho/Dt)/rho0 the last solve reached */
+    float density_error;    /* average predicted rho/rho0 - 1 the last solve reached */
+    float divergence_error; /* average dt (D rho/Dt)/rho0 the last solve reached */
 } ms_volume_info;
 static inline ms_volume_info ms_volume_info_init(void)
 {

@@ -43,7 +43,8 @@ ms_status ms_set_allocator(ms_alloc_fn *alloc_fn, ms_free_fn *free_fn, void *use
         return ms_fail(MS_ERR_STATE,
                        "core: ms_set_allocator while the library holds %ld blocks of the "
                        "previous allocator; set it before creating anything, or after "
-                       "destroying everything", live);
+                       "destroying everything",
+                       live);
     hook_alloc = alloc_fn ? alloc_fn : default_alloc;
     hook_free = free_fn ? free_fn : default_free;
     hook_user = alloc_fn ? user : NULL;

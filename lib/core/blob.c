@@ -79,8 +79,7 @@ ms_status ms_blob_count(ms_blob *b, const char *name, int *n, int max)
     ms_status st = ms_blob_io(b, name, n, sizeof *n);
     if (st == MS_OK && b->reading && (*n < 0 || *n > max))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "snapshot: record '%s' is %d, outside [0, %d] for this sim", name, *n,
-                       max);
+                       "snapshot: record '%s' is %d, outside [0, %d] for this sim", name, *n, max);
     return st;
 }
 

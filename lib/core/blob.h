@@ -25,11 +25,11 @@
 
 typedef struct ms_blob {
     int reading;
-    unsigned char *out;     /* writing: the buffer, NULL = count only */
+    unsigned char *out;      /* writing: the buffer, NULL = count only */
     const unsigned char *in; /* reading */
-    size_t cap;             /* writing: bytes of out */
-    size_t len;             /* writing: bytes so far; reading: bytes of in */
-    size_t pos;             /* reading: next record */
+    size_t cap;              /* writing: bytes of out */
+    size_t len;              /* writing: bytes so far; reading: bytes of in */
+    size_t pos;              /* reading: next record */
 } ms_blob;
 
 /* Writing: append record `name` of `bytes` bytes from p (always MS_OK).

@@ -69,13 +69,13 @@ long ms_rng_poisson(ms_rng *r, double mean);
  * caller gets a valid size. When a struct grows in a release, the sizes of
  * the older layouts stay known (add a v2_end then). */
 typedef struct ms_struct_sizes {
-    const char *name;  /* "ms_surface_desc" */
-    const char *init;  /* "ms_surface_desc_default()" */
-    size_t current;    /* sizeof today */
-    size_t v1_end;     /* end of the last field of the 0.1 layout */
+    const char *name; /* "ms_surface_desc" */
+    const char *init; /* "ms_surface_desc_default()" */
+    size_t current;   /* sizeof today */
+    size_t v1_end;    /* end of the last field of the 0.1 layout */
 } ms_struct_sizes;
-#define MS_STRUCT_SIZES(type, last_v1_field, init)                                     \
-    ((ms_struct_sizes){#type, init, sizeof(type),                                     \
+#define MS_STRUCT_SIZES(type, last_v1_field, init) \
+    ((ms_struct_sizes){#type, init, sizeof(type),  \
                        offsetof(type, last_v1_field) + sizeof(((type *)0)->last_v1_field)})
 /* A desc the caller passes in: refuses a NULL pointer, size 0 and a size
  * the library does not know (MS_ERR_INVALID_ARGUMENT naming the struct);
@@ -90,11 +90,11 @@ void ms_struct_write(void *user, const void *full, size_t size);
 
 /* Return the status of call if it is an error: the one early-return
  * helper of the library (was TRY/CHECK in three files). */
-#define MS_TRY(call)                 \
-    do {                             \
+#define MS_TRY(call)                   \
+    do {                               \
         ms_status ms_try_st_ = (call); \
-        if (ms_try_st_ != MS_OK)     \
-            return ms_try_st_;       \
+        if (ms_try_st_ != MS_OK)       \
+            return ms_try_st_;         \
     } while (0)
 /* A NUL-terminated copy of the first n bytes of s (ms_free it); NULL when
  * out of memory. ms_strdup (above) copies a whole string. */

@@ -50,8 +50,8 @@ ms_status ms_fail(ms_status s, const char *fmt, ...)
 ms_status ms_check_finite(const char *part, const char *key, double v)
 {
     if (!isfinite(v))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: %s is %g; it must be a finite number",
-                       part, key, v);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: %s is %g; it must be a finite number", part,
+                       key, v);
     return MS_OK;
 }
 
@@ -59,16 +59,16 @@ ms_status ms_check_range(const char *part, const char *key, double v, double lo,
                          const char *unit)
 {
     if (!isfinite(v) || v < lo || v > hi)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: %s %g%s%s is outside [%g, %g]", part, key,
-                       v, *unit ? " " : "", unit, lo, hi);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: %s %g%s%s is outside [%g, %g]", part, key, v,
+                       *unit ? " " : "", unit, lo, hi);
     return MS_OK;
 }
 
 ms_status ms_check_positive(const char *part, const char *key, double v, const char *unit)
 {
     if (!isfinite(v) || !(v > 0))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: %s %g%s%s must be finite and > 0", part,
-                       key, v, *unit ? " " : "", unit);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: %s %g%s%s must be finite and > 0", part, key,
+                       v, *unit ? " " : "", unit);
     return MS_OK;
 }
 

@@ -34,18 +34,18 @@ static uint32_t read_size(const void *p)
 ms_status ms_struct_in(const void *user, void *local, ms_struct_sizes k, const char *part)
 {
     if (!user)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: desc is NULL (an %s from %s)", part,
-                       k.name, k.init);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: desc is NULL (an %s from %s)", part, k.name,
+                       k.init);
     uint32_t size = read_size(user);
     if (size == 0)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "%s: %s.size is 0: start from %s, which sets it", part, k.name,
-                       k.init);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "%s: %s.size is 0: start from %s, which sets it",
+                       part, k.name, k.init);
     if (!known(&k, size))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "%s: %s.size %u is not a size this library (%s) knows: %zu (current) "
-                       "or %zu..%zu (version 0.1); %s", part, k.name, (unsigned)size,
-                       MS_VERSION_STRING, k.current, k.v1_end, MS_MIN(k.v1_end + 7, k.current),
+                       "or %zu..%zu (version 0.1); %s",
+                       part, k.name, (unsigned)size, MS_VERSION_STRING, k.current, k.v1_end,
+                       MS_MIN(k.v1_end + 7, k.current),
                        size > k.current ? "a header newer than the library?"
                                         : "start from the desc_default() function");
     memcpy(local, user, size);
@@ -68,7 +68,8 @@ size_t ms_struct_out(const void *user, ms_struct_sizes k, const char *part)
     if (!known(&k, size)) {
         ms_fail(MS_ERR_INVALID_ARGUMENT,
                 "%s: %s.size %u is not a size this library (%s) knows (%zu current), nothing "
-                "was written", part, k.name, (unsigned)size, MS_VERSION_STRING, k.current);
+                "was written",
+                part, k.name, (unsigned)size, MS_VERSION_STRING, k.current);
         return 0;
     }
     return size;

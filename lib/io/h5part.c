@@ -31,8 +31,7 @@ static herr_t write_array(hid_t group, const char *name, int n, const float *v)
     hid_t space = H5Screate_simple(1, dims, NULL);
     if (space < 0)
         return -1;
-    hid_t d = H5Dcreate2(group, name, H5T_IEEE_F32LE, space, H5P_DEFAULT, H5P_DEFAULT,
-                         H5P_DEFAULT);
+    hid_t d = H5Dcreate2(group, name, H5T_IEEE_F32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     herr_t st = -1;
     if (d >= 0) {
         st = n > 0 ? H5Dwrite(d, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) : 0;
@@ -54,8 +53,8 @@ static herr_t write_ids(hid_t group, int n)
     hid_t space = H5Screate_simple(1, dims, NULL);
     herr_t st = -1;
     if (space >= 0) {
-        hid_t d = H5Dcreate2(group, "id", H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT,
-                             H5P_DEFAULT);
+        hid_t d =
+            H5Dcreate2(group, "id", H5T_STD_I32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
         if (d >= 0) {
             st = n > 0 ? H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, id) : 0;
             if (H5Dclose(d) < 0)
@@ -68,8 +67,7 @@ static herr_t write_ids(hid_t group, int n)
 }
 
 /* x, y, z interleaved into an [n][3] dataset. */
-static herr_t write_vec3(hid_t group, const char *name, int n, const float *const v[3],
-                         float *buf)
+static herr_t write_vec3(hid_t group, const char *name, int n, const float *const v[3], float *buf)
 {
     for (int i = 0; i < n; ++i)
         for (int k = 0; k < 3; ++k)
@@ -78,8 +76,7 @@ static herr_t write_vec3(hid_t group, const char *name, int n, const float *cons
     hid_t space = H5Screate_simple(2, dims, NULL);
     if (space < 0)
         return -1;
-    hid_t d = H5Dcreate2(group, name, H5T_IEEE_F32LE, space, H5P_DEFAULT, H5P_DEFAULT,
-                         H5P_DEFAULT);
+    hid_t d = H5Dcreate2(group, name, H5T_IEEE_F32LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     herr_t st = -1;
     if (d >= 0) {
         st = n > 0 ? H5Dwrite(d, H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf) : 0;

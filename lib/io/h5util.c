@@ -45,8 +45,8 @@ void ms_h5_loud(const ms_h5_quiet *q)
 }
 
 typedef struct stack_reason {
-    int err;             /* errno found in a message, 0 if none */
-    char inner[256];     /* the innermost message */
+    int err;         /* errno found in a message, 0 if none */
+    char inner[256]; /* the innermost message */
     int seen;
 } stack_reason;
 

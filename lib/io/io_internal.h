@@ -33,28 +33,28 @@ int ms_io_field_slot(unsigned field);
 
 /* ---- the raw writer ---- */
 typedef struct ms_writer_layout {
-    unsigned fields;              /* MS_FIELD_* bits to write */
-    ms_grid grid[MS_IO_NFIELDS];  /* where each height field lies */
-    const char *scene_text;       /* may be NULL */
-    const char *scene_name;       /* may be NULL */
-    const char *scene_path;       /* the file the scene came from, never written;
+    unsigned fields;             /* MS_FIELD_* bits to write */
+    ms_grid grid[MS_IO_NFIELDS]; /* where each height field lies */
+    const char *scene_text;      /* may be NULL */
+    const char *scene_name;      /* may be NULL */
+    const char *scene_path;      /* the file the scene came from, never written;
                                      NULL or "" when there is none */
-    double frame_dt;              /* s, of the simulation */
-    int output_every;             /* frames of the sim per written frame, >= 1 */
-    int deflate;                  /* height fields: deflate level 1..9 after shuffle;
+    double frame_dt;             /* s, of the simulation */
+    int output_every;            /* frames of the sim per written frame, >= 1 */
+    int deflate;                 /* height fields: deflate level 1..9 after shuffle;
                                      0 = stored without filters (fastest, largest) */
-    int checkpoint_every;         /* written frames per sim snapshot, 0 = none */
-    int floaters;                 /* floating objects per frame (/floaters), 0 = none */
+    int checkpoint_every;        /* written frames per sim snapshot, 0 = none */
+    int floaters;                /* floating objects per frame (/floaters), 0 = none */
 } ms_writer_layout;
 
 typedef struct ms_writer_data {
-    double time;                          /* s */
-    const float *field[MS_IO_NFIELDS];    /* nx*ny each, for the fields written */
-    int particles;                        /* count, >= 0 */
-    const float *pos[3], *vel[3];         /* particles views, may be NULL if count is 0 */
-    const void *checkpoint;               /* an ms_sim_snapshot blob of this frame, or NULL */
+    double time;                       /* s */
+    const float *field[MS_IO_NFIELDS]; /* nx*ny each, for the fields written */
+    int particles;                     /* count, >= 0 */
+    const float *pos[3], *vel[3];      /* particles views, may be NULL if count is 0 */
+    const void *checkpoint;            /* an ms_sim_snapshot blob of this frame, or NULL */
     size_t checkpoint_bytes;
-    const float *floaters;                /* 3 * layout.floaters: x, y, z (m) */
+    const float *floaters; /* 3 * layout.floaters: x, y, z (m) */
 } ms_writer_data;
 
 ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out);

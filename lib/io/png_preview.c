@@ -61,13 +61,12 @@ static ms_status check_desc(const float *h, int nx, int ny, const ms_preview_des
         (st = ms_check_finite("preview", "height_max", d->height_max)) != MS_OK ||
         (st = ms_check_range("preview", "relief", d->relief, 0, 1e6, "")) != MS_OK ||
         (st = ms_check_finite("preview", "sun_azimuth", d->sun_azimuth)) != MS_OK ||
-        (st = ms_check_range("preview", "sun_elevation", d->sun_elevation, 1e-3, 90,
-                             "degrees")) != MS_OK ||
+        (st = ms_check_range("preview", "sun_elevation", d->sun_elevation, 1e-3, 90, "degrees")) !=
+            MS_OK ||
         (st = ms_check_int_range("preview", "scale", d->scale, 1, 16)) != MS_OK)
         return st;
     if (d->height_min > d->height_max)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "preview: height_min %g m is above height_max %g m",
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "preview: height_min %g m is above height_max %g m",
                        (double)d->height_min, (double)d->height_max);
     long w = (long)nx * d->scale, hgt = (long)ny * d->scale;
     if (w * hgt > MAX_PIXELS)
@@ -124,8 +123,8 @@ ms_status ms_field_shade(const float *h, int nx, int ny, const ms_preview_desc *
     size_t w = (size_t)nx * (size_t)d->scale;
     if (rgb_bytes < w * (size_t)ny * (size_t)d->scale * 3)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "preview: rgb holds %zu bytes but %zu x %zu pixels need %zu", rgb_bytes,
-                       w, (size_t)ny * (size_t)d->scale, w * (size_t)ny * (size_t)d->scale * 3);
+                       "preview: rgb holds %zu bytes but %zu x %zu pixels need %zu", rgb_bytes, w,
+                       (size_t)ny * (size_t)d->scale, w * (size_t)ny * (size_t)d->scale * 3);
     float lo = d->height_min, hi = d->height_max;
     if (lo == hi) {
         double mn = INFINITY, mx = -INFINITY;
@@ -223,8 +222,8 @@ static void on_png_warning(png_structp png, png_const_charp msg)
 static ms_status write_rgb_png(FILE *fp, const unsigned char *rgb, size_t w, size_t hgt,
                                png_err *err)
 {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, err, on_png_error,
-                                              on_png_warning);
+    png_structp png =
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, err, on_png_error, on_png_warning);
     if (!png)
         return MS_ERR_OUT_OF_MEMORY;
     png_infop info = png_create_info_struct(png);
@@ -258,8 +257,7 @@ ms_status ms_field_write_png(const float *h, int nx, int ny, const char *path,
     size_t w = (size_t)nx * (size_t)d->scale, hgt = (size_t)ny * (size_t)d->scale;
     unsigned char *rgb = ms_malloc(w * hgt * 3);
     if (!rgb)
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "preview: out of memory for %zu x %zu pixels", w,
-                       hgt);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "preview: out of memory for %zu x %zu pixels", w, hgt);
     st = ms_field_shade(h, nx, ny, d, rgb, w * hgt * 3);
     if (st != MS_OK) {
         ms_free(rgb);
@@ -288,7 +286,9 @@ ms_status ms_field_write_png(const float *h, int nx, int ny, const char *path,
             st = ms_fail(st, "preview: out of memory in libpng");
         else if (st != MS_OK || closed != 0)
             st = ms_fail(MS_ERR_IO, "preview: writing %s failed: %s", path,
-                         e ? strerror(e) : err.msg[0] ? err.msg : "unknown libpng error");
+                         e            ? strerror(e)
+                         : err.msg[0] ? err.msg
+                                      : "unknown libpng error");
         else if (rename(tmp, path) != 0)
             st = ms_fail(MS_ERR_IO, "preview: cannot rename %s to %s: %s", tmp, path,
                          strerror(errno));

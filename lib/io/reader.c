@@ -121,15 +121,18 @@ static ms_status open_field(ms_reader *r, int slot, hid_t fields)
     r->dset[slot] = d;
     if (dims[1] < 1 || dims[1] > MS_IO_MAX_SIDE || dims[2] < 1 || dims[2] > MS_IO_MAX_SIDE ||
         dims[1] * dims[2] > (hsize_t)MS_IO_MAX_CELLS)
-        return ms_fail(MS_ERR_PARSE, "io: %s: /fields/%s grid %llu x %llu is outside [1, %d] a "
-                       "side or over %ld cells", r->path, name, (unsigned long long)dims[2],
-                       (unsigned long long)dims[1], MS_IO_MAX_SIDE, MS_IO_MAX_CELLS);
+        return ms_fail(MS_ERR_PARSE,
+                       "io: %s: /fields/%s grid %llu x %llu is outside [1, %d] a "
+                       "side or over %ld cells",
+                       r->path, name, (unsigned long long)dims[2], (unsigned long long)dims[1],
+                       MS_IO_MAX_SIDE, MS_IO_MAX_CELLS);
     double dx[2], origin[2];
     /* a normal float both ways: a denormal dx would become a 0 mm grid */
     if (ms_h5_read_doubles(d, "dx", dx, 2) < 0 || !(dx[0] >= FLT_MIN) || !(dx[1] >= FLT_MIN) ||
         !isfinite(dx[0]) || !isfinite(dx[1]) || dx[0] > 3e38 || dx[1] > 3e38)
         return ms_fail(MS_ERR_PARSE,
-                       "io: %s: /fields/%s lacks the attribute dx = [dx, dy] (finite, at least 1.2e-38 m: a normal float)",
+                       "io: %s: /fields/%s lacks the attribute dx = [dx, dy] (finite, at least "
+                       "1.2e-38 m: a normal float)",
                        r->path, name);
     if (ms_h5_read_doubles(d, "origin", origin, 2) < 0 || !isfinite(origin[0]) ||
         !isfinite(origin[1]) || fabs(origin[0]) > 3e38 || fabs(origin[1]) > 3e38)
@@ -199,7 +202,8 @@ static ms_status read_layout(ms_reader *r)
         ms_free(format);
         return ms_fail(MS_ERR_PARSE,
                        "io: %s is an HDF5 file but not a modesplit run (no root attribute "
-                       "format = \"%s\")", r->path, MS_FILE_FORMAT);
+                       "format = \"%s\")",
+                       r->path, MS_FILE_FORMAT);
     }
     ms_free(format);
     int64_t v;
@@ -219,9 +223,8 @@ static ms_status read_layout(ms_reader *r)
     H5Eclear2(H5E_DEFAULT);
     double dt;
     r->frame_dt = ms_h5_read_doubles(f, "frame_dt", &dt, 1) >= 0 && isfinite(dt) ? dt : NAN;
-    r->output_every = ms_h5_read_int64(f, "output_every", &v) >= 0 && v >= 1 && v <= 1L << 30
-                          ? (int)v
-                          : 1;
+    r->output_every =
+        ms_h5_read_int64(f, "output_every", &v) >= 0 && v >= 1 && v <= 1L << 30 ? (int)v : 1;
     H5Eclear2(H5E_DEFAULT);
     if (ms_h5_read_int64(f, "frames", &v) < 0 || v < 0)
         return ms_fail(MS_ERR_PARSE, "io: %s lacks the root attribute frames (an integer >= 0)",
@@ -247,8 +250,7 @@ static ms_status read_layout(ms_reader *r)
 
     if (H5Lexists(f, "fields", H5P_DEFAULT) > 0) {
         H5O_info_t info;
-        if (H5Oget_info_by_name(f, "fields", &info, H5P_DEFAULT) < 0 ||
-            info.type != H5O_TYPE_GROUP)
+        if (H5Oget_info_by_name(f, "fields", &info, H5P_DEFAULT) < 0 || info.type != H5O_TYPE_GROUP)
             return ms_fail(MS_ERR_PARSE, "io: %s: /fields is not a group", r->path);
         hid_t g = H5Gopen2(f, "fields", H5P_DEFAULT);
         if (g < 0)
@@ -410,7 +412,8 @@ ms_status ms_reader_time(const ms_reader *r, long frame, double *t)
     hid_t fs = H5Dget_space(r->time_dset);
     hid_t ms = H5Screate_simple(1, &count, NULL);
     herr_t h = -1;
-    if (fs >= 0 && ms >= 0 && H5Sselect_hyperslab(fs, H5S_SELECT_SET, &start, NULL, &count, NULL) >= 0)
+    if (fs >= 0 && ms >= 0 &&
+        H5Sselect_hyperslab(fs, H5S_SELECT_SET, &start, NULL, &count, NULL) >= 0)
         h = H5Dread(r->time_dset, H5T_NATIVE_DOUBLE, ms, fs, H5P_DEFAULT, t);
     if (h < 0)
         st = ms_h5_fail(MS_ERR_IO, "io: reading /time[%ld] of %s failed", frame, r->path);
@@ -433,8 +436,7 @@ ms_status ms_reader_field_grid(const ms_reader *r, unsigned field, ms_grid *out)
     return MS_OK;
 }
 
-ms_status ms_reader_field_bytes(const ms_reader *r, unsigned field, uint64_t *stored,
-                                uint64_t *raw)
+ms_status ms_reader_field_bytes(const ms_reader *r, unsigned field, uint64_t *stored, uint64_t *raw)
 {
     int slot;
     ms_status st = field_slot(r, field, &slot);
@@ -515,7 +517,8 @@ static ms_status open_step(const ms_reader *r, long frame, hid_t d[6], int *n)
             H5Eclear2(H5E_DEFAULT);
             return ms_fail(MS_ERR_PARSE,
                            "io: %s: /%s/%s is missing, not a 1D float array, or its length "
-                           "differs from /%s/x", r->path, step, particle_names[k], step);
+                           "differs from /%s/x",
+                           r->path, step, particle_names[k], step);
         }
         if (k == 0)
             first = dims[0];

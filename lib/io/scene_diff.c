@@ -25,7 +25,8 @@ static void value_text(const json_t *v, char *buf, size_t n)
         snprintf(buf, n, "(absent)");
         return;
     }
-    char *s = json_dumps(v, JSON_COMPACT | JSON_SORT_KEYS | JSON_ENCODE_ANY | JSON_REAL_PRECISION(9));
+    char *s =
+        json_dumps(v, JSON_COMPACT | JSON_SORT_KEYS | JSON_ENCODE_ANY | JSON_REAL_PRECISION(9));
     snprintf(buf, n, "%s", s ? s : "?");
     if (s && strlen(s) >= n && n > 4)
         memcpy(buf + n - 4, "...", 4);
@@ -80,7 +81,8 @@ static void walk(diff_out *o, const char *path, const json_t *a, const json_t *b
         walk_object(o, path, a, b);
         return;
     }
-    if (a && b && json_is_array(a) && json_is_array(b) && json_array_size(a) == json_array_size(b)) {
+    if (a && b && json_is_array(a) && json_is_array(b) &&
+        json_array_size(a) == json_array_size(b)) {
         for (size_t i = 0; i < json_array_size(a); ++i) {
             char sub[256];
             snprintf(sub, sizeof sub, "%s[%zu]", path, i);

@@ -60,11 +60,11 @@ struct ms_writer {
     int lock_fd; /* holds flock(LOCK_EX) on the run file, -1 = none */
     char *path;
     char *xmf_path;
-    char *xmf2_path;         /* the legacy reader's sidecar */
+    char *xmf2_path; /* the legacy reader's sidecar */
     hid_t file;
     hid_t dset[MS_IO_NFIELDS];
     hid_t time_dset;
-    hid_t floater_dset;      /* /floaters [frame][n][3], -1 without floaters */
+    hid_t floater_dset; /* /floaters [frame][n][3], -1 without floaters */
     hid_t frames_attr;
     ms_writer_layout layout; /* strings not kept */
     long frames;             /* committed */
@@ -73,8 +73,8 @@ struct ms_writer {
     ms_xdmf *xdmf, *xdmf2;
     hid_t ckpt[MS_IO_CHECKPOINTS];      /* /checkpoint/<slot>, -1 = not yet */
     long ckpt_frame[MS_IO_CHECKPOINTS]; /* frame each holds, -1 = none or stale */
-    size_t ckpt_pending;     /* bytes of the checkpoint of the frame in hand */
-    void *ckpt_buf;          /* ms_writer_checkpoint_buffer */
+    size_t ckpt_pending;                /* bytes of the checkpoint of the frame in hand */
+    void *ckpt_buf;                     /* ms_writer_checkpoint_buffer */
     size_t ckpt_cap;
 };
 
@@ -155,7 +155,8 @@ static ms_status check_layout(const ms_writer_layout *l)
     if (l->fields & ~(unsigned)MS_IO_ALL_FIELDS)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "io: fields 0x%x has bits other than MS_FIELD_COMBINED, _SURFACE, "
-                       "_VOLUME and _PARTICLES", l->fields);
+                       "_VOLUME and _PARTICLES",
+                       l->fields);
     for (int i = 0; i < MS_IO_NFIELDS; ++i) {
         if (!(l->fields & (1u << i)))
             continue;
@@ -163,8 +164,8 @@ static ms_status check_layout(const ms_writer_layout *l)
         const char *n = ms_io_field_names[i];
         if (g->nx < 1 || g->nx > MS_IO_MAX_SIDE || g->ny < 1 || g->ny > MS_IO_MAX_SIDE)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "io: field %s grid %d x %d cells is outside [1, %d] a side", n,
-                           g->nx, g->ny, MS_IO_MAX_SIDE);
+                           "io: field %s grid %d x %d cells is outside [1, %d] a side", n, g->nx,
+                           g->ny, MS_IO_MAX_SIDE);
         if ((long)g->nx * g->ny > MS_IO_MAX_CELLS)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
                            "io: field %s grid %d x %d has more than %ld cells", n, g->nx, g->ny,
@@ -184,15 +185,14 @@ static ms_status check_layout(const ms_writer_layout *l)
                        l->output_every);
     if (l->deflate < 0 || l->deflate > 9)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "io: deflate level %d is outside 0 .. 9 (0 = no compression)",
-                       l->deflate);
+                       "io: deflate level %d is outside 0 .. 9 (0 = no compression)", l->deflate);
     if (l->checkpoint_every < 0 || l->checkpoint_every > 1000000)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "io: checkpoint_every %d is outside [0, 1000000] (0 = no checkpoints)",
                        l->checkpoint_every);
     if (l->floaters < 0 || l->floaters > 1 << 20)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %d floaters is outside [0, %d]",
-                       l->floaters, 1 << 20);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %d floaters is outside [0, %d]", l->floaters,
+                       1 << 20);
     return MS_OK;
 }
 
@@ -218,17 +218,15 @@ static hid_t create_field(hid_t group, const char *name, const ms_grid *g, int d
     hid_t d = -1;
     float fill = NAN; /* a frame without data reads as NaN, never as a flat 0 */
     if (space >= 0 && dcpl >= 0 && dapl >= 0 && H5Pset_chunk(dcpl, 3, chunk) >= 0 &&
-        set_filters(dcpl, deflate) >= 0 &&
-        H5Pset_fill_value(dcpl, H5T_NATIVE_FLOAT, &fill) >= 0 &&
+        set_filters(dcpl, deflate) >= 0 && H5Pset_fill_value(dcpl, H5T_NATIVE_FLOAT, &fill) >= 0 &&
         H5Pset_chunk_cache(dapl, 0, 0, 1.0) >= 0) {
         d = H5Dcreate2(group, name, H5T_IEEE_F32LE, space, H5P_DEFAULT, dcpl, dapl);
         double dx[2] = {g->dx, g->dy};
         double origin[2] = {g->origin[0], g->origin[1]};
-        if (d >= 0 &&
-            (ms_h5_attr_double(d, "dx", dx, 2) < 0 ||
-             ms_h5_attr_double(d, "origin", origin, 2) < 0 ||
-             ms_h5_attr_string(d, "units", "m") < 0 ||
-             ms_h5_attr_string(d, "axes", "frame,y,x") < 0)) {
+        if (d >= 0 && (ms_h5_attr_double(d, "dx", dx, 2) < 0 ||
+                       ms_h5_attr_double(d, "origin", origin, 2) < 0 ||
+                       ms_h5_attr_string(d, "units", "m") < 0 ||
+                       ms_h5_attr_string(d, "axes", "frame,y,x") < 0)) {
             H5Dclose(d);
             d = -1;
         }
@@ -274,8 +272,7 @@ static hid_t create_time(hid_t file)
 {
     const hsize_t chunk[1] = {TIME_CHUNK};
     const double fill = NAN;
-    return create_extendible(file, "time", H5T_IEEE_F64LE, 1, chunk, "s", H5T_NATIVE_DOUBLE,
-                             &fill);
+    return create_extendible(file, "time", H5T_IEEE_F64LE, 1, chunk, "s", H5T_NATIVE_DOUBLE, &fill);
 }
 
 /* /floaters: float32 [frame][n][3] (m), the floating objects (fig10's
@@ -365,7 +362,8 @@ static ms_status probe_path(const char *path, const char *shown, const ms_writer
                          shown, free_bytes / 1e6, need / 1e6);
     }
     for (int i = 0; i < 16 && st == MS_OK; ++i)
-        if (pwrite(fd, zeros, sizeof zeros, (off_t)i * (off_t)sizeof zeros) != (ssize_t)sizeof zeros)
+        if (pwrite(fd, zeros, sizeof zeros, (off_t)i * (off_t)sizeof zeros) !=
+            (ssize_t)sizeof zeros)
             st = ms_fail(MS_ERR_IO, "io: cannot write %s: %s", shown,
                          errno ? strerror(errno) : "short write");
     if (regular && ftruncate(fd, 0) != 0 && st == MS_OK)
@@ -585,8 +583,7 @@ ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_
         const char *slash = strrchr(path, '/');
         st = ms_xdmf_open(w->xmf_path, slash ? slash + 1 : path, &w->layout, 0, &w->xdmf);
         if (st == MS_OK)
-            st = ms_xdmf_open(w->xmf2_path, slash ? slash + 1 : path, &w->layout, 1,
-                              &w->xdmf2);
+            st = ms_xdmf_open(w->xmf2_path, slash ? slash + 1 : path, &w->layout, 1, &w->xdmf2);
         if (st != MS_OK) {
             ms_xdmf_close(w->xdmf);
             w->xdmf = NULL;
@@ -669,7 +666,8 @@ static ms_status check_space(const ms_writer *w, int particles)
                        w->frames, need / 1e6,
                        ((uint64_t)rl.rlim_cur > (uint64_t)sb.st_size
                             ? (double)((uint64_t)rl.rlim_cur - (uint64_t)sb.st_size)
-                            : 0.0) / 1e6,
+                            : 0.0) /
+                           1e6,
                        w->path, holds);
     return MS_OK;
 }
@@ -696,7 +694,8 @@ static herr_t append_rows(hid_t d, long frame, const void *buf, hid_t mtype, int
     hid_t fs = H5Dget_space(d);
     hid_t ms = H5Screate_simple(rank, count, NULL);
     herr_t st = -1;
-    if (fs >= 0 && ms >= 0 && H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) >= 0)
+    if (fs >= 0 && ms >= 0 &&
+        H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) >= 0)
         st = H5Dwrite(d, mtype, ms, fs, H5P_DEFAULT, buf);
     if (fs >= 0)
         H5Sclose(fs);
@@ -816,9 +815,8 @@ static ms_status check_data(const ms_writer *w, const ms_writer_data *d)
                            ms_io_field_names[i], w->frames);
     if (w->layout.fields & MS_FIELD_PARTICLES) {
         if (d->particles < 0 || d->particles > MS_IO_MAX_PARTICLES)
-            return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "io: particle count %d is outside [0, %ld]", d->particles,
-                           MS_IO_MAX_PARTICLES);
+            return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: particle count %d is outside [0, %ld]",
+                           d->particles, MS_IO_MAX_PARTICLES);
         for (int k = 0; k < 3 && d->particles > 0; ++k)
             if (!d->pos[k] || !d->vel[k])
                 return ms_fail(MS_ERR_INVALID_ARGUMENT,
@@ -840,7 +838,8 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
     if (w->failed)
         return ms_fail(MS_ERR_STATE,
                        "io: the writer of %s stopped after a write error; close it (the file "
-                       "keeps its %ld frames)", w->path, w->frames);
+                       "keeps its %ld frames)",
+                       w->path, w->frames);
     if ((st = check_data(w, d)) != MS_OK)
         return st;
     ms_h5_quiet q;
@@ -996,7 +995,8 @@ static ms_status refuse_scene(const char *path, const char *have, const char *wa
     if (ms_io_scene_diff(have, want, keys, sizeof keys) > 0)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "io: %s was written from another scene: %s; resuming would not "
-                       "continue that run", path, keys);
+                       "continue that run",
+                       path, keys);
     int line = 1;
     size_t i = 0;
     for (; have[i] && have[i] == want[i]; ++i)
@@ -1007,7 +1007,8 @@ static ms_status refuse_scene(const char *path, const char *have, const char *wa
     text_line(want, line, b, sizeof b);
     return ms_fail(MS_ERR_INVALID_ARGUMENT,
                    "io: %s was written from another scene text: line %d of its scene is "
-                   "\"%s\", this scene's is \"%s\"", path, line, a, b);
+                   "\"%s\", this scene's is \"%s\"",
+                   path, line, a, b);
 }
 
 /* Length of a 1-D or 3-D dataset's first dimension, -1 on error. */
@@ -1036,16 +1037,15 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
     int64_t version = 0;
     if (ms_h5_read_string(f, "format", 64, &s) < 0 || strcmp(s, MS_FILE_FORMAT) != 0) {
         ms_free(s);
-        return ms_fail(MS_ERR_PARSE, "io: %s is not a modesplit run file (no format \"%s\")",
-                       p, MS_FILE_FORMAT);
+        return ms_fail(MS_ERR_PARSE, "io: %s is not a modesplit run file (no format \"%s\")", p,
+                       MS_FILE_FORMAT);
     }
     ms_free(s);
     s = NULL;
-    if (ms_h5_read_int64(f, "format_version", &version) < 0 ||
-        version != MS_FILE_FORMAT_VERSION)
+    if (ms_h5_read_int64(f, "format_version", &version) < 0 || version != MS_FILE_FORMAT_VERSION)
         return ms_fail(MS_ERR_UNSUPPORTED,
-                       "io: %s has format_version %lld; only version %d files can be resumed",
-                       p, (long long)version, MS_FILE_FORMAT_VERSION);
+                       "io: %s has format_version %lld; only version %d files can be resumed", p,
+                       (long long)version, MS_FILE_FORMAT_VERSION);
     if (ms_h5_read_string(f, "library_version", 256, &s) < 0 || strcmp(s, ms_version()) != 0) {
         ms_status st = ms_fail(MS_ERR_INVALID_ARGUMENT,
                                "io: %s was written by library version %s, this is %s: another "
@@ -1076,8 +1076,7 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
         char name[64];
         snprintf(name, sizeof name, "fields/%s", ms_io_field_names[i]);
         int want_it = (l->fields & (1u << i)) != 0;
-        htri_t has = H5Lexists(f, "fields", H5P_DEFAULT) > 0 ? H5Lexists(f, name, H5P_DEFAULT)
-                                                             : 0;
+        htri_t has = H5Lexists(f, "fields", H5P_DEFAULT) > 0 ? H5Lexists(f, name, H5P_DEFAULT) : 0;
         if ((has > 0) != want_it)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
                            "io: %s %s the field %s and this run %s it: not the same output", p,
@@ -1096,7 +1095,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
         if (rank != 3 || dims[1] != (hsize_t)l->grid[i].ny || dims[2] != (hsize_t)l->grid[i].nx)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
                            "io: %s's field %s is not a [frame][%d][%d] dataset as this run "
-                           "writes", p, ms_io_field_names[i], l->grid[i].ny, l->grid[i].nx);
+                           "writes",
+                           p, ms_io_field_names[i], l->grid[i].ny, l->grid[i].nx);
         if ((long)dims[0] < k)
             k = (long)dims[0];
     }
@@ -1235,8 +1235,7 @@ static ms_status relist_sidecars(ms_writer *w)
         if (ok && (w->layout.fields & MS_FIELD_PARTICLES))
             ok = (n = step_count(w->file, j)) >= 0;
         if (!ok)
-            return ms_h5_fail(MS_ERR_PARSE, "io: frame %ld of %s cannot be read back", j,
-                              w->path);
+            return ms_h5_fail(MS_ERR_PARSE, "io: frame %ld of %s cannot be read back", j, w->path);
         st = ms_xdmf_frame(w->xdmf, j, t, n);
         if (st == MS_OK)
             st = ms_xdmf_frame(w->xdmf2, j, t, n);
@@ -1244,8 +1243,7 @@ static ms_status relist_sidecars(ms_writer *w)
     return st;
 }
 
-ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout *l,
-                                       ms_writer **out)
+ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout *l, ms_writer **out)
 {
     ms_writer *w = NULL;
     ms_status st = writer_new(path, l, out, &w);

@@ -28,7 +28,8 @@ static ms_status sim_layout(const ms_sim *sim, unsigned fields, ms_writer_layout
     if (fields & ~(unsigned)MS_IO_ALL_FIELDS)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "io: fields 0x%x has bits other than MS_FIELD_COMBINED, _SURFACE, "
-                       "_VOLUME and _PARTICLES", fields);
+                       "_VOLUME and _PARTICLES",
+                       fields);
     static const char *const part[4] = {"combined", "surface (the sim has no surface)",
                                         "volume (the sim has no volume)",
                                         "particles (the sim has no volume)"};
@@ -101,12 +102,13 @@ ms_status ms_writer_frame(ms_writer *w, const ms_sim *sim)
         if (!d.field[i])
             return ms_fail(MS_ERR_STATE,
                            "io: the sim has published no %s field yet (step it before writing "
-                           "a frame)", ms_io_field_names[i]);
+                           "a frame)",
+                           ms_io_field_names[i]);
         if (nx != l->grid[i].nx || ny != l->grid[i].ny)
             return ms_fail(MS_ERR_STATE,
                            "io: the sim's %s field is %d x %d, the file's %d x %d: not the sim "
-                           "the writer was opened with", ms_io_field_names[i], nx, ny,
-                           l->grid[i].nx, l->grid[i].ny);
+                           "the writer was opened with",
+                           ms_io_field_names[i], nx, ny, l->grid[i].nx, l->grid[i].ny);
     }
     if (l->fields & MS_FIELD_PARTICLES) {
         int n = 0;
@@ -128,8 +130,8 @@ ms_status ms_writer_frame(ms_writer *w, const ms_sim *sim)
         if ((st = ms_sim_snapshot_size(sim, &bytes)) != MS_OK)
             return st;
         if (!(buf = ms_writer_checkpoint_buffer(w, bytes)))
-            return ms_fail(MS_ERR_OUT_OF_MEMORY,
-                           "io: out of memory for a checkpoint of %zu bytes", bytes);
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for a checkpoint of %zu bytes",
+                           bytes);
         if ((st = ms_sim_snapshot(sim, buf, bytes, &d.checkpoint_bytes)) != MS_OK)
             return st;
         d.checkpoint = buf;

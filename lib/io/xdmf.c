@@ -62,15 +62,15 @@ static const char COLLECTION[] =
 struct ms_xdmf {
     int fd;
     char *path;
-    char *h5;          /* the HDF5 file's name, XML-escaped */
-    off_t tail_at;     /* where the closing tags start */
-    int legacy;        /* 1: Xdmf2 HyperSlab items; 0: Xdmf3 selections */
-    long frames;       /* frames listed */
+    char *h5;      /* the HDF5 file's name, XML-escaped */
+    off_t tail_at; /* where the closing tags start */
+    int legacy;    /* 1: Xdmf2 HyperSlab items; 0: Xdmf3 selections */
+    long frames;   /* frames listed */
     ms_writer_layout layout;
     int group_of[MS_IO_NFIELDS]; /* first field slot with the same grid */
     /* legacy: one XIncluded file per grid (field slots, then particles) */
-    char *dir;                  /* run.xdmf2.d */
-    char *dir_name;             /* its last component, for the hrefs */
+    char *dir;      /* run.xdmf2.d */
+    char *dir_name; /* its last component, for the hrefs */
     int gfd[MS_IO_NFIELDS + 1];
     off_t gtail[MS_IO_NFIELDS + 1];
     long gcount[MS_IO_NFIELDS + 1];
@@ -130,12 +130,24 @@ static char *xml_escape(const char *s)
     sbuf b = {0};
     for (; *s; ++s) {
         switch (*s) {
-        case '&': sb_printf(&b, "&amp;"); break;
-        case '<': sb_printf(&b, "&lt;"); break;
-        case '>': sb_printf(&b, "&gt;"); break;
-        case '"': sb_printf(&b, "&quot;"); break;
-        case '\'': sb_printf(&b, "&apos;"); break;
-        default: sb_printf(&b, "%c", *s); break;
+        case '&':
+            sb_printf(&b, "&amp;");
+            break;
+        case '<':
+            sb_printf(&b, "&lt;");
+            break;
+        case '>':
+            sb_printf(&b, "&gt;");
+            break;
+        case '"':
+            sb_printf(&b, "&quot;");
+            break;
+        case '\'':
+            sb_printf(&b, "&apos;");
+            break;
+        default:
+            sb_printf(&b, "%c", *s);
+            break;
         }
     }
     if (!b.p && !b.oom)
@@ -290,8 +302,7 @@ static void grid_name(sbuf *b, const ms_xdmf *x, int slot)
         }
 }
 
-static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame,
-                           const char *time_xml)
+static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame, const char *time_xml)
 {
     const ms_grid *g = &x->layout.grid[slot];
     /* points at the cell centres */
@@ -329,8 +340,8 @@ static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame,
                       "      <DataItem Dimensions=\"1 %d %d\" NumberType=\"Float\" "
                       "Precision=\"4\" Format=\"HDF\">%s:/fields/%s|%ld 0 0:1 1 1:1 %d %d:"
                       "%ld %d %d</DataItem>\n",
-                      g->ny, g->nx, x->h5, ms_io_field_names[i], frame, g->ny, g->nx,
-                      frame + 1, g->ny, g->nx);
+                      g->ny, g->nx, x->h5, ms_io_field_names[i], frame, g->ny, g->nx, frame + 1,
+                      g->ny, g->nx);
         sb_printf(b, "     </Attribute>\n");
     }
     sb_printf(b, "    </Grid>\n");
@@ -608,8 +619,8 @@ ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles)
     if (rename(x->pending_path, x->path) != 0) {
         int e = errno;
         ms_xdmf_drop_pending(x);
-        return ms_fail(MS_ERR_IO, "io: writing frame %ld to the XDMF sidecar %s failed: %s",
-                       frame, x->path, strerror(e));
+        return ms_fail(MS_ERR_IO, "io: writing frame %ld to the XDMF sidecar %s failed: %s", frame,
+                       x->path, strerror(e));
     }
     close(x->fd);
     x->fd = x->pending_fd;

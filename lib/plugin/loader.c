@@ -63,8 +63,10 @@ static ms_status check_elf(const char *path)
     struct stat sb;
     if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
         close(fd);
-        return ms_fail(MS_ERR_PLUGIN, "plugin: %s is not a regular file (a FIFO, device or "
-                                      "socket is never loaded)", path);
+        return ms_fail(MS_ERR_PLUGIN,
+                       "plugin: %s is not a regular file (a FIFO, device or "
+                       "socket is never loaded)",
+                       path);
     }
     unsigned char h[18];
     ssize_t got = read(fd, h, sizeof h);
@@ -107,8 +109,7 @@ static ms_status check_contents(const char *path, ms_plugin_rec *rec)
         return ms_fail(MS_ERR_PLUGIN,
                        "plugin: %s: %s gives kind %u for \"%s\"; known kinds are %u (shape) "
                        "and %u (shader)",
-                       path, sym, (unsigned)in->kind, in->name, MS_PLUGIN_SHAPE,
-                       MS_PLUGIN_SHADER);
+                       path, sym, (unsigned)in->kind, in->name, MS_PLUGIN_SHAPE, MS_PLUGIN_SHADER);
     if (!in->vtable)
         return ms_fail(MS_ERR_PLUGIN, "plugin: %s: %s gives no vtable for \"%s\"", path, sym,
                        in->name);
@@ -119,27 +120,29 @@ static ms_status check_contents(const char *path, ms_plugin_rec *rec)
         return ms_fail(MS_ERR_PLUGIN,
                        "plugin: %s: %s: the %s vtable of \"%s\" is %u bytes, smaller than "
                        "the %zu bytes of ABI 1.0 (truncated)",
-                       path, sym, ms_plugin_kind_name(in->kind), in->name, (unsigned)vsize,
-                       need);
+                       path, sym, ms_plugin_kind_name(in->kind), in->name, (unsigned)vsize, need);
     memcpy(&rec->vt, in->vtable, MS_MIN((size_t)vsize, have));
     rec->info.vtable = &rec->vt;
     if (in->kind == MS_PLUGIN_SHAPE) {
         const ms_shape_vtable *v = &rec->vt.shape;
-        const char *missing = !v->create ? "create" : !v->destroy ? "destroy"
-                              : !v->distance ? "distance" : !v->bounds ? "bounds" : NULL;
+        const char *missing = !v->create     ? "create"
+                              : !v->destroy  ? "destroy"
+                              : !v->distance ? "distance"
+                              : !v->bounds   ? "bounds"
+                                             : NULL;
         if (missing)
             return ms_fail(MS_ERR_PLUGIN,
-                           "plugin: %s: %s: the shape vtable of \"%s\" has no %s function",
-                           path, sym, in->name, missing);
+                           "plugin: %s: %s: the shape vtable of \"%s\" has no %s function", path,
+                           sym, in->name, missing);
     } else {
         const ms_shader_vtable *v = &rec->vt.shader;
-        const char *missing = !v->vertex_source ? "vertex_source"
-                              : !v->fragment_source ? "fragment_source"
-                              : (!v->create) != (!v->destroy) ? "create/destroy pair" : NULL;
+        const char *missing = !v->vertex_source               ? "vertex_source"
+                              : !v->fragment_source           ? "fragment_source"
+                              : (!v->create) != (!v->destroy) ? "create/destroy pair"
+                                                              : NULL;
         if (missing)
-            return ms_fail(MS_ERR_PLUGIN,
-                           "plugin: %s: %s: the shader vtable of \"%s\" has no %s", path, sym,
-                           in->name, missing);
+            return ms_fail(MS_ERR_PLUGIN, "plugin: %s: %s: the shader vtable of \"%s\" has no %s",
+                           path, sym, in->name, missing);
     }
     if (!rec->info.version)
         rec->info.version = "";
@@ -156,8 +159,7 @@ static ms_status check_loaded(const char *path, void *handle, ms_plugin_rec *rec
     void *p = dlsym(handle, sym);
     if (!p)
         return ms_fail(MS_ERR_PLUGIN,
-                       "plugin: %s has no symbol %s; it is not a libmodesplit plugin", path,
-                       sym);
+                       "plugin: %s has no symbol %s; it is not a libmodesplit plugin", path, sym);
     ms_plugin_entry_fn entry;
     memcpy(&entry, &p, sizeof entry); /* object to function pointer, POSIX */
     const ms_plugin_info *in = entry();

@@ -19,8 +19,8 @@
 /* A plugin that passed every check. The info and vtable are copies: the
  * fields the plugin's (smaller, older) structs lack are zero/NULL. */
 typedef struct ms_plugin_rec {
-    void *handle;              /* from dlopen */
-    char *path;                /* the file, as given */
+    void *handle; /* from dlopen */
+    char *path;   /* the file, as given */
     ms_plugin_info info;
     union {
         ms_shape_vtable shape;

@@ -64,14 +64,13 @@ static ms_status add_plugin(ms_plugin_rec *rec)
     ms_status st = MS_OK;
     if (old)
         st = ms_fail(MS_ERR_PLUGIN,
-                     "plugin: %s: %s gives the name \"%s\", already registered from %s",
-                     rec->path, MS_PLUGIN_ENTRY_SYMBOL, rec->info.name, old->path);
+                     "plugin: %s: %s gives the name \"%s\", already registered from %s", rec->path,
+                     MS_PLUGIN_ENTRY_SYMBOL, rec->info.name, old->path);
     else if (n_plugins == cap_plugins) {
         int cap = cap_plugins ? 2 * cap_plugins : 16;
         ms_plugin_rec **t = ms_realloc(plugins, (size_t)cap * sizeof *t);
         if (!t)
-            st = ms_fail(MS_ERR_OUT_OF_MEMORY, "plugin: out of memory registering %s",
-                         rec->path);
+            st = ms_fail(MS_ERR_OUT_OF_MEMORY, "plugin: out of memory registering %s", rec->path);
         else {
             plugins = t;
             cap_plugins = cap;

@@ -47,8 +47,7 @@ static void put_dir(buf *b, const char *dir, size_t n)
     put(b, dir, n);
 }
 
-char *ms_plugin_compose_search_path(const char *env, const char *object_path,
-                                    const char *build_dir)
+char *ms_plugin_compose_search_path(const char *env, const char *object_path, const char *build_dir)
 {
     buf b = {0};
     put(&b, "", 0);
@@ -89,8 +88,7 @@ char *ms_plugin_default_search_path(void)
     Dl_info dl;
     const char *object = NULL;
     char exe[4096];
-    if (dladdr((const void *)&anchor, &dl) && dl.dli_fname &&
-        strstr(dl.dli_fname, ".so")) {
+    if (dladdr((const void *)&anchor, &dl) && dl.dli_fname && strstr(dl.dli_fname, ".so")) {
         object = dl.dli_fname; /* libmodesplit.so: <libdir>/modesplit/plugins */
     } else {
         /* linked statically: the code is in the executable */
@@ -108,8 +106,7 @@ char *ms_plugin_default_search_path(void)
     const char *dir = MS_BUILD_PLUGIN_DIR;
     const char *slash = strrchr(dir, '/');
     char *real = object ? realpath(object, NULL) : NULL;
-    if (slash && real && !strncmp(real, dir, (size_t)(slash - dir)) &&
-        real[slash - dir] == '/')
+    if (slash && real && !strncmp(real, dir, (size_t)(slash - dir)) && real[slash - dir] == '/')
         build = dir;
     free(real);
 #endif

@@ -72,8 +72,10 @@ static ms_status reserve(ms_caustics *c, int n, size_t cells, size_t row)
         c->tmp = ms_alloc_array((size_t)n * (size_t)n, sizeof(float));
         c->n = c->map && c->tmp ? n : 0;
         if (!c->n)
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for a %d x %d caustics "
-                                                 "light map", n, n);
+            return ms_fail(MS_ERR_OUT_OF_MEMORY,
+                           "render: out of memory for a %d x %d caustics "
+                           "light map",
+                           n, n);
     }
     if (c->field_cap < cells) {
         ms_free(c->gx);
@@ -163,9 +165,9 @@ static void blur_cols(const float *src, float *dst, int n)
  * compiler may vectorise it. */
 static void trace_row(int rx, float y, const int *restrict col0, const float *restrict colf,
                       const float *restrict rh, const float *restrict rgx,
-                      const float *restrict rgy, float x0, float step, const float L[3],
-                      float eta, float r0, float w_flat, float *restrict hx,
-                      float *restrict hy, float *restrict w)
+                      const float *restrict rgy, float x0, float step, const float L[3], float eta,
+                      float r0, float w_flat, float *restrict hx, float *restrict hy,
+                      float *restrict w)
 {
     const float Lx = L[0], Ly = L[1], Lz = L[2];
     for (int k = 0; k < rx; ++k) {
@@ -445,8 +447,8 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
             rgx[i] = c->gx[a0 + i] + fv * (c->gx[a1 + i] - c->gx[a0 + i]);
             rgy[i] = c->gy[a0 + i] + fv * (c->gy[a1 + i] - c->gy[a0 + i]);
         }
-        trace_row(rx, y, c->col0, c->colf, rh, rgx, rgy, px0, stepx, d->light_dir, eta, r0,
-                  w_ray, hx, hy, w);
+        trace_row(rx, y, c->col0, c->colf, rh, rgx, rgy, px0, stepx, d->light_dir, eta, r0, w_ray,
+                  hx, hy, w);
         /* splat each ray's light bilinearly where it meets the floor */
         for (int k = 0; k < rx; ++k) {
             if (nl && w[k] > 0) {
@@ -469,8 +471,8 @@ ms_status ms_caustics_trace(ms_caustics *c, const ms_caustics_desc *d, const flo
                 if (rows > 0 && w[k] > 0) { /* into a wall: its start, again */
                     const int i = c->col0[k];
                     const float z0 = rh[i] + c->colf[k] * (rh[i + 1] - rh[i]);
-                    splat_wall(c, d, px0 + ((float)k + 0.5f) * stepx, y, MS_MAX(z0, 0.0f),
-                               hx[k], hy[k], w[k]);
+                    splat_wall(c, d, px0 + ((float)k + 0.5f) * stepx, y, MS_MAX(z0, 0.0f), hx[k],
+                               hy[k], w[k]);
                 }
                 continue;
             }

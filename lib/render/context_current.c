@@ -100,8 +100,7 @@ void ms_gl_delete_objects(ms_gl *gl)
 {
     if (!glGetString(GL_VERSION))
         return; /* the context is gone and its objects with it */
-    GLuint tex[5] = {gl->sky_tex, gl->env_static, gl->tiles_tex,
-                     gl->caustics_tex, gl->normal_tex};
+    GLuint tex[5] = {gl->sky_tex, gl->env_static, gl->tiles_tex, gl->caustics_tex, gl->normal_tex};
     glDeleteTextures(5, tex);
     glDeleteTextures(1, &gl->env_live);
     glDeleteTextures(1, &gl->walls_tex);

@@ -33,9 +33,9 @@ static ms_status read_png(const char *path, int max_w, int max_h, unsigned char 
         int exists = f != NULL;
         if (f)
             fclose(f);
-        ms_status st = ms_fail(exists ? MS_ERR_PARSE : MS_ERR_IO,
-                               "render: cubemap \"%s\" is not a readable PNG (%s)", path,
-                               img.message);
+        ms_status st =
+            ms_fail(exists ? MS_ERR_PARSE : MS_ERR_IO,
+                    "render: cubemap \"%s\" is not a readable PNG (%s)", path, img.message);
         png_image_free(&img);
         return st;
     }
@@ -54,8 +54,8 @@ static ms_status read_png(const char *path, int max_w, int max_h, unsigned char 
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"", path);
     }
     if (!png_image_finish_read(&img, NULL, px, 0, NULL)) {
-        ms_status st = ms_fail(MS_ERR_PARSE, "render: cubemap \"%s\" cannot be decoded (%s)",
-                               path, img.message);
+        ms_status st = ms_fail(MS_ERR_PARSE, "render: cubemap \"%s\" cannot be decoded (%s)", path,
+                               img.message);
         png_image_free(&img);
         ms_free(px);
         return st;
@@ -117,8 +117,7 @@ static ms_status load_strip(const char *path, ms_cubemap *out)
         out->face[f] = ms_alloc(face);
         if (!out->face[f]) {
             ms_free(px);
-            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"",
-                           path);
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"", path);
         }
         memcpy(out->face[f], px + (size_t)f * face, face);
     }

@@ -54,18 +54,22 @@ static float cubic_weight(float t, int k)
 {
     float t2 = t * t, t3 = t2 * t;
     switch (k) {
-    case 0: return 0.5f * (-t3 + 2 * t2 - t);
-    case 1: return 0.5f * (3 * t3 - 5 * t2 + 2);
-    case 2: return 0.5f * (-3 * t3 + 4 * t2 + t);
-    default: return 0.5f * (t3 - t2);
+    case 0:
+        return 0.5f * (-t3 + 2 * t2 - t);
+    case 1:
+        return 0.5f * (3 * t3 - 5 * t2 + 2);
+    case 2:
+        return 0.5f * (-3 * t3 + 4 * t2 + t);
+    default:
+        return 0.5f * (t3 - t2);
     }
 }
 
 /* out = h (combined, grid g) + cubic(v) - bilinear(v), v the SPH field on
  * grid vg. The 2D difference is separable: C(x)C(y) - L(x)L(y) =
  * (C(x) - L(x))C(y) + L(x)(C(y) - L(y)). */
-static ms_status smooth_sph_part(ms_renderer *r, const float *h, const ms_grid *g,
-                                 const float *v, const ms_grid *vg, const float **out)
+static ms_status smooth_sph_part(ms_renderer *r, const float *h, const ms_grid *g, const float *v,
+                                 const ms_grid *vg, const float **out)
 {
     const size_t cells = (size_t)g->nx * (size_t)g->ny;
     const size_t need = cells + 4 * (size_t)vg->ny * (size_t)g->nx;
@@ -178,8 +182,8 @@ static float height_at(const float *h, const ms_grid *g, float x, float y)
 /* The discs of nf floaters at xyz and of the scene's boat (if any) at
  * time t: at boat_xy when the sim knows where the boat is (steered by
  * hand, ms_sim_steer_boat), else on its path; the bow along its motion. */
-static ms_status scene_discs(ms_renderer *r, const ms_scene *sc, const float *xyz, int nf,
-                             double t, const float *h, const ms_grid *g, const float *boat_xy)
+static ms_status scene_discs(ms_renderer *r, const ms_scene *sc, const float *xyz, int nf, double t,
+                             const float *h, const ms_grid *g, const float *boat_xy)
 {
     const ms_renderer_desc *d = &r->desc;
     const float side = MS_MIN(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
@@ -245,15 +249,15 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
     if ((st = ms_sim_field_grid(sim, MS_FIELD_COMBINED, &g)) != MS_OK)
         return st;
     if (g.nx != nx || g.ny != ny)
-        return ms_fail(MS_ERR_STATE, "render: the sim's field is %d x %d but its grid %d x %d",
-                       nx, ny, g.nx, g.ny);
+        return ms_fail(MS_ERR_STATE, "render: the sim's field is %d x %d but its grid %d x %d", nx,
+                       ny, g.nx, g.ny);
     int nf = 0;
     const float *xyz = ms_sim_floaters(sim, &nf);
     float boat_xy[2];
     const ms_scene *sc = ms_sim_scene(sim);
     const int steered = sc && sc->has_boat && ms_sim_boat(sim, boat_xy) == MS_OK;
-    if ((st = scene_discs(r, sc, xyz, nf, ms_sim_time(sim), h, &g,
-                          steered ? boat_xy : NULL)) != MS_OK ||
+    if ((st = scene_discs(r, sc, xyz, nf, ms_sim_time(sim), h, &g, steered ? boat_xy : NULL)) !=
+            MS_OK ||
         (st = ms_render_objects_update(r, sc, sim, ms_sim_time(sim))) != MS_OK)
         return st;
     /* the SPH part smoothed for display, when it was up-sampled (eq. 20) */
@@ -262,8 +266,7 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
     ms_grid vg;
     if (v && ms_sim_surface_height(sim, NULL, NULL) && vnx >= 2 && vny >= 2 &&
         (vnx < g.nx || vny < g.ny) && ms_sim_field_grid(sim, MS_FIELD_VOLUME, &vg) == MS_OK &&
-        vg.nx == vnx && vg.ny == vny &&
-        (st = smooth_sph_part(r, h, &g, v, &vg, &h)) != MS_OK)
+        vg.nx == vnx && vg.ny == vny && (st = smooth_sph_part(r, h, &g, v, &vg, &h)) != MS_OK)
         return st;
     /* the SPH field alone: blurred over the particles' spacing */
     if (!ms_sim_surface_height(sim, NULL, NULL) && sc && sc->has_volume && sc->volume.spacing > 0) {

@@ -60,8 +60,8 @@ ms_status ms_gl_context_create(ms_gl_context *c, const char *want)
     if (first[0])
         return ms_fail(st, "%s", first);
     return ms_fail(MS_ERR_UNSUPPORTED,
-                   "render: backend \"%s\" is not in this build of libmodesplit (it has %s)",
-                   want, ms_gl_backends_built());
+                   "render: backend \"%s\" is not in this build of libmodesplit (it has %s)", want,
+                   ms_gl_backends_built());
 }
 
 ms_status ms_gl_context_begin(ms_gl_context *c)

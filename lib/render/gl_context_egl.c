@@ -73,11 +73,10 @@ static ms_status egl_create(ms_gl_context *c)
     if (d == EGL_NO_DISPLAY) {
         st = MS_ERR_UNSUPPORTED; /* the sentence is set */
     } else if (!has_extension(eglQueryString(d, EGL_EXTENSIONS), "EGL_KHR_no_config_context") ||
-               !has_extension(eglQueryString(d, EGL_EXTENSIONS),
-                              "EGL_KHR_surfaceless_context")) {
-        st = ms_fail(MS_ERR_UNSUPPORTED,
-                     "render: this EGL cannot make a context without a surface "
-                     "(EGL_KHR_no_config_context, EGL_KHR_surfaceless_context)");
+               !has_extension(eglQueryString(d, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
+        st =
+            ms_fail(MS_ERR_UNSUPPORTED, "render: this EGL cannot make a context without a surface "
+                                        "(EGL_KHR_no_config_context, EGL_KHR_surfaceless_context)");
     } else if (!eglBindAPI(EGL_OPENGL_API)) {
         st = ms_fail(MS_ERR_UNSUPPORTED, "render: this EGL has no desktop OpenGL (error 0x%04x)",
                      (unsigned)eglGetError());
@@ -109,8 +108,9 @@ static ms_status egl_begin(ms_gl_context *c)
                     eglMakeCurrent(egl_display, EGL_NO_SURFACE, EGL_NO_SURFACE, e->ctx);
     MS_MESA_LEAKS_END();
     if (!ok)
-        return ms_fail(MS_ERR_UNSUPPORTED, "render: EGL cannot make the context current "
-                                           "(error 0x%04x)",
+        return ms_fail(MS_ERR_UNSUPPORTED,
+                       "render: EGL cannot make the context current "
+                       "(error 0x%04x)",
                        (unsigned)eglGetError());
     return MS_OK;
 }

@@ -231,14 +231,12 @@ static unsigned long long objects_hash(const ms_renderer *r)
 {
     unsigned long long h = 1469598103934665603ull;
     const unsigned char *p = (const unsigned char *)r->object_verts;
-    const size_t n = r->object_verts ? (size_t)r->object_nverts * MS_RENDER_OBJECT_STRIDE *
-                                           sizeof(float)
-                                     : 0;
+    const size_t n =
+        r->object_verts ? (size_t)r->object_nverts * MS_RENDER_OBJECT_STRIDE * sizeof(float) : 0;
     for (size_t i = 0; i < n; ++i)
         h = (h ^ p[i]) * 1099511628211ull;
-    const float boat[7] = {(float)r->has_boat,   r->boat_pos[0],     r->boat_pos[1],
-                           r->boat_pos[2],       r->boat_heading[0], r->boat_heading[1],
-                           r->boat_radius};
+    const float boat[7] = {(float)r->has_boat, r->boat_pos[0],     r->boat_pos[1], r->boat_pos[2],
+                           r->boat_heading[0], r->boat_heading[1], r->boat_radius};
     p = (const unsigned char *)boat;
     for (size_t i = 0; i < sizeof boat; ++i)
         h = (h ^ p[i]) * 1099511628211ull;
@@ -449,8 +447,7 @@ ms_status ms_gl_env_objects(ms_renderer *r)
                 float R[3], U[3], F[3];
                 face_basis(f, R, U, F);
                 glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
-                                       GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, gl->env_live,
-                                       0);
+                                       GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, gl->env_live, 0);
                 glViewport(0, 0, n, n);
                 glScissor(now[0], now[1], now[2] - now[0], now[3] - now[1]);
                 glClear(GL_DEPTH_BUFFER_BIT);

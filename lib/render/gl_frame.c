@@ -53,8 +53,7 @@ static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *full
         gl->vertices_cap = gl->vertices ? floats : 0;
         if (!gl->vertices)
             return ms_fail(MS_ERR_OUT_OF_MEMORY,
-                           "render: out of memory for the mesh of a %d x %d field", g->nx,
-                           g->ny);
+                           "render: out of memory for the mesh of a %d x %d field", g->nx, g->ny);
     }
     ms_mesh_build(h, g, r->desc.pool_min[2], gl->vertices);
     /* display only: the liquid never above the pool's rim, where it would
@@ -82,8 +81,7 @@ static ms_status upload_mesh(ms_renderer *r, const float *h, const ms_grid *full
                            g->ny);
         ms_mesh_indices(g->nx, g->ny, idx);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl->mesh_ibo);
-        glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(ni * sizeof *idx), idx,
-                     GL_STATIC_DRAW);
+        glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(ni * sizeof *idx), idx, GL_STATIC_DRAW);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
         ms_free(idx);
         gl->mesh_nx = g->nx;
@@ -120,8 +118,7 @@ static ms_status upload_normals(ms_renderer *r, const float *h, const ms_grid *g
     glBindTexture(GL_TEXTURE_2D, gl->normal_tex);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     if (gl->normal_nx != g->nx || gl->normal_ny != g->ny) {
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, g->nx, g->ny, 0, GL_RG, GL_FLOAT,
-                     gl->gradients);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32F, g->nx, g->ny, 0, GL_RG, GL_FLOAT, gl->gradients);
         gl->normal_nx = g->nx;
         gl->normal_ny = g->ny;
     } else {
@@ -176,8 +173,8 @@ static ms_status upload_caustics(ms_renderer *r, const float *h, const ms_grid *
 static void depth_range(const ms_renderer *r, float *znear, float *zfar)
 {
     const ms_renderer_desc *d = &r->desc;
-    const float deck = 0.3f * MS_MAX(d->pool_max[0] - d->pool_min[0],
-                                     d->pool_max[1] - d->pool_min[1]);
+    const float deck =
+        0.3f * MS_MAX(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
     const float lo[3] = {d->pool_min[0] - deck, d->pool_min[1] - deck, d->pool_min[2]};
     const float hi[3] = {d->pool_max[0] + deck, d->pool_max[1] + deck,
                          d->pool_max[2] + 2 * (d->pool_max[2] - d->pool_min[2])};
@@ -218,8 +215,7 @@ static void draw_liquid(ms_renderer *r, double time)
     ms_shader_uniforms u = ms_gl_uniform_table(&gl->liquid);
     u.set_vec3(u.ctx, "ms_eye", d->eye[0], d->eye[1], d->eye[2]);
     u.set_vec3(u.ctx, "ms_light_dir", r->light_to[0], r->light_to[1], r->light_to[2]);
-    u.set_vec3(u.ctx, "ms_light_color", d->light_color[0], d->light_color[1],
-               d->light_color[2]);
+    u.set_vec3(u.ctx, "ms_light_color", d->light_color[0], d->light_color[1], d->light_color[2]);
     u.set_float(u.ctx, "ms_time", (float)time);
     u.set_vec4(u.ctx, "ms_viewport", (float)d->width, (float)d->height, 1.0f / (float)d->width,
                1.0f / (float)d->height);
@@ -266,9 +262,8 @@ static void draw_liquid(ms_renderer *r, double time)
             int nrows = MS_MIN(band, rows - j);
             size_t first = 6 * (size_t)quads_row * (size_t)j;
             glDrawRangeElements(GL_TRIANGLES, (GLuint)(j * gl->mesh_nx),
-                                (GLuint)((j + nrows + 1) * gl->mesh_nx - 1),
-                                6 * quads_row * nrows, GL_UNSIGNED_INT,
-                                (const void *)(first * sizeof(unsigned)));
+                                (GLuint)((j + nrows + 1) * gl->mesh_nx - 1), 6 * quads_row * nrows,
+                                GL_UNSIGNED_INT, (const void *)(first * sizeof(unsigned)));
         }
     }
     ms_gl_liquid_side_draw(r, &u); /* the liquid's side in a glass (gl_glass.c) */

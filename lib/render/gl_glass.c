@@ -26,16 +26,15 @@ static void normalize3(float v[3])
         v[0] /= l, v[1] /= l, v[2] /= l;
 }
 
-static const char glass_vs[] =
-    "#version 120\n"
-    "varying vec3 v_pos;\n"
-    "varying vec3 v_normal;\n"
-    "void main()\n"
-    "{\n"
-    "    v_pos = gl_Vertex.xyz;\n"
-    "    v_normal = gl_Normal;\n"
-    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
-    "}\n";
+static const char glass_vs[] = "#version 120\n"
+                               "varying vec3 v_pos;\n"
+                               "varying vec3 v_normal;\n"
+                               "void main()\n"
+                               "{\n"
+                               "    v_pos = gl_Vertex.xyz;\n"
+                               "    v_normal = gl_Normal;\n"
+                               "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
+                               "}\n";
 
 static const char glass_fs[] =
     "#version 120\n"

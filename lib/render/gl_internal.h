@@ -26,8 +26,7 @@ typedef struct ms_gl_program {
 
 /* A program from GLSL sources; `what` names it in the error sentence, which
  * carries the compiler's or linker's log. MS_ERR_PLUGIN on failure. */
-ms_status ms_gl_program_build(const char *what, const char *vs, const char *fs,
-                              ms_gl_program *out);
+ms_status ms_gl_program_build(const char *what, const char *vs, const char *fs, ms_gl_program *out);
 /* Delete a program (a borrowed window context outlives the renderer, so
  * the renderer deletes what it made there). */
 void ms_gl_program_free(ms_gl_program *p);
@@ -102,8 +101,8 @@ void ms_gl_delete_objects(ms_gl *gl);
 struct ms_gl {
     ms_gl_context context;
     GLuint fbo, color_rb, depth_rb; /* the image */
-    GLuint sky_tex;       /* the sky cubemap */
-    GLuint env_tex;       /* ms_env: the sky, or the sky with the pool (refraction) */
+    GLuint sky_tex;                 /* the sky cubemap */
+    GLuint env_tex;                 /* ms_env: the sky, or the sky with the pool (refraction) */
     int env_size;
     GLuint tiles_tex;     /* the tile pattern */
     GLuint caustics_tex;  /* ms_caustics: the light map, or 1 x 1 of 1 */
@@ -119,33 +118,33 @@ struct ms_gl {
     int discs_count;      /* their vertices */
     int glass_first;      /* discs_vbo from here on: the container, blended (objects.c) */
     GLuint mesh_vbo, mesh_ibo;
-    int mesh_nx, mesh_ny; /* the grid the index buffer is for */
-    float *vertices;      /* mesh vertices, CPU side */
-    size_t vertices_cap;  /* floats */
-    float *coarse;        /* the field averaged to the mesh's step */
-    size_t coarse_cap;    /* floats */
-    GLuint normal_tex;    /* ms_normal_map: the full field's gradient (RG32F) */
+    int mesh_nx, mesh_ny;     /* the grid the index buffer is for */
+    float *vertices;          /* mesh vertices, CPU side */
+    size_t vertices_cap;      /* floats */
+    float *coarse;            /* the field averaged to the mesh's step */
+    size_t coarse_cap;        /* floats */
+    GLuint normal_tex;        /* ms_normal_map: the full field's gradient (RG32F) */
     int normal_nx, normal_ny; /* its size as uploaded */
-    ms_grid normal_field; /* the grid it covers (ms_field in the shaders) */
-    float *gradients;     /* its texels, CPU side */
-    size_t gradients_cap; /* floats */
+    ms_grid normal_field;     /* the grid it covers (ms_field in the shaders) */
+    float *gradients;         /* its texels, CPU side */
+    size_t gradients_cap;     /* floats */
     /* objects in the environment (gl_env.c): env_static is the
      * pool and the sky as ms_gl_env_create draws them; env_live a copy
      * with the boat and the obstacles drawn in each frame (ms_env is
      * env_live while there are objects, else env_static) */
     GLuint env_static, env_live;
-    GLuint env_fbo, env_depth;      /* the per-frame pass into env_live */
-    int env_rect[2][6][4];          /* per half, face: the level-0 texels the objects cover */
-    int env_live_fresh;             /* 0: env_live must be copied from env_static first */
-    int env_copy_checked;           /* 1: glCopyImageSubData exists, -1: not, 0: not asked */
+    GLuint env_fbo, env_depth;           /* the per-frame pass into env_live */
+    int env_rect[2][6][4];               /* per half, face: the level-0 texels the objects cover */
+    int env_live_fresh;                  /* 0: env_live must be copied from env_static first */
+    int env_copy_checked;                /* 1: glCopyImageSubData exists, -1: not, 0: not asked */
     unsigned long long env_objects_hash; /* what the objects in env_live were drawn from */
-    int objects_first;              /* discs_vbo from here on: the boat, the obstacles, the glass */
-    ms_gl_program glass;            /* gl_glass.c */
-    GLuint walls_tex;               /* ms_caustics_walls (gl_walls.c) */
-    int walls_n, walls_rows;        /* its size as uploaded: n x 4 rows */
-    GLuint open_tex;                /* the light in the water, in slices (gl_walls.c) */
-    int open_n, open_slices;        /* its size as uploaded: n x slices n */
-    GLuint side_vbo;                /* the liquid's side in the glass (gl_glass.c) */
+    int objects_first;       /* discs_vbo from here on: the boat, the obstacles, the glass */
+    ms_gl_program glass;     /* gl_glass.c */
+    GLuint walls_tex;        /* ms_caustics_walls (gl_walls.c) */
+    int walls_n, walls_rows; /* its size as uploaded: n x 4 rows */
+    GLuint open_tex;         /* the light in the water, in slices (gl_walls.c) */
+    int open_n, open_slices; /* its size as uploaded: n x slices n */
+    GLuint side_vbo;         /* the liquid's side in the glass (gl_glass.c) */
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */

@@ -7,7 +7,7 @@
 #include "core/core_internal.h"
 #include "render/gl_internal.h"
 
-#define AMBIENT 0.4f      /* the sky's share of the light on the pool */
+#define AMBIENT 0.4f /* the sky's share of the light on the pool */
 /* An object under the water with caustics is lit as the water shader
  * (plugins/shaders/water.c) lights the sky-lit floor it sees through the
  * water, AMBIENT (SKY + SUN focus), with its default strength, so a stone
@@ -16,20 +16,19 @@
 #define CAUSTIC_SUN 1.2f
 #define TILE_TEXELS 64
 
-static const char pool_vs[] =
-    "#version 120\n"
-    "varying vec3 v_pos;\n"
-    "varying vec3 v_normal;\n"
-    "varying vec2 v_uv;\n"
-    "varying vec3 v_color;\n"
-    "void main()\n"
-    "{\n"
-    "    v_pos = gl_Vertex.xyz;\n"
-    "    v_normal = gl_Normal;\n"
-    "    v_uv = gl_MultiTexCoord0.xy;\n"
-    "    v_color = gl_Color.rgb;\n"
-    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
-    "}\n";
+static const char pool_vs[] = "#version 120\n"
+                              "varying vec3 v_pos;\n"
+                              "varying vec3 v_normal;\n"
+                              "varying vec2 v_uv;\n"
+                              "varying vec3 v_color;\n"
+                              "void main()\n"
+                              "{\n"
+                              "    v_pos = gl_Vertex.xyz;\n"
+                              "    v_normal = gl_Normal;\n"
+                              "    v_uv = gl_MultiTexCoord0.xy;\n"
+                              "    v_color = gl_Color.rgb;\n"
+                              "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"
+                              "}\n";
 
 static const char pool_fs[] =
     "#version 120\n"
@@ -181,17 +180,17 @@ ms_status ms_gl_pool_create(ms_renderer *r)
     enum { QUADS = 1 + 4 + 4 + 4 + 4 };
     float v[QUADS * 6 * MS_POOL_STRIDE];
     builder b = {v, 0, r->tile_size};
-    rect(&b, x0, y0, x1, y1, zf, tiles);                    /* floor */
-    wall(&b, 0, x0, y0, y1, zf, zr, +1, tiles);             /* inner walls */
+    rect(&b, x0, y0, x1, y1, zf, tiles);        /* floor */
+    wall(&b, 0, x0, y0, y1, zf, zr, +1, tiles); /* inner walls */
     wall(&b, 0, x1, y0, y1, zf, zr, -1, tiles);
     wall(&b, 1, y0, x0, x1, zf, zr, +1, tiles);
     wall(&b, 1, y1, x0, x1, zf, zr, -1, tiles);
-    b.tile = 2 * r->tile_size;                              /* the deck's larger slabs */
+    b.tile = 2 * r->tile_size; /* the deck's larger slabs */
     rect(&b, X0, Y0, x0, Y1, zr, stone);
     rect(&b, x1, Y0, X1, Y1, zr, stone);
     rect(&b, x0, Y0, x1, y0, zr, stone);
     rect(&b, x0, y1, x1, Y1, zr, stone);
-    wall(&b, 0, X0, Y0, Y1, zf, zr, -1, side);              /* its outer side */
+    wall(&b, 0, X0, Y0, Y1, zf, zr, -1, side); /* its outer side */
     wall(&b, 0, X1, Y0, Y1, zf, zr, +1, side);
     wall(&b, 1, Y0, X0, X1, zf, zr, -1, side);
     wall(&b, 1, Y1, X0, X1, zf, zr, +1, side);
@@ -228,9 +227,9 @@ static void hull(builder *b, const ms_renderer *r)
     static const float white[3] = {0.85f, 0.83f, 0.78f}, wood[3] = {0.45f, 0.28f, 0.12f};
     static const float up[3] = {0, 0, 1};
     /* the deck outline in (forward, left) units of (half length, half beam) */
-    static const float outline[HULL_POINTS][2] = {{1.0f, 0.0f},    {0.35f, 1.0f}, {-0.85f, 0.85f},
-                                                  {-1.0f, 0.7f},   {-1.0f, -0.7f},
-                                                  {-0.85f, -0.85f}, {0.35f, -1.0f}};
+    static const float outline[HULL_POINTS][2] = {{1.0f, 0.0f},  {0.35f, 1.0f},  {-0.85f, 0.85f},
+                                                  {-1.0f, 0.7f}, {-1.0f, -0.7f}, {-0.85f, -0.85f},
+                                                  {0.35f, -1.0f}};
     const float L = r->boat_radius, B = 0.42f * L, H = 0.35f * L, D = 0.2f * L;
     const float f[2] = {r->boat_heading[0], r->boat_heading[1]}, l[2] = {-f[1], f[0]};
     const float *c = r->boat_pos;
@@ -309,8 +308,8 @@ ms_status ms_gl_discs_upload(ms_renderer *r)
         return MS_OK;
     enum { SEGMENTS = 10 };
     const size_t per = 3 * (size_t)MS_MAX((int)SEGMENTS, LEAF_SEGMENTS);
-    const size_t verts = (size_t)r->ndiscs * per + (r->has_boat ? HULL_VERTICES : 0) +
-                         (size_t)r->object_nverts;
+    const size_t verts =
+        (size_t)r->ndiscs * per + (r->has_boat ? HULL_VERTICES : 0) + (size_t)r->object_nverts;
     float *v = ms_alloc_array(verts, MS_POOL_STRIDE * sizeof(float));
     if (!v)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d discs", r->ndiscs);

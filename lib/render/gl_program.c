@@ -23,8 +23,7 @@ static ms_status compile(const char *what, GLenum type, const char *src, GLuint 
 {
     GLuint s = glCreateShader(type);
     if (!s)
-        return ms_fail(MS_ERR_UNSUPPORTED, "render: %s: OpenGL cannot make a shader object",
-                       what);
+        return ms_fail(MS_ERR_UNSUPPORTED, "render: %s: OpenGL cannot make a shader object", what);
     glShaderSource(s, 1, &src, NULL);
     glCompileShader(s);
     GLint ok = 0;
@@ -35,15 +34,13 @@ static ms_status compile(const char *what, GLenum type, const char *src, GLuint 
         clean_log(log);
         glDeleteShader(s);
         return ms_fail(MS_ERR_PLUGIN, "render: %s: the %s shader does not compile: %s", what,
-                       type == GL_VERTEX_SHADER ? "vertex" : "fragment",
-                       log[0] ? log : "(no log)");
+                       type == GL_VERTEX_SHADER ? "vertex" : "fragment", log[0] ? log : "(no log)");
     }
     *out = s;
     return MS_OK;
 }
 
-ms_status ms_gl_program_build(const char *what, const char *vs, const char *fs,
-                              ms_gl_program *out)
+ms_status ms_gl_program_build(const char *what, const char *vs, const char *fs, ms_gl_program *out)
 {
     out->prog = 0;
     if (!vs || !fs)

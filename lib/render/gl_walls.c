@@ -29,8 +29,7 @@ ms_status ms_gl_walls_upload(ms_renderer *r)
         gl->walls_n = c->n;
         gl->walls_rows = c->wall_rows;
     } else {
-        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, c->n, 4 * c->wall_rows, GL_RED, GL_FLOAT,
-                        c->walls);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, c->n, 4 * c->wall_rows, GL_RED, GL_FLOAT, c->walls);
     }
     glBindTexture(GL_TEXTURE_2D, 0);
     return MS_OK;

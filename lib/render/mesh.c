@@ -38,7 +38,9 @@ void ms_mesh_build(const float *h, const ms_grid *g, float floor_z, float *restr
     const float x0 = g->origin[0], y0 = g->origin[1], dx = g->dx, dy = g->dy;
     for (int j = 0; j < ny; ++j) {
         const float *row = h + (size_t)j * (size_t)nx;
-        const float y = j == 0 ? y0 : j == ny - 1 ? y0 + (float)ny * dy : y0 + ((float)j + 0.5f) * dy;
+        const float y = j == 0        ? y0
+                        : j == ny - 1 ? y0 + (float)ny * dy
+                                      : y0 + ((float)j + 0.5f) * dy;
         float *v = vertices + (size_t)j * (size_t)nx * 6;
         for (int i = 0; i < nx; ++i) {
             float gx, gy;
@@ -125,8 +127,7 @@ double ms_mesh_height_error(const float *h, const ms_grid *g, int step, float *c
     return worst;
 }
 
-int ms_mesh_auto_step(const ms_renderer_desc *d, const float *h, const ms_grid *g,
-                      float *scratch)
+int ms_mesh_auto_step(const ms_renderer_desc *d, const float *h, const ms_grid *g, float *scratch)
 {
     /* the nearest point of the field's rectangle, at the still water */
     const float lo[2] = {g->origin[0], g->origin[1]};

@@ -115,8 +115,13 @@ static ms_status mesh_shape(ms_render_object *ob)
                         continue;
                     const float t = da / (da - db);
                     for (int q = 0; q < 3; ++q)
-                        sum[q] += ((float)((q == 0 ? i : q == 1 ? j : k) + a[q]) +
-                                   (q == ax ? t : 0.0f)) * L.c[q] + L.o[q];
+                        sum[q] += ((float)((q == 0   ? i
+                                            : q == 1 ? j
+                                                     : k) +
+                                           a[q]) +
+                                   (q == ax ? t : 0.0f)) *
+                                      L.c[q] +
+                                  L.o[q];
                     ++crossings;
                 }
                 L.cell[cell(&L, i, j, k)] = crossings ? nv : -1;
@@ -233,8 +238,7 @@ static ms_status make_objects(ms_renderer *r, const ms_scene *sc)
     return MS_OK;
 }
 
-ms_status ms_render_objects_update(ms_renderer *r, const ms_scene *sc, const ms_sim *sim,
-                                   double t)
+ms_status ms_render_objects_update(ms_renderer *r, const ms_scene *sc, const ms_sim *sim, double t)
 {
     if (!sc) {
         if (r->nobjects)

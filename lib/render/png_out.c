@@ -50,7 +50,7 @@ ms_status ms_image_write_png(const char *path, const unsigned char *rgba, int w,
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "image: the pixels of \"%s\" are NULL", path);
     if (w < 1 || w > MS_IMAGE_MAX_SIDE || h < 1 || h > MS_IMAGE_MAX_SIDE)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "image: %d x %d pixels for \"%s\": each side must be in [1, %d]", w, h,
-                       path, MS_IMAGE_MAX_SIDE);
+                       "image: %d x %d pixels for \"%s\": each side must be in [1, %d]", w, h, path,
+                       MS_IMAGE_MAX_SIDE);
     return ms_png_write_rgba(path, rgba, w, h);
 }

@@ -13,7 +13,7 @@
 
 #define PART "render"
 #define MAX_FIELD_CELLS (1L << 24) /* 4096 x 4096 */
-#define MAX_PIXELS (1L << 25) /* 32 Mpixel: 128 MB of RGBA8, as much again on the GL side */
+#define MAX_PIXELS (1L << 25)      /* 32 Mpixel: 128 MB of RGBA8, as much again on the GL side */
 
 ms_renderer_desc ms_renderer_desc_default(void)
 {
@@ -162,9 +162,8 @@ static ms_status check_desc(const ms_renderer_desc *d)
         (st = ms_check_int_range(PART, "height", d->height, 16, MS_RENDER_MAX_SIDE)) != MS_OK)
         return st;
     if ((long)d->width * d->height > MAX_PIXELS)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: image %d x %d pixels is over %ld pixels", d->width, d->height,
-                       MAX_PIXELS);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "render: image %d x %d pixels is over %ld pixels",
+                       d->width, d->height, MAX_PIXELS);
     if ((st = ms_check_not_null(PART, "shader", d->shader)) != MS_OK ||
         (st = ms_check_not_null(PART, "cubemap", d->cubemap)) != MS_OK)
         return st;
@@ -199,15 +198,14 @@ static ms_status check_desc(const ms_renderer_desc *d)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "render: light_dir [%g, %g, %g] is the zero vector; it must be a "
                        "direction",
-                       (double)d->light_dir[0], (double)d->light_dir[1],
-                       (double)d->light_dir[2]);
+                       (double)d->light_dir[0], (double)d->light_dir[1], (double)d->light_dir[2]);
     for (int k = 0; k < 3; ++k)
         if (!(d->pool_max[k] > d->pool_min[k]))
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
                            "render: pool_max[%d] %g m must be above pool_min[%d] %g m", k,
                            (double)d->pool_max[k], k, (double)d->pool_min[k]);
-    if ((st = ms_check_range(PART, "water_level", d->water_level, d->pool_min[2],
-                             d->pool_max[2], "m")) != MS_OK)
+    if ((st = ms_check_range(PART, "water_level", d->water_level, d->pool_min[2], d->pool_max[2],
+                             "m")) != MS_OK)
         return st;
     return check_camera(d->eye, d->target, d->up, d->fov);
 }
@@ -254,8 +252,8 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
     if (!r->shader_name || (d->shader_params && !r->shader_params) || !r->cubemap_path ||
         !r->backend_name || !r->pixels) {
         ms_renderer_destroy(r);
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for a %d x %d image",
-                       d->width, d->height);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for a %d x %d image", d->width,
+                       d->height);
     }
     r->desc.shader = r->shader_name;
     r->desc.shader_params = r->shader_params;
@@ -274,9 +272,8 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
         ms_renderer_destroy(r);
         return st;
     }
-    r->passes = r->shader.vt->passes &
-                (MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION |
-                 MS_SHADER_NEEDS_CAUSTICS);
+    r->passes = r->shader.vt->passes & (MS_SHADER_NEEDS_REFLECTION | MS_SHADER_NEEDS_REFRACTION |
+                                        MS_SHADER_NEEDS_CAUSTICS);
     r->trace_caustics = (r->passes & MS_SHADER_NEEDS_CAUSTICS) && d->caustics;
     if (!r->trace_caustics)
         r->passes &= ~(unsigned)MS_SHADER_NEEDS_CAUSTICS;
@@ -360,8 +357,8 @@ ms_status ms_renderer_draw_field(ms_renderer *r, const float *h, const ms_grid *
         return st;
     if ((long)g->nx * g->ny > MAX_FIELD_CELLS)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: grid %d x %d cells is over the %ld cells a mesh may have",
-                       g->nx, g->ny, MAX_FIELD_CELLS);
+                       "render: grid %d x %d cells is over the %ld cells a mesh may have", g->nx,
+                       g->ny, MAX_FIELD_CELLS);
     long bad = ms_field_nonfinite(h, (size_t)g->nx * (size_t)g->ny);
     if (bad >= 0)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
@@ -462,13 +459,15 @@ ms_status ms_renderer_write_png(const ms_renderer *r, const char *path)
         (st = ms_check_not_null(PART, "path", path)) != MS_OK)
         return st;
     if (!r->have_frame)
-        return ms_fail(MS_ERR_STATE, "render: nothing drawn yet; call ms_renderer_draw before "
-                                     "writing \"%s\"",
+        return ms_fail(MS_ERR_STATE,
+                       "render: nothing drawn yet; call ms_renderer_draw before "
+                       "writing \"%s\"",
                        path);
     if (r->in_context)
-        return ms_fail(MS_ERR_STATE, "render: this renderer draws into the caller's OpenGL "
-                                     "framebuffer and reads no pixels back; read them there to "
-                                     "write \"%s\"",
+        return ms_fail(MS_ERR_STATE,
+                       "render: this renderer draws into the caller's OpenGL "
+                       "framebuffer and reads no pixels back; read them there to "
+                       "write \"%s\"",
                        path);
     return ms_png_write_rgba(path, r->pixels, r->desc.width, r->desc.height);
 }

@@ -78,8 +78,7 @@ void ms_mesh_coarsen(const float *h, const ms_grid *g, int step, float *restrict
 /* The automatic mesh step (render.h, mesh_step = 0) for field h on grid g
  * seen by a camera of desc d; scratch holds g's cells (ms_mesh_coarsen's
  * out for any step). */
-int ms_mesh_auto_step(const ms_renderer_desc *d, const float *h, const ms_grid *g,
-                      float *scratch);
+int ms_mesh_auto_step(const ms_renderer_desc *d, const float *h, const ms_grid *g, float *scratch);
 /* The largest height difference (m) between field h and the surface a
  * mesh of `step` draws: at every cell centre, the field against the
  * bilinear interpolation of the block averages at the coarse vertices
@@ -92,13 +91,13 @@ void ms_mesh_indices(int nx, int ny, unsigned *restrict indices);
 /* ---- caustics (CPU) ----------------------------------------------------- */
 
 typedef struct ms_caustics_desc {
-    float pool[4];        /* x0, y0, size x, size y (m): where the map lies */
-    float floor_z;        /* m, world */
-    float light_dir[3];   /* unit, the direction light travels (z < 0) */
-    float ior;            /* refractive index of the liquid */
-    float intensity;      /* 1 = physical contrast, 0 = flat */
-    int resolution;       /* texels per side */
-    float depth;          /* m: still water over the floor; > 0 also traces the walls */
+    float pool[4];      /* x0, y0, size x, size y (m): where the map lies */
+    float floor_z;      /* m, world */
+    float light_dir[3]; /* unit, the direction light travels (z < 0) */
+    float ior;          /* refractive index of the liquid */
+    float intensity;    /* 1 = physical contrast, 0 = flat */
+    int resolution;     /* texels per side */
+    float depth;        /* m: still water over the floor; > 0 also traces the walls */
     /* what blocks the light on its way to the floor, as
      * triangles (3 vertices each, x y z first of `occluder_stride` floats
      * a vertex, world); NULL: nothing */
@@ -112,15 +111,15 @@ typedef struct ms_caustics_desc {
 
 /* Scratch and result of the tracer (reused frame to frame). */
 typedef struct ms_caustics {
-    int n;                /* resolution */
-    float *map;           /* n * n, 1 = unfocused light */
-    float *tmp;           /* n * n, the blur's scratch */
-    float *gx, *gy;       /* field gradients */
-    size_t field_cap;     /* cells gx, gy hold */
-    float *row;           /* scratch of one row of rays: 3 field rows, 3 ray rows */
-    int *col0;            /* per ray column: the field node left of it */
-    float *colf;          /* and the fraction towards the next */
-    size_t row_cap;       /* floats row holds / 6; ints col0 holds */
+    int n;            /* resolution */
+    float *map;       /* n * n, 1 = unfocused light */
+    float *tmp;       /* n * n, the blur's scratch */
+    float *gx, *gy;   /* field gradients */
+    size_t field_cap; /* cells gx, gy hold */
+    float *row;       /* scratch of one row of rays: 3 field rows, 3 ray rows */
+    int *col0;        /* per ray column: the field node left of it */
+    float *colf;      /* and the fraction towards the next */
+    size_t row_cap;   /* floats row holds / 6; ints col0 holds */
     /* the pool's walls under the water: 4 strips of n x
      * wall_rows texels, bottom row first, stacked -x, +x, -y, +y (along
      * the x-walls u runs with y, along the y-walls with x; v from the
@@ -209,56 +208,56 @@ typedef struct ms_render_cavity {
 /* An obstacle or the container drawn as a mesh (objects.c). */
 typedef struct ms_render_object {
     const struct ms_scene_shape *spec; /* the scene's, not owned */
-    ms_shape *shape;        /* the renderer's own instance, placed each frame */
-    float *local;           /* nverts * 6: position, normal in the shape's frame */
-    int nverts;             /* 0: not drawn (unbounded) */
-    float color[3];         /* linear RGB */
+    ms_shape *shape;                   /* the renderer's own instance, placed each frame */
+    float *local;                      /* nverts * 6: position, normal in the shape's frame */
+    int nverts;                        /* 0: not drawn (unbounded) */
+    float color[3];                    /* linear RGB */
 } ms_render_object;
 
 /* World vertices of the objects: position, normal, colour. */
 #define MS_RENDER_OBJECT_STRIDE 9
 
 struct ms_renderer {
-    ms_renderer_desc desc;  /* checked; strings below are owned copies */
+    ms_renderer_desc desc; /* checked; strings below are owned copies */
     char *shader_name, *shader_params, *cubemap_path, *backend_name;
-    float light_to[3];      /* unit vector towards the light */
-    float rim_z;            /* m */
-    float tile_size;        /* m, resolved */
+    float light_to[3]; /* unit vector towards the light */
+    float rim_z;       /* m */
+    float tile_size;   /* m, resolved */
     ms_shader_instance shader;
-    unsigned passes;        /* MS_SHADER_NEEDS_* that run */
-    int trace_caustics;     /* 1: the caustics pass runs */
+    unsigned passes;    /* MS_SHADER_NEEDS_* that run */
+    int trace_caustics; /* 1: the caustics pass runs */
     ms_caustics caustics;
-    ms_render_disc *discs;  /* floating things, ms_renderer_set_discs */
+    ms_render_disc *discs; /* floating things, ms_renderer_set_discs */
     int ndiscs, discs_cap;
-    int discs_changed;      /* the GL side must rebuild their vertices (and the boat's) */
-    int nleaves;            /* the first nleaves discs are the sim's floaters: drawn as leaves */
-    int has_boat;           /* the scene's boat is drawn as a hull (draw_sim.c) */
-    float boat_pos[3];      /* m, world: its centre at the water line */
-    float boat_heading[2];  /* unit, x-y: where its bow points */
-    float boat_radius;      /* m: half its length */
+    int discs_changed;     /* the GL side must rebuild their vertices (and the boat's) */
+    int nleaves;           /* the first nleaves discs are the sim's floaters: drawn as leaves */
+    int has_boat;          /* the scene's boat is drawn as a hull (draw_sim.c) */
+    float boat_pos[3];     /* m, world: its centre at the water line */
+    float boat_heading[2]; /* unit, x-y: where its bow points */
+    float boat_radius;     /* m: half its length */
     const struct ms_scene *object_scene; /* the scene objects were meshed for */
     ms_render_object *objects;
     int nobjects;
-    float *object_verts;    /* object_nverts * MS_RENDER_OBJECT_STRIDE, world */
+    float *object_verts; /* object_nverts * MS_RENDER_OBJECT_STRIDE, world */
     int object_nverts;
-    int object_glass;       /* object_verts from here on are the container's: see-through */
-    float *display;         /* the field drawn by ms_renderer_draw (draw_sim.c) and scratch */
-    size_t display_cap;     /* floats */
-    float *fill;            /* the field filled to the container's inner wall (glass_fill.c) */
-    size_t fill_cap;        /* floats */
+    int object_glass;   /* object_verts from here on are the container's: see-through */
+    float *display;     /* the field drawn by ms_renderer_draw (draw_sim.c) and scratch */
+    size_t display_cap; /* floats */
+    float *fill;        /* the field filled to the container's inner wall (glass_fill.c) */
+    size_t fill_cap;    /* floats */
     ms_render_cavity cavity;
-    unsigned char *pixels;  /* width * height * 4, top row first */
+    unsigned char *pixels; /* width * height * 4, top row first */
     int have_frame;
     ms_render_stats stats;
     ms_gl *gl;
-    int in_context;         /* 1: the caller's GL context (context_current.c) */
+    int in_context; /* 1: the caller's GL context (context_current.c) */
 };
 
 /* objects.c: the obstacles and container of scene sc (NULL: none) posed
  * at time t as sim has them (NULL: as the scene has them) into
  * object_verts; meshed when sc is new. */
-ms_status ms_render_objects_update(ms_renderer *r, const struct ms_scene *sc,
-                                   const ms_sim *sim, double t);
+ms_status ms_render_objects_update(ms_renderer *r, const struct ms_scene *sc, const ms_sim *sim,
+                                   double t);
 void ms_render_objects_free(ms_renderer *r);
 
 /* glass_fill.c. For the frame at hand: when the scene's container holds

@@ -24,12 +24,24 @@ void ms_cubemap_free(ms_cubemap *c)
 void ms_cubemap_direction(int f, float s, float t, float dir[3])
 {
     switch (f) {
-    case 0: dir[0] = 1, dir[1] = -t, dir[2] = -s; break;
-    case 1: dir[0] = -1, dir[1] = -t, dir[2] = s; break;
-    case 2: dir[0] = s, dir[1] = 1, dir[2] = t; break;
-    case 3: dir[0] = s, dir[1] = -1, dir[2] = -t; break;
-    case 4: dir[0] = s, dir[1] = -t, dir[2] = 1; break;
-    default: dir[0] = -s, dir[1] = -t, dir[2] = -1; break;
+    case 0:
+        dir[0] = 1, dir[1] = -t, dir[2] = -s;
+        break;
+    case 1:
+        dir[0] = -1, dir[1] = -t, dir[2] = s;
+        break;
+    case 2:
+        dir[0] = s, dir[1] = 1, dir[2] = t;
+        break;
+    case 3:
+        dir[0] = s, dir[1] = -1, dir[2] = -t;
+        break;
+    case 4:
+        dir[0] = s, dir[1] = -t, dir[2] = 1;
+        break;
+    default:
+        dir[0] = -s, dir[1] = -t, dir[2] = -1;
+        break;
     }
 }
 

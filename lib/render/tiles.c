@@ -8,8 +8,8 @@
 
 void ms_tile_texture(int size, unsigned char *texels)
 {
-    const float grout = 0.06f;  /* half-width of the grout line, in tiles */
-    const float bevel = 0.05f;  /* width of the darkening bevel inside it */
+    const float grout = 0.06f; /* half-width of the grout line, in tiles */
+    const float bevel = 0.05f; /* width of the darkening bevel inside it */
     for (int j = 0; j < size; ++j) {
         float v = ((float)j + 0.5f) / (float)size;
         float dv = MS_MIN(v, 1.0f - v); /* distance to the nearest edge */

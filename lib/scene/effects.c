@@ -187,8 +187,8 @@ static ms_status read_container(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
 
 ms_status ms_scene_read_effects(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
-    static const char *const keys[] = {"rain", "boat", "drops", "floaters", "drag",
-                                       "container", NULL};
+    static const char *const keys[] = {"rain", "boat",      "drops", "floaters",
+                                       "drag", "container", NULL};
     json_t *fx;
     MS_TRY(ms_scene_get_object(c, root, "effects", &fx));
     if (!fx)

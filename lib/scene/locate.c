@@ -145,11 +145,26 @@ static int match_string(const char *t, size_t n, size_t *i, const char *key)
             char e = t[*i + 1];
             *i += 2;
             switch (e) {
-            case 'n': buf[0] = '\n'; len = 1; break;
-            case 't': buf[0] = '\t'; len = 1; break;
-            case 'r': buf[0] = '\r'; len = 1; break;
-            case 'b': buf[0] = '\b'; len = 1; break;
-            case 'f': buf[0] = '\f'; len = 1; break;
+            case 'n':
+                buf[0] = '\n';
+                len = 1;
+                break;
+            case 't':
+                buf[0] = '\t';
+                len = 1;
+                break;
+            case 'r':
+                buf[0] = '\r';
+                len = 1;
+                break;
+            case 'b':
+                buf[0] = '\b';
+                len = 1;
+                break;
+            case 'f':
+                buf[0] = '\f';
+                len = 1;
+                break;
             case 'u': {
                 unsigned cp;
                 if (!hex4(t, n, *i, &cp))
@@ -166,7 +181,10 @@ static int match_string(const char *t, size_t n, size_t *i, const char *key)
                 len = utf8_encode(cp, buf);
                 break;
             }
-            default: buf[0] = (unsigned char)e; len = 1; break; /* \" \\ \/ */
+            default:
+                buf[0] = (unsigned char)e;
+                len = 1;
+                break; /* \" \\ \/ */
             }
         }
         for (int b = 0; b < len; ++b) {

@@ -10,14 +10,21 @@
 static const char *type_name(const json_t *v)
 {
     switch (json_typeof(v)) {
-    case JSON_OBJECT: return "an object";
-    case JSON_ARRAY: return "an array";
-    case JSON_STRING: return "a string";
-    case JSON_INTEGER: return "an integer";
-    case JSON_REAL: return "a number";
+    case JSON_OBJECT:
+        return "an object";
+    case JSON_ARRAY:
+        return "an array";
+    case JSON_STRING:
+        return "a string";
+    case JSON_INTEGER:
+        return "an integer";
+    case JSON_REAL:
+        return "a number";
     case JSON_TRUE:
-    case JSON_FALSE: return "a boolean";
-    case JSON_NULL: return "null";
+    case JSON_FALSE:
+        return "a boolean";
+    case JSON_NULL:
+        return "null";
     }
     return "a value";
 }
@@ -89,7 +96,8 @@ ms_status ms_scene_check_keys(ms_scene_ctx *c, json_t *obj, const char *const *a
 {
     const char *key;
     json_t *v;
-    json_object_foreach(obj, key, v) {
+    json_object_foreach(obj, key, v)
+    {
         int ok = 0;
         for (const char *const *a = allowed; *a; ++a)
             if (strcmp(key, *a) == 0)
@@ -97,8 +105,8 @@ ms_status ms_scene_check_keys(ms_scene_ctx *c, json_t *obj, const char *const *a
         if (strcmp(key, "comment") == 0) {
             if (!json_is_string(v)) {
                 ms_scene_push_key(c, key);
-                ms_status st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: a string",
-                                             type_name(v));
+                ms_status st =
+                    ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: a string", type_name(v));
                 ms_scene_pop(c);
                 return st;
             }
@@ -125,9 +133,8 @@ ms_status ms_scene_check_keys(ms_scene_ctx *c, json_t *obj, const char *const *a
             if (near)
                 snprintf(hint, sizeof hint, " (did you mean \"%s\"?)", near);
             ms_scene_push_key(c, key);
-            ms_status st = ms_scene_fail(c, MS_ERR_PARSE,
-                                         "is an unknown key \"%.60s\"%s; allowed: %s", key, hint,
-                                         list);
+            ms_status st = ms_scene_fail(
+                c, MS_ERR_PARSE, "is an unknown key \"%.60s\"%s; allowed: %s", key, hint, list);
             ms_scene_pop(c);
             return st;
         }
@@ -135,14 +142,13 @@ ms_status ms_scene_check_keys(ms_scene_ctx *c, json_t *obj, const char *const *a
     return MS_OK;
 }
 
-static void range_text(char *buf, size_t size, double lo, double hi, int lo_open,
-                       const char *unit)
+static void range_text(char *buf, size_t size, double lo, double hi, int lo_open, const char *unit)
 {
     snprintf(buf, size, "%s%g, %g]%s%s", lo_open ? "(" : "[", lo, hi, *unit ? " " : "", unit);
 }
 
-ms_status ms_scene_get_number(ms_scene_ctx *c, json_t *obj, const char *key, double def,
-                              double lo, double hi, int lo_open, const char *unit, double *out)
+ms_status ms_scene_get_number(ms_scene_ctx *c, json_t *obj, const char *key, double def, double lo,
+                              double hi, int lo_open, const char *unit, double *out)
 {
     json_t *v = json_object_get(obj, key);
     if (!v) {
@@ -154,13 +160,12 @@ ms_status ms_scene_get_number(ms_scene_ctx *c, json_t *obj, const char *key, dou
     ms_scene_push_key(c, key);
     ms_status st = MS_OK;
     if (!json_is_number(v)) {
-        st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: a number in %s", type_name(v),
-                           range);
+        st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: a number in %s", type_name(v), range);
     } else {
         double x = json_number_value(v);
         if (!isfinite(x) || x < lo || x > hi || (lo_open && x <= lo))
-            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "%g%s%s is out of range; allowed: %s",
-                               x, *unit ? " " : "", unit, range);
+            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "%g%s%s is out of range; allowed: %s", x,
+                               *unit ? " " : "", unit, range);
         else
             *out = x;
     }
@@ -168,8 +173,8 @@ ms_status ms_scene_get_number(ms_scene_ctx *c, json_t *obj, const char *key, dou
     return st;
 }
 
-ms_status ms_scene_get_float(ms_scene_ctx *c, json_t *obj, const char *key, double def,
-                             double lo, double hi, int lo_open, const char *unit, float *out)
+ms_status ms_scene_get_float(ms_scene_ctx *c, json_t *obj, const char *key, double def, double lo,
+                             double hi, int lo_open, const char *unit, float *out)
 {
     double d;
     ms_status st = ms_scene_get_number(c, obj, key, def, lo, hi, lo_open, unit, &d);
@@ -240,8 +245,8 @@ ms_status ms_scene_get_string(ms_scene_ctx *c, json_t *obj, const char *key, con
     return MS_OK;
 }
 
-ms_status ms_scene_get_enum(ms_scene_ctx *c, json_t *obj, const char *key,
-                            const char *const *names, int def, int *out)
+ms_status ms_scene_get_enum(ms_scene_ctx *c, json_t *obj, const char *key, const char *const *names,
+                            int def, int *out)
 {
     char list[300];
     size_t used = 0;
@@ -274,8 +279,7 @@ ms_status ms_scene_get_enum(ms_scene_ctx *c, json_t *obj, const char *key,
                 snprintf(hint, sizeof hint, " (did you mean \"%s\"?)", near);
             st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
                                "\"%.60s\" is unknown%s; allowed: one of %s", s, hint, list);
-        }
-        else
+        } else
             *out = found;
     }
     ms_scene_pop(c);
@@ -289,8 +293,7 @@ ms_status ms_scene_read_vec(ms_scene_ctx *c, json_t *v, int n, double lo, double
     range_text(range, sizeof range, lo, hi, 0, unit);
     if (!json_is_array(v) || json_array_size(v) != (size_t)n)
         return ms_scene_fail(c, MS_ERR_PARSE, "is %s%s; allowed: an array of %d numbers in %s",
-                             type_name(v), json_is_array(v) ? " of another length" : "", n,
-                             range);
+                             type_name(v), json_is_array(v) ? " of another length" : "", n, range);
     for (int i = 0; i < n; ++i) {
         json_t *e = json_array_get(v, (size_t)i);
         ms_scene_push_index(c, i);
@@ -301,9 +304,9 @@ ms_status ms_scene_read_vec(ms_scene_ctx *c, json_t *v, int n, double lo, double
         } else {
             double x = json_number_value(e);
             if (!isfinite(x) || x < lo || x > hi)
-                st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                   "%g%s%s is out of range; allowed: %s", x, *unit ? " " : "",
-                                   unit, range);
+                st =
+                    ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "%g%s%s is out of range; allowed: %s",
+                                  x, *unit ? " " : "", unit, range);
             else
                 out[i] = (float)x;
         }
@@ -314,8 +317,8 @@ ms_status ms_scene_read_vec(ms_scene_ctx *c, json_t *v, int n, double lo, double
     return MS_OK;
 }
 
-ms_status ms_scene_get_vec(ms_scene_ctx *c, json_t *obj, const char *key, int n,
-                           const float *def, double lo, double hi, const char *unit, float *out)
+ms_status ms_scene_get_vec(ms_scene_ctx *c, json_t *obj, const char *key, int n, const float *def,
+                           double lo, double hi, const char *unit, float *out)
 {
     json_t *v = json_object_get(obj, key);
     if (!v) {
@@ -342,9 +345,8 @@ ms_status ms_scene_get_ivec(ms_scene_ctx *c, json_t *obj, const char *key, int n
     ms_status st = MS_OK;
     if (!json_is_array(v) || json_array_size(v) != (size_t)n) {
         st = ms_scene_fail(c, MS_ERR_PARSE,
-                           "is %s%s; allowed: an array of %d integers in [%ld, %ld]",
-                           type_name(v), json_is_array(v) ? " of another length" : "", n, lo,
-                           hi);
+                           "is %s%s; allowed: an array of %d integers in [%ld, %ld]", type_name(v),
+                           json_is_array(v) ? " of another length" : "", n, lo, hi);
     }
     for (int i = 0; st == MS_OK && i < n; ++i) {
         json_t *e = json_array_get(v, (size_t)i);
@@ -372,8 +374,8 @@ ms_status ms_scene_get_object(ms_scene_ctx *c, json_t *obj, const char *key, jso
         return MS_OK;
     if (!json_is_object(v)) {
         ms_scene_push_key(c, key);
-        ms_status st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: an object {...}",
-                                     type_name(v));
+        ms_status st =
+            ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: an object {...}", type_name(v));
         ms_scene_pop(c);
         return st;
     }
@@ -381,8 +383,8 @@ ms_status ms_scene_get_object(ms_scene_ctx *c, json_t *obj, const char *key, jso
     return MS_OK;
 }
 
-ms_status ms_scene_get_array(ms_scene_ctx *c, json_t *obj, const char *key, size_t min,
-                             size_t max, json_t **out)
+ms_status ms_scene_get_array(ms_scene_ctx *c, json_t *obj, const char *key, size_t min, size_t max,
+                             json_t **out)
 {
     json_t *v = json_object_get(obj, key);
     *out = NULL;

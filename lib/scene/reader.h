@@ -16,7 +16,7 @@ typedef struct ms_scene_ctx {
     size_t len;
     ms_scene_pathelem path[MS_SCENE_MAX_DEPTH];
     int depth;
-    const char *dir;  /* the scene file's folder with its '/', "" when parsed */
+    const char *dir; /* the scene file's folder with its '/', "" when parsed */
     /* --set overrides (override.c): a failure whose key is one of these (or
      * inside one) names "--set KEY=VALUE" instead of file:line:col. */
     const char *const *set;
@@ -40,10 +40,10 @@ ms_status ms_scene_check_keys(ms_scene_ctx *c, json_t *obj, const char *const *a
  * wrong type is MS_ERR_PARSE, one out of range MS_ERR_INVALID_ARGUMENT. */
 
 /* A number in [lo, hi], or (lo, hi] when lo_open. */
-ms_status ms_scene_get_number(ms_scene_ctx *c, json_t *obj, const char *key, double def,
-                              double lo, double hi, int lo_open, const char *unit, double *out);
-ms_status ms_scene_get_float(ms_scene_ctx *c, json_t *obj, const char *key, double def,
-                             double lo, double hi, int lo_open, const char *unit, float *out);
+ms_status ms_scene_get_number(ms_scene_ctx *c, json_t *obj, const char *key, double def, double lo,
+                              double hi, int lo_open, const char *unit, double *out);
+ms_status ms_scene_get_float(ms_scene_ctx *c, json_t *obj, const char *key, double def, double lo,
+                             double hi, int lo_open, const char *unit, float *out);
 ms_status ms_scene_get_int(ms_scene_ctx *c, json_t *obj, const char *key, long def, long lo,
                            long hi, long *out);
 ms_status ms_scene_get_bool(ms_scene_ctx *c, json_t *obj, const char *key, int def, int *out);
@@ -51,12 +51,12 @@ ms_status ms_scene_get_bool(ms_scene_ctx *c, json_t *obj, const char *key, int d
 ms_status ms_scene_get_string(ms_scene_ctx *c, json_t *obj, const char *key, const char *def,
                               const char **out);
 /* A string that must be one of names (NULL-terminated); *out its index. */
-ms_status ms_scene_get_enum(ms_scene_ctx *c, json_t *obj, const char *key,
-                            const char *const *names, int def, int *out);
+ms_status ms_scene_get_enum(ms_scene_ctx *c, json_t *obj, const char *key, const char *const *names,
+                            int def, int *out);
 /* An array of exactly n numbers, each in [lo, hi]; def (n values) may be NULL
  * only when the key is required. */
-ms_status ms_scene_get_vec(ms_scene_ctx *c, json_t *obj, const char *key, int n,
-                           const float *def, double lo, double hi, const char *unit, float *out);
+ms_status ms_scene_get_vec(ms_scene_ctx *c, json_t *obj, const char *key, int n, const float *def,
+                           double lo, double hi, const char *unit, float *out);
 /* The n numbers of an array value v already pushed as the current path. */
 ms_status ms_scene_read_vec(ms_scene_ctx *c, json_t *v, int n, double lo, double hi,
                             const char *unit, float *out);
@@ -66,8 +66,8 @@ ms_status ms_scene_get_ivec(ms_scene_ctx *c, json_t *obj, const char *key, int n
 /* A member that must be an object (NULL when absent). */
 ms_status ms_scene_get_object(ms_scene_ctx *c, json_t *obj, const char *key, json_t **out);
 /* A member that must be an array of at most max elements (NULL when absent). */
-ms_status ms_scene_get_array(ms_scene_ctx *c, json_t *obj, const char *key, size_t min,
-                             size_t max, json_t **out);
+ms_status ms_scene_get_array(ms_scene_ctx *c, json_t *obj, const char *key, size_t min, size_t max,
+                             json_t **out);
 /* A required member: MS_ERR_INVALID_ARGUMENT naming it when absent. */
 ms_status ms_scene_require(ms_scene_ctx *c, json_t *obj, const char *key, const char *what);
 

@@ -17,7 +17,6 @@
 
 #define MAX_SCENE_BYTES (16u << 20)
 
-
 static void free_path(ms_scene_motion *p)
 {
     ms_free(p->points);
@@ -53,7 +52,6 @@ void ms_scene_destroy(ms_scene *sc)
     ms_free(sc);
 }
 
-
 static ms_status parse_one(const char *text, size_t len, const char *file, const char *path,
                            const char *dir, const char *default_name, int nset,
                            const char *const *set, ms_scene **out)
@@ -83,8 +81,13 @@ static ms_status parse_one(const char *text, size_t len, const char *file, const
         return ms_fail(MS_ERR_PARSE, "%s:%d:%d: JSON syntax error: %s", file, line,
                        col < 1 ? 1 : col, err.text);
     }
-    ms_scene_ctx c = {.file = file, .text = sc->text, .len = len, .depth = 0, .dir = dir,
-                      .set = set, .nset = nset};
+    ms_scene_ctx c = {.file = file,
+                      .text = sc->text,
+                      .len = len,
+                      .depth = 0,
+                      .dir = dir,
+                      .set = set,
+                      .nset = nset};
     ms_status st = ms_scene_read_sections(&c, root, sc, dir, default_name);
     json_decref(root);
     if (st != MS_OK) {
@@ -100,14 +103,16 @@ static ms_status parse_one(const char *text, size_t len, const char *file, const
  * errors at an overridden key name the "--set"; the rest name the merged
  * text ("FILE with --set:line:col"), the text ms_scene_text returns. */
 static ms_status parse(const char *text, size_t len, const char *file, const char *path,
-                       const char *dir, const char *default_name, int nset,
-                       const char *const *set, ms_scene **out)
+                       const char *dir, const char *default_name, int nset, const char *const *set,
+                       ms_scene **out)
 {
     if (nset == 0)
         return parse_one(text, len, file, path, dir, default_name, 0, NULL, out);
     if (nset < 0 || !set)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "scene: %d overrides at %p; allowed: n >= 0 "
-                       "and a list when n > 0", nset, (const void *)set);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "scene: %d overrides at %p; allowed: n >= 0 "
+                       "and a list when n > 0",
+                       nset, (const void *)set);
     for (int i = 0; i < nset; ++i)
         MS_TRY(ms_scene_override_check(set[i]));
     ms_scene *plain = NULL;
@@ -186,8 +191,8 @@ ms_status ms_scene_load_with_overrides(const char *path, int n, const char *cons
         len += got;
         if (got == 0) {
             if (ferror(f))
-                st = ms_fail(MS_ERR_IO, "%s: cannot read the scene file: %s", path,
-                             strerror(errno));
+                st =
+                    ms_fail(MS_ERR_IO, "%s: cannot read the scene file: %s", path, strerror(errno));
             break;
         }
     }

@@ -38,14 +38,14 @@ void ms_scene_motion_eval(const ms_scene_motion *p, double t, float *pos, float 
 
 /* A collision shape of the scene (obstacle or container). */
 typedef struct ms_scene_shape {
-    char *kind;        /* shape plugin name */
-    char *params_json; /* its parameters as JSON object text ("{}" if none) */
-    float position[3]; /* m */
-    float velocity[3]; /* m/s, used when there is no path */
+    char *kind;           /* shape plugin name */
+    char *params_json;    /* its parameters as JSON object text ("{}" if none) */
+    float position[3];    /* m */
+    float velocity[3];    /* m/s, used when there is no path */
     float orientation[4]; /* quaternion (w, x, y, z) at t = 0, not normalised */
     float spin[3];        /* rad/s, world axes: it turns at this rate */
     ms_scene_motion path;
-    int surface_mask;  /* 1: its footprint at the water level blocks waves */
+    int surface_mask; /* 1: its footprint at the water level blocks waves */
 } ms_scene_shape;
 
 typedef struct ms_scene_drop {
@@ -56,51 +56,51 @@ typedef struct ms_scene_drop {
 } ms_scene_drop;
 
 typedef struct ms_scene_render {
-    int width, height;     /* pixels */
-    char *shader;          /* shader plugin name */
-    char *cubemap;         /* "builtin" or a path resolved against the scene's directory */
+    int width, height; /* pixels */
+    char *shader;      /* shader plugin name */
+    char *cubemap;     /* "builtin" or a path resolved against the scene's directory */
     int has_caustics;
-    int caustics_resolution;  /* light map texels per side */
-    float caustics_intensity; /* 1 = physical */
-    float light_dir[3];       /* unit vector, towards where the light goes */
+    int caustics_resolution;        /* light map texels per side */
+    float caustics_intensity;       /* 1 = physical */
+    float light_dir[3];             /* unit vector, towards where the light goes */
     float eye[3], target[3], up[3]; /* m, camera */
-    float fov;                /* degrees, vertical */
-    int backend;              /* index in ms_scene_render_backends: the GL context */
+    float fov;                      /* degrees, vertical */
+    int backend;                    /* index in ms_scene_render_backends: the GL context */
 } ms_scene_render;
 
 /* render.backend's names: "auto", "osmesa", "egl" (NULL-terminated). */
 extern const char *const ms_scene_render_backends[];
 
 struct ms_scene {
-    char *text;    /* the JSON text, NUL-terminated */
+    char *text; /* the JSON text, NUL-terminated */
     size_t text_len;
-    char *path;    /* "" when parsed from memory */
+    char *path; /* "" when parsed from memory */
     char *name;
 
     double duration; /* s */
     float frame_dt;  /* s */
     uint64_t seed;
-    int threads;     /* 1 or 2 */
+    int threads;                        /* 1 or 2 */
     float domain_min[3], domain_max[3]; /* m */
 
     /* volume: SPH (absent: no particles, no SPH work) */
     int has_volume;
     struct {
-        float spacing;           /* m */
-        float smoothing_length;  /* m */
-        float rest_density;      /* kg/m^3 */
-        float gas_constant;      /* m^2/s^2 */
-        float viscosity;         /* Pa s */
-        float gravity[3];        /* m/s^2 */
+        float spacing;          /* m */
+        float smoothing_length; /* m */
+        float rest_density;     /* kg/m^3 */
+        float gas_constant;     /* m^2/s^2 */
+        float viscosity;        /* Pa s */
+        float gravity[3];       /* m/s^2 */
         ms_pressure pressure;
-        int max_particles;       /* 0 = what the fill boxes need */
+        int max_particles; /* 0 = what the fill boxes need */
         /* NAN / 0: the solver's default */
-        float sound_speed;       /* m/s, Tait's c0 */
-        float courant;           /* CFL number */
+        float sound_speed; /* m/s, Tait's c0 */
+        float courant;     /* CFL number */
         int max_substeps;
-        int threads;             /* threads inside the SPH step */
-        int smooth_steps;        /* eq. 18 smoothing passes (-1 = default) */
-        float smooth_energy;     /* J/kg, eq. 18 threshold */
+        int threads;         /* threads inside the SPH step */
+        int smooth_steps;    /* eq. 18 smoothing passes (-1 = default) */
+        float smooth_energy; /* J/kg, eq. 18 threshold */
         /* MS_PRESSURE_DFSPH's stop rule and caps (NAN / -1: the solver's) */
         float max_density_error;    /* average predicted compression */
         float max_divergence_error; /* average dt (D rho/Dt) / rho0 */
@@ -114,10 +114,10 @@ struct ms_scene {
     /* surface: wave equation (absent: the SPH field alone is the surface) */
     int has_surface;
     struct {
-        int nx, ny;          /* X_WE x Y_WE */
-        float dx;            /* m, square cells over the domain's x-y extent */
-        float wave_speed;    /* m/s */
-        float damping;       /* (0, 1], velocity kept per second */
+        int nx, ny;       /* X_WE x Y_WE */
+        float dx;         /* m, square cells over the domain's x-y extent */
+        float wave_speed; /* m/s */
+        float damping;    /* (0, 1], velocity kept per second */
         ms_boundary boundary;
         int max_substeps;
     } surface;
@@ -140,14 +140,14 @@ struct ms_scene {
     ms_scene_drop *drops;
     int has_floaters;
     int nfloaters;
-    float *floater_xy;     /* 2 * nfloaters, m, start positions */
-    float floater_drag;    /* 1/s: how fast a floater takes the flow's velocity */
-    float floater_slope;   /* 1: slides down wave slopes under full gravity */
+    float *floater_xy;   /* 2 * nfloaters, m, start positions */
+    float floater_drag;  /* 1/s: how fast a floater takes the flow's velocity */
+    float floater_slope; /* 1: slides down wave slopes under full gravity */
     int has_drag;
     ms_scene_motion drag_path;
-    float drag_radius;     /* m */
-    float drag_depth;      /* m below the surface */
-    float drag_strength;   /* 1/s: how fast the water takes the pointer's velocity */
+    float drag_radius;   /* m */
+    float drag_depth;    /* m below the surface */
+    float drag_strength; /* 1/s: how fast the water takes the pointer's velocity */
     int has_container;
     ms_scene_shape container;
 
@@ -156,7 +156,7 @@ struct ms_scene {
 
     unsigned output_fields; /* MS_FIELD_* */
     int output_every;
-    int output_deflate; /* 0..9 */
+    int output_deflate;          /* 0..9 */
     int output_checkpoint_every; /* written frames per checkpoint, 0 = none */
 };
 

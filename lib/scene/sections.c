@@ -22,7 +22,6 @@
 #define MAX_SPEED MS_SCENE_MAX_SPEED
 #define MAX_PARTICLES 10000000L
 
-
 /* {"points": [[x, y(, z)], ...], "speed", "loop", "start"} */
 ms_status ms_scene_read_path(ms_scene_ctx *c, json_t *obj, const char *key, int dim,
                              ms_scene_motion *p)
@@ -35,8 +34,8 @@ ms_status ms_scene_read_path(ms_scene_ctx *c, json_t *obj, const char *key, int 
     ms_scene_push_key(c, key);
     ms_status st = ms_scene_check_keys(c, o, keys);
     if (st == MS_OK)
-        st = ms_scene_require(c, o, "points", dim == 2 ? "an array of [x, y] in m"
-                                                       : "an array of [x, y, z] in m");
+        st = ms_scene_require(c, o, "points",
+                              dim == 2 ? "an array of [x, y] in m" : "an array of [x, y, z] in m");
     if (st == MS_OK)
         st = ms_scene_get_array(c, o, "points", 1, MS_SCENE_MAX_PATH_POINTS, &pts);
     if (st == MS_OK)
@@ -71,8 +70,8 @@ ms_status ms_scene_read_path(ms_scene_ctx *c, json_t *obj, const char *key, int 
 /* An obstacle or the container: a shape of a plugin, posed and maybe moving. */
 ms_status ms_scene_read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
 {
-    static const char *const keys[] = {"shape", "params", "position", "velocity",
-                                       "orientation", "spin", "path", "surface_mask", NULL};
+    static const char *const keys[] = {"shape", "params", "position",     "velocity", "orientation",
+                                       "spin",  "path",   "surface_mask", NULL};
     static const float zero[3] = {0, 0, 0}, unturned[4] = {1, 0, 0, 0};
     const char *kind;
     json_t *params;
@@ -81,9 +80,9 @@ ms_status ms_scene_read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
     MS_TRY(ms_scene_get_string(c, o, "shape", NULL, &kind));
     if (!kind[0] || strlen(kind) > 64) {
         ms_scene_push_key(c, "shape");
-        ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                     "\"%.64s\" is not a shape name; allowed: 1 to 64 characters",
-                                     kind);
+        ms_status st =
+            ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                          "\"%.64s\" is not a shape name; allowed: 1 to 64 characters", kind);
         ms_scene_pop(c);
         return st;
     }
@@ -129,8 +128,8 @@ ms_status ms_scene_read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
     ms_status st = MS_OK;
     if (ms_plugin_find("scene", kind, MS_PLUGIN_SHAPE, &rec) != MS_OK) {
         ms_scene_push_key(c, "shape");
-        st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "\"%.64s\" is not a shape plugin (%s)",
-                           kind, ms_last_error());
+        st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "\"%.64s\" is not a shape plugin (%s)", kind,
+                           ms_last_error());
     } else {
         ms_shape *probe = NULL;
         ms_status cst = ms_shape_create(kind, s->params_json, &probe);
@@ -199,8 +198,8 @@ static ms_status read_fill_box(ms_scene_ctx *c, json_t *b, float lo[3], float hi
     for (int k = 0; k < 2; ++k) {
         const char *key = k ? "max" : "min";
         ms_scene_push_key(c, key);
-        ms_status st = ms_scene_read_vec(c, json_object_get(b, key), 3, -BIG, BIG, "m",
-                                         k ? hi : lo);
+        ms_status st =
+            ms_scene_read_vec(c, json_object_get(b, key), 3, -BIG, BIG, "m", k ? hi : lo);
         for (int a = 0; st == MS_OK && a < 3; ++a) {
             float v = (k ? hi : lo)[a];
             if (v < sc->domain_min[a] || v > sc->domain_max[a])
@@ -317,19 +316,19 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     if (!o)
         return MS_OK;
     sc->has_volume = 1;
-    float ext = MS_MIN(sc->domain_max[0] - sc->domain_min[0],
-                       MS_MIN(sc->domain_max[1] - sc->domain_min[1],
-                              sc->domain_max[2] - sc->domain_min[2]));
+    float ext = MS_MIN(
+        sc->domain_max[0] - sc->domain_min[0],
+        MS_MIN(sc->domain_max[1] - sc->domain_min[1], sc->domain_max[2] - sc->domain_min[2]));
     ms_scene_push_key(c, "volume");
     MS_TRY(ms_scene_check_keys(c, o, keys));
     MS_TRY(ms_scene_get_float(c, o, "spacing", 0.04, 0, ext, 1, "m", &sc->volume.spacing));
     /* NAN: the volume solver's default ratio h / spacing (see sim/create.c) */
     MS_TRY(ms_scene_get_float(c, o, "smoothing_length", NAN, sc->volume.spacing,
-                           4 * sc->volume.spacing, 0, "m", &sc->volume.smoothing_length));
+                              4 * sc->volume.spacing, 0, "m", &sc->volume.smoothing_length));
     MS_TRY(ms_scene_get_float(c, o, "rest_density", 1000, 0, 1e5, 1, "kg/m^3",
-                           &sc->volume.rest_density));
+                              &sc->volume.rest_density));
     MS_TRY(ms_scene_get_float(c, o, "gas_constant", NAN, 0, 1e7, 1, "m^2/s^2",
-                           &sc->volume.gas_constant));
+                              &sc->volume.gas_constant));
     MS_TRY(ms_scene_get_float(c, o, "viscosity", NAN, 0, 1e4, 0, "Pa s", &sc->volume.viscosity));
     MS_TRY(ms_scene_get_vec(c, o, "gravity", 3, g, -1e3, 1e3, "m/s^2", sc->volume.gravity));
     MS_TRY(ms_scene_get_enum(c, o, "pressure", pressures, 0, &pressure));
@@ -344,7 +343,7 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     MS_TRY(ms_scene_get_int(c, o, "threads", 0, 1, 64, &vthreads));
     MS_TRY(ms_scene_get_int(c, o, "smooth_steps", -1, 0, 64, &smooth));
     MS_TRY(ms_scene_get_float(c, o, "smooth_energy", NAN, 0, 1e6, 1, "J/kg",
-                           &sc->volume.smooth_energy));
+                              &sc->volume.smooth_energy));
     sc->volume.max_substeps = (int)maxsub;
     sc->volume.threads = (int)vthreads;
     sc->volume.smooth_steps = (int)smooth;
@@ -369,8 +368,8 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 
 static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
-    static const char *const keys[] = {"cells", "wave_speed", "damping", "boundary",
-                                       "max_substeps", "level", NULL};
+    static const char *const keys[] = {"cells",        "wave_speed", "damping", "boundary",
+                                       "max_substeps", "level",      NULL};
     static const char *const boundaries[] = {"reflect", "absorb", "periodic", NULL};
     static const int cells_def[2] = {256, 256};
     json_t *o;
@@ -397,7 +396,7 @@ static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     MS_TRY(ms_scene_check_keys(c, o, keys));
     MS_TRY(ms_scene_get_ivec(c, o, "cells", 2, cells_def, 2, 16384, cells));
     MS_TRY(ms_scene_get_float(c, o, "wave_speed", 0.5, 0, MAX_SPEED, 1, "m/s",
-                           &sc->surface.wave_speed));
+                              &sc->surface.wave_speed));
     MS_TRY(ms_scene_get_float(c, o, "damping", 0.9, 0, 1, 1, "", &sc->surface.damping));
     MS_TRY(ms_scene_get_enum(c, o, "boundary", boundaries, 0, &boundary));
     MS_TRY(ms_scene_get_int(c, o, "max_substeps", 100000, 1, 10000000, &maxsub));
@@ -413,8 +412,7 @@ static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
         ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
                                      "[%d, %d] over the domain's %g m x %g m gives cells of %g m x "
                                      "%g m; allowed: square cells (cells[1] = %.0f)",
-                                     cells[0], cells[1],
-                                     sc->domain_max[0] - sc->domain_min[0],
+                                     cells[0], cells[1], sc->domain_max[0] - sc->domain_min[0],
                                      sc->domain_max[1] - sc->domain_min[1], dx, dy,
                                      (sc->domain_max[1] - sc->domain_min[1]) / dx);
         ms_scene_pop(c);
@@ -439,9 +437,9 @@ static ms_status read_coupling(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     MS_TRY(ms_scene_get_int(c, o, "n_time", 0, 0, 100000, &n_time));
     sc->n_time = (int)n_time;
     MS_TRY(ms_scene_get_float(c, o, "surface_from_volume", 0, 0, 0.25f, 0, "",
-                           &sc->couple_surface_from_volume));
+                              &sc->couple_surface_from_volume));
     MS_TRY(ms_scene_get_float(c, o, "volume_from_surface", 0, 0, 1, 0, "",
-                           &sc->couple_volume_from_surface));
+                              &sc->couple_volume_from_surface));
     ms_scene_pop(c);
     return MS_OK;
 }
@@ -475,9 +473,9 @@ static ms_status read_obstacles(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir,
                                  const char *default_name)
 {
-    static const char *const keys[] = {"name", "duration", "frame_dt", "seed", "threads",
-                                       "domain", "volume", "surface", "coupling", "obstacles",
-                                       "effects", "render", "output",
+    static const char *const keys[] = {"name", "duration", "frame_dt", "seed", "threads", "domain",
+                                       "volume", "surface", "coupling", "obstacles", "effects",
+                                       "render", "output",
                                        /* --set overrides (override.c) */
                                        "overrides", NULL};
     const char *name;

@@ -33,5 +33,4 @@ ms_status ms_scene_read_path(ms_scene_ctx *c, json_t *obj, const char *key, int 
                              ms_scene_motion *p);
 ms_status ms_scene_read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s);
 
-
 #endif

@@ -126,8 +126,8 @@ ms_status ms_shape_set_orientation(ms_shape *s, const float quat[4], const float
     }
     for (int k = 0; k < 3; ++k)
         s->omega[k] = omega ? omega[k] : 0.0f;
-    s->turned = s->quat[0] != 1.0f || s->omega[0] != 0.0f || s->omega[1] != 0.0f ||
-                s->omega[2] != 0.0f;
+    s->turned =
+        s->quat[0] != 1.0f || s->omega[0] != 0.0f || s->omega[1] != 0.0f || s->omega[2] != 0.0f;
     return MS_OK;
 }
 
@@ -143,8 +143,8 @@ void ms_shape_get_orientation(const ms_shape *s, float quat[4], float omega[3])
 
 void ms_shape_rotation_at(const ms_shape *s, float t, float R[9])
 {
-    const float w2 = s->omega[0] * s->omega[0] + s->omega[1] * s->omega[1] +
-                     s->omega[2] * s->omega[2];
+    const float w2 =
+        s->omega[0] * s->omega[0] + s->omega[1] * s->omega[1] + s->omega[2] * s->omega[2];
     const float ang = sqrtf(w2) * t; /* rad */
     if (!(ang != 0.0f)) {
         for (int k = 0; k < 9; ++k)
@@ -155,15 +155,14 @@ void ms_shape_rotation_at(const ms_shape *s, float t, float R[9])
     const float inv = 1.0f / sqrtf(w2);
     const float a[3] = {s->omega[0] * inv, s->omega[1] * inv, s->omega[2] * inv};
     const float sn = sinf(ang), cs = 1.0f - cosf(ang);
-    const float E[9] = {1 + cs * (a[0] * a[0] - 1), -sn * a[2] + cs * a[0] * a[1],
-                        sn * a[1] + cs * a[0] * a[2],  sn * a[2] + cs * a[0] * a[1],
-                        1 + cs * (a[1] * a[1] - 1), -sn * a[0] + cs * a[1] * a[2],
-                        -sn * a[1] + cs * a[0] * a[2], sn * a[0] + cs * a[1] * a[2],
-                        1 + cs * (a[2] * a[2] - 1)};
+    const float E[9] = {
+        1 + cs * (a[0] * a[0] - 1),    -sn * a[2] + cs * a[0] * a[1], sn * a[1] + cs * a[0] * a[2],
+        sn * a[2] + cs * a[0] * a[1],  1 + cs * (a[1] * a[1] - 1),    -sn * a[0] + cs * a[1] * a[2],
+        -sn * a[1] + cs * a[0] * a[2], sn * a[0] + cs * a[1] * a[2],  1 + cs * (a[2] * a[2] - 1)};
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)
-            R[3 * r + c] = E[3 * r] * s->rot[c] + E[3 * r + 1] * s->rot[3 + c] +
-                           E[3 * r + 2] * s->rot[6 + c];
+            R[3 * r + c] =
+                E[3 * r] * s->rot[c] + E[3 * r + 1] * s->rot[3 + c] + E[3 * r + 2] * s->rot[6 + c];
 }
 
 float ms_shape_distance_local(const ms_shape *s, const float q[3], float normal[3])

@@ -20,13 +20,13 @@
 struct ms_shape {
     const ms_plugin_rec *plugin;
     const ms_shape_vtable *vt;
-    void *self;    /* the plugin's instance */
-    float pos[3];  /* m, world position of the local origin */
-    float vel[3];  /* m/s */
-    float quat[4]; /* orientation, unit quaternion (w, x, y, z), local -> world */
-    float rot[9];  /* the same as a row-major rotation matrix R */
+    void *self;     /* the plugin's instance */
+    float pos[3];   /* m, world position of the local origin */
+    float vel[3];   /* m/s */
+    float quat[4];  /* orientation, unit quaternion (w, x, y, z), local -> world */
+    float rot[9];   /* the same as a row-major rotation matrix R */
     float omega[3]; /* rad/s, world axes, about pos */
-    int turned;    /* R != I or omega != 0: the rotated paths are taken */
+    int turned;     /* R != I or omega != 0: the rotated paths are taken */
 };
 
 /* Rigid motion, shared by the shape's own queries and the volume's
@@ -63,8 +63,7 @@ static inline void ms_rigid_velocity(const float v[3], const float omega[3], con
 void ms_shape_rotation_at(const ms_shape *s, float t, float R[9]);
 /* The refusals of ms_shape_set_orientation, with part naming the caller:
  * a non-finite or zero quaternion (NULL: none given), |omega_k| > 1000. */
-ms_status ms_shape_check_orientation(const char *part, const float quat[4],
-                                     const float omega[3]);
+ms_status ms_shape_check_orientation(const char *part, const float quat[4], const float omega[3]);
 /* Signed distance and normal in the plugin's own frame. */
 float ms_shape_distance_local(const ms_shape *s, const float q[3], float normal[3]);
 /* World bounds that hold the shape in any orientation about pos: a cube of

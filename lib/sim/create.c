@@ -15,8 +15,8 @@ ms_sim_desc ms_sim_desc_default(void)
     d.size = (uint32_t)sizeof d;
     d.volume = NULL;
     d.surface = NULL;
-    d.field_nx = d.field_ny = 0;   /* derived */
-    d.surface_substeps = 0;        /* derived (eq. 19) */
+    d.field_nx = d.field_ny = 0; /* derived */
+    d.surface_substeps = 0;      /* derived (eq. 19) */
     d.couple_surface_from_volume = 0;
     d.couple_volume_from_surface = 0;
     d.threads = 1;
@@ -117,7 +117,9 @@ static ms_status alloc_buffers(ms_sim *sim, int floaters)
         sim->combined = sim_alloc(&sim->own_surface_bytes, ns, sizeof(float));
         if (!sim->combined)
             return oom("the combined field");
-        sim->wave_grid = (ms_grid){.nx = sim->snx, .ny = sim->sny, .dx = sim->sdx,
+        sim->wave_grid = (ms_grid){.nx = sim->snx,
+                                   .ny = sim->sny,
+                                   .dx = sim->sdx,
                                    .dy = sim->sdx,
                                    .origin = {sim->domain_min[0], sim->domain_min[1]}};
         if (sim->volume) {
@@ -139,18 +141,19 @@ static ms_status alloc_buffers(ms_sim *sim, int floaters)
                 }
                 /* and the volume's record of them (steps allocate nothing) */
                 MS_TRY(ms_volume_reserve_waves(sim->volume, nf));
-                sim->wave_colmap = sim_alloc(&sim->own_surface_bytes, (size_t)sim->snx,
-                                             sizeof *sim->wave_colmap);
+                sim->wave_colmap =
+                    sim_alloc(&sim->own_surface_bytes, (size_t)sim->snx, sizeof *sim->wave_colmap);
                 sim->wave_rowsum = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
                 if (!sim->wave_colmap || !sim->wave_rowsum)
                     return oom("the surface->volume coupling");
                 for (int i = 0; i < sim->snx; ++i) /* the SPH column of wave column i */
                     sim->wave_colmap[i] = (int)(((2L * i + 1) * sim->fnx) / (2L * sim->snx));
-                sim->field_grid = (ms_grid){
-                    .nx = sim->fnx, .ny = sim->fny,
-                    .dx = (sim->domain_max[0] - sim->domain_min[0]) / (float)sim->fnx,
-                    .dy = (sim->domain_max[1] - sim->domain_min[1]) / (float)sim->fny,
-                    .origin = {sim->domain_min[0], sim->domain_min[1]}};
+                sim->field_grid =
+                    (ms_grid){.nx = sim->fnx,
+                              .ny = sim->fny,
+                              .dx = (sim->domain_max[0] - sim->domain_min[0]) / (float)sim->fnx,
+                              .dy = (sim->domain_max[1] - sim->domain_min[1]) / (float)sim->fny,
+                              .origin = {sim->domain_min[0], sim->domain_min[1]}};
             }
         }
     }
@@ -179,19 +182,15 @@ typedef struct descs {
 static ms_status read_descs(const ms_sim_desc *user, descs *out)
 {
     out->sim = ms_sim_desc_default();
-    MS_TRY(ms_struct_in(user, &out->sim,
-                        MS_SIZES_SIM_DESC,
-                        "sim"));
+    MS_TRY(ms_struct_in(user, &out->sim, MS_SIZES_SIM_DESC, "sim"));
     if (out->sim.volume) {
         out->volume = ms_volume_desc_default();
-        MS_TRY(ms_struct_in(out->sim.volume, &out->volume,
-                            MS_SIZES_VOLUME_DESC, "volume"));
+        MS_TRY(ms_struct_in(out->sim.volume, &out->volume, MS_SIZES_VOLUME_DESC, "volume"));
         out->sim.volume = &out->volume;
     }
     if (out->sim.surface) {
         out->surface = ms_surface_desc_default();
-        MS_TRY(ms_struct_in(out->sim.surface, &out->surface,
-                            MS_SIZES_SURFACE_DESC, "surface"));
+        MS_TRY(ms_struct_in(out->sim.surface, &out->surface, MS_SIZES_SURFACE_DESC, "surface"));
         out->sim.surface = &out->surface;
     }
     return MS_OK;
@@ -238,9 +237,9 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
             memcpy(sim->domain_min, vd.domain_min, sizeof sim->domain_min);
             memcpy(sim->domain_max, vd.domain_max, sizeof sim->domain_max);
             sim->spacing = vd.spacing;
-            double g = sqrt((double)vd.gravity[0] * vd.gravity[0] +
-                            (double)vd.gravity[1] * vd.gravity[1] +
-                            (double)vd.gravity[2] * vd.gravity[2]);
+            double g =
+                sqrt((double)vd.gravity[0] * vd.gravity[0] + (double)vd.gravity[1] * vd.gravity[1] +
+                     (double)vd.gravity[2] * vd.gravity[2]);
             sim->gravity = (float)g;
         }
     }
@@ -267,11 +266,11 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
         st = check_extent(d);
     if (st == MS_OK && sim->volume) {
         sim->fnx = d->field_nx ? d->field_nx
-                               : derive_field(sim->domain_max[0] - sim->domain_min[0],
-                                              sim->spacing, sim->snx);
+                               : derive_field(sim->domain_max[0] - sim->domain_min[0], sim->spacing,
+                                              sim->snx);
         sim->fny = d->field_ny ? d->field_ny
-                               : derive_field(sim->domain_max[1] - sim->domain_min[1],
-                                              sim->spacing, sim->sny);
+                               : derive_field(sim->domain_max[1] - sim->domain_min[1], sim->spacing,
+                                              sim->sny);
     }
     int floaters = sc && sc->has_floaters;
     if (st == MS_OK)
@@ -397,8 +396,7 @@ ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out
     d.couple_surface_from_volume = sc->couple_surface_from_volume;
     d.couple_volume_from_surface = sc->couple_volume_from_surface;
     d.threads = threads ? threads : sc->threads;
-    float origin[4] = {sc->domain_min[0], sc->domain_min[1], sc->domain_min[2],
-                       sc->domain_max[2]};
+    float origin[4] = {sc->domain_min[0], sc->domain_min[1], sc->domain_min[2], sc->domain_max[2]};
     ms_sim *sim;
     MS_TRY(create_common(&d, origin, sc->level, sc, &sim));
     /* the scene knows its frame: what no sub-stepping can make stable at

@@ -11,8 +11,8 @@
 
 /* Bilinear sample of a cell-centred nx x ny field (stride comp floats per
  * cell, component k) at world (x, y), edges held. */
-static float sample(const float *f, int nx, int ny, int comp, int k, float x0, float y0,
-                    float dx, float dy, float x, float y)
+static float sample(const float *f, int nx, int ny, int comp, int k, float x0, float y0, float dx,
+                    float dy, float x, float y)
 {
     float u = (x - x0) / dx - 0.5f, v = (y - y0) / dy - 0.5f;
     u = MS_CLAMP(u, 0.0f, (float)(nx - 1));
@@ -30,7 +30,8 @@ static int solid_at(const ms_sim *sim, float x, float y)
     if (!sim->mask_static)
         return 0;
     const unsigned char *m = sim->have_moving_mask ? sim->mask : sim->mask_static;
-    int i = (int)((x - sim->domain_min[0]) / sim->sdx), j = (int)((y - sim->domain_min[1]) / sim->sdx);
+    int i = (int)((x - sim->domain_min[0]) / sim->sdx),
+        j = (int)((y - sim->domain_min[1]) / sim->sdx);
     if (i < 0 || j < 0 || i >= sim->snx || j >= sim->sny)
         return 0;
     return m[(size_t)j * sim->snx + i] != 0;
@@ -54,17 +55,19 @@ void ms_sim_floaters_step(ms_sim *sim, const float *flow, const float *wave, flo
             float u[2] = {0, 0}, a[2] = {0, 0};
             if (flow)
                 for (int k = 0; k < 2; ++k)
-                    u[k] = sample(flow, sim->fnx, sim->fny, 2, k, lo[0], lo[1], fdx, fdy, p[0],
-                                  p[1]);
+                    u[k] =
+                        sample(flow, sim->fnx, sim->fny, 2, k, lo[0], lo[1], fdx, fdy, p[0], p[1]);
             if (wave && slope > 0) {
                 /* central differences over one wave cell either side */
                 float d = sim->sdx;
-                float gx = (sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0] + d, p[1]) -
-                            sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0] - d, p[1])) /
-                           (2 * d);
-                float gy = (sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0], p[1] + d) -
-                            sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0], p[1] - d)) /
-                           (2 * d);
+                float gx =
+                    (sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0] + d, p[1]) -
+                     sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0] - d, p[1])) /
+                    (2 * d);
+                float gy =
+                    (sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0], p[1] + d) -
+                     sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0], p[1] - d)) /
+                    (2 * d);
                 a[0] = -slope * sim->gravity * gx;
                 a[1] = -slope * sim->gravity * gy;
             }

@@ -57,10 +57,10 @@ typedef struct ms_sim_shape {
     ms_shape *vol;  /* NULL without a volume */
     ms_shape *surf; /* NULL without a surface or without surface_mask */
     const ms_scene_shape *spec;
-    int moving;             /* has a path, a velocity or was moved by the API */
-    int api_set;            /* pose given by ms_sim_move_* (overrides the path) */
+    int moving;  /* has a path, a velocity or was moved by the API */
+    int api_set; /* pose given by ms_sim_move_* (overrides the path) */
     float api_pos[3], api_vel[3];
-    int api_turn;           /* orientation given by ms_sim_turn_* */
+    int api_turn; /* orientation given by ms_sim_turn_* */
     float api_quat[4], api_omega[3];
 } ms_sim_shape;
 
@@ -90,67 +90,67 @@ struct ms_sim {
     ms_volume *volume;
     ms_surface *surface;
     float domain_min[3], domain_max[3]; /* m */
-    float level;     /* m above domain_min z: still water (no volume) */
-    float gravity;   /* m/s^2, |g| for floaters on wave slopes */
-    float spacing;   /* m, particle spacing (near-surface band) */
+    float level;                        /* m above domain_min z: still water (no volume) */
+    float gravity;                      /* m/s^2, |g| for floaters on wave slopes */
+    float spacing;                      /* m, particle spacing (near-surface band) */
 
     /* grids */
-    int fnx, fny;    /* X_SPH x Y_SPH */
-    int snx, sny;    /* X_WE x Y_WE */
-    float sdx;       /* m */
+    int fnx, fny;           /* X_SPH x Y_SPH */
+    int snx, sny;           /* X_WE x Y_WE */
+    float sdx;              /* m */
     int n_time_fixed;       /* eq. 19 from the scene/desc; 0 = derived */
     int n_time_last;        /* wave steps of the last frame */
     float gain_sv, gain_vs; /* surface<-volume, volume<-surface */
 
     /* hand-over buffers (slot = call % 2, see above) */
-    ms_extract_snap snap[2]; /* phase A of the extraction, from V */
+    ms_extract_snap snap[2];        /* phase A of the extraction, from V */
     ms_extract_work work_v, work_s; /* phase B's scratch of V (drag) and S */
-    float *hfield[2];        /* fnx * fny: H, phase B in S */
-    float *flow[2];          /* 2 * fnx * fny: surface flow (vx, vy) from V, floaters only */
-    float *flow_count;       /* fnx * fny: S's scratch for the flow */
+    float *hfield[2];               /* fnx * fny: H, phase B in S */
+    float *flow[2];                 /* 2 * fnx * fny: surface flow (vx, vy) from V, floaters only */
+    float *flow_count;              /* fnx * fny: S's scratch for the flow */
     float *ppos[2][3], *pvel[2][3]; /* particle copies, SoA */
     int pcount[2], pcap[2];
-    float *wave_snap[2];     /* fnx * fny: W averaged per SPH cell, from S (gain_vs > 0) */
-    int *wave_colmap;        /* snx: SPH column of each wave column */
-    float *wave_rowsum;      /* fnx * fny: S's scratch for the average */
+    float *wave_snap[2]; /* fnx * fny: W averaged per SPH cell, from S (gain_vs > 0) */
+    int *wave_colmap;    /* snx: SPH column of each wave column */
+    float *wave_rowsum;  /* fnx * fny: S's scratch for the average */
     ms_grid wave_grid, field_grid;
 
     /* surface-thread buffers */
-    float *hprev;            /* fnx * fny: H_{m-1} */
-    float *dh;               /* fnx * fny: the coupling's impulse (m) */
-    float *u_prev;           /* fnx * fny: the coupling's velocity offset of the last frame (m/s) */
-    float wave_dt_last;      /* s, the last wave step taken */
-    float *excite;           /* snx * sny: up(dh) */
-    float *combined;         /* snx * sny (with a surface) */
+    float *hprev;       /* fnx * fny: H_{m-1} */
+    float *dh;          /* fnx * fny: the coupling's impulse (m) */
+    float *u_prev;      /* fnx * fny: the coupling's velocity offset of the last frame (m/s) */
+    float wave_dt_last; /* s, the last wave step taken */
+    float *excite;      /* snx * sny: up(dh) */
+    float *combined;    /* snx * sny (with a surface) */
     int *ix0, *ix1, *iy0, *iy1; /* bilinear taps per column / row (eq. 20) */
     float *wx, *wy;
-    float *rowtmp;           /* fny * snx: SPH rows up-sampled along x */
+    float *rowtmp;                     /* fny * snx: SPH rows up-sampled along x */
     unsigned char *mask_static, *mask; /* snx * sny obstacle masks */
     int have_moving_mask;
 
     /* effects */
-    ms_sim_shape *shapes;    /* obstacles then the container */
-    int nshapes, container;  /* container: index into shapes, -1 = none */
+    ms_sim_shape *shapes;   /* obstacles then the container */
+    int nshapes, container; /* container: index into shapes, -1 = none */
     int boat_id, boat_started;
-    float *boat_xy;          /* the boat's path from the wave grid's corner (m) */
-    int drag_id;             /* surface disturber for a drag without volume */
-    int next_drop;           /* scripted drops applied so far (scene order is by time) */
+    float *boat_xy; /* the boat's path from the wave grid's corner (m) */
+    int drag_id;    /* surface disturber for a drag without volume */
+    int next_drop;  /* scripted drops applied so far (scene order is by time) */
     int *drop_order;
     int nfloaters;
-    float *floater_xyz;      /* 3 * n: x, y, z (m) */
-    float *floater_vel;      /* 2 * n: m/s */
+    float *floater_xyz; /* 3 * n: x, y, z (m) */
+    float *floater_vel; /* 2 * n: m/s */
     ms_sim_drag_req drags[MS_SIM_MAX_DRAGS];
     int ndrags;
 
     /* time */
-    long calls;              /* ms_sim_step calls done = frames finished */
-    double t_volume;         /* s, the volume's time (t_n after call n) */
-    double t_fields;         /* s, time of the published fields (t_{n-1}) */
-    float dt_prev;           /* s, frame_dt of the previous call */
-    float dt_cur;            /* s, frame_dt of the call running */
-    int primed;              /* H_0 and the particle copy of t_0 taken */
+    long calls;      /* ms_sim_step calls done = frames finished */
+    double t_volume; /* s, the volume's time (t_n after call n) */
+    double t_fields; /* s, time of the published fields (t_{n-1}) */
+    float dt_prev;   /* s, frame_dt of the previous call */
+    float dt_cur;    /* s, frame_dt of the call running */
+    int primed;      /* H_0 and the particle copy of t_0 taken */
     int failed;
-    _Atomic int busy;     /* a thread is in ms_sim_step (one thread per handle) */
+    _Atomic int busy; /* a thread is in ms_sim_step (one thread per handle) */
     char fail_msg[MS_SIM_ERR_LEN];
     ms_status fail_status;
 

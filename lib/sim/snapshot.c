@@ -28,12 +28,12 @@
 /* header offsets */
 enum {
     H_MAGIC = 0,
-    H_HEADER = 8,   /* uint32 header bytes */
-    H_FORMAT = 12,  /* uint32 format version */
-    H_TOTAL = 16,   /* uint64 blob bytes */
-    H_HASH = 24,    /* uint64 what the sim was made from */
-    H_SUM = 32,     /* uint64 checksum of the records */
-    H_LIBVER = 40,  /* char[32] library version */
+    H_HEADER = 8,  /* uint32 header bytes */
+    H_FORMAT = 12, /* uint32 format version */
+    H_TOTAL = 16,  /* uint64 blob bytes */
+    H_HASH = 24,   /* uint64 what the sim was made from */
+    H_SUM = 32,    /* uint64 checksum of the records */
+    H_LIBVER = 40, /* char[32] library version */
     H_SIZE = 72
 };
 
@@ -44,8 +44,9 @@ static uint64_t sim_hash(const ms_sim *sim)
         const char *t = ms_scene_text(sim->scene);
         h = ms_blob_hash(h, t, strlen(t));
     }
-    const int ints[] = {sim->volume != NULL, sim->surface != NULL, sim->fnx, sim->fny, sim->snx,
-                        sim->sny, sim->n_time_fixed, sim->nshapes, sim->nfloaters};
+    const int ints[] = {
+        sim->volume != NULL, sim->surface != NULL, sim->fnx,      sim->fny, sim->snx, sim->sny,
+        sim->n_time_fixed,   sim->nshapes,         sim->nfloaters};
     const float floats[] = {sim->sdx,           sim->gain_sv,       sim->gain_vs,
                             sim->level,         sim->domain_min[0], sim->domain_min[1],
                             sim->domain_min[2], sim->domain_max[0], sim->domain_max[1],
@@ -72,8 +73,7 @@ static ms_status extract_io(ms_blob *b, const ms_volume *v, ms_extract_snap *s, 
     int m = s->m, n = s->n_all;
     ms_status st;
     if ((st = MS_BLOB_IO(b, "sim.x.empty", s->empty)) ||
-        (st = ms_blob_count(b, "sim.x.m", &m, max)) ||
-        (st = ms_blob_count(b, "sim.x.n", &n, max)))
+        (st = ms_blob_count(b, "sim.x.m", &m, max)) || (st = ms_blob_count(b, "sim.x.n", &n, max)))
         return st;
     if (b->reading && (n < m || n > max))
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
@@ -259,8 +259,7 @@ static ms_status between_steps(const ms_sim *sim, const char *what)
 {
     ms_status st = ms_check_not_null("sim", "sim", sim);
     if (st == MS_OK && atomic_load(&((ms_sim *)sim)->busy))
-        st = ms_fail(MS_ERR_STATE, "sim: %s while a step is running; call it between steps",
-                     what);
+        st = ms_fail(MS_ERR_STATE, "sim: %s while a step is running; call it between steps", what);
     return st;
 }
 
@@ -346,8 +345,8 @@ static ms_status check_header(const ms_sim *sim, const unsigned char *p, size_t 
                        lib, ms_version());
     if (total != bytes)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "sim: %zu snapshot bytes given, its header says %llu (cut or padded)",
-                       bytes, (unsigned long long)total);
+                       "sim: %zu snapshot bytes given, its header says %llu (cut or padded)", bytes,
+                       (unsigned long long)total);
     if (ms_blob_hash(MS_BLOB_HASH0, p + H_SIZE, bytes - H_SIZE) != sum)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "sim: the snapshot's checksum does not match its %zu bytes (corrupt)",

@@ -41,8 +41,8 @@ static ms_status scripted_effects(ms_sim *sim, double t0, double t1)
            sc->drops[sim->drop_order[sim->next_drop]].time < t1) {
         const ms_scene_drop *d = &sc->drops[sim->drop_order[sim->next_drop++]];
         /* the wave grid's coordinates start at its corner, the domain's min */
-        st = ms_surface_add_drop(sim->surface, d->x - sim->domain_min[0],
-                                 d->y - sim->domain_min[1], d->radius, d->amplitude);
+        st = ms_surface_add_drop(sim->surface, d->x - sim->domain_min[0], d->y - sim->domain_min[1],
+                                 d->radius, d->amplitude);
     }
     if (st == MS_OK && sc->has_boat && !sim->boat_started && t0 >= sc->boat_path.start) {
         sim->boat_started = 1;
@@ -104,7 +104,7 @@ static ms_status couple_from_volume(ms_sim *sim, const float *h, float dt_frame,
     float *restrict e = sim->dh, *restrict up = sim->u_prev;
     for (size_t c = 0; c < nf; ++c) {
         float u = k * (float)((double)h[c] - sim->hprev[c] - mean); /* m/s */
-        e[c] = (u - up[c]) * dref;                                 /* m */
+        e[c] = (u - up[c]) * dref;                                  /* m */
         up[c] = u;
     }
     return ms_sim_upsample_excite(sim, e, sim->surface);

@@ -259,8 +259,8 @@ void ms_sim_combine(ms_sim *sim, const float *field, const float *wave, size_t s
         float *restrict o = out + (size_t)j * n;
 #pragma omp simd
         for (int i = 0; i < n; ++i) {
-            const float u = a[i] + wy * (b[i] - a[i]);           /* m, up(H) */
-            const float lim = MS_SIM_WAVE_DEPTH_FRAC * u;          /* m, >= 0 */
+            const float u = a[i] + wy * (b[i] - a[i]);    /* m, up(H) */
+            const float lim = MS_SIM_WAVE_DEPTH_FRAC * u; /* m, >= 0 */
             const float wc = w[i] < -lim ? -lim : (w[i] > lim ? lim : w[i]);
             o[i] = u + wc + add;
         }

@@ -66,7 +66,9 @@ ms_status ms_sim_field_grid(const ms_sim *sim, unsigned field, ms_grid *out)
     float ex = sim->domain_max[0] - sim->domain_min[0];
     float ey = sim->domain_max[1] - sim->domain_min[1];
     if (vol)
-        *out = (ms_grid){.nx = sim->fnx, .ny = sim->fny, .dx = ex / (float)sim->fnx,
+        *out = (ms_grid){.nx = sim->fnx,
+                         .ny = sim->fny,
+                         .dx = ex / (float)sim->fnx,
                          .dy = ey / (float)sim->fny,
                          .origin = {sim->domain_min[0], sim->domain_min[1]}};
     else
@@ -151,8 +153,8 @@ void ms_sim_get_stats(const ms_sim *sim, ms_stats *user)
         out->volume_steps = vi.substeps;
         out->volume_bytes += vi.bytes;
         for (int k = 0; k < 2; ++k)
-            out->volume_bytes += (size_t)sim->pcap[k] * 6 * sizeof(float) +
-                                 ms_extract_snap_bytes(&sim->snap[k]);
+            out->volume_bytes +=
+                (size_t)sim->pcap[k] * 6 * sizeof(float) + ms_extract_snap_bytes(&sim->snap[k]);
         out->volume_bytes +=
             ms_extract_work_bytes(&sim->work_v) + ms_extract_work_bytes(&sim->work_s);
     }

@@ -103,8 +103,7 @@ ms_status ms_surface_set_rain(ms_surface *s, const ms_rain *user)
         return st;
     ms_rain r = ms_rain_default(), *rain = NULL;
     if (user) {
-        if ((st = ms_struct_in(user, &r, MS_SIZES_RAIN,
-                               PART)))
+        if ((st = ms_struct_in(user, &r, MS_SIZES_RAIN, PART)))
             return st;
         rain = &r;
     }

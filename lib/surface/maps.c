@@ -151,13 +151,12 @@ ms_status ms_surface_set_speed_map(ms_surface *s, const float *c)
     for (size_t i = 0; i < n; ++i)
         if (!isfinite(c[i]) || c[i] < 0)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "surface: speed map[%zu] is %g m/s; speeds must be finite and >= 0",
-                           i, (double)c[i]);
+                           "surface: speed map[%zu] is %g m/s; speeds must be finite and >= 0", i,
+                           (double)c[i]);
     if (!s->speed_map && !(s->speed_map = ms_alloc_array(s->plane, sizeof(float))))
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for the speed map");
     for (int y = 0; y < s->ny; ++y)
-        memcpy(s->speed_map + ms_surface_at(s, 0, y), c + (size_t)y * s->nx,
-               s->nx * sizeof(float));
+        memcpy(s->speed_map + ms_surface_at(s, 0, y), c + (size_t)y * s->nx, s->nx * sizeof(float));
     rebuild_speed(s);
     return MS_OK;
 }
@@ -212,8 +211,7 @@ ms_status ms_surface_set_obstacle_mask(ms_surface *s, const unsigned char *mask)
     return MS_OK;
 }
 
-ms_status ms_surface_speed_from_depth(const float *depth, size_t n, float gravity,
-                                     float *speed_out)
+ms_status ms_surface_speed_from_depth(const float *depth, size_t n, float gravity, float *speed_out)
 {
     ms_status st;
     if ((st = ms_check_not_null(PART, "depth", depth)) ||

@@ -16,9 +16,9 @@ ms_surface_desc ms_surface_desc_default(void)
     d.size = (uint32_t)sizeof d;
     d.nx = 256;
     d.ny = 256;
-    d.dx = 0.01f;         /* m */
-    d.wave_speed = 0.5f;  /* m/s: shallow water 2.5 cm deep */
-    d.damping = 0.9f;     /* velocity kept per second */
+    d.dx = 0.01f;        /* m */
+    d.wave_speed = 0.5f; /* m/s: shallow water 2.5 cm deep */
+    d.damping = 0.9f;    /* velocity kept per second */
     d.boundary = MS_BOUNDARY_REFLECT;
     d.seed = 1;
     d.max_substeps = 100000;
@@ -41,12 +41,14 @@ static ms_status validate(const ms_surface_desc *d)
     if (!isfinite(d->damping) || !(d->damping > 0) || d->damping > 1)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "surface: damping %g is outside (0, 1] (fraction of the wave "
-                       "velocity kept per second; 1 = none)", d->damping);
+                       "velocity kept per second; 1 = none)",
+                       d->damping);
     if (d->boundary != MS_BOUNDARY_REFLECT && d->boundary != MS_BOUNDARY_ABSORB &&
         d->boundary != MS_BOUNDARY_PERIODIC)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "surface: boundary %d is not one of reflect (0), absorb (1), "
-                       "periodic (2)", (int)d->boundary);
+                       "periodic (2)",
+                       (int)d->boundary);
     if (d->max_substeps < 1)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "surface: max_substeps %d must be >= 1",
                        d->max_substeps);
@@ -60,9 +62,7 @@ ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out)
         return st;
     *out = NULL;
     ms_surface_desc desc = ms_surface_desc_default();
-    if ((st = ms_struct_in(d, &desc,
-                           MS_SIZES_SURFACE_DESC, PART)) ||
-        (st = validate(&desc)))
+    if ((st = ms_struct_in(d, &desc, MS_SIZES_SURFACE_DESC, PART)) || (st = validate(&desc)))
         return st;
     d = &desc;
 
@@ -84,8 +84,8 @@ ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out)
     if (!s->h || !s->v || !s->speed || !s->a || !s->delta || !s->view) {
         size_t mb = (5 * s->plane + (size_t)d->nx * d->ny) * sizeof(float) >> 20;
         ms_surface_destroy(s);
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: a %d x %d grid needs %zu MiB", d->nx,
-                       d->ny, mb);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: a %d x %d grid needs %zu MiB", d->nx, d->ny,
+                       mb);
     }
     ms_surface_set_speed_map(s, NULL);
     ms_rng_seed(&s->rng, d->seed);
@@ -207,9 +207,8 @@ void ms_surface_get_info(const ms_surface *s, ms_surface_info *user)
     out->max_speed = s->max_speed;
     out->drops = s->drops;
     size_t fields = 5 + (s->damp_map ? 1 : 0);
-    out->bytes = sizeof *s + fields * s->plane * sizeof(float) +
-                 (s->solid ? s->plane : 0) + (size_t)s->nx * s->ny * sizeof(float) +
-                 (size_t)s->cap_dist * sizeof(disturber);
+    out->bytes = sizeof *s + fields * s->plane * sizeof(float) + (s->solid ? s->plane : 0) +
+                 (size_t)s->nx * s->ny * sizeof(float) + (size_t)s->cap_dist * sizeof(disturber);
     for (int i = 0; i < s->ndist; ++i)
         out->bytes += (size_t)s->dist[i].npath * 2 * sizeof(float);
     ms_struct_write(user, &info, size);

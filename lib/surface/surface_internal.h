@@ -26,21 +26,21 @@
 #include "modesplit/surface.h"
 
 typedef struct disturber {
-    int id;               /* > 0; 0 = free slot */
-    ms_disturber_desc d;  /* position and velocity now */
-    float *path;          /* npath (x, y) pairs, or NULL */
+    int id;              /* > 0; 0 = free slot */
+    ms_disturber_desc d; /* position and velocity now */
+    float *path;         /* npath (x, y) pairs, or NULL */
     int npath, loop;
-    int path_cap;         /* pairs path has room for: a new path of up to
+    int path_cap;     /* pairs path has room for: a new path of up to
                              that many points reuses it */
-    float path_speed;     /* m/s along the path */
-    double path_s;        /* m travelled along the path */
+    float path_speed; /* m/s along the path */
+    double path_s;    /* m travelled along the path */
 } disturber;
 
 struct ms_surface {
     ms_surface_desc desc;
     int nx, ny;
-    int stride;           /* floats per padded row */
-    size_t plane;         /* floats per padded field: stride * (ny + 2) */
+    int stride;   /* floats per padded row */
+    size_t plane; /* floats per padded field: stride * (ny + 2) */
 
     float *h;             /* f^n, the height field */
     float *v;             /* f^n - f^{n-1}: the last sub-step's displacement
@@ -58,24 +58,24 @@ struct ms_surface {
     float *view;          /* nx * ny contiguous copy for ms_surface_height */
     int view_dirty;
 
-    float coef_dt;        /* s, the dt `a` and `delta` hold; 0 = stale */
-    int uniform;          /* 1: every interior cell's a is a0 and delta d0
+    float coef_dt; /* s, the dt `a` and `delta` hold; 0 = stale */
+    int uniform;   /* 1: every interior cell's a is a0 and delta d0
                              (wave.c's uniform rows); 0: not; -1: unknown */
     float a0, d0;
-    float max_speed;      /* m/s, fastest cell */
-    float v_dt;           /* s, the sub-step v belongs to; 0 = none yet */
-    double time;          /* s */
+    float max_speed; /* m/s, fastest cell */
+    float v_dt;      /* s, the sub-step v belongs to; 0 = none yet */
+    double time;     /* s */
     long substeps, drops;
 
     ms_rng rng;
-    ms_rain rain;         /* rate 0 = no rain */
+    ms_rain rain; /* rate 0 = no rain */
 
     disturber *dist;
     int ndist, cap_dist, next_id;
-    float *level_xy;      /* disturber positions at each fused sub-step
+    float *level_xy;    /* disturber positions at each fused sub-step
                              (wave.c), kept so a step allocates nothing */
-    int level_cap;        /* disturbers level_xy has room for */
-    _Atomic int cancel;   /* ms_surface_cancel: stop before the next block */
+    int level_cap;      /* disturbers level_xy has room for */
+    _Atomic int cancel; /* ms_surface_cancel: stop before the next block */
 };
 
 #define MS_SURFACE_ORIGIN 15

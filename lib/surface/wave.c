@@ -39,8 +39,8 @@
 #include "surface/surface_internal.h"
 
 #define PART "surface"
-#define COURANT_MAX 0.7f /* < 1/sqrt(2) = 0.7071 */
-#define MAX_STEP 10.0f   /* s: longer calls are refused as a unit error */
+#define COURANT_MAX 0.7f                 /* < 1/sqrt(2) = 0.7071 */
+#define MAX_STEP 10.0f                   /* s: longer calls are refused as a unit error */
 #define MAX_LEVELS MS_SURFACE_MAX_LEVELS /* sub-steps fused into one sweep (block()) */
 
 float ms_surface_stable_dt(const ms_surface *s)
@@ -54,9 +54,11 @@ float ms_surface_stable_dt(const ms_surface *s)
  * ghost column 0):
  *   v_i <- delta_i v_i + (1 + delta_i)/2 a_i sum_j a_j (h_j - h_i).
  * Unit stride, no calls, no branches: the loop vectorises. */
-static inline __attribute__((always_inline)) void
-velocity_row(float *restrict v, const float *restrict h, const float *restrict a,
-             const float *restrict d, ptrdiff_t W, int nx)
+static inline __attribute__((always_inline)) void velocity_row(float *restrict v,
+                                                               const float *restrict h,
+                                                               const float *restrict a,
+                                                               const float *restrict d, ptrdiff_t W,
+                                                               int nx)
 {
     /* the rows above and below as pointers of their own and the cells
      * counted from 0, so the loop is a plain count: clang's vectoriser
@@ -98,8 +100,8 @@ static inline __attribute__((always_inline)) void velocity_row_uniform(float *re
 }
 
 /* h_i <- h_i + v_i over one row: f^{n+1} = f^n + (f^{n+1} - f^n). */
-static inline __attribute__((always_inline)) void
-height_row(float *restrict h, const float *restrict v, int nx)
+static inline __attribute__((always_inline)) void height_row(float *restrict h,
+                                                             const float *restrict v, int nx)
 {
 #pragma omp simd
     for (int i = 1; i <= nx; ++i)
@@ -164,7 +166,8 @@ static void mur_row(ms_surface *s, int y)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__)
 __attribute__((target_clones("avx512f", "avx2", "default")))
 #endif
-static void block(ms_surface *s, int K, const float *level_xy)
+static void
+block(ms_surface *s, int K, const float *level_xy)
 {
     const ptrdiff_t W = s->stride;
     const int nx = s->nx, ny = s->ny, absorb = s->desc.boundary == MS_BOUNDARY_ABSORB;
@@ -221,8 +224,7 @@ static ms_status advance(ms_surface *s, float dt, int n, int each_step)
     while (n > 0) {
         if (atomic_exchange(&s->cancel, 0))
             return ms_fail(MS_ERR_CANCELED,
-                           "surface: step canceled with %d sub-steps left at t = %g s", n,
-                           s->time);
+                           "surface: step canceled with %d sub-steps left at t = %g s", n, s->time);
         const int K = periodic ? 1 : MS_MIN(n, MAX_LEVELS);
         /* where each disturber is at each step of the block */
         for (int L = 0; L < K && s->ndist; ++L) {
@@ -262,9 +264,8 @@ static ms_status step_calls(ms_surface *s, float dt, int calls)
     if ((st = ms_check_not_null(PART, "surface", s)))
         return st;
     if (!isfinite(dt) || dt < 0 || dt > MAX_STEP)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "surface: step dt %g s is outside [0, %g] s", (double)dt,
-                       (double)MAX_STEP);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "surface: step dt %g s is outside [0, %g] s",
+                       (double)dt, (double)MAX_STEP);
     if (dt == 0)
         return MS_OK;
     const float dt_max = ms_surface_stable_dt(s);

@@ -119,12 +119,12 @@ __attribute__((target("avx512f,bmi2"))) static void wall_damp_avx512(const float
  * its material moves at vel + omega x (x - o). */
 typedef struct collider_view {
     const ms_shape *s;
-    float vel[3];        /* m/s */
-    float shift[3];      /* m */
-    float lo[3], hi[3];  /* m, world bounds at tau, widened by the pass's reach */
+    float vel[3];       /* m/s */
+    float shift[3];     /* m */
+    float lo[3], hi[3]; /* m, world bounds at tau, widened by the pass's reach */
     int turned;
-    float omega[3];      /* rad/s */
-    float o0[3], o1[3];  /* m */
+    float omega[3];     /* rad/s */
+    float o0[3], o1[3]; /* m */
     float R0[9], R1[9];
 } collider_view;
 
@@ -189,8 +189,8 @@ static void shape_velocity(const collider_view *cv, const float q[3], float u[3]
 
 static inline int in_view(const collider_view *cv, float x, float y, float z)
 {
-    return x >= cv->lo[0] && x <= cv->hi[0] && y >= cv->lo[1] && y <= cv->hi[1] &&
-           z >= cv->lo[2] && z <= cv->hi[2];
+    return x >= cv->lo[0] && x <= cv->hi[0] && y >= cv->lo[1] && y <= cv->hi[1] && z >= cv->lo[2] &&
+           z <= cv->hi[2];
 }
 
 static void boundary_part(void *ctxp, int part, int b, int e)
@@ -403,7 +403,8 @@ static void resolve_part(void *ctxp, int part, int b, int e)
     for (int c = 0; c < ctx->ncol; ++c) {
         const collider_view *cv = &ctx->col[c];
         const float dts = ctx->dt;
-        const float end_shift[3] = {cv->shift[0] + cv->vel[0] * dts, cv->shift[1] + cv->vel[1] * dts,
+        const float end_shift[3] = {cv->shift[0] + cv->vel[0] * dts,
+                                    cv->shift[1] + cv->vel[1] * dts,
                                     cv->shift[2] + cv->vel[2] * dts};
         for (int i = b; i < e; ++i) {
             float x0[3] = {v->x2[i], v->y2[i], v->z2[i]}, x1[3] = {v->x[i], v->y[i], v->z[i]};

@@ -84,7 +84,6 @@ typedef struct density_ctx {
 
 enum { LANES = MS_VOLUME_LANES };
 
-
 static inline float cube(float a)
 {
     return a * a * a;

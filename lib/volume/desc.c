@@ -44,12 +44,12 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
                            axis[k], d->domain_min[k], d->domain_max[k]);
         if (fabsf(d->domain_min[k]) > 1e6f || fabsf(d->domain_max[k]) > 1e6f)
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "volume: domain %s from %g to %g m lies outside [-1e6, 1e6] m",
-                           axis[k], d->domain_min[k], d->domain_max[k]);
+                           "volume: domain %s from %g to %g m lies outside [-1e6, 1e6] m", axis[k],
+                           d->domain_min[k], d->domain_max[k]);
         if (!(d->domain_max[k] > d->domain_min[k]))
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "volume: domain is empty: %s from %g to %g m needs max > min",
-                           axis[k], d->domain_min[k], d->domain_max[k]);
+                           "volume: domain is empty: %s from %g to %g m needs max > min", axis[k],
+                           d->domain_min[k], d->domain_max[k]);
     }
     MS_TRY(ms_check_positive(P, "spacing", d->spacing, "m"));
     MS_TRY(ms_check_positive(P, "smoothing_length", d->smoothing_length, "m"));
@@ -144,7 +144,7 @@ ms_status ms_volume_desc_check(const ms_volume_desc *d)
                        "dt (D rho/Dt) / rho0 the DFSPH divergence solve stops at",
                        d->max_divergence_error);
     MS_TRY(ms_check_int_range(P, "max_density_iterations", d->max_density_iterations, 1, 10000));
-    MS_TRY(ms_check_int_range(P, "max_divergence_iterations", d->max_divergence_iterations, 0,
-                              10000));
+    MS_TRY(
+        ms_check_int_range(P, "max_divergence_iterations", d->max_divergence_iterations, 0, 10000));
     return MS_OK;
 }

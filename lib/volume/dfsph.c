@@ -99,10 +99,10 @@ typedef enum { F_FACTORS, F_DENSITY_ERROR, F_DIVERGENCE_ERROR, F_APPLY, F_PRESSU
 typedef struct dfsph_ctx {
     ms_volume *v;
     pass_kind kind;
-    float dt;       /* s, the sub-step (density) or the error's scale (divergence) */
-    float scale;    /* F_APPLY: 1/dt (density) or 1 (divergence), 1/s or 1; warm_kick:
+    float dt;    /* s, the sub-step (density) or the error's scale (divergence) */
+    float scale; /* F_APPLY: 1/dt (density) or 1 (divergence), 1/s or 1; warm_kick:
                        the last solve's s rescaled to this dt, (dt / dt_last)^2 */
-    float warm;     /* warm_kick: dt / dt_last^2 m G, the factor of df_wx..z */
+    float warm;  /* warm_kick: dt / dt_last^2 m G, the factor of df_wx..z */
     int64_t err[MS_VOLUME_MAX_THREADS]; /* sum of e_i / rho0 (or dt e_i / rho0), 2^-32 units */
     /* F_FACTORS: the gradient moments of the particles inside the liquid
      * (2^-32 units) and their count; F_PRESSURE: the moment M, the weight
@@ -122,8 +122,8 @@ static inline int padded(int n)
 /* Entry g of particle i's image list: particle j's position and velocity
  * mirrored as density.c and forces.c mirror them (velocity in the shape's
  * frame at a shape). */
-static inline MS_DFSPH_INLINE void image_of(const ms_volume *v, int i, int g, const float wall[3], float pj[3],
-                            float uj[3])
+static inline MS_DFSPH_INLINE void image_of(const ms_volume *v, int i, int g, const float wall[3],
+                                            float pj[3], float uj[3])
 {
     const unsigned f = (unsigned)g >> MS_VOLUME_IMAGE_SHIFT;
     const int j = g & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
@@ -699,7 +699,8 @@ dfsph_part(void *ctxp, int part, int b, int e)
     dfsph_ctx *ctx = ctxp;
     ms_volume *v = ctx->v;
     const ms_nlist *lst = &v->lists[part], *gst = &v->ghosts[part];
-    float *cgx = v->df_grad[part], *cgy = cgx + v->df_grad_cap[part], *cgz = cgy + v->df_grad_cap[part];
+    float *cgx = v->df_grad[part], *cgy = cgx + v->df_grad_cap[part],
+          *cgz = cgy + v->df_grad_cap[part];
     float *img = v->df_img[part];
     const float rho0 = v->desc.rest_density, mg = v->mass * v->K.spiky_grad, dt = ctx->dt;
     int64_t err = 0;
@@ -959,8 +960,7 @@ ms_status ms_volume_dfsph_divergence(ms_volume *v, float dt_scale)
     }
     float reached = 0.0f;
     int it = solve(v, &ctx, F_DIVERGENCE_ERROR, v->desc.max_divergence_error,
-                   MIN_DIVERGENCE_ITERATIONS, v->desc.max_divergence_iterations, &first,
-                   &reached);
+                   MIN_DIVERGENCE_ITERATIONS, v->desc.max_divergence_iterations, &first, &reached);
     ms_vpool_run(v->pool, keep_div, &ctx, v->n);
     ms_vpool_run(v->pool, unpack_s, &ctx, v->n);
     v->df_divergence_iters = it;
@@ -989,8 +989,8 @@ void ms_volume_dfsph_density(ms_volume *v, float dt)
     v->df_warm_on = 0;
     ctx.scale = 1.0f / dt;
     float reached = 0.0f;
-    int it = solve(v, &ctx, F_DENSITY_ERROR, v->desc.max_density_error,
-                   MIN_DENSITY_ITERATIONS, v->desc.max_density_iterations, NULL, &reached);
+    int it = solve(v, &ctx, F_DENSITY_ERROR, v->desc.max_density_error, MIN_DENSITY_ITERATIONS,
+                   v->desc.max_density_iterations, NULL, &reached);
     /* the step's mean restarts at its first sub-step (or after anything
      * that moved the particles' ids or the clock: add, remove, restore) */
     ctx.restart = !(v->df_pmean_n == v->n && v->df_pmean_step == v->steps &&

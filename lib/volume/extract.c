@@ -225,7 +225,7 @@ typedef struct column_ctx {
     const float *bx, *by, *bz;
     float *cand;
     size_t cand_stride;
-    int *reach;        /* per thread, 2 ry + 1: the row reaches of row `reach_j` */
+    int *reach; /* per thread, 2 ry + 1: the row reaches of row `reach_j` */
     size_t reach_stride;
     float *raw; /* rw x rh, the rectangle's columns */
     /* the band path (not reference): bins of the extended grid ex x ey
@@ -1256,8 +1256,8 @@ static double flow_energy(const ms_volume *v)
 {
     double e = 0.0, px = 0.0, py = 0.0, pz = 0.0;
     for (int i = 0; i < v->n; ++i) {
-        e += (double)v->vx[i] * v->vx[i] + (double)v->vy[i] * v->vy[i] +
-             (double)v->vz[i] * v->vz[i];
+        e +=
+            (double)v->vx[i] * v->vx[i] + (double)v->vy[i] * v->vy[i] + (double)v->vz[i] * v->vz[i];
         px += v->vx[i];
         py += v->vy[i];
         pz += v->vz[i];
@@ -1509,9 +1509,22 @@ static ms_status columns_reference(const ms_extract_snap *s, ms_extract_work *w,
 
     /* the topmost crossing of phi = T in every column, columns split among
      * the threads (each column on its own: the same bytes for any split) */
-    column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
-                     .dye = dye, .cstart = cstart, .bx = bx, .by = by, .bz = bz, .cand = cand,
-                     .cand_stride = cand_stride, .reach = reach, .reach_stride = reach_stride,
+    column_ctx cc = {.s = s,
+                     .nx = nx,
+                     .ny = ny,
+                     .i0 = i0,
+                     .j0 = j0,
+                     .rw = rw,
+                     .dxe = dxe,
+                     .dye = dye,
+                     .cstart = cstart,
+                     .bx = bx,
+                     .by = by,
+                     .bz = bz,
+                     .cand = cand,
+                     .cand_stride = cand_stride,
+                     .reach = reach,
+                     .reach_stride = reach_stride,
                      .raw = raw};
     ms_vpool_fn *columns = columns_c;
 #if MS_VOLUME_HAVE_AVX512
@@ -1795,8 +1808,8 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
     if (st == MS_OK)
         st = scratch((void **)&w->vstart, &w->vstart_cap, 2 * (cells + 1), sizeof(int));
     if (st == MS_OK)
-        st = scratch((void **)&w->vlist, &w->vlist_cap,
-                     ncap + 2 * (size_t)ceilf(R / dye) + 1, sizeof(int));
+        st = scratch((void **)&w->vlist, &w->vlist_cap, ncap + 2 * (size_t)ceilf(R / dye) + 1,
+                     sizeof(int));
     if (st == MS_OK)
         st = scratch((void **)&w->vbuf, &w->vbuf_cap, 3 * ncap + cand_stride, sizeof(float));
     if (st != MS_OK)
@@ -1836,8 +1849,8 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
             float *h = raw + (size_t)(j - j0) * rw + (i - i0);
             /* a dry column with particles near may be a thin sheet the
              * walk's half-spacing steps went over: searched again too */
-            const int ok = *h > 0.0f ? b == -INFINITY || *h + lo[2] - R - margin >= b
-                                     : a == -INFINITY;
+            const int ok =
+                *h > 0.0f ? b == -INFINITY || *h + lo[2] - R - margin >= b : a == -INFINITY;
             if (!ok) {
                 *h = -1.0f; /* to be searched again */
                 bad++;
@@ -1872,8 +1885,18 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
             vy[q] = y;
             vz[q] = z;
         }
-    column_ctx cc = {.s = s, .nx = nx, .ny = ny, .i0 = i0, .j0 = j0, .rw = rw, .dxe = dxe,
-                     .dye = dye, .cstart = cstart, .bx = vx, .by = vy, .bz = vz};
+    column_ctx cc = {.s = s,
+                     .nx = nx,
+                     .ny = ny,
+                     .i0 = i0,
+                     .j0 = j0,
+                     .rw = rw,
+                     .dxe = dxe,
+                     .dye = dye,
+                     .cstart = cstart,
+                     .bx = vx,
+                     .by = vy,
+                     .bz = vz};
     const float inv_r2 = 1.0f / (R * R), lift = s->spacing / 128.0f; /* 2 x the root's tol */
     for (int j = j0; j < j0 + rh; ++j) {
         int row_done = 0;
@@ -2010,8 +2033,7 @@ static ms_status check_grid(int nx, int ny)
 {
     if (nx < 1 || ny < 1 || nx > 4096 || ny > 4096)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "volume: extract_height grid %d x %d is outside 1 .. 4096 per side", nx,
-                       ny);
+                       "volume: extract_height grid %d x %d is outside 1 .. 4096 per side", nx, ny);
     return MS_OK;
 }
 

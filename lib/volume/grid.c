@@ -15,11 +15,11 @@
 
 #include "volume/volume_internal.h"
 
-#define SWAP(T, a, b)  \
-    do {               \
-        T *t_ = (a);   \
-        (a) = (b);     \
-        (b) = t_;      \
+#define SWAP(T, a, b) \
+    do {              \
+        T *t_ = (a);  \
+        (a) = (b);    \
+        (b) = t_;     \
     } while (0)
 
 typedef struct sort_ctx {

@@ -13,13 +13,13 @@ static ms_status check_vec(const char *what, const float *p, const char *unit)
     if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2]) || fabsf(p[0]) > 1e6f ||
         fabsf(p[1]) > 1e6f || fabsf(p[2]) > 1e6f)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "volume: %s (%g, %g, %g) %s must be finite and within 1e6", what, p[0],
-                       p[1], p[2], unit);
+                       "volume: %s (%g, %g, %g) %s must be finite and within 1e6", what, p[0], p[1],
+                       p[2], unit);
     return MS_OK;
 }
 
-static ms_status add_action(ms_volume *v, ms_action_kind kind, const float centre[3],
-                            float radius, const float vec[3], float strength)
+static ms_status add_action(ms_volume *v, ms_action_kind kind, const float centre[3], float radius,
+                            const float vec[3], float strength)
 {
     const char *name = kind == MS_ACTION_DRAG ? "drag" : "push";
     if (!v)
@@ -32,15 +32,14 @@ static ms_status add_action(ms_volume *v, ms_action_kind kind, const float centr
     if (st != MS_OK)
         return st;
     if (!isfinite(radius) || !(radius > 0.0f) || radius > 1e6f)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: %s radius %g m must be in (0, 1e6]",
-                       name, radius);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: %s radius %g m must be in (0, 1e6]", name,
+                       radius);
     if (kind == MS_ACTION_DRAG && (!isfinite(strength) || strength < 0.0f || strength > 1e6f))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "volume: drag strength %g 1/s must be in [0, 1e6]", strength);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: drag strength %g 1/s must be in [0, 1e6]",
+                       strength);
     if (v->nactions >= MS_VOLUME_MAX_ACTIONS)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "volume: %s: at most %d drags and pushes per step", name,
-                       MS_VOLUME_MAX_ACTIONS);
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: %s: at most %d drags and pushes per step",
+                       name, MS_VOLUME_MAX_ACTIONS);
     ms_action *a = &v->actions[v->nactions++];
     a->kind = kind;
     memcpy(a->centre, centre, sizeof a->centre);
@@ -50,14 +49,13 @@ static ms_status add_action(ms_volume *v, ms_action_kind kind, const float centr
     return MS_OK;
 }
 
-ms_status ms_volume_drag(ms_volume *v, const float centre[3], float radius,
-                         const float velocity[3], float strength)
+ms_status ms_volume_drag(ms_volume *v, const float centre[3], float radius, const float velocity[3],
+                         float strength)
 {
     return add_action(v, MS_ACTION_DRAG, centre, radius, velocity, strength);
 }
 
-ms_status ms_volume_push(ms_volume *v, const float centre[3], float radius,
-                         const float accel[3])
+ms_status ms_volume_push(ms_volume *v, const float centre[3], float radius, const float accel[3])
 {
     return add_action(v, MS_ACTION_PUSH, centre, radius, accel, 0.0f);
 }
@@ -123,8 +121,8 @@ ms_status ms_volume_remove_box(ms_volume *v, const float lo[3], const float hi[3
     int n = v->n, kept = 0;
     int *new_id = v->nbr; /* scratch, indexed by id: 1 = kept, then the new id */
     for (int i = 0; i < n; ++i) {
-        int inside = v->x[i] >= lo[0] && v->x[i] <= hi[0] && v->y[i] >= lo[1] &&
-                     v->y[i] <= hi[1] && v->z[i] >= lo[2] && v->z[i] <= hi[2];
+        int inside = v->x[i] >= lo[0] && v->x[i] <= hi[0] && v->y[i] >= lo[1] && v->y[i] <= hi[1] &&
+                     v->z[i] >= lo[2] && v->z[i] <= hi[2];
         new_id[v->id[i]] = !inside;
     }
     for (int id = 0; id < n; ++id) /* survivors keep their relative order */

@@ -15,11 +15,11 @@
 #define MS_PI_D 3.14159265358979323846
 
 typedef struct ms_sph_kernels {
-    float h, h2;        /* m, m^2 */
-    float poly6;        /* 315 / (64 pi h^9), 1/m^9 */
-    float spiky;        /* 15 / (pi h^6), 1/m^6 */
-    float spiky_grad;   /* 45 / (pi h^6), 1/m^6 (magnitude of grad W / (h-r)^2) */
-    float visc_lap;     /* 45 / (pi h^6), 1/m^6 (lap W / (h-r)) */
+    float h, h2;      /* m, m^2 */
+    float poly6;      /* 315 / (64 pi h^9), 1/m^9 */
+    float spiky;      /* 15 / (pi h^6), 1/m^6 */
+    float spiky_grad; /* 45 / (pi h^6), 1/m^6 (magnitude of grad W / (h-r)^2) */
+    float visc_lap;   /* 45 / (pi h^6), 1/m^6 (lap W / (h-r)) */
 } ms_sph_kernels;
 
 static inline ms_sph_kernels ms_sph_kernels_make(double h)

@@ -122,8 +122,8 @@ static size_t filter_rows_sse2(const ms_volume *v, const int *lo, const int *hi,
             __m128 dx = _mm_sub_ps(qx, _mm_loadu_ps(x + j));
             __m128 dy = _mm_sub_ps(qy, _mm_loadu_ps(y + j));
             __m128 dz = _mm_sub_ps(qz, _mm_loadu_ps(z + j));
-            __m128 r2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)),
-                                   _mm_mul_ps(dz, dz));
+            __m128 r2 =
+                _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
             unsigned m = (unsigned)_mm_movemask_ps(_mm_cmplt_ps(r2, hh));
             if (hi[r] - j < 4)
                 m &= (1u << (hi[r] - j)) - 1u;
@@ -559,8 +559,8 @@ static int gather_plane(const ms_volume *v, ms_nlist *L, const float p[3], int i
             for (int j = start[row - 1]; j < start[row + 2]; ++j) {
                 float dx = q[0] - v->x[j], dyy = q[1] - v->y[j], dzz = q[2] - v->z[j];
                 float r2 = dx * dx + dyy * dyy + dzz * dzz;
-                float side = (v->x[j] - c[0]) * n[0] + (v->y[j] - c[1]) * n[1] +
-                             (v->z[j] - c[2]) * n[2];
+                float side =
+                    (v->x[j] - c[0]) * n[0] + (v->y[j] - c[1]) * n[1] + (v->z[j] - c[2]) * n[2];
                 if (r2 < h2 && side > 0.0f) {
                     L->idx[L->len] = j | tag;
                     L->r2[L->len] = r2;

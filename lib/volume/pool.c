@@ -57,8 +57,8 @@ typedef struct worker_arg {
 } worker_arg;
 
 struct ms_vpool {
-    int threads;  /* including the calling thread */
-    int started;  /* workers running */
+    int threads; /* including the calling thread */
+    int started; /* workers running */
     pthread_t tid[MS_VOLUME_MAX_THREADS];
     worker_arg arg[MS_VOLUME_MAX_THREADS];
     pthread_mutex_t lock;
@@ -76,10 +76,10 @@ struct ms_vpool {
      * `claim` (seq_cst) and read only after a chunk of it was claimed; the
      * caller writes the next loop's only once `done` says every chunk of
      * this one ran. */
-    int own; /* threads - 1 helper threads of its own (ms_vpool_create) */
-    _Atomic uint64_t claim;                   /* generation << 32 | back << 16 | front */
-    _Atomic int done;                         /* chunks of the current loop finished */
-    _Atomic int help_open;                    /* a helper may claim chunks */
+    int own;                /* threads - 1 helper threads of its own (ms_vpool_create) */
+    _Atomic uint64_t claim; /* generation << 32 | back << 16 | front */
+    _Atomic int done;       /* chunks of the current loop finished */
+    _Atomic int help_open;  /* a helper may claim chunks */
     _Atomic int helper_sleeps, caller_sleeps; /* how many sleep on `go`, on `done` */
     uint64_t gen;                             /* the caller's: the current loop's generation */
 };

@@ -219,8 +219,9 @@ ms_status ms_volume_snapshot_check_extract(const ms_volume *v, const ms_extract_
     /* before the first step no slot is filled: they hold zeros (the first
      * step fills both before either is extracted, and phase B must never
      * see a zero domain or radius) */
-    const int unfilled = fresh && s->m == 0 && s->n_all == 0 && s->R == 0.0f && s->spacing == 0.0f &&
-                         s->smooth_steps == 0 && s->smooth_energy == 0.0f && s->iso == 0.0f;
+    const int unfilled = fresh && s->m == 0 && s->n_all == 0 && s->R == 0.0f &&
+                         s->spacing == 0.0f && s->smooth_steps == 0 && s->smooth_energy == 0.0f &&
+                         s->iso == 0.0f;
     ms_status st;
     if ((st = ms_blob_check_int("sim.x.empty", s->empty, 0, 1)) ||
         (st = ms_blob_check_int("sim.x.m", s->m, 0, v->desc.max_particles)) ||

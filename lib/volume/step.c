@@ -321,7 +321,8 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         if (atomic_exchange(&v->cancel, 0)) {
             st = ms_fail(MS_ERR_CANCELED,
                          "volume: step canceled after %ld sub-steps at t = %g s (the state "
-                         "is valid at that time)", taken, v->time);
+                         "is valid at that time)",
+                         taken, v->time);
             break;
         }
         if (!counted) {
@@ -378,7 +379,7 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         v->time += dt;
     if (taken > 0 || v->n == 0)
         v->steps++;
-    v->nactions = 0; /* drags and pushes last one step */
+    v->nactions = 0;      /* drags and pushes last one step */
     ms_volume_publish(v); /* ms_volume_particles' views: this step's state */
     return st;
 }
@@ -389,7 +390,7 @@ double ms_volume_kinetic_energy(const ms_volume *v)
         return 0.0;
     double e = 0.0; /* eq. 18, summed in double in the internal order */
     for (int i = 0; i < v->n; ++i)
-        e += (double)v->vx[i] * v->vx[i] + (double)v->vy[i] * v->vy[i] +
-             (double)v->vz[i] * v->vz[i];
+        e +=
+            (double)v->vx[i] * v->vx[i] + (double)v->vy[i] * v->vy[i] + (double)v->vz[i] * v->vz[i];
     return 0.5 * v->mass * e;
 }

@@ -50,8 +50,7 @@ ms_status ms_volume_create(const ms_volume_desc *d, ms_volume **out)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: out is NULL");
     *out = NULL;
     ms_volume_desc desc = ms_volume_desc_default();
-    ms_status st = ms_struct_in(d, &desc,
-                                MS_SIZES_VOLUME_DESC, "volume");
+    ms_status st = ms_struct_in(d, &desc, MS_SIZES_VOLUME_DESC, "volume");
     if (st != MS_OK || (st = ms_volume_desc_check(&desc)) != MS_OK)
         return st;
     d = &desc;
@@ -92,8 +91,7 @@ ms_status ms_volume_create(const ms_volume_desc *d, ms_volume **out)
     v->cell_fill = ms_alloc_array((size_t)v->ncells, sizeof(int));
     if (!v->cell_start || !v->cell_fill) {
         ms_volume_destroy(v);
-        return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for %ld grid cells",
-                       v->ncells);
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for %ld grid cells", v->ncells);
     }
     v->isa = ms_volume_pick_isa();
     st = ms_vpool_create(d->threads, &v->pool);
@@ -239,8 +237,8 @@ static ms_status check_room(const ms_volume *v, long add, const char *what)
 {
     if (v->n + add > v->desc.max_particles)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "volume: %s would make %ld particles; max_particles is %d", what,
-                       v->n + add, v->desc.max_particles);
+                       "volume: %s would make %ld particles; max_particles is %d", what, v->n + add,
+                       v->desc.max_particles);
     return MS_OK;
 }
 
@@ -263,8 +261,8 @@ ms_status ms_volume_add_particles(ms_volume *v, int n, const float *pos, const f
         for (int k = 0; k < 3; ++k) {
             if (!isfinite(p[k]))
                 return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                               "volume: particle %d position is not finite (%g, %g, %g)", i,
-                               p[0], p[1], p[2]);
+                               "volume: particle %d position is not finite (%g, %g, %g)", i, p[0],
+                               p[1], p[2]);
             if (p[k] < lo[k] || p[k] > hi[k])
                 return ms_fail(MS_ERR_INVALID_ARGUMENT,
                                "volume: particle %d at (%g, %g, %g) m lies outside the domain "
@@ -275,8 +273,8 @@ ms_status ms_volume_add_particles(ms_volume *v, int n, const float *pos, const f
             const float *u = vel + 3 * (size_t)i;
             if (!isfinite(u[0]) || !isfinite(u[1]) || !isfinite(u[2]))
                 return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                               "volume: particle %d velocity is not finite (%g, %g, %g)", i,
-                               u[0], u[1], u[2]);
+                               "volume: particle %d velocity is not finite (%g, %g, %g)", i, u[0],
+                               u[1], u[2]);
         }
     }
     st = ms_volume_reserve(v, v->n + n);
@@ -312,8 +310,8 @@ ms_status ms_volume_fill_box(ms_volume *v, const float lo[3], const float hi[3])
                            hi[k]);
         if (!(hi[k] > lo[k]))
             return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "volume: fill_box is empty along axis %d: %g to %g m needs hi > lo",
-                           k, lo[k], hi[k]);
+                           "volume: fill_box is empty along axis %d: %g to %g m needs hi > lo", k,
+                           lo[k], hi[k]);
         a[k] = fmaxf(lo[k], v->desc.domain_min[k]);
         b[k] = fminf(hi[k], v->desc.domain_max[k]);
         double c = b[k] > a[k] ? floor((double)(b[k] - a[k]) / s + 1e-4) : 0.0;
@@ -475,10 +473,10 @@ void ms_volume_get_info(const ms_volume *v, ms_volume_info *user)
     out->surface_count = v->surface_count;
     out->pairs = v->pairs;
     size_t per = 45 * sizeof(float) + 8 * sizeof(int) + 1; /* pk: 8 floats */
-    out->bytes = sizeof *v + (size_t)v->cap * per +
-                 ((size_t)v->ncells * 2 + 1) * sizeof(int) + v->wave_cap * sizeof(float) +
-                 v->ex_cap * sizeof(float) + (v->ex_start_cap + v->ex_list_cap) * sizeof(int) +
-                 v->grid_hist_cap * sizeof(int) + ms_extract_work_bytes(&v->ex_verify);
+    out->bytes = sizeof *v + (size_t)v->cap * per + ((size_t)v->ncells * 2 + 1) * sizeof(int) +
+                 v->wave_cap * sizeof(float) + v->ex_cap * sizeof(float) +
+                 (v->ex_start_cap + v->ex_list_cap) * sizeof(int) + v->grid_hist_cap * sizeof(int) +
+                 ms_extract_work_bytes(&v->ex_verify);
     if (v->pub)
         out->bytes += (size_t)v->cap * 6 * sizeof(float);
     for (int p = 0; p < MS_VOLUME_MAX_THREADS; ++p)

@@ -48,8 +48,7 @@
 /* Instruction sets of the neighbour filter (neighbours.c), picked at run time
  * (the same lists on each). The AVX-512 version needs GCC's target
  * attribute and __builtin_cpu_supports; TSan builds stay on SSE2. */
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
-    !defined(__SANITIZE_THREAD__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__)
 #define MS_VOLUME_HAVE_AVX512 1
 #else
 #define MS_VOLUME_HAVE_AVX512 0
@@ -124,21 +123,21 @@ typedef struct ms_action {
 struct ms_volume {
     ms_volume_desc desc;
     ms_sph_kernels K;
-    float mass;          /* kg per particle: a full lattice has rho = rho0 */
-    float press_scale;   /* 2/M: eq. 13 renormalised to -grad p / rho (volume.c) */
-    float c0;            /* m/s, sound speed at rest density */
-    float tait_b;        /* Pa, B of Tait's law */
-    float col_range;     /* m, reach of the collider field (eq. 15) */
-    float col_accel;     /* m/s^2, its strength at contact */
-    float col_damp;      /* 1/s, damping of the approach inside the field */
-    float surface_nbrs;  /* fewer neighbours (self included) = surface particle */
-    float iso_level;     /* eq. 16 threshold of phi */
-    float eps2;          /* m^2, pairs closer than this are "coincident" */
+    float mass;         /* kg per particle: a full lattice has rho = rho0 */
+    float press_scale;  /* 2/M: eq. 13 renormalised to -grad p / rho (volume.c) */
+    float c0;           /* m/s, sound speed at rest density */
+    float tait_b;       /* Pa, B of Tait's law */
+    float col_range;    /* m, reach of the collider field (eq. 15) */
+    float col_accel;    /* m/s^2, its strength at contact */
+    float col_damp;     /* 1/s, damping of the approach inside the field */
+    float surface_nbrs; /* fewer neighbours (self included) = surface particle */
+    float iso_level;    /* eq. 16 threshold of phi */
+    float eps2;         /* m^2, pairs closer than this are "coincident" */
 
     /* particles, cell order: state */
     int n, cap;
     float *x, *y, *z, *vx, *vy, *vz;
-    int *id;             /* 0..n-1, insertion order (get_particles order) */
+    int *id; /* 0..n-1, insertion order (get_particles order) */
     /* scratch of the same size, swapped with the state when sorting; it
      * also holds the positions before the drift (for the no-tunnel test) */
     float *x2, *y2, *z2, *vx2, *vy2, *vz2;
@@ -148,18 +147,18 @@ struct ms_volume {
     float *ax, *ay, *az;        /* m/s^2 */
     float *visc_rate;           /* 1/s, D_i of the viscous bound */
     /* boundary terms near each particle (collide.c) */
-    float *b_ax, *b_ay, *b_az;  /* m/s^2, the eq. 15 field of the walls and colliders */
+    float *b_ax, *b_ay, *b_az; /* m/s^2, the eq. 15 field of the walls and colliders */
     /* the nearest shape collider within h: its distance (m, > h: none), the
      * outward normal and velocity there, and the weight of its eq. 15
      * field; the particle's images across its tangent plane stand for the
      * liquid beyond it, and the damping uses its normal */
     float *c_d, *c_w, *c_nx, *c_ny, *c_nz, *c_vx, *c_vy, *c_vz;
-    int *nbr;                   /* neighbours within h, self and wall images included */
-    int *nl_begin, *nl_count;   /* its run in its chunk's list: first entry, neighbours */
-    int *gl_begin, *gl_count;   /* its run of wall-image neighbours */
-    int *cell;                  /* cell of each particle (sorted order) */
-    unsigned char *mark;        /* extraction: 1 surface, 2 neighbour of one */
-    int counts_valid;           /* nbr[] matches the current positions */
+    int *nbr;                 /* neighbours within h, self and wall images included */
+    int *nl_begin, *nl_count; /* its run in its chunk's list: first entry, neighbours */
+    int *gl_begin, *gl_count; /* its run of wall-image neighbours */
+    int *cell;                /* cell of each particle (sorted order) */
+    unsigned char *mark;      /* extraction: 1 surface, 2 neighbour of one */
+    int counts_valid;         /* nbr[] matches the current positions */
     /* The pass of the last ms_volume_count_neighbours (grid,
      * boundary terms, lists, density), offered only when it saw every
      * collider at its pose (as the next step's tau = 0 does: none moving
@@ -177,9 +176,9 @@ struct ms_volume {
     int gx, gy, gz;
     long ncells;
     float inv_h;
-    int *cell_start;     /* ncells + 1 */
-    int *cell_fill;      /* ncells, scratch of the sort */
-    int *grid_hist;      /* parts x ncells, the parallel sort's counts (grid.c) */
+    int *cell_start; /* ncells + 1 */
+    int *cell_fill;  /* ncells, scratch of the sort */
+    int *grid_hist;  /* parts x ncells, the parallel sort's counts (grid.c) */
     size_t grid_hist_cap;
 
     ms_shape *colliders[MS_VOLUME_MAX_COLLIDERS];
@@ -199,7 +198,7 @@ struct ms_volume {
     int in_step;
     ms_action actions[MS_VOLUME_MAX_ACTIONS];
     int nactions;
-    _Atomic int cancel;         /* ms_volume_cancel: stop at the next sub-step */
+    _Atomic int cancel; /* ms_volume_cancel: stop at the next sub-step */
 
     /* coupling from the waves: the previous wave field */
     float *wave_prev;
@@ -223,7 +222,7 @@ struct ms_volume {
     size_t ex_start_cap, ex_list_cap;
     ms_extract_work ex_verify; /* its repairs' scratch (start, list, buf unused) */
 
-    int isa;             /* MS_VOLUME_ISA_* of the neighbour filter */
+    int isa; /* MS_VOLUME_ISA_* of the neighbour filter */
     ms_vpool *pool;
     ms_nlist lists[MS_VOLUME_MAX_THREADS], ghosts[MS_VOLUME_MAX_THREADS];
     int list_failed[MS_VOLUME_MAX_THREADS];
@@ -237,7 +236,7 @@ struct ms_volume {
     float max_speed, max_density_error;
     int surface_count;
     double pairs;
-    int coincident;      /* pairs closer than eps in the last density pass */
+    int coincident; /* pairs closer than eps in the last density pass */
 
     /* per particle, 8 floats packed for the 32-byte record loads of the
      * AVX-512 force pass (forces.c): x, y, z, prs, vx, vy, vz, inv_rho of

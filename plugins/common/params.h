@@ -32,7 +32,8 @@ typedef struct params {
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((format(printf, 3, 4)))
 #endif
-static inline void params_fail(params *p, int rc, const char *fmt, ...)
+static inline void
+params_fail(params *p, int rc, const char *fmt, ...)
 {
     if (p->rc != MS_PLUGIN_OK)
         return;
@@ -64,8 +65,8 @@ static inline int params_open(params *p, const char *json, const char *const *ke
     json_error_t je;
     p->root = json_loads(json, JSON_REJECT_DUPLICATES, &je);
     if (!p->root) {
-        params_fail(p, MS_PLUGIN_ERR_PARSE, "parameters line %d column %d: %s", je.line,
-                    je.column, je.text);
+        params_fail(p, MS_PLUGIN_ERR_PARSE, "parameters line %d column %d: %s", je.line, je.column,
+                    je.text);
         return p->rc;
     }
     if (!json_is_object(p->root)) {
@@ -74,7 +75,8 @@ static inline int params_open(params *p, const char *json, const char *const *ke
     }
     const char *key;
     json_t *value;
-    json_object_foreach(p->root, key, value) {
+    json_object_foreach(p->root, key, value)
+    {
         int known = 0;
         for (int i = 0; keys[i]; ++i)
             known |= strcmp(keys[i], key) == 0;
@@ -82,8 +84,8 @@ static inline int params_open(params *p, const char *json, const char *const *ke
             char list[256] = "";
             size_t len = 0;
             for (int i = 0; keys[i] && len + 32 < sizeof list; ++i)
-                len += (size_t)snprintf(list + len, sizeof list - len, "%s%s", i ? ", " : "",
-                                        keys[i]);
+                len +=
+                    (size_t)snprintf(list + len, sizeof list - len, "%s%s", i ? ", " : "", keys[i]);
             params_fail(p, MS_PLUGIN_ERR_INVALID_ARGUMENT, "unknown key \"%s\"; known keys: %s",
                         key, list);
             return p->rc;
@@ -130,8 +132,7 @@ static inline void params_vec(params *p, const char *key, int n, float *out, con
     if (!v)
         return;
     if (!json_is_array(v) || json_array_size(v) != (size_t)n) {
-        params_fail(p, MS_PLUGIN_ERR_PARSE, "%s must be an array of %d numbers (%s)", key, n,
-                    unit);
+        params_fail(p, MS_PLUGIN_ERR_PARSE, "%s must be an array of %d numbers (%s)", key, n, unit);
         return;
     }
     for (int i = 0; i < n; ++i) {

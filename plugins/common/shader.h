@@ -16,16 +16,16 @@
  * shipped fragment program shades from the interpolated pair. The world
  * position as gl_ClipVertex lets the renderer cut the mesh where the
  * liquid is dry (plugin.h), so a dry floor is seen directly. */
-#define SHADER_VERTEX_SOURCE                                                                    \
-    "#version 120\n"                                                                            \
-    "varying vec3 v_pos;\n"                                                                     \
-    "varying vec3 v_normal;\n"                                                                  \
-    "void main()\n"                                                                             \
-    "{\n"                                                                                       \
-    "    v_pos = gl_Vertex.xyz;\n"                                                              \
-    "    v_normal = gl_Normal;\n"                                                               \
-    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n"                             \
-    "    gl_ClipVertex = gl_Vertex;\n"                                                          \
+#define SHADER_VERTEX_SOURCE                                        \
+    "#version 120\n"                                                \
+    "varying vec3 v_pos;\n"                                         \
+    "varying vec3 v_normal;\n"                                      \
+    "void main()\n"                                                 \
+    "{\n"                                                           \
+    "    v_pos = gl_Vertex.xyz;\n"                                  \
+    "    v_normal = gl_Normal;\n"                                   \
+    "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n" \
+    "    gl_ClipVertex = gl_Vertex;\n"                              \
     "}\n"
 
 /* The display transform every shipped fragment program ends with: the
@@ -36,13 +36,13 @@
  * sRGB framebuffer then applies the sRGB curve. Below the knee it is the
  * identity, so water and the pool keep their physical (linear) values.
  * Put it after "#version" in a fragment source. */
-#define SHADER_TONEMAP_SOURCE                                                                   \
-    "vec3 ms_tonemap(vec3 c)\n"                                                                 \
-    "{\n"                                                                                       \
-    "    const float knee = 0.6;\n"                                                             \
-    "    vec3 x = max(c, vec3(0.0));\n"                                                         \
-    "    vec3 s = knee + (1.0 - knee) * (1.0 - exp(-(x - knee) / (1.0 - knee)));\n"            \
-    "    return mix(x, s, step(vec3(knee), x));\n"                                              \
+#define SHADER_TONEMAP_SOURCE                                                       \
+    "vec3 ms_tonemap(vec3 c)\n"                                                     \
+    "{\n"                                                                           \
+    "    const float knee = 0.6;\n"                                                 \
+    "    vec3 x = max(c, vec3(0.0));\n"                                             \
+    "    vec3 s = knee + (1.0 - knee) * (1.0 - exp(-(x - knee) / (1.0 - knee)));\n" \
+    "    return mix(x, s, step(vec3(knee), x));\n"                                  \
     "}\n"
 
 /* The surface normal at a fragment: the renderer hands every liquid program

@@ -15,8 +15,7 @@
 #include "modesplit/plugin.h"
 
 static const char fragment_source[] =
-    "#version 120\n" SHADER_TONEMAP_SOURCE SHADER_NORMAL_SOURCE
-    "uniform vec3 ms_eye;\n"
+    "#version 120\n" SHADER_TONEMAP_SOURCE SHADER_NORMAL_SOURCE "uniform vec3 ms_eye;\n"
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
     "uniform samplerCube ms_env;\n"

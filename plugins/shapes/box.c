@@ -29,9 +29,9 @@
 #include "modesplit/plugin.h"
 
 typedef struct box {
-    float h[3];    /* half extents, m */
-    float r;       /* rounding radius, m */
-    float core[3]; /* h - r, m */
+    float h[3];     /* half extents, m */
+    float r;        /* rounding radius, m */
+    float core[3];  /* h - r, m */
     float ncore[3]; /* h - smooth: the normal's core, m */
 } box;
 

@@ -35,12 +35,12 @@
 
 typedef struct terrain {
     int nx, ny;
-    float sx, sy;     /* m */
-    float dx, dy;     /* m, sample spacing */
-    float zbot;       /* m */
-    float zmax;       /* m */
-    float *h;         /* ny * nx, m */
-    float *gx, *gy;   /* slopes at the samples, m/m */
+    float sx, sy;   /* m */
+    float dx, dy;   /* m, sample spacing */
+    float zbot;     /* m */
+    float zmax;     /* m */
+    float *h;       /* ny * nx, m */
+    float *gx, *gy; /* slopes at the samples, m/m */
 } terrain;
 
 static void terrain_destroy(void *self)
@@ -94,8 +94,7 @@ static void read_heights(terrain *t, params *pm, json_t *rows)
         json_t *row = json_array_get(rows, j);
         if (!json_is_array(row) || json_array_size(row) != nx) {
             params_fail(pm, MS_PLUGIN_ERR_PARSE,
-                        "heights[%zu] must be an array of %zu numbers (m), as heights[0]", j,
-                        nx);
+                        "heights[%zu] must be an array of %zu numbers (m), as heights[0]", j, nx);
             return;
         }
         for (size_t i = 0; i < nx; ++i) {
@@ -131,8 +130,8 @@ static void read_png(terrain *t, params *pm, const char *path, const float range
     if (img.width < 2 || img.height < 2 || (size_t)img.width * img.height > MAX_SAMPLES) {
         png_image_free(&img);
         params_fail(pm, MS_PLUGIN_ERR_INVALID_ARGUMENT,
-                    "png \"%s\" is %u x %u pixels; a height map needs 2 x 2 to %d samples",
-                    path, img.width, img.height, MAX_SAMPLES);
+                    "png \"%s\" is %u x %u pixels; a height map needs 2 x 2 to %d samples", path,
+                    img.width, img.height, MAX_SAMPLES);
         return;
     }
     int wide = (img.format & PNG_FORMAT_FLAG_LINEAR) != 0; /* 16-bit file */
@@ -144,8 +143,7 @@ static void read_png(terrain *t, params *pm, const char *path, const float range
         free(pix);
         png_image_free(&img);
         if (!pix)
-            params_fail(pm, MS_PLUGIN_ERR_OUT_OF_MEMORY, "out of memory reading png \"%s\"",
-                        path);
+            params_fail(pm, MS_PLUGIN_ERR_OUT_OF_MEMORY, "out of memory reading png \"%s\"", path);
         return;
     }
     if (!png_image_finish_read(&img, NULL, pix, 0, NULL)) {
@@ -158,7 +156,8 @@ static void read_png(terrain *t, params *pm, const char *path, const float range
         size_t j = (size_t)t->ny - 1 - r; /* top row = far edge, y = sy */
         for (size_t i = 0; i < (size_t)t->nx; ++i) {
             size_t k = r * (size_t)t->nx + i;
-            float v = wide ? (float)((const png_uint_16 *)pix)[k] : (float)((const png_byte *)pix)[k];
+            float v =
+                wide ? (float)((const png_uint_16 *)pix)[k] : (float)((const png_byte *)pix)[k];
             t->h[j * (size_t)t->nx + i] = range[0] + scale * v;
         }
     }
@@ -260,8 +259,8 @@ static float terrain_distance(const void *self, const float p[3], float n[3])
     float k = 1.0f / sqrtf(1.0f + gx * gx + gy * gy);
     /* the four faces: excess e (m) over each, and its outward normal */
     float sxn = p[0] < 0.5f * t->sx ? -1.0f : 1.0f, syn = p[1] < 0.5f * t->sy ? -1.0f : 1.0f;
-    const float e[4] = {fmaxf(-p[0], p[0] - t->sx), fmaxf(-p[1], p[1] - t->sy),
-                        (p[2] - h) * k, t->zbot - p[2]};
+    const float e[4] = {fmaxf(-p[0], p[0] - t->sx), fmaxf(-p[1], p[1] - t->sy), (p[2] - h) * k,
+                        t->zbot - p[2]};
     const float dir[4][3] = {{sxn, 0, 0}, {0, syn, 0}, {-gx * k, -gy * k, k}, {0, 0, -1}};
     double out2 = 0, m[3] = {0, 0, 0};
     float emax = e[0];
@@ -279,7 +278,8 @@ static float terrain_distance(const void *self, const float p[3], float n[3])
             float tmin = -emax;
             for (int c = 0; c < 4; ++c) {
                 float tc = -e[c];
-                float w = tmin > 0 ? fmaxf(0.0f, 1.0f - (tc - tmin) / tmin) : (tc <= tmin ? 1.0f : 0.0f);
+                float w =
+                    tmin > 0 ? fmaxf(0.0f, 1.0f - (tc - tmin) / tmin) : (tc <= tmin ? 1.0f : 0.0f);
                 for (int a = 0; a < 3; ++a)
                     m[a] += (double)w * dir[c][a];
             }

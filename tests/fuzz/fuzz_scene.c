@@ -16,8 +16,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ms_status st = ms_scene_parse((const char *)data, size, &sc);
     if (st == MS_OK) {
         /* touch what the tool reads */
-        volatile size_t n = strlen(ms_scene_name(sc)) + strlen(ms_scene_text(sc)) +
-                            strlen(ms_scene_path(sc));
+        volatile size_t n =
+            strlen(ms_scene_name(sc)) + strlen(ms_scene_text(sc)) + strlen(ms_scene_path(sc));
         volatile double d = ms_scene_duration(sc) + ms_scene_frame_dt(sc) +
                             ms_scene_output_fields(sc) + ms_scene_output_every(sc) +
                             ms_scene_has_render(sc);

@@ -39,9 +39,11 @@ int main(int argc, char **argv)
             for (int c = 0; c < 6; ++c)
                 for (int i = 0; i < 4; ++i)
                     p[c][i] = (float)(c + i + k);
-            ms_writer_data d = {.time = 0.02 * (k + 1), .field = {f[0], f[1], f[2]},
+            ms_writer_data d = {.time = 0.02 * (k + 1),
+                                .field = {f[0], f[1], f[2]},
                                 .particles = k % 2 ? 4 : 0,
-                                .pos = {p[0], p[1], p[2]}, .vel = {p[3], p[4], p[5]}};
+                                .pos = {p[0], p[1], p[2]},
+                                .vel = {p[3], p[4], p[5]}};
             if (ms_writer_write(w, &d) != MS_OK) {
                 fprintf(stderr, "seed_runs: %s\n", ms_last_error());
                 return 1;

@@ -55,10 +55,10 @@ static ms_volume *dam_break(int target, ms_pressure law)
 
 typedef struct run {
     ms_volume *v;
-    double wall;            /* s */
-    double sim;             /* s simulated after the warm-up */
-    long sub0, it0;         /* sub-steps and iterations at the warm-up's end */
-    double comp_sum;        /* sum over frames of the average compression */
+    double wall;     /* s */
+    double sim;      /* s simulated after the warm-up */
+    long sub0, it0;  /* sub-steps and iterations at the warm-up's end */
+    double comp_sum; /* sum over frames of the average compression */
     float comp_max;
     int frames;
 } run;
@@ -325,12 +325,11 @@ int main(int argc, char **argv)
             ms_volume_get_info(r[l].v, &in);
             double ms = r[l].wall / r[l].sim * 1e3;
             double steps = (in.substeps - r[l].sub0) / r[l].sim;
-            double its =
-                (in.density_iterations_total + in.divergence_iterations_total - r[l].it0) /
-                r[l].sim;
+            double its = (in.density_iterations_total + in.divergence_iterations_total - r[l].it0) /
+                         r[l].sim;
             double avg = r[l].comp_sum / r[l].frames;
-            printf("%9d %10s %10.0f %10.0f %11.0f %10.3f %10.3f %9.2f\n", in.count, law_name[l],
-                   ms, steps, its, 100.0 * avg, 100.0 * r[l].comp_max, ms / (ref * 1e3));
+            printf("%9d %10s %10.0f %10.0f %11.0f %10.3f %10.3f %9.2f\n", in.count, law_name[l], ms,
+                   steps, its, 100.0 * avg, 100.0 * r[l].comp_max, ms / (ref * 1e3));
             fprintf(csv, "%s,%s,1,%d,%s,%.4f,%.1f,%.1f,%.1f,%.6f,%.6f,%.3f\n", commit, machine,
                     in.count, law_name[l], r[l].sim, ms, steps, its, avg, r[l].comp_max,
                     ms / (ref * 1e3));

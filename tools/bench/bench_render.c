@@ -23,8 +23,9 @@ static void waves(float *h, int n, double t)
         for (int i = 0; i < n; ++i) {
             double x = (i + 0.5) / n, y = (j + 0.5) / n;
             double r = sqrt((x - 0.3) * (x - 0.3) + (y - 0.6) * (y - 0.6));
-            h[(size_t)j * n + i] = (float)(0.25 + 0.004 * sin(40 * x + 3 * t) * cos(31 * y - 2 * t) +
-                                           0.003 * cos(90 * r - 8 * t) * exp(-5 * r));
+            h[(size_t)j * n + i] =
+                (float)(0.25 + 0.004 * sin(40 * x + 3 * t) * cos(31 * y - 2 * t) +
+                        0.003 * cos(90 * r - 8 * t) * exp(-5 * r));
         }
 }
 
@@ -140,8 +141,8 @@ static int bench_scenes(int reps, const char *csv_dir, const char *commit, const
         fprintf(csv,
                 "%s,%s,%s,%s,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f,%.2f,%d,"
                 "%.3f,%.3f\n",
-                commit, machine, lp ? lp : "default", names[k], 950, 950, reps, sm, d.median,
-                d.p10, d.p90, m, c, g, b, pn, fps, load, mesh_nx, fm, fm / d.median);
+                commit, machine, lp ? lp : "default", names[k], 950, 950, reps, sm, d.median, d.p10,
+                d.p90, m, c, g, b, pn, fps, load, mesh_nx, fm, fm / d.median);
         fflush(stdout);
         ms_renderer_destroy(r);
         ms_renderer_destroy(full);
@@ -354,8 +355,8 @@ int main(int argc, char **argv)
                 char stepname[16];
                 snprintf(stepname, sizeof stepname, steps[k] ? "%d" : "auto", steps[k]);
                 printf("%4d^2 %4d^2 %5s %9d %9.1f %9.1f %9.1f %8.2f %9.2f %8.1f %9.2f %5.2f\n",
-                       sizes[si], n, stepname, st.mesh_nx * st.mesh_ny, s.median,
-                       s.p10, s.p90, m, c, dr, b, load);
+                       sizes[si], n, stepname, st.mesh_nx * st.mesh_ny, s.median, s.p10, s.p90, m,
+                       c, dr, b, load);
                 fprintf(csv, "%s,%s,%s,%d,%d,%d,%d,%d,%d,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%.2f\n",
                         commit, machine, lp ? lp : "default", sizes[si], sizes[si], n, step,
                         st.mesh_nx * st.mesh_ny, reps, s.median, s.p10, s.p90, m, c, dr, b, load);

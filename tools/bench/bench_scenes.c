@@ -26,9 +26,9 @@ typedef struct {
 } scene_row;
 
 static const scene_row rows[] = {
-    {"fig1", 30},      {"fig1_x10", 0},  {"fig3", 46},       {"fig3_x10", 0},
-    {"fig4c", 102},    {"fig4c_x10", 0}, {"fig9a", 85},      {"fig9a_x10", 0},
-    {"fig9b", 93},     {"fig9b_x10", 0}, {"fig10", 75},      {"fig10_x10", 0},
+    {"fig1", 30},   {"fig1_x10", 0},  {"fig3", 46},  {"fig3_x10", 0},
+    {"fig4c", 102}, {"fig4c_x10", 0}, {"fig9a", 85}, {"fig9a_x10", 0},
+    {"fig9b", 93},  {"fig9b_x10", 0}, {"fig10", 75}, {"fig10_x10", 0},
 };
 
 /* Bytes the wave side moves per cell when nothing stays in cache: a
@@ -125,12 +125,13 @@ static int run_pair(const ms_scene *sc, int frames_hint, int repeats, double tar
 
 int main(int argc, char **argv)
 {
-    if (bench_help(argc, argv,
-                   "usage: bench_scenes [--csv-dir DIR] [--quick] [--scenes fig1,fig1_x10] [--data DIR]\n"
-        "                    [--frames N] [--repeats R]\n"
-        "Each scene of the paper's Table 1 and its _x10 variant, headless, with 1 and 2\n"
-        "threads: frames/s (median, 10th-90th percentile), ms per frame per stage, the\n"
-        "paper's figure; writes DIR/scenes.csv (default DIR: bench).\n"))
+    if (bench_help(
+            argc, argv,
+            "usage: bench_scenes [--csv-dir DIR] [--quick] [--scenes fig1,fig1_x10] [--data DIR]\n"
+            "                    [--frames N] [--repeats R]\n"
+            "Each scene of the paper's Table 1 and its _x10 variant, headless, with 1 and 2\n"
+            "threads: frames/s (median, 10th-90th percentile), ms per frame per stage, the\n"
+            "paper's figure; writes DIR/scenes.csv (default DIR: bench).\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     const char *dir = bench_arg_value(argc, argv, "--data", "data/scenes");

@@ -255,8 +255,8 @@ int main(int argc, char **argv)
             t[r] = (bench_now() - t0) * 1e9 / (sub * cells);
         }
         bench_stats st = bench_summarise(t, reps);
-        printf("%5d^2 %10d %12.3f %12.3f %12.3f %12.3f %9.1f\n", n, sub, st.median, st.p10,
-               st.p90, st.median * cells * 1e-6, BYTES_PER_CELL / st.median);
+        printf("%5d^2 %10d %12.3f %12.3f %12.3f %12.3f %9.1f\n", n, sub, st.median, st.p10, st.p90,
+               st.median * cells * 1e-6, BYTES_PER_CELL / st.median);
         fprintf(csv, "%s,%s,1,%d,%.0f,%d,%d,%.4f,%.4f,%.4f,%.4f,%.2f,%.4f\n", commit, machine, n,
                 cells, sub, reps, st.median, st.p10, st.p90, st.median * cells * 1e-6, gbps,
                 BYTES_PER_CELL / gbps);

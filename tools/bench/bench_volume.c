@@ -97,8 +97,8 @@ int main(int argc, char **argv)
     printf("volume: SPH dam break, ms per sub-step (median, p10 .. p90), build %s\n",
            BUILD_FLAVOUR);
     printf("machine: %s; commit %s\n", machine, commit);
-    printf("%9s %7s %7s %10s %10s %10s %12s %11s\n", "particles", "threads", "repeats",
-           "ms/step", "p10", "p90", "pairs/step", "Mpairs/s");
+    printf("%9s %7s %7s %10s %10s %10s %12s %11s\n", "particles", "threads", "repeats", "ms/step",
+           "p10", "p90", "pairs/step", "Mpairs/s");
     FILE *csv = bench_csv_open(bench_csv_dir(argc, argv), "volume.csv",
                                "commit,machine,build,threads,particles,repeats,"
                                "ms_per_step_median,ms_per_step_p10,ms_per_step_p90,"

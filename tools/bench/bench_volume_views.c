@@ -60,8 +60,8 @@ int main(int argc, char **argv)
     bench_commit(commit, sizeof commit);
     printf("volume views: ms per SPH sub-step, views kept vs not, 1 thread\n");
     printf("machine: %s; commit %s\n", machine, commit);
-    printf("%9s %7s %10s %10s %10s %10s %10s %10s %9s\n", "particles", "repeats", "ms on",
-           "ms off", "ratio", "p10", "p90", "copy ms", "copy/step");
+    printf("%9s %7s %10s %10s %10s %10s %10s %10s %9s\n", "particles", "repeats", "ms on", "ms off",
+           "ratio", "p10", "p90", "copy ms", "copy/step");
     FILE *csv = bench_csv_open(bench_csv_dir(argc, argv), "volume_views.csv",
                                "commit,machine,particles,repeats,ms_on_median,ms_off_median,"
                                "ratio_median,ratio_p10,ratio_p90,copy_ms_median,copy_per_step");
@@ -105,8 +105,8 @@ int main(int argc, char **argv)
             c_off[i] = timed_step(off, 0.0f);
         }
         double copy = bench_summarise(c_on, 101).median - bench_summarise(c_off, 101).median;
-        printf("%9d %7d %10.3f %10.3f %10.4f %10.4f %10.4f %10.4f %8.2f%%\n",
-               ms_volume_count(on), reps, sa.median, sb.median, sr.median, sr.p10, sr.p90, copy,
+        printf("%9d %7d %10.3f %10.3f %10.4f %10.4f %10.4f %10.4f %8.2f%%\n", ms_volume_count(on),
+               reps, sa.median, sb.median, sr.median, sr.p10, sr.p90, copy,
                100.0 * copy / sb.median);
         fprintf(csv, "%s,%s,%d,%d,%.4f,%.4f,%.5f,%.5f,%.5f,%.5f,%.5f\n", commit, machine,
                 ms_volume_count(on), reps, sa.median, sb.median, sr.median, sr.p10, sr.p90, copy,

@@ -18,16 +18,16 @@
 
 /* One run of one configuration: a row of accuracy.csv. */
 typedef struct acc_row {
-    char study[24];   /* waves, water, sph, extract, coupler */
-    char knob[32];    /* what was varied: cells, courant, particles, ... */
-    double value;     /* the knob's value (its unit in the knob's name) */
-    char config[96];  /* the configuration in words ("tait c0=20 m/s") */
-    char metric[48];  /* what the error measures */
-    double error;     /* that error (relative unless the metric says) */
-    double reference; /* the reference value it was measured against */
-    double ms_per_s;  /* ms of wall clock per simulated second (NAN: n/a) */
+    char study[24];     /* waves, water, sph, extract, coupler */
+    char knob[32];      /* what was varied: cells, courant, particles, ... */
+    double value;       /* the knob's value (its unit in the knob's name) */
+    char config[96];    /* the configuration in words ("tait c0=20 m/s") */
+    char metric[48];    /* what the error measures */
+    double error;       /* that error (relative unless the metric says) */
+    double reference;   /* the reference value it was measured against */
+    double ms_per_s;    /* ms of wall clock per simulated second (NAN: n/a) */
     double ms_per_step; /* ms per step (wave step, SPH frame, extraction) */
-    double size;      /* cells or particles */
+    double size;        /* cells or particles */
     int threads;
     char machine[256]; /* as read from a part ("": this run's) */
     char commit[128];  /* as read from a part ("": this run's) */
@@ -75,8 +75,8 @@ int study_coupler(acc_ctx *c);
  * it reads) and, when gnuplot runs, the PNG plots in DIR: per study one
  * cost plot per metric (STUDY_cost.png for the first, STUDY_cost_SLUG.png
  * for the others) and the Pareto chart of the first. 0 on success. */
-int acc_report(const char *dir, const acc_row *rows, int n, const char *notes,
-               const char *machine, const char *commit, int *plotted);
+int acc_report(const char *dir, const acc_row *rows, int n, const char *notes, const char *machine,
+               const char *commit, int *plotted);
 /* Observed order: minus the least-squares slope of log(error) against
  * log(value) over the rows of (study, knob) with the knob's first metric
  * (accuracy.md gives it per knob and metric, only where theory gives an

@@ -402,8 +402,9 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
                     hidden += !strcmp(rows[i].study, st[s]) && !strcmp(rows[i].metric, ms[m]) &&
                               !(rows[i].error > 0 && cost(&rows[i], per_s) > 0);
                 if (hidden)
-                    fprintf(f, "; %d row%s with a value <= 0 cannot be drawn on log axes: see "
-                               "the table",
+                    fprintf(f,
+                            "; %d row%s with a value <= 0 cannot be drawn on log axes: see "
+                            "the table",
                             hidden, hidden > 1 ? "s" : "");
                 fprintf(f, ".\n");
             }
@@ -412,8 +413,9 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
                     "line joins the Pareto front.\n\n",
                     st[s], ms[0]);
         }
-        fprintf(f, "| knob | value | configuration | metric | error | %s | ms per step | "
-                   "cells/particles | Pareto |\n|---|---|---|---|---|---|---|---|---|\n",
+        fprintf(f,
+                "| knob | value | configuration | metric | error | %s | ms per step | "
+                "cells/particles | Pareto |\n|---|---|---|---|---|---|---|---|---|\n",
                 per_s ? "ms per simulated s" : "ms per simulated s (n/a)");
         for (int i = 0; i < n; ++i) {
             const acc_row *r = &rows[i];
@@ -648,8 +650,8 @@ static int run_gnuplot(const char *dir)
     return WIFEXITED(status) && WEXITSTATUS(status) == 0 ? 0 : -1;
 }
 
-int acc_report(const char *dir, const acc_row *rows, int n, const char *notes,
-               const char *machine, const char *commit, int *plotted)
+int acc_report(const char *dir, const acc_row *rows, int n, const char *notes, const char *machine,
+               const char *commit, int *plotted)
 {
     *plotted = 0;
     if (write_plots(dir, rows, n, commit) != 0)
@@ -663,7 +665,8 @@ int acc_report(const char *dir, const acc_row *rows, int n, const char *notes,
         *plotted = 1;
     } else {
         tool_error("accuracy: gnuplot not found (Debian: gnuplot-nox): wrote the CSV, the "
-                   "tables and %s/accuracy.gp, but no PNG plots", dir);
+                   "tables and %s/accuracy.gp, but no PNG plots",
+                   dir);
     }
     return write_md(dir, rows, n, notes, machine, commit, *plotted);
 }

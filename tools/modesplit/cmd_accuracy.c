@@ -22,13 +22,20 @@ static const struct {
     const char *name;
     acc_case_fn *fn;
 } cases[] = {
-    {"waves-cells", study_waves_cells},     {"waves-courant", study_waves_courant},
-    {"waves-ring", study_waves_ring},       {"water-dispersion", study_water_dispersion},
-    {"sph-particles", study_sph_particles}, {"sph-particles-51k", study_sph_particles_51k},
-    {"sph-particles-64k", study_sph_particles_64k}, {"sph-laws", study_sph_laws},
-    {"sph-sound", study_sph_sound},         {"sph-courant", study_sph_courant},
-    {"sph-rest", study_sph_rest},           {"extract-flat", study_extract_flat},
-    {"extract-tilted", study_extract_tilted}, {"extract-column", study_extract_column},
+    {"waves-cells", study_waves_cells},
+    {"waves-courant", study_waves_courant},
+    {"waves-ring", study_waves_ring},
+    {"water-dispersion", study_water_dispersion},
+    {"sph-particles", study_sph_particles},
+    {"sph-particles-51k", study_sph_particles_51k},
+    {"sph-particles-64k", study_sph_particles_64k},
+    {"sph-laws", study_sph_laws},
+    {"sph-sound", study_sph_sound},
+    {"sph-courant", study_sph_courant},
+    {"sph-rest", study_sph_rest},
+    {"extract-flat", study_extract_flat},
+    {"extract-tilted", study_extract_tilted},
+    {"extract-column", study_extract_column},
     {"coupler", study_coupler},
 };
 #define NCASES ((int)(sizeof cases / sizeof cases[0]))
@@ -444,8 +451,7 @@ static int merge(const char *parts, const char *out)
         rc = -1;
     }
     if (rc == 0 && found < NCASES)
-        acc_note(&c, "- %d of %d cases in this report (the others were not run).", found,
-                 NCASES);
+        acc_note(&c, "- %d of %d cases in this report (the others were not run).", found, NCASES);
     /* parts from different commits (a case rerun after a change, the
      * others kept): the report says which is which, not one commit for all */
     if (rc == 0 && mixed) {

@@ -102,8 +102,8 @@ int cmd_check(int argc, char **argv)
         char fields[64], mem[32];
         printf("%s: ok: \"%s\", %.4g s in %ld frames of %.4g s, writes %s every %d frame%s, "
                "%s of state%s\n",
-               argv[i], ms_scene_name(sc), ms_scene_duration(sc), frames,
-               ms_scene_frame_dt(sc), field_list(ms_scene_output_fields(sc), fields, sizeof fields),
+               argv[i], ms_scene_name(sc), ms_scene_duration(sc), frames, ms_scene_frame_dt(sc),
+               field_list(ms_scene_output_fields(sc), fields, sizeof fields),
                ms_scene_output_every(sc), ms_scene_output_every(sc) == 1 ? "" : "s",
                tool_bytes((double)st.bytes, mem, sizeof mem),
                ms_scene_has_render(sc) ? ", rendered" : "");

@@ -134,7 +134,8 @@ int cmd_export(int argc, char **argv)
     fflush(stderr);
     execvp(py, (char *const *)args);
     tool_error("export: cannot run %s: %s (install python3 with usd-core, h5py and numpy, or "
-               "set MODESPLIT_PYTHON)", py, strerror(errno));
+               "set MODESPLIT_PYTHON)",
+               py, strerror(errno));
     free(script);
     return EXIT_RUNTIME;
 }

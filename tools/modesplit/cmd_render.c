@@ -94,10 +94,9 @@ static int parse_args(int argc, char **argv, render_opts *o)
         } else if (tool_opt_value(argc, argv, &i, "--size", &v, &bad)) {
             int w = 0, h = 0;
             char tail;
-            if (bad || sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 ||
-                w > 8192 || h > 8192) {
-                tool_error("render: --size %s: give WxH, each in [16, 8192] pixels",
-                           v ? v : "");
+            if (bad || sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 8192 ||
+                h > 8192) {
+                tool_error("render: --size %s: give WxH, each in [16, 8192] pixels", v ? v : "");
                 return EXIT_USAGE;
             }
             o->width = w, o->height = h;
@@ -205,10 +204,10 @@ static int floater_discs(const ms_reader *rd, long f, ms_renderer *r, const ms_r
     nf = nf < MS_RENDER_MAX_DISCS ? nf : MS_RENDER_MAX_DISCS;
     float *xyz = malloc((size_t)ms_reader_floater_count(rd) * 3 * sizeof *xyz);
     ms_render_disc *discs = malloc((size_t)nf * sizeof *discs);
-    int rc = xyz && discs &&
-                     ms_reader_read_floaters(rd, f, xyz, ms_reader_floater_count(rd)) == MS_OK
-                 ? 0
-                 : -1;
+    int rc =
+        xyz && discs && ms_reader_read_floaters(rd, f, xyz, ms_reader_floater_count(rd)) == MS_OK
+            ? 0
+            : -1;
     const float side = fminf(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
     for (int k = 0; rc == 0 && k < nf; ++k) {
         memcpy(discs[k].pos, xyz + 3 * k, sizeof discs[k].pos);

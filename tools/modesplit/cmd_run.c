@@ -41,14 +41,14 @@ static void catch_stop_signals(void)
 
 typedef struct run_opts {
     const char *scene;
-    const char *out;     /* NULL: default name */
+    const char *out; /* NULL: default name */
     const char *png;
-    const char *resume;  /* --resume RUN.h5 (resume.c) */
-    long frames;         /* -1: from the duration */
-    double duration;     /* s, < 0: the scene's */
-    int threads;         /* 0: the scene's */
+    const char *resume; /* --resume RUN.h5 (resume.c) */
+    long frames;        /* -1: from the duration */
+    double duration;    /* s, < 0: the scene's */
+    int threads;        /* 0: the scene's */
     int no_out, quiet, preview;
-    tool_sets sets;      /* --set KEY=VALUE */
+    tool_sets sets; /* --set KEY=VALUE */
 } run_opts;
 
 static int parse_args(int argc, char **argv, run_opts *o)
@@ -184,14 +184,14 @@ typedef struct run_state {
     ms_scene *sc;
     ms_sim *sim;
     ms_writer *w;
-    char *out;           /* run file name, NULL with --no-out */
+    char *out; /* run file name, NULL with --no-out */
     tool_png png;
     ms_grid grid;
-    float dt;            /* s per frame */
-    long frames;         /* frames to step */
-    int every;           /* write every N-th published frame */
-    long done, written;  /* frames stepped, frames written */
-    long base;           /* of done, the frames a --resume replayed before the loop */
+    float dt;                    /* s per frame */
+    long frames;                 /* frames to step */
+    int every;                   /* write every N-th published frame */
+    long done, written;          /* frames stepped, frames written */
+    long base;                   /* of done, the frames a --resume replayed before the loop */
     double write_s, png_s, wall; /* s spent writing HDF5 / PNG, s of the loop */
 } run_state;
 

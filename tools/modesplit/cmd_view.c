@@ -229,9 +229,9 @@ typedef struct viewer {
     view_state v;
     view_script script;
     FILE *log;
-    unsigned char *pixels;     /* the window read back (--record, F12) */
+    unsigned char *pixels; /* the window read back (--record, F12) */
     size_t pixels_cap;
-    ms_stats before, after;    /* around the last step */
+    ms_stats before, after; /* around the last step */
     double fps, fps_t0;
     long fps_frames, screenshots, recorded;
     double render_ms_sum, step_ms_sum; /* for the summary: draws after a step, steps */
@@ -361,8 +361,7 @@ static int from_sdl(const viewer *vw, const SDL_Event *e, view_event *out)
 static int apply(viewer *vw, const view_event *e)
 {
     if (vw->log && (view_log_write(vw->log, e) != 0 || fflush(vw->log) != 0)) {
-        tool_error("view: %s: cannot write the input log: %s", vw->o.record_input,
-                   strerror(errno));
+        tool_error("view: %s: cannot write the input log: %s", vw->o.record_input, strerror(errno));
         return -1;
     }
     return view_apply_event(&vw->v, e);
@@ -448,7 +447,8 @@ static int read_window(viewer *vw)
     if (!tmp)
         return -1;
     for (int y = 0; y < h / 2; ++y) {
-        unsigned char *a = vw->pixels + (size_t)y * row, *b = vw->pixels + (size_t)(h - 1 - y) * row;
+        unsigned char *a = vw->pixels + (size_t)y * row,
+                      *b = vw->pixels + (size_t)(h - 1 - y) * row;
         memcpy(tmp, a, row);
         memcpy(a, b, row);
         memcpy(b, tmp, row);
@@ -532,8 +532,7 @@ static int draw_frame(viewer *vw, int stepped)
         view_overlay_draw(view_help_text, v->w, v->h, 0);
     if (stepped && vw->o.record_dir) {
         char path[4200];
-        snprintf(path, sizeof path, "%s/frame_%05ld.png", vw->o.record_dir,
-                 ms_sim_frame(vw->sim));
+        snprintf(path, sizeof path, "%s/frame_%05ld.png", vw->o.record_dir, ms_sim_frame(vw->sim));
         if (save_png(vw, path) != 0)
             return -1;
         vw->recorded++;
@@ -616,8 +615,8 @@ static int open_window(viewer *vw)
     SDL_GL_SetAttribute(SDL_GL_DOUBLEBUFFER, 1);
     SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 0); /* the renderer draws into its own buffers */
     snprintf(vw->title, sizeof vw->title, "modesplit \xe2\x80\x94 %s", ms_scene_name(vw->sc));
-    vw->win = SDL_CreateWindow(vw->title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
-                               vw->v.w, vw->v.h, SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE);
+    vw->win = SDL_CreateWindow(vw->title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, vw->v.w,
+                               vw->v.h, SDL_WINDOW_OPENGL | SDL_WINDOW_RESIZABLE);
     if (!vw->win) {
         tool_error("view: cannot open a %d x %d OpenGL window: %s", vw->v.w, vw->v.h,
                    SDL_GetError());
@@ -771,8 +770,8 @@ int cmd_view(int argc, char **argv)
     }
     if (vw.o.record_input) {
         vw.log = fopen(vw.o.record_input, "w");
-        if (!vw.log || fprintf(vw.log, "%s\n# scene %s\n", VIEW_LOG_HEADER,
-                               ms_scene_name(vw.sc)) < 0) {
+        if (!vw.log ||
+            fprintf(vw.log, "%s\n# scene %s\n", VIEW_LOG_HEADER, ms_scene_name(vw.sc)) < 0) {
             tool_error("view: %s: cannot write the input log: %s", vw.o.record_input,
                        strerror(errno));
             goto done_sim;

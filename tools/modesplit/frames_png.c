@@ -84,8 +84,7 @@ int png_begin(tool_png *p, const char *dir, const ms_scene *sc, int preview, int
         ms_status st = ms_renderer_create_from_scene(sc, &p->renderer);
         if (st == MS_ERR_UNSUPPORTED) {
             if (!quiet)
-                tool_error("note: %s; the PNG frames are shaded-relief previews",
-                           ms_last_error());
+                tool_error("note: %s; the PNG frames are shaded-relief previews", ms_last_error());
             p->renderer = NULL;
         } else if (st != MS_OK) {
             tool_error("%s", ms_last_error());

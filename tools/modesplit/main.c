@@ -282,8 +282,8 @@ int tool_scene_frames(const ms_scene *sc, const char *path, double duration, lon
     /* frame_dt is a float: 1 s / 0.02f is 50.0000001, which is 50 frames */
     double f = dt > 0 ? ceil(duration / dt * (1.0 - 1e-7)) : INFINITY;
     if (!(f <= 1e9)) {
-        tool_error("%s: duration %g s at frame_dt %g s (as a float) is more than 1e9 frames",
-                   path, duration, dt);
+        tool_error("%s: duration %g s at frame_dt %g s (as a float) is more than 1e9 frames", path,
+                   duration, dt);
         return -1;
     }
     *frames = f > 0 ? (long)f : 0;
@@ -340,8 +340,8 @@ static int dispatch(int argc, char **argv)
         return cmd_view(argc - 1, argv + 1);
     if (!strcmp(cmd, "export"))
         return cmd_export(argc - 1, argv + 1);
-    static const char *const commands[] = {"run", "info", "check", "plugins", "export", "view",
-                                           "render", "cubemap", "accuracy"};
+    static const char *const commands[] = {"run",  "info",   "check",   "plugins", "export",
+                                           "view", "render", "cubemap", "accuracy"};
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; ++i)
         if (edit_distance(cmd, commands[i]) <= 2 &&
             edit_distance(cmd, commands[i]) < strlen(commands[i])) {
@@ -350,7 +350,8 @@ static int dispatch(int argc, char **argv)
             return EXIT_USAGE;
         }
     tool_error("unknown command \"%s\"; commands: run, info, check, plugins, export, view, render, "
-               "cubemap, accuracy (see modesplit --help)", cmd);
+               "cubemap, accuracy (see modesplit --help)",
+               cmd);
     return EXIT_USAGE;
 }
 

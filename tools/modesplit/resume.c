@@ -87,8 +87,8 @@ static int verify_frame(const char *path, ms_reader *r, long k, const ms_sim *si
         }
         float *buf = n > 0 ? malloc((size_t)n * 6 * sizeof *buf) : NULL;
         if (n != m || (n > 0 && !buf)) {
-            tool_error("%s: frame %ld holds %d particles, the replay %d: cannot resume it",
-                       path, k, n, m);
+            tool_error("%s: frame %ld holds %d particles, the replay %d: cannot resume it", path, k,
+                       n, m);
             free(buf);
             return -1;
         }
@@ -104,7 +104,8 @@ static int verify_frame(const char *path, ms_reader *r, long k, const ms_sim *si
         free(buf);
         if (bad) {
             tool_error("%s: frame %ld's particles differ from this build's replay: cannot "
-                       "continue it bit for bit", path, k);
+                       "continue it bit for bit",
+                       path, k);
             return -1;
         }
     }
@@ -196,8 +197,8 @@ int resume_run(const char *path, ms_sim *sim, float dt, int every, long frames, 
         return EXIT_RUNTIME;
     }
     if (!quiet && kept > 0) {
-        printf("modesplit: resuming %s after its frame %ld: replaying %ld steps\n", path,
-               kept - 1, steps - from);
+        printf("modesplit: resuming %s after its frame %ld: replaying %ld steps\n", path, kept - 1,
+               steps - from);
         fflush(stdout);
     }
     for (long s = from; s < steps; ++s)
@@ -215,8 +216,8 @@ int resume_run(const char *path, ms_sim *sim, float dt, int every, long frames, 
         return EXIT_RUNTIME;
     }
     if (ms_writer_frames(*w) != kept) {
-        tool_error("--resume: %s changed while it was replayed (%ld frames, then %ld)", path,
-                   kept, ms_writer_frames(*w));
+        tool_error("--resume: %s changed while it was replayed (%ld frames, then %ld)", path, kept,
+                   ms_writer_frames(*w));
         ms_writer_close(*w);
         *w = NULL;
         return EXIT_RUNTIME;

@@ -30,7 +30,7 @@ static const char pool[] =
     "   \"radius\": 0.15, \"depth\": 0.1, \"strength\": 8.0}}}";
 
 typedef struct pool_run {
-    double detail;  /* m^2 */
+    double detail; /* m^2 */
     double ms_frame, ms_per_s;
     long surface_steps;
 } pool_run;
@@ -78,9 +78,13 @@ static int run_pool(const acc_ctx *c, const char *const *sets, pool_run *out)
 static int add(acc_ctx *c, const char *knob, double value, const char *config, const pool_run *p,
                const pool_run *ref, int cells)
 {
-    acc_row r = {.value = value, .error = fabs(p->detail - ref->detail) / ref->detail,
-                 .reference = ref->detail, .ms_per_s = p->ms_per_s, .ms_per_step = p->ms_frame,
-                 .size = (double)cells * cells, .threads = 1};
+    acc_row r = {.value = value,
+                 .error = fabs(p->detail - ref->detail) / ref->detail,
+                 .reference = ref->detail,
+                 .ms_per_s = p->ms_per_s,
+                 .ms_per_step = p->ms_frame,
+                 .size = (double)cells * cells,
+                 .threads = 1};
     snprintf(r.study, sizeof r.study, "coupler");
     snprintf(r.knob, sizeof r.knob, "%s", knob);
     snprintf(r.config, sizeof r.config, "%s, detail %.3g m^2", config, p->detail);

@@ -26,8 +26,8 @@
  * under gravity (-gx, 0, -g). */
 typedef struct ext_shape {
     const char *name;
-    double L, fill, top; /* m: box side, fill height, domain height */
-    double gx;           /* m/s^2 */
+    double L, fill, top;           /* m: box side, fill height, domain height */
+    double gx;                     /* m/s^2 */
     double spacing, quick_spacing; /* m */
 } ext_shape;
 
@@ -49,12 +49,12 @@ static ms_sim *settle(const ext_shape *sh, double spacing, ms_scene **sc)
         slabs = 64;
     for (int i = 0; i < slabs; ++i) {
         double x0 = L * i / slabs, x1 = L * (i + 1) / slabs, xc = 0.5 * (x0 + x1);
-        double z = gx != 0 ? spacing * floor((FILL + slope * (xc - 0.5 * L)) / spacing + 0.5)
-                           : FILL;
+        double z =
+            gx != 0 ? spacing * floor((FILL + slope * (xc - 0.5 * L)) / spacing + 0.5) : FILL;
         size_t used = strlen(fills);
         snprintf(fills + used, sizeof fills - used,
-                 "%s{\"min\": [%.9g, 0, 0], \"max\": [%.9g, %.9g, %.9g]}", i ? ", " : "", x0, x1,
-                 L, z);
+                 "%s{\"min\": [%.9g, 0, 0], \"max\": [%.9g, %.9g, %.9g]}", i ? ", " : "", x0, x1, L,
+                 z);
     }
     snprintf(json, sizeof json,
              "{\"name\": \"accuracy-extract\", \"frame_dt\": 0.02, \"threads\": 1,"

@@ -20,28 +20,28 @@
 #include "accuracy.h"
 
 /* Martin & Moyce (1952), n^2 = 2 (column 2a high, a wide): T, Z */
-static const double mm[15][2] = {
-    {0.41, 1.11}, {0.84, 1.22}, {1.19, 1.44}, {1.43, 1.67}, {1.63, 1.89},
-    {1.83, 2.11}, {1.98, 2.33}, {2.20, 2.56}, {2.32, 2.78}, {2.51, 3.00},
-    {2.65, 3.22}, {2.83, 3.44}, {2.98, 3.67}, {3.11, 3.89}, {3.33, 4.11}};
+static const double mm[15][2] = {{0.41, 1.11}, {0.84, 1.22}, {1.19, 1.44}, {1.43, 1.67},
+                                 {1.63, 1.89}, {1.83, 2.11}, {1.98, 2.33}, {2.20, 2.56},
+                                 {2.32, 2.78}, {2.51, 3.00}, {2.65, 3.22}, {2.83, 3.44},
+                                 {2.98, 3.67}, {3.11, 3.89}, {3.33, 4.11}};
 
 /* Martin & Moyce (1952), Table 6, n^2 = 2: the residual column at the
  * wall, tau = t sqrt(g / a), H = height / (2 a). Their first 13 points
  * (tau <= 3.06, t <= 0.31 s for a = 0.1 m): the later ones, down to
  * H = 0.06 at tau = 7.4, would more than double every run. */
 #define MM_H 13
-static const double mmh[MM_H][2] = {
-    {0.56, 0.94}, {0.77, 0.89}, {0.93, 0.83}, {1.08, 0.78}, {1.28, 0.72},
-    {1.46, 0.67}, {1.66, 0.61}, {1.84, 0.56}, {2.00, 0.50}, {2.21, 0.44},
-    {2.45, 0.39}, {2.70, 0.33}, {3.06, 0.28}};
+static const double mmh[MM_H][2] = {{0.56, 0.94}, {0.77, 0.89}, {0.93, 0.83}, {1.08, 0.78},
+                                    {1.28, 0.72}, {1.46, 0.67}, {1.66, 0.61}, {1.84, 0.56},
+                                    {2.00, 0.50}, {2.21, 0.44}, {2.45, 0.39}, {2.70, 0.33},
+                                    {3.06, 0.28}};
 
 static const char *const law_names[] = {"ideal_gas", "tait", "dfsph"};
 
 typedef struct dam_cfg {
-    double spacing;  /* m */
-    int law;         /* index into law_names */
-    double sound;    /* m/s: Tait's c0, or sqrt(k) of the ideal gas */
-    double courant;  /* 0: the default */
+    double spacing; /* m */
+    int law;        /* index into law_names */
+    double sound;   /* m/s: Tait's c0, or sqrt(k) of the ideal gas */
+    double courant; /* 0: the default */
 } dam_cfg;
 
 /* y of a curve sampled at t[0..m-1] (t[0] = 0, the release) at x, linear
@@ -322,8 +322,11 @@ int study_sph_laws(acc_ctx *c)
 {
     for (int law = 0; law < 3; ++law) {
         dam_cfg cfg = {.spacing = c->quick ? 0.01 : 0.005, .law = law, .sound = 20};
-        if (dam_break(c, law == 0 ? "law_ideal_gas" : law == 1 ? "law_tait" : "law_dfsph", law,
-                      &cfg) < 0)
+        if (dam_break(c,
+                      law == 0   ? "law_ideal_gas"
+                      : law == 1 ? "law_tait"
+                                 : "law_dfsph",
+                      law, &cfg) < 0)
             return -1;
     }
     return 0;
@@ -349,8 +352,7 @@ int study_sph_courant(acc_ctx *c)
     const double *cr = c->quick ? quick : full;
     int n = c->quick ? 2 : 5;
     for (int i = 0; i < n; ++i) {
-        dam_cfg cfg = {.spacing = c->quick ? 0.01 : 0.005, .law = 1, .sound = 20,
-                       .courant = cr[i]};
+        dam_cfg cfg = {.spacing = c->quick ? 0.01 : 0.005, .law = 1, .sound = 20, .courant = cr[i]};
         if (dam_break(c, "courant", cr[i], &cfg) < 0)
             return -1;
     }
@@ -423,8 +425,8 @@ static void rest_sample(ms_volume *v, int law, double h, double cs, float *p, fl
             if (r < h)
                 rho += in.particle_mass * W0 * (h - r) * (h - r) * (h - r);
         }
-        double pr = law == 0 ? cs * cs * (rho - rho0)
-                             : rho0 * cs * cs / 7 * (pow(rho / rho0, 7) - 1);
+        double pr =
+            law == 0 ? cs * cs * (rho - rho0) : rho0 * cs * cs / 7 * (pow(rho / rho0, 7) - 1);
         int b = (int)(a[2] / (0.5 * h));
         if (b >= 64)
             continue;

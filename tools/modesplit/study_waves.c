@@ -102,8 +102,13 @@ static int mode_row(acc_ctx *c, const char *knob, double value, int N, double cr
     if (standing_mode(N, cr, &w, &ms_step, &ms_s) != 0)
         return -1;
     const double w_exact = PI * sqrt(5.0);
-    acc_row r = {.value = value, .error = fabs(w - w_exact) / w_exact, .reference = w_exact,
-                 .ms_per_s = ms_s, .ms_per_step = ms_step, .size = (double)N * N, .threads = 1};
+    acc_row r = {.value = value,
+                 .error = fabs(w - w_exact) / w_exact,
+                 .reference = w_exact,
+                 .ms_per_s = ms_s,
+                 .ms_per_step = ms_step,
+                 .size = (double)N * N,
+                 .threads = 1};
     snprintf(r.study, sizeof r.study, "waves");
     snprintf(r.knob, sizeof r.knob, "%s", knob);
     snprintf(r.config, sizeof r.config, "%dx%d cells, Courant %.2f", N, N, cr);
@@ -192,9 +197,13 @@ int study_waves_ring(acc_ctx *c)
         r2 = crest_radius(ms_surface_height(s, NULL, NULL), N, dx);
         acc_free(sc, sim);
         double speed = (r2 - r1) / (t2 - t1);
-        acc_row r = {.value = 0.1 / dx, .error = fabs(speed - c0) / c0, .reference = c0,
-                     .ms_per_s = 1e3 * wall / t, .ms_per_step = 1e3 * wall / steps,
-                     .size = (double)N * N, .threads = 1};
+        acc_row r = {.value = 0.1 / dx,
+                     .error = fabs(speed - c0) / c0,
+                     .reference = c0,
+                     .ms_per_s = 1e3 * wall / t,
+                     .ms_per_step = 1e3 * wall / steps,
+                     .size = (double)N * N,
+                     .threads = 1};
         snprintf(r.study, sizeof r.study, "waves");
         snprintf(r.knob, sizeof r.knob, "ring_cells_per_drop_radius");
         snprintf(r.config, sizeof r.config, "%dx%d cells over 2 m, speed %.4f m/s", N, N, speed);
@@ -223,12 +232,16 @@ int study_water_dispersion(acc_ctx *c)
             double lambda = 1e-3 * pow(1e4, (double)i / (npts - 1)); /* 1 mm .. 10 m */
             double k = 2 * PI / lambda;
             double creal = sqrt((g * k + sigma * k * k * k / rho) * tanh(k * depths[di])) / k;
-            acc_row r = {.value = lambda, .error = fabs(cm - creal) / creal, .reference = creal,
-                         .ms_per_s = NAN, .ms_per_step = NAN, .size = NAN, .threads = 1};
+            acc_row r = {.value = lambda,
+                         .error = fabs(cm - creal) / creal,
+                         .reference = creal,
+                         .ms_per_s = NAN,
+                         .ms_per_step = NAN,
+                         .size = NAN,
+                         .threads = 1};
             snprintf(r.study, sizeof r.study, "water");
             snprintf(r.knob, sizeof r.knob, "lambda_m_depth_%.3gm", (double)depths[di]);
-            snprintf(r.config, sizeof r.config, "depth %g m, model c = %.4f m/s", depths[di],
-                     cm);
+            snprintf(r.config, sizeof r.config, "depth %g m, model c = %.4f m/s", depths[di], cm);
             snprintf(r.metric, sizeof r.metric, "phase speed rel. error vs real water");
             if (acc_add(c, &r) != 0)
                 return -1;

@@ -88,14 +88,14 @@ int cmd_accuracy(int argc, char **argv);
 
 /* ---- progress (progress.c) ---- */
 typedef struct tool_progress {
-    int tty;             /* stderr is a terminal: one line redrawn */
+    int tty; /* stderr is a terminal: one line redrawn */
     int quiet;
-    long total;          /* frames to run */
-    long base;           /* frames done before this run started (replayed by
+    long total;       /* frames to run */
+    long base;        /* frames done before this run started (replayed by
                             --resume): not counted in frames/s */
-    double start;        /* s, monotonic */
-    double last_draw;    /* s */
-    int last_decile;     /* plain lines: last 10 % step printed */
+    double start;     /* s, monotonic */
+    double last_draw; /* s */
+    int last_decile;  /* plain lines: last 10 % step printed */
 } tool_progress;
 
 /* Per-frame stage times, ms (averages over the frames so far). */
@@ -114,11 +114,11 @@ void progress_end(tool_progress *p);
 typedef struct tool_png {
     char *dir;
     ms_renderer *renderer; /* the scene's renderer, NULL: shaded-relief previews */
-    float lo, hi;        /* m, the colour range, widened as frames need */
-    float relief;        /* vertical exaggeration, lowered as frames need */
+    float lo, hi;          /* m, the colour range, widened as frames need */
+    float relief;          /* vertical exaggeration, lowered as frames need */
     int have_range;
     long written;
-    const ms_sim *sim;     /* set: the renderer draws its field with floaters and boat */
+    const ms_sim *sim;       /* set: the renderer draws its field with floaters and boat */
     struct png_queue *queue; /* the renderer's frames are encoded off the render thread */
 } tool_png;
 

@@ -22,22 +22,29 @@
 /* ---- events (view_log.c) ---- */
 
 typedef enum {
-    VIEW_KEY_DOWN, VIEW_KEY_UP, VIEW_BUTTON_DOWN, VIEW_BUTTON_UP, VIEW_MOTION, VIEW_WHEEL,
-    VIEW_QUIT, VIEW_RESIZE, VIEW_LOSE_CONTEXT
+    VIEW_KEY_DOWN,
+    VIEW_KEY_UP,
+    VIEW_BUTTON_DOWN,
+    VIEW_BUTTON_UP,
+    VIEW_MOTION,
+    VIEW_WHEEL,
+    VIEW_QUIT,
+    VIEW_RESIZE,
+    VIEW_LOSE_CONTEXT
 } view_event_type;
 
 /* One input event, as the loop sees it: keys by SDL's key name ("R",
  * "Space", "Left", "F12"), the pointer in window fractions (0..1 from the
  * top left) so a log replays at any window size. */
 typedef struct view_event {
-    long frame;           /* sim frames finished when it happened */
+    long frame; /* sim frames finished when it happened */
     view_event_type type;
-    char key[32];         /* KEY_*: the key's name */
-    int button;           /* BUTTON_*: 1 left, 2 middle, 3 right */
-    int shift;            /* BUTTON_DOWN: shift held */
-    float x, y;           /* BUTTON_*, MOTION: window fractions */
-    float wheel;          /* WHEEL: notches, + = away from the user */
-    int w, h;             /* RESIZE: pixels */
+    char key[32]; /* KEY_*: the key's name */
+    int button;   /* BUTTON_*: 1 left, 2 middle, 3 right */
+    int shift;    /* BUTTON_DOWN: shift held */
+    float x, y;   /* BUTTON_*, MOTION: window fractions */
+    float wheel;  /* WHEEL: notches, + = away from the user */
+    int w, h;     /* RESIZE: pixels */
 } view_event;
 
 #define VIEW_LOG_HEADER "# modesplit view input log 1"
@@ -82,14 +89,14 @@ int view_camera_unproject(const view_camera *c, float aspect, float fx, float fy
 typedef struct view_overlay_info {
     const char *scene;
     long frame;
-    double time;         /* s, sim time */
-    double fps;          /* frames/s stepped, wall clock */
-    int paced;           /* 1: at frame_dt, 0: as fast as it can */
+    double time; /* s, sim time */
+    double fps;  /* frames/s stepped, wall clock */
+    int paced;   /* 1: at frame_dt, 0: as fast as it can */
     int paused;
-    double render_ms;    /* the renderer's last draw */
+    double render_ms; /* the renderer's last draw */
     int particles, threads;
     const char *shader;
-    int caustics, rain;  /* -1: the scene cannot have it */
+    int caustics, rain; /* -1: the scene cannot have it */
 } view_overlay_info;
 
 /* The overlay's lines into buf ('\n' between): the ms per stage of the
@@ -101,36 +108,47 @@ extern const char view_help_text[];
 
 /* ---- what input does (view_input.c) ---- */
 
-enum { VIEW_HELD_W, VIEW_HELD_A, VIEW_HELD_S, VIEW_HELD_D, VIEW_HELD_Q, VIEW_HELD_E,
-       VIEW_HELD_UP, VIEW_HELD_DOWN, VIEW_HELD_LEFT, VIEW_HELD_RIGHT, VIEW_HELD_N };
+enum {
+    VIEW_HELD_W,
+    VIEW_HELD_A,
+    VIEW_HELD_S,
+    VIEW_HELD_D,
+    VIEW_HELD_Q,
+    VIEW_HELD_E,
+    VIEW_HELD_UP,
+    VIEW_HELD_DOWN,
+    VIEW_HELD_LEFT,
+    VIEW_HELD_RIGHT,
+    VIEW_HELD_N
+};
 
 typedef struct view_state {
     ms_sim *sim;
-    float frame_dt;             /* s */
-    ms_renderer_desc rdesc;     /* the renderer as it should be: size, shader, caustics */
+    float frame_dt;         /* s */
+    ms_renderer_desc rdesc; /* the renderer as it should be: size, shader, caustics */
     const char *scene_shader, *scene_shader_params;
     view_camera cam;
-    int w, h;                   /* window pixels */
+    int w, h; /* window pixels */
     /* requests for the loop */
     int camera_moved, renderer_stale, screenshot, lose_context, quit;
     int paused, step_once, paced, help;
     /* what the scene has */
     int has_volume, has_surface, has_boat, has_container;
-    int rain;                   /* on/off; -1 without a surface */
+    int rain; /* on/off; -1 without a surface */
     /* the pointer */
-    int button[4];              /* held: 1 left, 2 middle, 3 right */
-    float px, py;               /* window fractions */
-    int dragging;               /* left held on the water */
-    float drag_prev[2];         /* m, the drag's point at the last step */
-    int drag_moved;             /* drag_prev set */
-    int disturber;              /* wave-only drag: the surface disturber, -1 none */
+    int button[4];      /* held: 1 left, 2 middle, 3 right */
+    float px, py;       /* window fractions */
+    int dragging;       /* left held on the water */
+    float drag_prev[2]; /* m, the drag's point at the last step */
+    int drag_moved;     /* drag_prev set */
+    int disturber;      /* wave-only drag: the surface disturber, -1 none */
     int held[VIEW_HELD_N];
     float cont_pos[3], cont_quat[4]; /* container: where the keys put it */
     int cont_known;
-    int cont_active;            /* W A S D Q E were held at the last step */
-    float tilt;                 /* rad, about the camera's right axis */
-    int boat_steered;           /* arrows were held at the last step */
-    char status[96];            /* the last action, shown for a while */
+    int cont_active;  /* W A S D Q E were held at the last step */
+    float tilt;       /* rad, about the camera's right axis */
+    int boat_steered; /* arrows were held at the last step */
+    char status[96];  /* the last action, shown for a while */
 } view_state;
 
 /* The state for a sim and the renderer's desc of its scene. */

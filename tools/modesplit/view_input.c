@@ -13,8 +13,8 @@
 #include "view.h"
 
 static const char *const shaders[4] = {"water", "milk", "oil", "honey"};
-static const char *const held_keys[VIEW_HELD_N] = {"W", "A", "S", "D", "Q", "E",
-                                                   "Up", "Down", "Left", "Right"};
+static const char *const held_keys[VIEW_HELD_N] = {"W", "A",  "S",    "D",    "Q",
+                                                   "E", "Up", "Down", "Left", "Right"};
 
 static int fail(const char *what)
 {
@@ -45,8 +45,8 @@ void view_state_init(view_state *v, ms_sim *sim, const ms_renderer_desc *rd, flo
         /* the scene's rain falls from the start: effects.rain.rate > 0 */
         const ms_scene *sc = ms_sim_scene(sim);
         json_t *root = sc ? json_loads(ms_scene_text(sc), 0, NULL) : NULL;
-        json_t *rate = json_object_get(json_object_get(json_object_get(root, "effects"), "rain"),
-                                       "rate");
+        json_t *rate =
+            json_object_get(json_object_get(json_object_get(root, "effects"), "rain"), "rate");
         v->rain = json_is_number(rate) && json_number_value(rate) > 0;
         json_decref(root);
     }
@@ -140,7 +140,8 @@ static int key_down(view_state *v, const char *k)
         v->renderer_stale = 1;
         say(v, "shader %s", name);
     } else if ((!strcmp(k, "Up") || !strcmp(k, "Down") || !strcmp(k, "Left") ||
-                !strcmp(k, "Right")) && !v->has_boat) {
+                !strcmp(k, "Right")) &&
+               !v->has_boat) {
         say(v, "%s", "this scene has no boat to steer");
     } else if (strlen(k) == 1 && strchr("WASDQE", k[0]) && !v->has_container) {
         say(v, "%s", "this scene has no container to move");

@@ -7,9 +7,9 @@
 
 #include "view.h"
 
-static const char *const type_names[] = {"key-down", "key-up", "button-down", "button-up",
-                                         "motion",   "wheel",  "quit",        "resize",
-                                         "lose-context"};
+static const char *const type_names[] = {"key-down",  "key-up", "button-down",
+                                         "button-up", "motion", "wheel",
+                                         "quit",      "resize", "lose-context"};
 
 int view_log_write(FILE *f, const view_event *e)
 {
@@ -20,13 +20,17 @@ int view_log_write(FILE *f, const view_event *e)
         return fprintf(f, "%ld %s %s\n", e->frame, t, e->key) < 0 ? -1 : 0;
     case VIEW_BUTTON_DOWN:
         return fprintf(f, "%ld %s %d %.6f %.6f %d\n", e->frame, t, e->button, (double)e->x,
-                       (double)e->y, e->shift) < 0 ? -1 : 0;
+                       (double)e->y, e->shift) < 0
+                   ? -1
+                   : 0;
     case VIEW_BUTTON_UP:
         return fprintf(f, "%ld %s %d %.6f %.6f\n", e->frame, t, e->button, (double)e->x,
-                       (double)e->y) < 0 ? -1 : 0;
+                       (double)e->y) < 0
+                   ? -1
+                   : 0;
     case VIEW_MOTION:
         return fprintf(f, "%ld %s %.6f %.6f\n", e->frame, t, (double)e->x, (double)e->y) < 0 ? -1
-                                                                                          : 0;
+                                                                                             : 0;
     case VIEW_WHEEL:
         return fprintf(f, "%ld %s %.3f\n", e->frame, t, (double)e->wheel) < 0 ? -1 : 0;
     case VIEW_RESIZE:
@@ -57,8 +61,10 @@ static int parse_line(char *line, view_event *e, char *err, size_t errlen)
         if (!strcmp(type, type_names[k]))
             t = k;
     if (t < 0) {
-        snprintf(err, errlen, "unknown event \"%s\" (key-down, key-up, button-down, button-up, "
-                              "motion, wheel, quit, resize, lose-context)", type);
+        snprintf(err, errlen,
+                 "unknown event \"%s\" (key-down, key-up, button-down, button-up, "
+                 "motion, wheel, quit, resize, lose-context)",
+                 type);
         return -1;
     }
     e->type = (view_event_type)t;
@@ -79,15 +85,14 @@ static int parse_line(char *line, view_event *e, char *err, size_t errlen)
              (e->shift == 0 || e->shift == 1);
         break;
     case VIEW_BUTTON_UP:
-        ok = sscanf(rest, "%d %f %f %c", &e->button, &e->x, &e->y, &extra) == 3 &&
-             e->button >= 1 && e->button <= 3 && in01(e->x) && in01(e->y);
+        ok = sscanf(rest, "%d %f %f %c", &e->button, &e->x, &e->y, &extra) == 3 && e->button >= 1 &&
+             e->button <= 3 && in01(e->x) && in01(e->y);
         break;
     case VIEW_MOTION:
         ok = sscanf(rest, "%f %f %c", &e->x, &e->y, &extra) == 2 && in01(e->x) && in01(e->y);
         break;
     case VIEW_WHEEL:
-        ok = sscanf(rest, "%f %c", &e->wheel, &extra) == 1 && e->wheel >= -100 &&
-             e->wheel <= 100;
+        ok = sscanf(rest, "%f %c", &e->wheel, &extra) == 1 && e->wheel >= -100 && e->wheel <= 100;
         break;
     case VIEW_RESIZE:
         ok = sscanf(rest, "%d %d %c", &e->w, &e->h, &extra) == 2 && e->w >= 16 &&
@@ -98,8 +103,9 @@ static int parse_line(char *line, view_event *e, char *err, size_t errlen)
         break;
     }
     if (!ok) {
-        snprintf(err, errlen, "bad arguments for \"%s\": \"%s\" (a key name; button 1-3 and x, "
-                              "y in [0, 1]; wheel in [-100, 100]; size in [16, %d])",
+        snprintf(err, errlen,
+                 "bad arguments for \"%s\": \"%s\" (a key name; button 1-3 and x, "
+                 "y in [0, 1]; wheel in [-100, 100]; size in [16, %d])",
                  type, rest, MS_RENDER_MAX_SIDE);
         return -1;
     }
@@ -144,8 +150,10 @@ int view_script_load(const char *path, view_script *s, char *err, size_t errlen)
             goto fail;
         }
         if (e->frame < last) {
-            snprintf(err, errlen, "%s:%d: frame %ld comes after frame %ld; frames must not "
-                                  "decrease", path, lineno, e->frame, last);
+            snprintf(err, errlen,
+                     "%s:%d: frame %ld comes after frame %ld; frames must not "
+                     "decrease",
+                     path, lineno, e->frame, last);
             goto fail;
         }
         last = e->frame;
