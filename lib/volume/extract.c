@@ -1817,12 +1817,18 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
     /* per bin the highest unmarked particle (ub) and the highest of all
      * (ab), then their box maxima (ut, at) */
     float *ub = w->vtop, *ut = ub + cells, *ab = ut + cells, *at = ab + cells;
+    /* each particle's bin on the field (the reference's bins), kept for
+     * the binning below */
+    int *cstart = w->vstart, *cfill = w->vstart + cells + 1, *ckey = w->vlist;
+    memset(cfill, 0, cells * sizeof *cfill);
     for (size_t c = 0; c < cells; ++c)
         ub[c] = ab[c] = -INFINITY;
     for (int k = 0; k < n; ++k) {
         const int ix = (int)clampf((s->x[k] - lo[0]) / dxe, 0.0f, (float)(nx - 1));
         const int iy = (int)clampf((s->y[k] - lo[1]) / dye, 0.0f, (float)(ny - 1));
         const size_t c = (size_t)iy * nx + ix;
+        ckey[k] = (int)c;
+        cfill[c]++;
         ab[c] = s->z[k] > ab[c] ? s->z[k] : ab[c];
         if (k >= m)
             ub[c] = s->z[k] > ub[c] ? s->z[k] : ub[c];
@@ -1837,7 +1843,6 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
             ut[(size_t)j * nx + i] = mu;
             at[(size_t)j * nx + i] = ma;
         }
-    int bad = 0;
     for (int j = j0; j < j0 + rh; ++j)
         for (int i = i0; i < i0 + rw; ++i) {
             float b = -INFINITY, a = -INFINITY;
@@ -1851,24 +1856,13 @@ static ms_status columns_verify(const ms_extract_snap *s, ms_extract_work *w, in
              * walk's half-spacing steps went over: searched again too */
             const int ok =
                 *h > 0.0f ? b == -INFINITY || *h + lo[2] - R - margin >= b : a == -INFINITY;
-            if (!ok) {
+            if (!ok)
                 *h = -1.0f; /* to be searched again */
-                bad++;
-            }
         }
-    (void)bad;
-    /* every particle binned on the field (the reference's bins) */
-    int *cstart = w->vstart, *cfill = w->vstart + cells + 1, *ckey = w->vlist;
+    /* every particle binned on the field */
     int *reach = w->vlist + ncap;
     float *vx = w->vbuf, *vy = vx + ncap, *vz = vy + ncap, *cz = vz + ncap;
     float *ca = cz + cand_stride / 2;
-    memset(cfill, 0, cells * sizeof *cfill);
-    for (int k = 0; k < n; ++k) {
-        const int ix = (int)clampf((s->x[k] - lo[0]) / dxe, 0.0f, (float)(nx - 1));
-        const int iy = (int)clampf((s->y[k] - lo[1]) / dye, 0.0f, (float)(ny - 1));
-        ckey[k] = iy * nx + ix;
-        cfill[ckey[k]]++;
-    }
     bin_scatter(ckey, n, cells, s->x, s->y, s->z, cstart, cfill, vx, vy, vz);
     /* each bin highest first (stable), so the bound above a height reads
      * only the bins' tops */
