@@ -129,7 +129,10 @@ static ms_status alloc_buffers(ms_sim *sim, int floaters)
                 sim->dh = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
                 sim->u_prev = sim_alloc(&sim->own_surface_bytes, nf, sizeof(float));
                 sim->excite = sim_alloc(&sim->own_surface_bytes, ns, sizeof(float));
-                if (!sim->hprev || !sim->dh || !sim->u_prev || !sim->excite)
+                sim->rim = sim_alloc(&sim->own_surface_bytes, nf, 1);
+                sim->rim_row = sim_alloc(&sim->own_surface_bytes, nf, 1);
+                if (!sim->hprev || !sim->dh || !sim->u_prev || !sim->excite || !sim->rim ||
+                    !sim->rim_row)
                     return oom("the volume->surface coupling");
             }
             if (sim->gain_vs > 0) {
@@ -448,6 +451,8 @@ void ms_sim_destroy(ms_sim *sim)
     ms_free(sim->hprev);
     ms_free(sim->dh);
     ms_free(sim->u_prev);
+    ms_free(sim->rim);
+    ms_free(sim->rim_row);
     ms_free(sim->excite);
     ms_free(sim->combined);
     ms_sim_upsample_free(sim);

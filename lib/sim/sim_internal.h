@@ -116,12 +116,14 @@ struct ms_sim {
     ms_grid wave_grid, field_grid;
 
     /* surface-thread buffers */
-    float *hprev;       /* fnx * fny: H_{m-1} */
-    float *dh;          /* fnx * fny: the coupling's impulse (m) */
-    float *u_prev;      /* fnx * fny: the coupling's velocity offset of the last frame (m/s) */
-    float wave_dt_last; /* s, the last wave step taken */
-    float *excite;      /* snx * sny: up(dh) */
-    float *combined;    /* snx * sny (with a surface) */
+    float *hprev;           /* fnx * fny: H_{m-1} */
+    float *dh;              /* fnx * fny: the coupling's impulse (m) */
+    float *u_prev;          /* fnx * fny: the coupling's velocity offset of the last frame (m/s) */
+    unsigned char *rim;     /* fnx * fny: 1 within the rim radius of a dry cell (no drive) */
+    unsigned char *rim_row; /* fnx * fny: the dilation's first (along x) pass */
+    float wave_dt_last;     /* s, the last wave step taken */
+    float *excite;          /* snx * sny: up(dh) */
+    float *combined;        /* snx * sny (with a surface) */
     int *ix0, *ix1, *iy0, *iy1; /* bilinear taps per column / row (eq. 20) */
     float *wx, *wy;
     float *rowtmp;                     /* fny * snx: SPH rows up-sampled along x */
