@@ -88,7 +88,10 @@ static glass_pictures draw_glass(int top_down, const char *shader, const char *n
     ms_renderer_desc d = ms_renderer_desc_default();
     ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
     d.width = d.height = W;
-    d.shader = shader;
+    if (strcmp(d.shader, shader)) {
+        d.shader = shader;
+        d.shader_params = NULL; /* the scene's are its own shader's */
+    }
     if (top_down) {
         const float eye[3] = {g.centre[0], g.centre[1], 2.0f};
         const float target[3] = {g.centre[0], g.centre[1], 0.0f}, north[3] = {0, 1, 0};

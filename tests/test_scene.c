@@ -307,6 +307,31 @@ START_TEST(shader_names_are_checked_against_the_registry)
     ck_assert_int_eq(sc->render.width, 64);
     ck_assert_int_eq(sc->render.height, 950);
     ck_assert_int_eq(sc->render.has_caustics, 0);
+    ck_assert_ptr_null(sc->render.shader_params);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* render.shader_params is checked by the shader itself when the scene is
+ * read, so `check` refuses what the renderer would, at the key's place;
+ * what passes reaches the renderer's desc as JSON text. */
+START_TEST(shader_params_are_checked_by_their_shader)
+{
+    ms_scene *sc = NULL;
+    REFUSED("{\"surface\": {},\n \"render\": {\"shader_params\": {\"parallax\": 2}}}",
+            MS_ERR_INVALID_ARGUMENT,
+            "<scene>:2:13: render.shader_params shader water: parallax 2 is outside [0, 1]");
+    REFUSED("{\"surface\": {}, \"render\": {\"shader\": \"milk\", \"shader_params\": "
+            "{\"parallax\": 1}}}",
+            MS_ERR_INVALID_ARGUMENT, "shader milk: unknown key \"parallax\"");
+    REFUSED("{\"surface\": {}, \"render\": {\"shader_params\": [1]}}", MS_ERR_PARSE,
+            "render.shader_params");
+    sc = parse_ok("{\"surface\": {}, \"render\": {\"shader_params\": {\"parallax\": 1, "
+                  "\"ior\": 1.5}}}");
+    ck_assert_str_eq(sc->render.shader_params, "{\"ior\":1.5,\"parallax\":1}");
+    ms_renderer_desc d = ms_renderer_desc_default();
+    ck_assert_int_eq(ms_renderer_desc_from_scene(sc, &d), MS_OK);
+    ck_assert_str_eq(d.shader_params, sc->render.shader_params);
     ms_scene_destroy(sc);
 }
 END_TEST
@@ -469,6 +494,7 @@ static Suite *scene_suite(void)
     tcase_add_test(tc, missing_files_are_refused);
     tcase_add_test(tc, shapes_are_checked_by_their_plugins);
     tcase_add_test(tc, shader_names_are_checked_against_the_registry);
+    tcase_add_test(tc, shader_params_are_checked_by_their_shader);
     tcase_add_test(tc, duplicate_keys_are_refused);
     tcase_add_test(tc, positions_survive_escapes_nesting_and_utf8);
     tcase_add_test(tc, output_section_sets_fields_and_every);

@@ -36,14 +36,23 @@ static const char *const shaders[] = {"water", "milk", "oil", "honey"};
 #define N_SHADERS 4
 
 /* The uniforms the renderer provides (plugin.h's contract). */
-static const char *const contract[] = {"ms_eye",         "ms_light_dir",
-                                       "ms_light_color", "ms_time",
-                                       "ms_viewport",    "ms_env",
-                                       "ms_floor_z",     "ms_pool",
-                                       "ms_caustics",    "ms_normal_map",
-                                       "ms_field",       "ms_caustics_walls",
-                                       "ms_pool_depth",  "ms_caustics_wall_rows",
-                                       "ms_side",        NULL};
+static const char *const contract[] = {"ms_eye",
+                                       "ms_light_dir",
+                                       "ms_light_color",
+                                       "ms_time",
+                                       "ms_viewport",
+                                       "ms_env",
+                                       "ms_floor_z",
+                                       "ms_pool",
+                                       "ms_caustics",
+                                       "ms_normal_map",
+                                       "ms_field",
+                                       "ms_caustics_walls",
+                                       "ms_pool_depth",
+                                       "ms_caustics_wall_rows",
+                                       "ms_side",
+                                       "ms_env_refracted_eye",
+                                       NULL};
 
 /* Records the names set_uniforms sets. */
 typedef struct recorder {
@@ -300,6 +309,7 @@ static void draw(const char *name, float rgb[3])
     u.set_float(&g, "ms_time", 0);
     u.set_vec4(&g, "ms_viewport", W, H, 1.0f / W, 1.0f / H);
     u.set_int(&g, "ms_env", 0);
+    u.set_vec3(&g, "ms_env_refracted_eye", 0, 0, 2.5f);
     u.set_int(&g, "ms_caustics", 1);
     u.set_int(&g, "ms_caustics_walls", 1); /* not read: the walls not traced */
     u.set_float(&g, "ms_pool_depth", 0);

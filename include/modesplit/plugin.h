@@ -192,6 +192,9 @@ typedef struct ms_shader_uniforms {
  *                           alpha 1, but 0 on an object under the water
  *                           already lit through ms_caustics (with
  *                           _CAUSTICS): the floor's light map is not for it
+ *     vec3  ms_env_refracted_eye  where ms_env's downward half is drawn
+ *                           from (world, m): the direction from it to the
+ *                           point a refracted ray meets looks that point up
  *     float ms_floor_z      height of the pool floor (m)
  *     vec4  ms_pool         x0, y0, size x, size y of the pool (m)
  *     sampler2D ms_caustics caustics light map over ms_pool, texture unit 1,

@@ -67,9 +67,8 @@ static int half_rect(int f, int n, int upper, int rect[4])
 }
 
 /* Where the two halves are seen from (see the file's comment). */
-static void viewpoints(const ms_renderer *r, float mirror[3], float virt[3])
+void ms_gl_env_viewpoints(const ms_renderer_desc *d, float mirror[3], float virt[3])
 {
-    const ms_renderer_desc *d = &r->desc;
     const float L = d->water_level, H = d->eye[2] - L;
     const float ext = MS_MAX(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
     if (!(H > 1e-4f * ext)) {
@@ -124,7 +123,7 @@ static GLuint env_texture(int n)
 static void env_projection(const ms_renderer *r, float eyes[2][3], float proj[16])
 {
     const ms_renderer_desc *d = &r->desc;
-    viewpoints(r, eyes[0], eyes[1]);
+    ms_gl_env_viewpoints(&r->desc, eyes[0], eyes[1]);
     const float ext = MS_MAX(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
     double far2 = 0;
     for (int h = 0; h < 2; ++h)

@@ -220,6 +220,11 @@ static void draw_liquid(ms_renderer *r, double time)
     u.set_vec4(u.ctx, "ms_viewport", (float)d->width, (float)d->height, 1.0f / (float)d->width,
                1.0f / (float)d->height);
     u.set_int(u.ctx, "ms_env", 0);
+    {
+        float mirror[3], virt[3];
+        ms_gl_env_viewpoints(d, mirror, virt);
+        u.set_vec3(u.ctx, "ms_env_refracted_eye", virt[0], virt[1], virt[2]);
+    }
     u.set_float(u.ctx, "ms_floor_z", d->pool_min[2]);
     u.set_vec4(u.ctx, "ms_pool", d->pool_min[0], d->pool_min[1], d->pool_max[0] - d->pool_min[0],
                d->pool_max[1] - d->pool_min[1]);

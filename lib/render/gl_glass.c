@@ -117,33 +117,6 @@ void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep)
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-/* Where ms_env's refracted half is seen from: gl_env.c's viewpoints()
- * (the eye's virtual image above the still water at L + H tan(i)/tan(t),
- * for the ray to the target; the pool's centre at the water when the eye
- * is at or under it). */
-static void refraction_viewpoint(const ms_renderer_desc *d, float virt[3])
-{
-    const float L = d->water_level, H = d->eye[2] - L;
-    const float ext = MS_MAX(d->pool_max[0] - d->pool_min[0], d->pool_max[1] - d->pool_min[1]);
-    if (!(H > 1e-4f * ext)) {
-        virt[0] = 0.5f * (d->pool_min[0] + d->pool_max[0]);
-        virt[1] = 0.5f * (d->pool_min[1] + d->pool_max[1]);
-        virt[2] = L;
-        return;
-    }
-    double v[3], k = d->ior;
-    for (int i = 0; i < 3; ++i)
-        v[i] = (double)d->target[i] - d->eye[i];
-    const double horiz = sqrt(v[0] * v[0] + v[1] * v[1]);
-    const double sin_i = v[2] < 0 ? horiz / sqrt(horiz * horiz + v[2] * v[2]) : 0;
-    if (sin_i > 1e-6) {
-        const double sin_t = sin_i / d->ior;
-        k = (sin_i / sqrt(1 - sin_i * sin_i)) / (sin_t / sqrt(1 - sin_t * sin_t));
-    }
-    virt[0] = d->eye[0], virt[1] = d->eye[1];
-    virt[2] = (float)(L + k * H);
-}
-
 /* The normal the side's vertex at p shades with, seen from eye. A water
  * column's two vertical faces give a view ray back its elevation, and
  * ms_env's refracted half is drawn for rays through the flat top from
@@ -187,7 +160,8 @@ void ms_gl_liquid_side_draw(ms_renderer *r, const ms_shader_uniforms *u)
         return;
     const ms_renderer_desc *d = &r->desc;
     float virt[3];
-    refraction_viewpoint(d, virt);
+    float mirror[3];
+    ms_gl_env_viewpoints(d, mirror, virt);
     float *o = r->cavity.side_draw;
     for (int i = 0; i < c->side_verts; ++i) {
         const float *q = c->side + 6 * (size_t)i;

@@ -166,6 +166,10 @@ void ms_gl_sky_draw(const ms_renderer *r, const float forward[3], const float ri
 /* gl_env.c: ms_env for a shader with reflection or refraction: the sky
  * and the pool, split by the water plane and seen from the eye's mirror
  * and refracted images. */
+/* Where the environment's reflected (mirror) and refracted (virt) halves
+ * are drawn from: the eye's mirror image under the still water and its
+ * virtual image above it (gl_env.c's comment). */
+void ms_gl_env_viewpoints(const ms_renderer_desc *d, float mirror[3], float virt[3]);
 ms_status ms_gl_env_create(ms_renderer *r);
 /* gl_env.c: the boat and the obstacles (from objects_first in discs_vbo)
  * into ms_env: their parts above the water into the reflection half,

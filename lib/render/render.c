@@ -80,6 +80,7 @@ ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out)
         d.width = r->width;
         d.height = r->height;
         d.shader = r->shader;
+        d.shader_params = r->shader_params;
         d.cubemap = r->cubemap;
         d.caustics = r->has_caustics;
         d.caustics_resolution = r->caustics_resolution;

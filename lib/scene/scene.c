@@ -48,6 +48,7 @@ void ms_scene_destroy(ms_scene *sc)
     if (sc->has_container)
         free_shape(&sc->container);
     ms_free(sc->render.shader);
+    ms_free(sc->render.shader_params);
     ms_free(sc->render.cubemap);
     ms_free(sc);
 }

@@ -56,9 +56,10 @@ typedef struct ms_scene_drop {
 } ms_scene_drop;
 
 typedef struct ms_scene_render {
-    int width, height; /* pixels */
-    char *shader;      /* shader plugin name */
-    char *cubemap;     /* "builtin" or a path resolved against the scene's directory */
+    int width, height;   /* pixels */
+    char *shader;        /* shader plugin name */
+    char *shader_params; /* its parameters as compact JSON object text; NULL = defaults */
+    char *cubemap;       /* "builtin" or a path resolved against the scene's directory */
     int has_caustics;
     int caustics_resolution;        /* light map texels per side */
     float caustics_intensity;       /* 1 = physical */

@@ -3,6 +3,7 @@
  * keep both in step). */
 #include <errno.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -25,6 +26,36 @@ static int have_plugins_of_kind(const char *kind)
             return 1;
     }
     return 0;
+}
+
+/* render.shader_params: the shader's own keys, as compact JSON text, made
+ * into an instance once here (when the plugin is found) so that `check`
+ * refuses what the renderer would, with the shader's sentence. */
+static ms_status read_shader_params(ms_scene_ctx *c, json_t *o, const char *name, char **out)
+{
+    json_t *p;
+    MS_TRY(ms_scene_get_object(c, o, "shader_params", &p));
+    if (!p)
+        return MS_OK;
+    char *text = json_dumps(p, JSON_COMPACT | JSON_SORT_KEYS);
+    *out = text ? ms_strdup(text) : NULL;
+    free(text);
+    if (!*out)
+        return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for render.shader_params");
+    const ms_plugin_rec *rec;
+    if (!have_plugins_of_kind("shader") ||
+        ms_plugin_find("scene", name, MS_PLUGIN_SHADER, &rec) != MS_OK)
+        return MS_OK; /* the renderer reports the name when it loads it */
+    ms_shader_instance in;
+    ms_status st = ms_shader_instance_create(name, *out, &in);
+    if (st != MS_OK) {
+        char why[512];
+        snprintf(why, sizeof why, "%s", ms_last_error());
+        ms_scene_push_key(c, "shader_params");
+        return ms_scene_fail(c, st, "%s", why);
+    }
+    ms_shader_instance_destroy(&in);
+    return MS_OK;
 }
 
 static ms_status check_shader(ms_scene_ctx *c, const char *name)
@@ -50,8 +81,9 @@ const char *const ms_scene_render_backends[] = {"auto", "osmesa", "egl", NULL};
 
 ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir)
 {
-    static const char *const keys[] = {"width",    "height", "shader",  "cubemap",
-                                       "caustics", "camera", "backend", NULL};
+    static const char *const keys[] = {"width",         "height",  "shader",
+                                       "shader_params", "cubemap", "caustics",
+                                       "camera",        "backend", NULL};
     static const char *const ckeys[] = {"resolution", "intensity", "light", NULL};
     static const char *const camkeys[] = {"eye", "target", "up", "fov", NULL};
     static const float light[3] = {0.3f, 0.2f, -1.0f}, up[3] = {0, 0, 1};
@@ -74,6 +106,7 @@ ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, cons
     MS_TRY(ms_scene_get_string(c, o, "cubemap", "builtin", &cubemap));
     MS_TRY(ms_scene_get_enum(c, o, "backend", ms_scene_render_backends, 0, &r->backend));
     r->shader = ms_strdup(shader);
+    MS_TRY(read_shader_params(c, o, shader, &r->shader_params));
     if (strcmp(cubemap, "builtin") == 0) {
         r->cubemap = ms_strdup(cubemap);
     } else {

@@ -11,7 +11,17 @@
  *   color     what deep water looks like (linear RGB, 0..1);
  *   ior       refractive index (1.333 for water);
  *   caustics  strength of the caustics light map (0 = none);
- *   clarity   path length (m) over which light under water falls to 1/e.
+ *   clarity   path length (m) over which light under water falls to 1/e;
+ *   parallax  where the refracted ray is looked up, from 0 to 1: 0 along
+ *             its direction (the paper's cubemap lookup, section 3.6), 1
+ *             through the point where it meets the floor or a wall.
+ * The cubemap's lower half is drawn from the eye's virtual image (gl_env.c),
+ * ~1.5 m from the floor in the shipped scenes: looked up along the ray, a
+ * slope's bend moves the floor seen by that distance times the bend, where
+ * the water moves it by its depth times the bend (12 cm in stir). Ripples
+ * on shallow water show well along the ray; a churned pool shows its floor
+ * only through the point (stir's paddle scrambled the tiles into a flat
+ * blue). parallax 1 is what the water does; 0 is the paper's look.
  */
 #include "../common/shader_params.h"
 #include "modesplit/plugin.h"
@@ -21,6 +31,7 @@ static const char fragment_source[] =
     "uniform vec3 ms_light_dir;\n"
     "uniform vec3 ms_light_color;\n"
     "uniform samplerCube ms_env;\n"
+    "uniform vec3 ms_env_refracted_eye;\n"
     "uniform sampler2D ms_caustics;\n"
     "uniform vec4 ms_pool;\n"
     "uniform float ms_floor_z;\n"
@@ -31,6 +42,7 @@ static const char fragment_source[] =
     "uniform float water_ior;\n"
     "uniform float water_caustics;\n"
     "uniform float water_clarity;\n"
+    "uniform float water_parallax;\n"
     "void main()\n"
     "{\n"
     "    vec3 n = ms_surface_normal();\n"
@@ -49,12 +61,6 @@ static const char fragment_source[] =
     /* Schlick from the denser side takes the angle in air */
     "    float c = under ? clamp(-dot(t, n), 0.0, 1.0) : clamp(-dot(v, n), 0.0, 1.0);\n"
     "    float fresnel = tir ? 1.0 : r0 + (1.0 - r0) * pow(1.0 - c, 5.0);\n"
-    "    vec4 seen = textureCube(ms_env, t);\n"
-    "    vec3 refracted = seen.rgb;\n"
-    /* from below: the sky in Snell's window; the reflected ray runs back down through the
-     * water */
-    "    vec3 seen_under = mix(tir ? vec3(0.0) : refracted, mix(water_color, reflected, 0.8),\n"
-    "                          fresnel);\n"
     "    float len = max(v_pos.z - ms_floor_z, 0.0) / max(-t.z, 0.05);\n"
     "    vec2 uv = (v_pos.xy + len * t.xy - ms_pool.xy) / ms_pool.zw;\n"
     "    float focus = texture2D(ms_caustics, uv).r;\n"
@@ -79,6 +85,17 @@ static const char fragment_source[] =
     "    float on_wall = texture2D(ms_caustics_walls, vec2(along, (strip + height) / 4.0)).r;\n"
     "    focus = mix(focus, on_wall, off_floor);\n"
     "    len = mix(len, to_wall, off_floor);\n"
+    /* parallax: towards the point the refracted ray meets, from where ms_env's lower half
+     * was drawn (see the parameters above) */
+    "    vec3 hit = v_pos + len * t - ms_env_refracted_eye;\n"
+    "    hit = dot(hit, hit) < 1e-12 ? t : normalize(hit);\n"
+    "    vec4 seen = textureCube(ms_env, under || water_parallax <= 0.0 ? t\n"
+    "                                                    : mix(t, hit, water_parallax));\n"
+    "    vec3 refracted = seen.rgb;\n"
+    /* from below: the sky in Snell's window; the reflected ray runs back down through the
+     * water */
+    "    vec3 seen_under = mix(tir ? vec3(0.0) : refracted, mix(water_color, reflected, 0.8),\n"
+    "                          fresnel);\n"
     /* alpha 0: an object under the water, lit through the light map where the sun's
      * refracted rays meet it (ms_env, plugin.h) */
     "    float light = mix(1.0, 0.55 + water_caustics * focus, seen.a);\n"
@@ -96,6 +113,7 @@ static const shader_param water_params[] = {
     {"ior", 1, {1.333f}, 1.0, 3.0, ""},
     {"caustics", 1, {1.2f}, 0.0, 10.0, ""},
     {"clarity", 1, {1.5f}, 1e-3, 1e3, "m"},
+    {"parallax", 1, {0.0f}, 0.0, 1.0, ""},
     {NULL, 0, {0}, 0, 0, NULL},
 };
 

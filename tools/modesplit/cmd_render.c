@@ -272,8 +272,10 @@ static int render_open(render_state *s)
         tool_error("%s", ms_last_error());
         return EXIT_RUNTIME;
     }
-    if (o->shader)
+    if (o->shader && strcmp(o->shader, s->d.shader)) {
         s->d.shader = o->shader;
+        s->d.shader_params = NULL; /* the scene's are its own shader's */
+    }
     if (o->width)
         s->d.width = o->width, s->d.height = o->height;
     if (o->have_camera) {
