@@ -12,6 +12,7 @@
 #include <jansson.h>
 
 #include "core/core_internal.h"
+#include "core/struct_sizes.h"
 #include "scene/override.h"
 #include "scene/sections.h"
 
@@ -266,4 +267,36 @@ int ms_scene_output_deflate(const ms_scene *sc)
 int ms_scene_has_render(const ms_scene *sc)
 {
     return sc ? sc->has_render : 0;
+}
+
+/* A desc of the scene written up to the caller's .size. */
+static ms_status desc_out(const ms_scene *sc, int has, const char *section, void *user,
+                          const void *full, ms_struct_sizes k)
+{
+    MS_TRY(ms_check_not_null("scene", "scene", sc));
+    MS_TRY(ms_check_not_null("scene", "out", user));
+    if (!has)
+        return ms_fail(MS_ERR_STATE, "scene: \"%s\" has no \"%s\" section", sc->name, section);
+    size_t size = ms_struct_out(user, k, "scene");
+    if (!size)
+        return MS_ERR_INVALID_ARGUMENT;
+    ms_struct_write(user, full, size);
+    return MS_OK;
+}
+
+ms_status ms_scene_volume_desc(const ms_scene *sc, ms_volume_desc *out)
+{
+    return desc_out(sc, sc && sc->has_volume, "volume", out, sc ? &sc->volume : NULL,
+                    MS_SIZES_VOLUME_DESC);
+}
+
+ms_status ms_scene_surface_desc(const ms_scene *sc, ms_surface_desc *out)
+{
+    return desc_out(sc, sc && sc->has_surface, "surface", out, sc ? &sc->surface : NULL,
+                    MS_SIZES_SURFACE_DESC);
+}
+
+ms_status ms_scene_sim_desc(const ms_scene *sc, ms_sim_desc *out)
+{
+    return desc_out(sc, 1, "sim", out, sc ? &sc->sim : NULL, MS_SIZES_SIM_DESC);
 }

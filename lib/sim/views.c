@@ -187,6 +187,7 @@ void ms_sim_get_info(const ms_sim *sim, ms_sim_info *user)
         out->field_nx = sim->fnx;
         out->field_ny = sim->fny;
         out->particles = ms_volume_count(sim->volume);
+        out->spacing = sim->spacing;
     }
     if (sim->surface) {
         out->surface_nx = sim->snx;
