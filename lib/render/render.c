@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "core/core_internal.h"
-#include "core/struct_sizes.h"
+#include "render/render_sizes.h"
 #include "render/render_internal.h"
 #include "scene/scene_internal.h"
 

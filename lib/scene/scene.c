@@ -12,7 +12,9 @@
 #include <jansson.h>
 
 #include "core/core_internal.h"
-#include "core/struct_sizes.h"
+#include "sim/sim_sizes.h"
+#include "surface/surface_sizes.h"
+#include "volume/volume_sizes.h"
 #include "scene/override.h"
 #include "scene/sections.h"
 

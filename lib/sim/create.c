@@ -6,7 +6,9 @@
 #include "modesplit/volume.h"
 #include "sim/sim_internal.h"
 #include "volume/volume_internal.h"
-#include "core/struct_sizes.h"
+#include "sim/sim_sizes.h"
+#include "surface/surface_sizes.h"
+#include "volume/volume_sizes.h"
 
 ms_sim_desc ms_sim_desc_default(void)
 {

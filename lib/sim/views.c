@@ -7,7 +7,7 @@
 #include "modesplit/volume.h"
 #include "shape/shape_internal.h"
 #include "sim/sim_internal.h"
-#include "core/struct_sizes.h"
+#include "sim/sim_sizes.h"
 
 /* The slot of the published frame's volume data. */
 static int pub_slot(const ms_sim *sim)

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "surface/surface_internal.h"
-#include "core/struct_sizes.h"
+#include "surface/surface_sizes.h"
 
 #define PART "surface"
 #define MAX_CELLS_PER_SIDE 16384

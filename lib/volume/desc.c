@@ -3,7 +3,7 @@
 #include <math.h>
 
 #include "volume/volume_internal.h"
-#include "core/struct_sizes.h"
+#include "volume/volume_sizes.h"
 
 ms_volume_desc ms_volume_desc_default(void)
 {
