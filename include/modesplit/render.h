@@ -113,6 +113,11 @@ MS_API ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_des
  * (MS_ERR_UNSUPPORTED without OSMesa or EGL, or when the backend asked for
  * is not built or cannot make a context). */
 MS_API ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out);
+/* The checks ms_renderer_create_desc makes before it needs a GL context:
+ * every field, and a cubemap's files (they exist, are PNGs, and their
+ * headers give faces of at most 4096 texels, square and of one size),
+ * without decoding them. Works in a build without OpenGL. */
+MS_API ms_status ms_renderer_desc_check(const ms_renderer_desc *d);
 /* ms_renderer_desc_from_scene + ms_renderer_create_desc; a scene without a
  * `render` section is refused (it asks for no image). */
 MS_API ms_status ms_renderer_create_from_scene(const ms_scene *sc, ms_renderer **out);

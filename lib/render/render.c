@@ -223,6 +223,16 @@ static int sky_size_for(int w, int h)
 }
 #endif
 
+ms_status ms_renderer_desc_check(const ms_renderer_desc *user)
+{
+    ms_renderer_desc d = ms_renderer_desc_default();
+    ms_status st;
+    if ((st = ms_struct_in(user, &d, MS_SIZES_RENDERER_DESC, PART)) != MS_OK ||
+        (st = check_desc(&d)) != MS_OK)
+        return st;
+    return strcmp(d.cubemap, "builtin") == 0 ? MS_OK : ms_cubemap_probe(d.cubemap);
+}
+
 ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
 {
     ms_status st;
