@@ -342,7 +342,11 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
  * yet: there ms_sim_step refuses them on the first call. */
 static ms_status check_scene_frame(const ms_sim *sim, double frame_dt)
 {
-    MS_TRY(ms_sim_check_n_time(sim, frame_dt));
+    if (sim->surface) {
+        int n_time;
+        float wave_dt;
+        MS_TRY(ms_sim_plan_waves(sim, (float)frame_dt, &n_time, &wave_dt));
+    }
     if (sim->volume) {
         ms_volume_desc vd = ms_volume_get_desc(sim->volume);
         ms_volume_info in = ms_volume_info_init();

@@ -164,7 +164,7 @@ void ms_sim_get_stats(const ms_sim *sim, ms_stats *user)
         out->surface_steps = si.substeps;
         out->surface_bytes += si.bytes;
         out->drops = si.drops;
-        out->n_time = sim->n_time_last;
+        out->n_time = ms_sim_wave_plan(sim)->n_time;
     }
     out->bytes = sizeof *sim + out->volume_bytes + out->surface_bytes + out->effects_bytes;
     ms_struct_write(user, &full, size);
