@@ -314,7 +314,7 @@ START_TEST(shader_names_are_checked_against_the_registry)
     ck_assert_str_eq(sc->render.shader, "milk");
     ck_assert_int_eq(sc->render.width, 64);
     ck_assert_int_eq(sc->render.height, 950);
-    ck_assert_int_eq(sc->render.has_caustics, 0);
+    ck_assert_int_eq(sc->render.caustics, 0);
     ms_scene_destroy(sc);
 }
 END_TEST
@@ -499,6 +499,13 @@ START_TEST(scene_gives_the_parts_descs)
     ck_assert_int_eq(in.surface_nx, 200);
     ms_sim_destroy(sim);
     ms_scene_destroy(sc);
+    /* the renderer's: its pool is the domain, the still water the level */
+    ms_renderer_desc rd = ms_renderer_desc_default();
+    ck_assert_int_eq(ms_scene_renderer_desc(sc, &rd), MS_OK);
+    ck_assert_float_eq(rd.pool_max[0], 2.0f);
+    ck_assert_float_eq_tol(rd.water_level, sc->level, 1e-7f);
+    ck_assert_int_eq(rd.caustics, 0); /* no render section: no caustics */
+    ck_assert_int_eq(ms_renderer_desc_check(&rd), MS_OK);
     /* a section the scene lacks */
     sc = parse_ok("{\"surface\": {}}");
     MS_ASSERT_REFUSED(ms_scene_volume_desc(sc, &v), MS_ERR_STATE, "has no \"volume\" section");

@@ -107,6 +107,10 @@ MS_API ms_renderer_desc ms_renderer_desc_default(void);
  * into the scene: valid while it lives. out is filled up to its .size
  * (core.h: struct sizes): start from ms_renderer_desc_default(). */
 MS_API ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out);
+/* The same, named as its siblings ms_scene_volume_desc,
+ * ms_scene_surface_desc and ms_scene_sim_desc: the scene holds this desc
+ * (made when it was read); every scene has one. */
+MS_API ms_status ms_scene_renderer_desc(const ms_scene *sc, ms_renderer_desc *out);
 /* Validates every field (MS_ERR_INVALID_ARGUMENT naming it), loads the
  * shader plugin (MS_ERR_PLUGIN; a GLSL compile or link error carries the
  * info log), the cubemap (MS_ERR_IO, MS_ERR_PARSE), makes the GL context

@@ -50,7 +50,7 @@ MS_API ms_status ms_scene_parse_with_overrides(const char *json, size_t len, int
  * MS_ERR_STATE when the scene has no such section (out untouched); out is
  * written up to its .size (core.h: struct sizes): start from the
  * *_desc_default(). ms_scene_sim_desc is in sim.h, the renderer's
- * (ms_renderer_desc_from_scene) in render.h. */
+ * (ms_scene_renderer_desc) in render.h. */
 MS_API ms_status ms_scene_volume_desc(const ms_scene *sc, ms_volume_desc *out);
 MS_API ms_status ms_scene_surface_desc(const ms_scene *sc, ms_surface_desc *out);
 

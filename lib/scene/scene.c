@@ -50,8 +50,8 @@ void ms_scene_destroy(ms_scene *sc)
     ms_free(sc->floater_xy);
     if (sc->has_container)
         free_shape(&sc->container);
-    ms_free(sc->render.shader);
-    ms_free(sc->render.cubemap);
+    ms_free(sc->render_shader);
+    ms_free(sc->render_cubemap);
     ms_free(sc);
 }
 

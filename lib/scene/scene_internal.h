@@ -11,6 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "modesplit/render.h"
 #include "modesplit/scene.h"
 #include "modesplit/sim.h"
 #include "modesplit/surface.h"
@@ -56,22 +57,6 @@ typedef struct ms_scene_drop {
     float radius;    /* m */
     float amplitude; /* m */
 } ms_scene_drop;
-
-typedef struct ms_scene_render {
-    int width, height; /* pixels */
-    char *shader;      /* shader plugin name */
-    char *cubemap;     /* "builtin" or a path resolved against the scene's directory */
-    int has_caustics;
-    int caustics_resolution;        /* light map texels per side */
-    float caustics_intensity;       /* 1 = physical */
-    float light_dir[3];             /* unit vector, towards where the light goes */
-    float eye[3], target[3], up[3]; /* m, camera */
-    float fov;                      /* degrees, vertical */
-    int backend;                    /* index in ms_scene_render_backends: the GL context */
-} ms_scene_render;
-
-/* render.backend's names: "auto", "osmesa", "egl" (NULL-terminated). */
-extern const char *const ms_scene_render_backends[];
 
 struct ms_scene {
     char *text; /* the JSON text, NUL-terminated */
@@ -126,8 +111,12 @@ struct ms_scene {
     int has_container;
     ms_scene_shape container;
 
+    /* the renderer's desc (render section over ms_renderer_desc_default(),
+     * the pool from the domain and the level); always made, so a scene
+     * without a render section still gives a camera and a pool */
     int has_render;
-    ms_scene_render render;
+    ms_renderer_desc render;
+    char *render_shader, *render_cubemap; /* owned: render.shader, .cubemap point here */
 
     unsigned output_fields; /* MS_FIELD_* */
     int output_every;
