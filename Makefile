@@ -239,7 +239,7 @@ deps:
 # Every suite runs even if one fails; one summary at the end; the target
 # fails if any suite did. `make check-suites` runs the suites alone (with
 # the summary), building what they need.
-CHECK_PRE := check-headers check-exports check-readme check-docs check-abi check-bench-figures
+CHECK_PRE := check-headers check-exports check-readme check-docs check-layers check-abi check-bench-figures
 check: deps
 	@$(MAKE) --no-print-directory all tests
 	@$(MAKE) --no-print-directory --output-sync=target $(CHECK_PRE)
@@ -379,10 +379,15 @@ check-readme: $(STATIC)
 # README.md, CHANGELOG.md, docs/ and the sources' comments cite no work
 # round, branch or issue number, and the README stays a guide (<= 400
 # lines); the self-test plants such lines and expects the check to fail.
-.PHONY: check-docs
+.PHONY: check-docs check-layers
 check-docs:
 	@tests/check_docs.sh --self-test
 	@tests/check_docs.sh
+
+# dependencies point down: core includes no part, volume and surface not
+# each other
+check-layers:
+	@tests/check_layers.sh
 
 # The renderer's golden pictures: tests/data/golden/<scene>.png,
 # compared with a tolerance by test_render; written afresh only here, on

@@ -70,8 +70,22 @@ START_TEST(override_out_of_range_names_the_set)
 {
     ms_scene *sc = NULL;
     const char *set[] = {"volume.spacing=0"};
-    MS_ASSERT_REFUSED(parse_set(1, set, &sc), MS_ERR_INVALID_ARGUMENT,
-                      "--set volume.spacing=0: volume.spacing 0 m is out of range; allowed");
+    MS_ASSERT_REFUSED(
+        parse_set(1, set, &sc), MS_ERR_INVALID_ARGUMENT,
+        "--set volume.spacing=0: volume.spacing is refused: volume: spacing 0 m must be "
+        "finite and > 0");
+    ck_assert_ptr_null(sc);
+}
+END_TEST
+
+/* A --set whose path makes a key the schema lacks is named as the --set,
+ * not as a line of the merged text. */
+START_TEST(override_of_a_new_nested_key_names_the_set)
+{
+    ms_scene *sc = NULL;
+    const char *set[] = {"volume.nosuch.deeper=1"};
+    MS_ASSERT_REFUSED(parse_set(1, set, &sc), MS_ERR_PARSE,
+                      "--set volume.nosuch.deeper=1: volume.nosuch is an unknown key");
     ck_assert_ptr_null(sc);
 }
 END_TEST
@@ -224,6 +238,7 @@ static Suite *override_suite(void)
     tcase_add_test(t, override_sets_number_array_string_and_index);
     tcase_add_test(t, no_overrides_is_plain_parse);
     tcase_add_test(t, override_out_of_range_names_the_set);
+    tcase_add_test(t, override_of_a_new_nested_key_names_the_set);
     tcase_add_test(t, override_wrong_type_names_the_set);
     tcase_add_test(t, override_unknown_key_lists_allowed);
     tcase_add_test(t, override_bad_syntax_and_index_refused);

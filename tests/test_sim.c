@@ -49,6 +49,35 @@ static void steps(ms_sim *sim, int n, float dt)
 
 /* ---- only what the scene calls for --------------------------------------- */
 
+/* One plan per frame: the waves of a frame are stepped one call later
+ * (the pipeline) with that frame's own dt and N_time (eq. 19), not the
+ * dt of the call that steps them. */
+START_TEST(waves_of_a_frame_keep_that_frames_plan)
+{
+    ms_surface_desc sd = ms_surface_desc_default();
+    sd.nx = sd.ny = 64;
+    ms_sim_desc d = ms_sim_desc_default();
+    d.surface = &sd;
+    ms_sim *sim = NULL;
+    ck_assert_int_eq(ms_sim_create(&d, &sim), MS_OK);
+    ms_surface_info si = ms_surface_info_init();
+    ms_surface_get_info(ms_sim_surface(sim), &si);
+    const float dt[3] = {0.1f, 0.01f, 0.05f};
+    const int want[3] = {0, (int)ceil(dt[0] / si.max_dt), (int)ceil(dt[1] / si.max_dt)};
+    ck_assert_int_gt(want[1], want[2]); /* the frames need different N_time */
+    for (int f = 0; f < 3; ++f) {
+        ck_assert_int_eq(ms_sim_step(sim, dt[f]), MS_OK);
+        ms_stats st = ms_stats_init();
+        ms_sim_get_stats(sim, &st);
+        ck_assert_int_eq(st.n_time, want[f]);
+        ck_assert_int_eq(st.surface_steps, f == 0 ? 0 : f == 1 ? want[1] : want[1] + want[2]);
+    }
+    /* the fields shown are of the time the plans of the frames before reach */
+    ck_assert_double_eq_tol(ms_sim_time(sim), (double)dt[0] + dt[1], 1e-6);
+    ms_sim_destroy(sim);
+}
+END_TEST
+
 START_TEST(surface_only_scene_holds_no_particles_and_runs_no_sph)
 {
     ms_scene *sc = scene("{" POOL_DOMAIN ", " POOL_SURFACE
@@ -1245,6 +1274,7 @@ static Suite *sim_suite(void)
     TCase *tc = tcase_create("sim");
     tcase_set_timeout(tc, 300);
     tcase_add_test(tc, surface_only_scene_holds_no_particles_and_runs_no_sph);
+    tcase_add_test(tc, waves_of_a_frame_keep_that_frames_plan);
     tcase_add_test(tc, volume_only_scene_is_the_sph_field_alone);
     tcase_add_test(tc, a_scenes_dfsph_limits_reach_the_solver);
     tcase_add_test(tc, absent_effects_cost_nothing);

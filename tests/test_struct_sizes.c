@@ -9,7 +9,6 @@
 #include <string.h>
 
 #include "core/core_internal.h"
-#include "core/struct_sizes.h"
 #include "modesplit/modesplit.h"
 #include "modesplit/plugin.h"
 #include "support.h"

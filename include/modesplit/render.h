@@ -107,12 +107,21 @@ MS_API ms_renderer_desc ms_renderer_desc_default(void);
  * into the scene: valid while it lives. out is filled up to its .size
  * (core.h: struct sizes): start from ms_renderer_desc_default(). */
 MS_API ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out);
+/* The same, named as its siblings ms_scene_volume_desc,
+ * ms_scene_surface_desc and ms_scene_sim_desc: the scene holds this desc
+ * (made when it was read); every scene has one. */
+MS_API ms_status ms_scene_renderer_desc(const ms_scene *sc, ms_renderer_desc *out);
 /* Validates every field (MS_ERR_INVALID_ARGUMENT naming it), loads the
  * shader plugin (MS_ERR_PLUGIN; a GLSL compile or link error carries the
  * info log), the cubemap (MS_ERR_IO, MS_ERR_PARSE), makes the GL context
  * (MS_ERR_UNSUPPORTED without OSMesa or EGL, or when the backend asked for
  * is not built or cannot make a context). */
 MS_API ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out);
+/* The checks ms_renderer_create_desc makes before it needs a GL context:
+ * every field, and a cubemap's files (they exist, are PNGs, and their
+ * headers give faces of at most 4096 texels, square and of one size),
+ * without decoding them. Works in a build without OpenGL. */
+MS_API ms_status ms_renderer_desc_check(const ms_renderer_desc *d);
 /* ms_renderer_desc_from_scene + ms_renderer_create_desc; a scene without a
  * `render` section is refused (it asks for no image). */
 MS_API ms_status ms_renderer_create_from_scene(const ms_scene *sc, ms_renderer **out);

@@ -7,6 +7,8 @@
 #define MODESPLIT_SCENE_H
 
 #include "core.h"
+#include "surface.h"
+#include "volume.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -38,6 +40,19 @@ MS_API ms_status ms_scene_load_with_overrides(const char *path, int n, const cha
                                               ms_scene **out);
 MS_API ms_status ms_scene_parse_with_overrides(const char *json, size_t len, int n,
                                                const char *const *overrides, ms_scene **out);
+
+/* The parts' descs a scene's keys make, for an engine that wants a file's
+ * settings without the sim (ms_sim_create_from_scene uses the same): each
+ * started from its *_desc_default(), each key of the section setting the
+ * field of its name (volume.spacing -> ms_volume_desc.spacing;
+ * surface.cells -> nx, ny; dx = the domain's x extent / cells[0]), and
+ * checked by the part's ms_*_desc_check when the scene was read.
+ * MS_ERR_STATE when the scene has no such section (out untouched); out is
+ * written up to its .size (core.h: struct sizes): start from the
+ * *_desc_default(). ms_scene_sim_desc is in sim.h, the renderer's
+ * (ms_scene_renderer_desc) in render.h. */
+MS_API ms_status ms_scene_volume_desc(const ms_scene *sc, ms_volume_desc *out);
+MS_API ms_status ms_scene_surface_desc(const ms_scene *sc, ms_surface_desc *out);
 
 /* output.checkpoint_every: a snapshot of the sim (ms_sim_snapshot) goes
  * into the run file with every n-th written frame, 0 = none; default 1. */

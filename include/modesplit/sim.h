@@ -54,6 +54,16 @@ typedef struct ms_sim_desc {
 
 MS_API ms_sim_desc ms_sim_desc_default(void);
 MS_API ms_status ms_sim_create(const ms_sim_desc *d, ms_sim **out);
+/* The checks ms_sim_create makes before it allocates: its own fields, the
+ * volume and surface descs (ms_volume_desc_check, ms_surface_desc_check)
+ * and the x-y extent they must share. */
+MS_API ms_status ms_sim_desc_check(const ms_sim_desc *d);
+/* The sim desc of a scene (threads, coupling, volume.field) whose volume
+ * and surface point at the scene's descs (ms_scene_volume_desc): valid
+ * while the scene lives. The effects, fills and obstacles of the scene
+ * are not in it: ms_sim_create_from_scene adds them. out is written up to
+ * its .size (core.h: struct sizes). */
+MS_API ms_status ms_scene_sim_desc(const ms_scene *sc, ms_sim_desc *out);
 /* A sim of the scene's parts and effects, filled as the scene says.
  * threads: 1, 2, or 0 = the scene's `threads`. The scene must outlive the
  * sim (ms_sim_scene returns it). */
@@ -146,6 +156,8 @@ typedef struct ms_sim_info {
     int particles;              /* particles now */
     int floaters;               /* floating objects */
     int obstacles;              /* obstacles + container */
+    /* --- grown at the end --- */
+    float spacing; /* m, the volume's particle spacing (0 without a volume) */
 } ms_sim_info;
 static inline ms_sim_info ms_sim_info_init(void)
 {

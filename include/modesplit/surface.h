@@ -42,7 +42,7 @@ typedef enum ms_boundary {
 typedef struct ms_surface_desc {
     uint32_t size;    /* sizeof, set by ms_surface_desc_default() (core.h: struct sizes) */
     int nx, ny;       /* cells; 2 .. 16384 each                         */
-    float dx;         /* m, cell size; > 0                              */
+    float dx;         /* m, cell size; >= 1e-6                          */
     float wave_speed; /* m/s, c of eq. 2 where no speed map is set; > 0 */
     float damping;    /* in (0, 1]: fraction of the wave velocity kept
                             after one second (1 = no damping). Per second,
@@ -59,6 +59,11 @@ typedef struct ms_surface_desc {
 MS_API ms_surface_desc ms_surface_desc_default(void);
 
 MS_API ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out);
+/* The checks ms_surface_create makes, without creating anything: nx, ny
+ * in [2, 16384], dx >= 1e-6 m, wave_speed > 0, damping in (0, 1], a
+ * boundary value, max_substeps >= 1 (a scene's surface keys are checked
+ * here too). */
+MS_API ms_status ms_surface_desc_check(const ms_surface_desc *d);
 MS_API void ms_surface_destroy(ms_surface *s);
 
 /* Advance by dt seconds (0 <= dt <= 10), in equal sub-steps that keep the

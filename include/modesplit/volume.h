@@ -58,6 +58,9 @@ typedef enum ms_density_kernel {
     MS_DENSITY_FORCE_32BIT_ = 0x7fffffff
 } ms_density_kernel;
 
+/* The most particles a volume holds (desc.max_particles). */
+#define MS_VOLUME_MAX_PARTICLES (1L << 24)
+
 typedef struct ms_volume_desc {
     uint32_t size; /* sizeof, set by ms_volume_desc_default() (core.h: struct sizes) */
     float domain_min[3], domain_max[3]; /* m, the box the liquid lives in (a collider) */
@@ -112,6 +115,11 @@ MS_API ms_volume_desc ms_volume_desc_default(void);
  * and out-of-range counts; DFSPH with the poly6 density kernel (the
  * solve differentiates the spiky kernel) or DFSPH limits out of range. */
 MS_API ms_status ms_volume_create(const ms_volume_desc *d, ms_volume **out);
+/* The checks ms_volume_create makes, without creating anything: the place
+ * every default's range lives (a scene file's volume keys are checked
+ * here too). Every field is range-checked whichever pressure law reads
+ * it, so sound_speed -5 m/s is refused under the ideal gas as NaN is. */
+MS_API ms_status ms_volume_desc_check(const ms_volume_desc *d);
 MS_API void ms_volume_destroy(ms_volume *v);
 
 /* Particles on a cubic lattice of desc.spacing at lo + (i + 0.5) spacing,

@@ -21,6 +21,12 @@
  *     return ms_fail(MS_ERR_INVALID_ARGUMENT, "surface: nx %d is below 2", nx);
  */
 ms_status ms_fail(ms_status s, const char *fmt, ...) MS_PRINTF(2, 3);
+/* ms_fail for a refusal of one desc field: key names it ("spacing"), so
+ * that a scene, which filled the desc from its keys, can name the key of
+ * its file that set the field (ms_last_error_key). ms_fail clears it; the
+ * checks below set it to their key. */
+ms_status ms_fail_key(ms_status s, const char *key, const char *fmt, ...) MS_PRINTF(3, 4);
+const char *ms_last_error_key(void);
 
 /* Argument checks: each returns MS_OK or fails with a sentence naming the
  * part, the key, the value and the bound ("surface: dx 0 m must be > 0"). */

@@ -22,7 +22,7 @@
 #include <string.h>
 
 #include "io/io_internal.h"
-#include "core/struct_sizes.h"
+#include "io/io_sizes.h"
 
 #define DEG_TO_RAD 0.017453292519943295
 #define AMBIENT 0.35f /* share of the light that does not depend on the slope */

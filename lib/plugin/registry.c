@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "core/core_internal.h"
-#include "core/struct_sizes.h"
+#include "plugin/plugin_sizes.h"
 #include "plugin/plugin_internal.h"
 
 static pthread_once_t scan_once = PTHREAD_ONCE_INIT;

@@ -18,35 +18,42 @@
 static const char *const short_names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
 static const char *const long_names[6] = {"posx", "negx", "posy", "negy", "posz", "negz"};
 
-/* Reads a PNG as RGBA8; *w, *h its size. The size in the header is
- * checked against max_w x max_h before anything is decoded (a small PNG
- * can declare faces of gigabytes). */
-static ms_status read_png(const char *path, int max_w, int max_h, unsigned char **out, int *w,
-                          int *h)
+/* Opens a PNG and checks the size in its header against max_w x max_h
+ * before anything is decoded (a small PNG can declare faces of
+ * gigabytes); *img is freed on failure. */
+static ms_status open_png(const char *path, int max_w, int max_h, png_image *img)
 {
-    png_image img;
-    memset(&img, 0, sizeof img);
-    img.version = PNG_IMAGE_VERSION;
-    *out = NULL;
-    if (!png_image_begin_read_from_file(&img, path)) {
+    memset(img, 0, sizeof *img);
+    img->version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(img, path)) {
         FILE *f = fopen(path, "rb");
         int exists = f != NULL;
         if (f)
             fclose(f);
         ms_status st =
             ms_fail(exists ? MS_ERR_PARSE : MS_ERR_IO,
-                    "render: cubemap \"%s\" is not a readable PNG (%s)", path, img.message);
-        png_image_free(&img);
+                    "render: cubemap \"%s\" is not a readable PNG (%s)", path, img->message);
+        png_image_free(img);
         return st;
     }
-    if (img.width < 1 || img.height < 1 || img.width > (unsigned)max_w ||
-        img.height > (unsigned)max_h) {
-        png_image_free(&img);
+    if (img->width < 1 || img->height < 1 || img->width > (unsigned)max_w ||
+        img->height > (unsigned)max_h) {
+        png_image_free(img);
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "render: cubemap \"%s\" is %u x %u pixels (at most %d x %d here); faces "
                        "may be at most %d texels a side",
-                       path, (unsigned)img.width, (unsigned)img.height, max_w, max_h, MAX_FACE);
+                       path, (unsigned)img->width, (unsigned)img->height, max_w, max_h, MAX_FACE);
     }
+    return MS_OK;
+}
+
+/* Reads a PNG as RGBA8; *w, *h its size (open_png checks it first). */
+static ms_status read_png(const char *path, int max_w, int max_h, unsigned char **out, int *w,
+                          int *h)
+{
+    png_image img;
+    *out = NULL;
+    MS_TRY(open_png(path, max_w, max_h, &img));
     img.format = PNG_FORMAT_RGBA;
     unsigned char *px = ms_alloc(PNG_IMAGE_SIZE(img));
     if (!px) {
@@ -72,27 +79,50 @@ static int file_exists(const char *path)
     return stat(path, &sb) == 0 && S_ISREG(sb.st_mode);
 }
 
+/* The path of face f in a cubemap directory; MS_ERR_IO when it has none. */
+static ms_status face_path(const char *dir, int f, char *path, size_t size)
+{
+    snprintf(path, size, "%s/%s.png", dir, short_names[f]);
+    if (!file_exists(path))
+        snprintf(path, size, "%s/%s.png", dir, long_names[f]);
+    if (!file_exists(path))
+        return ms_fail(MS_ERR_IO,
+                       "render: cubemap directory \"%s\" has no %s.png (or %s.png); it "
+                       "needs six faces px nx py ny pz nz",
+                       dir, short_names[f], long_names[f]);
+    return MS_OK;
+}
+
+/* Face f of w x h texels after faces of `size` (f > 0): square, one size. */
+static ms_status check_face(const char *path, int f, int w, int h, int size)
+{
+    if (w != h || (f > 0 && w != size))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: cubemap face \"%s\" is %d x %d texels; faces must be "
+                       "square and all of one size (%d)",
+                       path, w, h, f > 0 ? size : w);
+    return MS_OK;
+}
+
+/* A single-file cubemap of w x h pixels: six square faces stacked. */
+static ms_status check_strip(const char *path, int w, int h)
+{
+    if (h != 6 * w || w > MAX_FACE)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "render: cubemap \"%s\" is %d x %d pixels; a single-file cubemap is six "
+                       "square faces stacked (height = 6 x width, width <= %d)",
+                       path, w, h, MAX_FACE);
+    return MS_OK;
+}
+
 static ms_status load_dir(const char *dir, ms_cubemap *out)
 {
     for (int f = 0; f < 6; ++f) {
         char path[4096];
-        snprintf(path, sizeof path, "%s/%s.png", dir, short_names[f]);
-        if (!file_exists(path))
-            snprintf(path, sizeof path, "%s/%s.png", dir, long_names[f]);
-        if (!file_exists(path))
-            return ms_fail(MS_ERR_IO,
-                           "render: cubemap directory \"%s\" has no %s.png (or %s.png); it "
-                           "needs six faces px nx py ny pz nz",
-                           dir, short_names[f], long_names[f]);
+        MS_TRY(face_path(dir, f, path, sizeof path));
         int w, h;
-        ms_status st = read_png(path, MAX_FACE, MAX_FACE, &out->face[f], &w, &h);
-        if (st != MS_OK)
-            return st;
-        if (w != h || (f > 0 && w != out->size))
-            return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "render: cubemap face \"%s\" is %d x %d texels; faces must be "
-                           "square and all of one size (%d)",
-                           path, w, h, f > 0 ? out->size : w);
+        MS_TRY(read_png(path, MAX_FACE, MAX_FACE, &out->face[f], &w, &h));
+        MS_TRY(check_face(path, f, w, h, out->size));
         out->size = w;
     }
     return MS_OK;
@@ -105,12 +135,9 @@ static ms_status load_strip(const char *path, ms_cubemap *out)
     ms_status st = read_png(path, MAX_FACE, 6 * MAX_FACE, &px, &w, &h);
     if (st != MS_OK)
         return st;
-    if (h != 6 * w || w > MAX_FACE) {
+    if ((st = check_strip(path, w, h)) != MS_OK) {
         ms_free(px);
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: cubemap \"%s\" is %d x %d pixels; a single-file cubemap is six "
-                       "square faces stacked (height = 6 x width, width <= %d)",
-                       path, w, h, MAX_FACE);
+        return st;
     }
     size_t face = (size_t)w * (size_t)w * 4;
     for (int f = 0; f < 6; ++f) {
@@ -202,4 +229,32 @@ ms_status ms_sky_write_cubemap(const char *dir, int size, const float light_dir[
     }
     ms_cubemap_free(&sky);
     return st;
+}
+
+ms_status ms_cubemap_probe(const char *path)
+{
+    struct stat sb;
+    if (stat(path, &sb) != 0)
+        return ms_fail(MS_ERR_IO,
+                       "render: cubemap \"%s\" does not exist; allowed: \"builtin\", a "
+                       "directory of six PNG faces or one PNG strip",
+                       path);
+    png_image img;
+    if (!S_ISDIR(sb.st_mode)) {
+        MS_TRY(open_png(path, MAX_FACE, 6 * MAX_FACE, &img));
+        int w = (int)img.width, h = (int)img.height;
+        png_image_free(&img);
+        return check_strip(path, w, h);
+    }
+    int size = 0;
+    for (int f = 0; f < 6; ++f) {
+        char face[4096];
+        MS_TRY(face_path(path, f, face, sizeof face));
+        MS_TRY(open_png(face, MAX_FACE, MAX_FACE, &img));
+        int w = (int)img.width, h = (int)img.height;
+        png_image_free(&img);
+        MS_TRY(check_face(face, f, w, h, size));
+        size = w;
+    }
+    return MS_OK;
 }

@@ -269,8 +269,10 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
         vg.nx == vnx && vg.ny == vny && (st = smooth_sph_part(r, h, &g, v, &vg, &h)) != MS_OK)
         return st;
     /* the SPH field alone: blurred over the particles' spacing */
-    if (!ms_sim_surface_height(sim, NULL, NULL) && sc && sc->has_volume && sc->volume.spacing > 0) {
-        const float sigma = sc->volume.spacing / MS_MIN(g.dx, g.dy);
+    ms_sim_info info = ms_sim_info_init();
+    ms_sim_get_info(sim, &info);
+    if (!ms_sim_surface_height(sim, NULL, NULL) && info.spacing > 0) {
+        const float sigma = info.spacing / MS_MIN(g.dx, g.dy);
         if (sigma > 0.5f && (st = blur_field(r, h, &g, sigma, &h)) != MS_OK)
             return st;
     }

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "core/core_internal.h"
-#include "core/struct_sizes.h"
+#include "render/render_sizes.h"
 #include "render/render_internal.h"
 #include "scene/scene_internal.h"
 
@@ -54,57 +54,14 @@ ms_status ms_renderer_desc_from_scene(const ms_scene *sc, ms_renderer_desc *out)
     size_t size = ms_struct_out(out, MS_SIZES_RENDERER_DESC, PART);
     if (!size)
         return MS_ERR_INVALID_ARGUMENT; /* the sentence is set */
-    ms_renderer_desc d = ms_renderer_desc_default();
-    const float *lo = sc->domain_min, *hi = sc->domain_max;
-    float ext_xy = MS_MIN(hi[0] - lo[0], hi[1] - lo[1]);
-    d.pool_min[0] = lo[0];
-    d.pool_min[1] = lo[1];
-    d.pool_min[2] = lo[2];
-    d.pool_max[0] = hi[0];
-    d.pool_max[1] = hi[1];
-    d.water_level = lo[2] + sc->level;
-    /* the rim a little above still water (so the walls hide little of
-     * it), within the domain */
-    d.pool_max[2] = MS_MIN(hi[2], d.water_level + 0.05f * ext_xy);
-    if (!(d.pool_max[2] > lo[2]))
-        d.pool_max[2] = hi[2];
-    /* A fill that rises above that rim (a dam break, Fig. 4c) is liquid
-     * that runs up the walls: the walls then go up to the domain's top,
-     * the highest the particles can reach, so the liquid stays inside the
-     * pool and is not drawn over the deck. */
-    for (int i = 0; i < sc->nfill; ++i)
-        if (sc->has_volume && sc->fill_hi[i][2] > d.pool_max[2])
-            d.pool_max[2] = hi[2];
-    if (sc->has_render) {
-        const ms_scene_render *r = &sc->render;
-        d.width = r->width;
-        d.height = r->height;
-        d.shader = r->shader;
-        d.shader_params = r->shader_params;
-        d.cubemap = r->cubemap;
-        d.caustics = r->has_caustics;
-        d.caustics_resolution = r->caustics_resolution;
-        d.caustics_intensity = r->caustics_intensity;
-        memcpy(d.light_dir, r->light_dir, sizeof d.light_dir);
-        memcpy(d.eye, r->eye, sizeof d.eye);
-        memcpy(d.target, r->target, sizeof d.target);
-        memcpy(d.up, r->up, sizeof d.up);
-        d.fov = r->fov;
-        d.backend = ms_scene_render_backends[r->backend];
-    } else {
-        /* the scene's default camera: the domain's centre from the -y side */
-        float ext = 0;
-        for (int k = 0; k < 3; ++k) {
-            d.target[k] = 0.5f * (lo[k] + hi[k]);
-            ext = MS_MAX(ext, hi[k] - lo[k]);
-        }
-        d.eye[0] = d.target[0];
-        d.eye[1] = d.target[1] - 1.2f * ext;
-        d.eye[2] = d.target[2] + 1.0f * ext;
-        d.caustics = 0;
-    }
-    ms_struct_write(out, &d, size);
+    /* the scene made it from its render section (lib/scene/section_render.c) */
+    ms_struct_write(out, &sc->render, size);
     return MS_OK;
+}
+
+ms_status ms_scene_renderer_desc(const ms_scene *sc, ms_renderer_desc *out)
+{
+    return ms_renderer_desc_from_scene(sc, out);
 }
 
 static double norm3(const float v[3])
@@ -223,6 +180,16 @@ static int sky_size_for(int w, int h)
     return n;
 }
 #endif
+
+ms_status ms_renderer_desc_check(const ms_renderer_desc *user)
+{
+    ms_renderer_desc d = ms_renderer_desc_default();
+    ms_status st;
+    if ((st = ms_struct_in(user, &d, MS_SIZES_RENDERER_DESC, PART)) != MS_OK ||
+        (st = check_desc(&d)) != MS_OK)
+        return st;
+    return strcmp(d.cubemap, "builtin") == 0 ? MS_OK : ms_cubemap_probe(d.cubemap);
+}
 
 ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
 {

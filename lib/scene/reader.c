@@ -1,6 +1,8 @@
 /* Typed readers of scene values. Each pushes its key on the context's path
  * so that a failure can name file:line:col (found by locate.c), the full
  * key ("effects.rain.rate") and the allowed values. */
+#include <float.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -58,8 +60,13 @@ ms_status ms_scene_fail(const ms_scene_ctx *c, ms_status st, const char *fmt, ..
     for (int k = 0; k < c->nset; ++k) {
         const char *set = c->set[k];
         size_t klen = strcspn(set, "=");
-        if (strncmp(where, set, klen) == 0 &&
-            (where[klen] == '\0' || where[klen] == '.' || where[klen] == '['))
+        size_t wlen = strlen(where);
+        /* the key the --set names, a key inside its value, or a key its
+         * path made (--set volume.nosuch.deeper=1 makes volume.nosuch) */
+        if ((strncmp(where, set, klen) == 0 &&
+             (where[klen] == '\0' || where[klen] == '.' || where[klen] == '[')) ||
+            (wlen < klen && strncmp(where, set, wlen) == 0 &&
+             (set[wlen] == '.' || set[wlen] == '[')))
             return ms_fail(st, "--set %s: %s %s", set, where, what);
     }
     size_t pos = 0;
@@ -142,9 +149,17 @@ ms_status ms_scene_check_keys(ms_scene_ctx *c, json_t *obj, const char *const *a
     return MS_OK;
 }
 
-static void range_text(char *buf, size_t size, double lo, double hi, int lo_open, const char *unit)
+/* "a number in (lo, hi] unit", or, for a desc field whose range its part
+ * checks (lo, hi the float's own), "a number (unit) of float's range". */
+static void allowed_text(char *buf, size_t size, double lo, double hi, int lo_open,
+                         const char *unit)
 {
-    snprintf(buf, size, "%s%g, %g]%s%s", lo_open ? "(" : "[", lo, hi, *unit ? " " : "", unit);
+    if (lo <= -FLT_MAX && hi >= FLT_MAX)
+        snprintf(buf, size, "a number%s%s%s within float's range", *unit ? " (" : "", unit,
+                 *unit ? ")" : "");
+    else
+        snprintf(buf, size, "a number in %s%g, %g]%s%s", lo_open ? "(" : "[", lo, hi,
+                 *unit ? " " : "", unit);
 }
 
 ms_status ms_scene_get_number(ms_scene_ctx *c, json_t *obj, const char *key, double def, double lo,
@@ -155,17 +170,17 @@ ms_status ms_scene_get_number(ms_scene_ctx *c, json_t *obj, const char *key, dou
         *out = def;
         return MS_OK;
     }
-    char range[120];
-    range_text(range, sizeof range, lo, hi, lo_open, unit);
+    char allowed[160];
+    allowed_text(allowed, sizeof allowed, lo, hi, lo_open, unit);
     ms_scene_push_key(c, key);
     ms_status st = MS_OK;
     if (!json_is_number(v)) {
-        st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: a number in %s", type_name(v), range);
+        st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: %s", type_name(v), allowed);
     } else {
         double x = json_number_value(v);
         if (!isfinite(x) || x < lo || x > hi || (lo_open && x <= lo))
             st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "%g%s%s is out of range; allowed: %s", x,
-                               *unit ? " " : "", unit, range);
+                               *unit ? " " : "", unit, allowed);
         else
             *out = x;
     }
@@ -183,9 +198,21 @@ ms_status ms_scene_get_float(ms_scene_ctx *c, json_t *obj, const char *key, doub
     return st;
 }
 
+/* "an integer in [lo, hi]", or "a 32-bit integer" for a desc field whose
+ * range its part checks (lo, hi the int's own). */
+static void int_text(char *buf, size_t size, long lo, long hi)
+{
+    if (lo <= INT_MIN && hi >= INT_MAX)
+        snprintf(buf, size, "a 32-bit integer");
+    else
+        snprintf(buf, size, "an integer in [%ld, %ld]", lo, hi);
+}
+
 ms_status ms_scene_get_int(ms_scene_ctx *c, json_t *obj, const char *key, long def, long lo,
                            long hi, long *out)
 {
+    char allowed[80];
+    int_text(allowed, sizeof allowed, lo, hi);
     json_t *v = json_object_get(obj, key);
     if (!v) {
         *out = def;
@@ -194,14 +221,12 @@ ms_status ms_scene_get_int(ms_scene_ctx *c, json_t *obj, const char *key, long d
     ms_scene_push_key(c, key);
     ms_status st = MS_OK;
     if (!json_is_integer(v)) {
-        st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: an integer in [%ld, %ld]",
-                           type_name(v), lo, hi);
+        st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: %s", type_name(v), allowed);
     } else {
         json_int_t x = json_integer_value(v);
         if (x < lo || x > hi)
-            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                               "%lld is out of range; allowed: an integer in [%ld, %ld]",
-                               (long long)x, lo, hi);
+            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "%lld is out of range; allowed: %s",
+                               (long long)x, allowed);
         else
             *out = (long)x;
     }
@@ -289,24 +314,24 @@ ms_status ms_scene_get_enum(ms_scene_ctx *c, json_t *obj, const char *key, const
 ms_status ms_scene_read_vec(ms_scene_ctx *c, json_t *v, int n, double lo, double hi,
                             const char *unit, float *out)
 {
-    char range[120];
-    range_text(range, sizeof range, lo, hi, 0, unit);
+    char allowed[160];
+    allowed_text(allowed, sizeof allowed, lo, hi, 0, unit);
     if (!json_is_array(v) || json_array_size(v) != (size_t)n)
-        return ms_scene_fail(c, MS_ERR_PARSE, "is %s%s; allowed: an array of %d numbers in %s",
-                             type_name(v), json_is_array(v) ? " of another length" : "", n, range);
+        return ms_scene_fail(c, MS_ERR_PARSE, "is %s%s; allowed: an array of %d, each %s",
+                             type_name(v), json_is_array(v) ? " of another length" : "", n,
+                             allowed);
     for (int i = 0; i < n; ++i) {
         json_t *e = json_array_get(v, (size_t)i);
         ms_scene_push_index(c, i);
         ms_status st = MS_OK;
         if (!json_is_number(e)) {
-            st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: a number in %s", type_name(e),
-                               range);
+            st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: %s", type_name(e), allowed);
         } else {
             double x = json_number_value(e);
             if (!isfinite(x) || x < lo || x > hi)
                 st =
                     ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "%g%s%s is out of range; allowed: %s",
-                                  x, *unit ? " " : "", unit, range);
+                                  x, *unit ? " " : "", unit, allowed);
             else
                 out[i] = (float)x;
         }
@@ -335,6 +360,8 @@ ms_status ms_scene_get_vec(ms_scene_ctx *c, json_t *obj, const char *key, int n,
 ms_status ms_scene_get_ivec(ms_scene_ctx *c, json_t *obj, const char *key, int n, const int *def,
                             long lo, long hi, int *out)
 {
+    char allowed[80];
+    int_text(allowed, sizeof allowed, lo, hi);
     json_t *v = json_object_get(obj, key);
     if (!v) {
         if (def)
@@ -344,20 +371,17 @@ ms_status ms_scene_get_ivec(ms_scene_ctx *c, json_t *obj, const char *key, int n
     ms_scene_push_key(c, key);
     ms_status st = MS_OK;
     if (!json_is_array(v) || json_array_size(v) != (size_t)n) {
-        st = ms_scene_fail(c, MS_ERR_PARSE,
-                           "is %s%s; allowed: an array of %d integers in [%ld, %ld]", type_name(v),
-                           json_is_array(v) ? " of another length" : "", n, lo, hi);
+        st = ms_scene_fail(c, MS_ERR_PARSE, "is %s%s; allowed: an array of %d, each %s",
+                           type_name(v), json_is_array(v) ? " of another length" : "", n, allowed);
     }
     for (int i = 0; st == MS_OK && i < n; ++i) {
         json_t *e = json_array_get(v, (size_t)i);
         ms_scene_push_index(c, i);
         if (!json_is_integer(e))
-            st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: an integer in [%ld, %ld]",
-                               type_name(e), lo, hi);
+            st = ms_scene_fail(c, MS_ERR_PARSE, "is %s; allowed: %s", type_name(e), allowed);
         else if (json_integer_value(e) < lo || json_integer_value(e) > hi)
-            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                               "%lld is out of range; allowed: an integer in [%ld, %ld]",
-                               (long long)json_integer_value(e), lo, hi);
+            st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT, "%lld is out of range; allowed: %s",
+                               (long long)json_integer_value(e), allowed);
         else
             out[i] = (int)json_integer_value(e);
         ms_scene_pop(c);

@@ -12,6 +12,9 @@
 #include <jansson.h>
 
 #include "core/core_internal.h"
+#include "sim/sim_sizes.h"
+#include "surface/surface_sizes.h"
+#include "volume/volume_sizes.h"
 #include "scene/override.h"
 #include "scene/sections.h"
 
@@ -47,9 +50,9 @@ void ms_scene_destroy(ms_scene *sc)
     ms_free(sc->floater_xy);
     if (sc->has_container)
         free_shape(&sc->container);
-    ms_free(sc->render.shader);
-    ms_free(sc->render.shader_params);
-    ms_free(sc->render.cubemap);
+    ms_free(sc->render_shader);
+    ms_free(sc->render_cubemap);
+    ms_free(sc->render_shader_params);
     ms_free(sc);
 }
 
@@ -267,4 +270,36 @@ int ms_scene_output_deflate(const ms_scene *sc)
 int ms_scene_has_render(const ms_scene *sc)
 {
     return sc ? sc->has_render : 0;
+}
+
+/* A desc of the scene written up to the caller's .size. */
+static ms_status desc_out(const ms_scene *sc, int has, const char *section, void *user,
+                          const void *full, ms_struct_sizes k)
+{
+    MS_TRY(ms_check_not_null("scene", "scene", sc));
+    MS_TRY(ms_check_not_null("scene", "out", user));
+    if (!has)
+        return ms_fail(MS_ERR_STATE, "scene: \"%s\" has no \"%s\" section", sc->name, section);
+    size_t size = ms_struct_out(user, k, "scene");
+    if (!size)
+        return MS_ERR_INVALID_ARGUMENT;
+    ms_struct_write(user, full, size);
+    return MS_OK;
+}
+
+ms_status ms_scene_volume_desc(const ms_scene *sc, ms_volume_desc *out)
+{
+    return desc_out(sc, sc && sc->has_volume, "volume", out, sc ? &sc->volume : NULL,
+                    MS_SIZES_VOLUME_DESC);
+}
+
+ms_status ms_scene_surface_desc(const ms_scene *sc, ms_surface_desc *out)
+{
+    return desc_out(sc, sc && sc->has_surface, "surface", out, sc ? &sc->surface : NULL,
+                    MS_SIZES_SURFACE_DESC);
+}
+
+ms_status ms_scene_sim_desc(const ms_scene *sc, ms_sim_desc *out)
+{
+    return desc_out(sc, 1, "sim", out, sc ? &sc->sim : NULL, MS_SIZES_SIM_DESC);
 }

@@ -1,7 +1,8 @@
 /* The parsed scene, as the sim (lib/sim) and the renderer (lib/render)
- * read it. Internal: never installed. Every value here has been checked
- * (type, finite, range) by the parser, with the defaults of
- * data/scenes/README.md filled in for absent keys. A section that is absent
+ * read it. Internal: never installed. Every value here has been checked:
+ * its type by the parser, its range by the part whose desc holds it (the
+ * scene's own keys by the parser), with the defaults of the descs (and
+ * data/scenes/README.md) filled in for absent keys. A section that is absent
  * has its has_* flag 0 and costs nothing.
  */
 #ifndef MS_SCENE_INTERNAL_H
@@ -10,7 +11,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "modesplit/render.h"
 #include "modesplit/scene.h"
+#include "modesplit/sim.h"
 #include "modesplit/surface.h"
 #include "modesplit/volume.h"
 
@@ -55,23 +58,6 @@ typedef struct ms_scene_drop {
     float amplitude; /* m */
 } ms_scene_drop;
 
-typedef struct ms_scene_render {
-    int width, height;   /* pixels */
-    char *shader;        /* shader plugin name */
-    char *shader_params; /* its parameters as compact JSON object text; NULL = defaults */
-    char *cubemap;       /* "builtin" or a path resolved against the scene's directory */
-    int has_caustics;
-    int caustics_resolution;        /* light map texels per side */
-    float caustics_intensity;       /* 1 = physical */
-    float light_dir[3];             /* unit vector, towards where the light goes */
-    float eye[3], target[3], up[3]; /* m, camera */
-    float fov;                      /* degrees, vertical */
-    int backend;                    /* index in ms_scene_render_backends: the GL context */
-} ms_scene_render;
-
-/* render.backend's names: "auto", "osmesa", "egl" (NULL-terminated). */
-extern const char *const ms_scene_render_backends[];
-
 struct ms_scene {
     char *text; /* the JSON text, NUL-terminated */
     size_t text_len;
@@ -81,52 +67,25 @@ struct ms_scene {
     double duration; /* s */
     float frame_dt;  /* s */
     uint64_t seed;
-    int threads;                        /* 1 or 2 */
     float domain_min[3], domain_max[3]; /* m */
 
+    /* The parts' descs, each started from its *_desc_default() and set by
+     * the keys of its section; each part's desc check owns the defaults'
+     * ranges (sections.c names a refusal at the key). */
     /* volume: SPH (absent: no particles, no SPH work) */
     int has_volume;
-    struct {
-        float spacing;          /* m */
-        float smoothing_length; /* m */
-        float rest_density;     /* kg/m^3 */
-        float gas_constant;     /* m^2/s^2 */
-        float viscosity;        /* Pa s */
-        float gravity[3];       /* m/s^2 */
-        ms_pressure pressure;
-        int max_particles; /* 0 = what the fill boxes need */
-        /* NAN / 0: the solver's default */
-        float sound_speed; /* m/s, Tait's c0 */
-        float courant;     /* CFL number */
-        int max_substeps;
-        int threads;         /* threads inside the SPH step */
-        int smooth_steps;    /* eq. 18 smoothing passes (-1 = default) */
-        float smooth_energy; /* J/kg, eq. 18 threshold */
-        /* MS_PRESSURE_DFSPH's stop rule and caps (NAN / -1: the solver's) */
-        float max_density_error;    /* average predicted compression */
-        float max_divergence_error; /* average dt (D rho/Dt) / rho0 */
-        int max_density_iterations;
-        int max_divergence_iterations;
-    } volume;
+    ms_volume_desc volume;
     int nfill;
     float fill_lo[MS_SCENE_MAX_FILLS][3], fill_hi[MS_SCENE_MAX_FILLS][3]; /* m */
-    int field_nx, field_ny; /* X_SPH x Y_SPH (eq. 20); 0 = derived */
 
     /* surface: wave equation (absent: the SPH field alone is the surface) */
     int has_surface;
-    struct {
-        int nx, ny;       /* X_WE x Y_WE */
-        float dx;         /* m, square cells over the domain's x-y extent */
-        float wave_speed; /* m/s */
-        float damping;    /* (0, 1], velocity kept per second */
-        ms_boundary boundary;
-        int max_substeps;
-    } surface;
+    ms_surface_desc surface;
     float level; /* m above domain_min z: still water when there is no volume */
 
-    /* coupling (3.4, 3.5) */
-    int n_time; /* eq. 19; 0 = derived from the CFL bound */
-    float couple_surface_from_volume, couple_volume_from_surface;
+    /* the coupler (threads; coupling 3.4, 3.5; volume.field): volume and
+     * surface point at the descs above, NULL when the section is absent */
+    ms_sim_desc sim;
 
     int nobstacles;
     ms_scene_shape *obstacles;
@@ -152,8 +111,13 @@ struct ms_scene {
     int has_container;
     ms_scene_shape container;
 
+    /* the renderer's desc (render section over ms_renderer_desc_default(),
+     * the pool from the domain and the level); always made, so a scene
+     * without a render section still gives a camera and a pool */
     int has_render;
-    ms_scene_render render;
+    ms_renderer_desc render;
+    char *render_shader, *render_cubemap; /* owned: render.shader, .cubemap point here */
+    char *render_shader_params;           /* owned: render.shader_params points here */
 
     unsigned output_fields; /* MS_FIELD_* */
     int output_every;

@@ -1,6 +1,7 @@
 /* The "render" section of the scene schema: image size, shader, cubemap,
  * caustics, camera and GL backend (the table of data/scenes/README.md;
- * keep both in step). */
+ * keep both in step), read into the scene's ms_renderer_desc over
+ * ms_renderer_desc_default(), whose defaults it takes. */
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,6 +10,7 @@
 
 #include "core/core_internal.h"
 #include "modesplit/plugin.h"
+#include "modesplit/render.h"
 #include "plugin/plugin_internal.h"
 #include "scene/reader.h"
 #include "scene/scene_internal.h"
@@ -77,19 +79,60 @@ static ms_status check_shader(ms_scene_ctx *c, const char *name)
     return st;
 }
 
-const char *const ms_scene_render_backends[] = {"auto", "osmesa", "egl", NULL};
+/* The renderer's desc of the scene, over ms_renderer_desc_default(): the
+ * pool is the domain (floor at domain.min z, the still water at the
+ * scene's level, the rim a little above it), and without a render section
+ * the camera looks at the domain's centre from the -y side, no caustics. */
+static void pool_and_camera(ms_scene *sc)
+{
+    ms_renderer_desc *d = &sc->render;
+    const float *lo = sc->domain_min, *hi = sc->domain_max;
+    float ext_xy = MS_MIN(hi[0] - lo[0], hi[1] - lo[1]);
+    d->pool_min[0] = lo[0];
+    d->pool_min[1] = lo[1];
+    d->pool_min[2] = lo[2];
+    d->pool_max[0] = hi[0];
+    d->pool_max[1] = hi[1];
+    d->water_level = lo[2] + sc->level;
+    /* the rim a little above still water (so the walls hide little of
+     * it), within the domain */
+    d->pool_max[2] = MS_MIN(hi[2], d->water_level + 0.05f * ext_xy);
+    if (!(d->pool_max[2] > lo[2]))
+        d->pool_max[2] = hi[2];
+    /* A fill that rises above that rim (a dam break, Fig. 4c) is liquid
+     * that runs up the walls: the walls then go up to the domain's top,
+     * the highest the particles can reach, so the liquid stays inside the
+     * pool and is not drawn over the deck. */
+    for (int i = 0; i < sc->nfill; ++i)
+        if (sc->has_volume && sc->fill_hi[i][2] > d->pool_max[2])
+            d->pool_max[2] = hi[2];
+    if (sc->has_render)
+        return;
+    float ext = 0;
+    for (int k = 0; k < 3; ++k) {
+        d->target[k] = 0.5f * (lo[k] + hi[k]);
+        ext = MS_MAX(ext, hi[k] - lo[k]);
+    }
+    d->eye[0] = d->target[0];
+    d->eye[1] = d->target[1] - 1.2f * ext;
+    d->eye[2] = d->target[2] + 1.0f * ext;
+    d->caustics = 0;
+}
 
-ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir)
+static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir)
 {
     static const char *const keys[] = {"width",         "height",  "shader",
                                        "shader_params", "cubemap", "caustics",
                                        "camera",        "backend", NULL};
     static const char *const ckeys[] = {"resolution", "intensity", "light", NULL};
     static const char *const camkeys[] = {"eye", "target", "up", "fov", NULL};
-    static const float light[3] = {0.3f, 0.2f, -1.0f}, up[3] = {0, 0, 1};
-    ms_scene_render *r = &sc->render;
+    static const char *const backends[] = {"auto", "osmesa", "egl", NULL};
+    ms_renderer_desc *r = &sc->render;
+    const float light[3] = {r->light_dir[0], r->light_dir[1], r->light_dir[2]};
+    const float up[3] = {r->up[0], r->up[1], r->up[2]};
     json_t *o, *caus, *cam;
     long w, h;
+    int backend;
     const char *shader, *cubemap;
     MS_TRY(ms_scene_get_object(c, root, "render", &o));
     if (!o)
@@ -97,47 +140,50 @@ ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, cons
     sc->has_render = 1;
     ms_scene_push_key(c, "render");
     MS_TRY(ms_scene_check_keys(c, o, keys));
-    MS_TRY(ms_scene_get_int(c, o, "width", 950, 16, 8192, &w));
-    MS_TRY(ms_scene_get_int(c, o, "height", 950, 16, 8192, &h));
+    MS_TRY(ms_scene_get_int(c, o, "width", r->width, 16, MS_RENDER_MAX_SIDE, &w));
+    MS_TRY(ms_scene_get_int(c, o, "height", r->height, 16, MS_RENDER_MAX_SIDE, &h));
     r->width = (int)w;
     r->height = (int)h;
-    MS_TRY(ms_scene_get_string(c, o, "shader", "water", &shader));
+    MS_TRY(ms_scene_get_string(c, o, "shader", r->shader, &shader));
     MS_TRY(check_shader(c, shader));
-    MS_TRY(ms_scene_get_string(c, o, "cubemap", "builtin", &cubemap));
-    MS_TRY(ms_scene_get_enum(c, o, "backend", ms_scene_render_backends, 0, &r->backend));
-    r->shader = ms_strdup(shader);
-    MS_TRY(read_shader_params(c, o, shader, &r->shader_params));
+    MS_TRY(ms_scene_get_string(c, o, "cubemap", r->cubemap, &cubemap));
+    MS_TRY(ms_scene_get_enum(c, o, "backend", backends, 0, &backend));
+    r->backend = backends[backend];
+    sc->render_shader = ms_strdup(shader);
+    MS_TRY(read_shader_params(c, o, shader, &sc->render_shader_params));
+    r->shader_params = sc->render_shader_params;
     if (strcmp(cubemap, "builtin") == 0) {
-        r->cubemap = ms_strdup(cubemap);
+        sc->render_cubemap = ms_strdup(cubemap);
     } else {
         size_t n = strlen(dir) + strlen(cubemap) + 2;
-        r->cubemap = ms_alloc(n);
-        if (r->cubemap)
-            snprintf(r->cubemap, n, "%s%s", cubemap[0] == '/' ? "" : dir, cubemap);
+        sc->render_cubemap = ms_alloc(n);
+        if (sc->render_cubemap)
+            snprintf(sc->render_cubemap, n, "%s%s", cubemap[0] == '/' ? "" : dir, cubemap);
         struct stat stbuf;
-        if (r->cubemap && (!cubemap[0] || stat(r->cubemap, &stbuf) != 0)) {
+        if (sc->render_cubemap && (!cubemap[0] || stat(sc->render_cubemap, &stbuf) != 0)) {
             int err = errno;
             ms_scene_push_key(c, "cubemap");
             return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
                                  "\"%.200s\" cannot be opened (%s); allowed: \"builtin\" or an "
                                  "existing file or directory (relative to the scene file)",
-                                 r->cubemap, cubemap[0] ? strerror(err) : "empty name");
+                                 sc->render_cubemap, cubemap[0] ? strerror(err) : "empty name");
         }
     }
-    if (!r->shader || !r->cubemap)
+    if (!sc->render_shader || !sc->render_cubemap)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for the render section");
+    r->shader = sc->render_shader;
+    r->cubemap = sc->render_cubemap;
     MS_TRY(ms_scene_get_object(c, o, "caustics", &caus));
-    r->has_caustics = caus != NULL;
-    memcpy(r->light_dir, light, sizeof light);
-    r->caustics_resolution = 512;
-    r->caustics_intensity = 1;
+    r->caustics = caus != NULL;
     if (caus) {
         long res;
         ms_scene_push_key(c, "caustics");
         MS_TRY(ms_scene_check_keys(c, caus, ckeys));
-        MS_TRY(ms_scene_get_int(c, caus, "resolution", 512, 16, 4096, &res));
+        MS_TRY(ms_scene_get_int(c, caus, "resolution", r->caustics_resolution, 16,
+                                MS_RENDER_MAX_CAUSTICS, &res));
         r->caustics_resolution = (int)res;
-        MS_TRY(ms_scene_get_float(c, caus, "intensity", 1, 0, 100, 0, "", &r->caustics_intensity));
+        MS_TRY(ms_scene_get_float(c, caus, "intensity", r->caustics_intensity, 0, 100, 0, "",
+                                  &r->caustics_intensity));
         MS_TRY(ms_scene_get_vec(c, caus, "light", 3, light, -1e3, 1e3, "", r->light_dir));
         ms_scene_pop(c);
     }
@@ -161,8 +207,6 @@ ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, cons
     float eye[3] = {ctr[0], ctr[1] - 1.2f * ext, ctr[2] + 1.0f * ext};
     memcpy(r->eye, eye, sizeof eye);
     memcpy(r->target, ctr, sizeof ctr);
-    memcpy(r->up, up, sizeof up);
-    r->fov = 45;
     MS_TRY(ms_scene_get_object(c, o, "camera", &cam));
     if (cam) {
         ms_scene_push_key(c, "camera");
@@ -170,7 +214,7 @@ ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, cons
         MS_TRY(ms_scene_get_vec(c, cam, "eye", 3, eye, -BIG, BIG, "m", r->eye));
         MS_TRY(ms_scene_get_vec(c, cam, "target", 3, ctr, -BIG, BIG, "m", r->target));
         MS_TRY(ms_scene_get_vec(c, cam, "up", 3, up, -1e3, 1e3, "", r->up));
-        MS_TRY(ms_scene_get_float(c, cam, "fov", 45, 1, 179, 0, "degrees", &r->fov));
+        MS_TRY(ms_scene_get_float(c, cam, "fov", r->fov, 1, 179, 0, "degrees", &r->fov));
         double d = 0;
         for (int k = 0; k < 3; ++k)
             d += (double)(r->eye[k] - r->target[k]) * (r->eye[k] - r->target[k]);
@@ -182,5 +226,13 @@ ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, cons
         ms_scene_pop(c);
     }
     ms_scene_pop(c);
+    return MS_OK;
+}
+
+ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir)
+{
+    sc->render = ms_renderer_desc_default();
+    MS_TRY(read_render(c, root, sc, dir));
+    pool_and_camera(sc);
     return MS_OK;
 }

@@ -6,6 +6,8 @@
  * A section that is absent leaves its has_* flag 0: the effect is not
  * simulated and costs nothing.
  */
+#include <float.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +15,7 @@
 #include "core/core_internal.h"
 #include "modesplit/plugin.h"
 #include "modesplit/shape.h"
+#include "modesplit/sim.h"
 #include "plugin/plugin_internal.h"
 #include "scene/reader.h"
 #include "scene/scene_internal.h"
@@ -20,7 +23,7 @@
 
 #define BIG MS_SCENE_BIG
 #define MAX_SPEED MS_SCENE_MAX_SPEED
-#define MAX_PARTICLES 10000000L
+#define MAX_PARTICLES MS_VOLUME_MAX_PARTICLES
 
 /* {"points": [[x, y(, z)], ...], "speed", "loop", "start"} */
 ms_status ms_scene_read_path(ms_scene_ctx *c, json_t *obj, const char *key, int dim,
@@ -253,128 +256,205 @@ static ms_status read_fill(ms_scene_ctx *c, json_t *o, ms_scene *sc, double *cou
     return MS_OK;
 }
 
-/* DFSPH's stop rule and iteration caps, in the desc's ranges
- * (volume/desc.c). Under the weakly compressible laws they would do
- * nothing, so a scene that sets one there is refused rather than run as if
- * it had been heard. */
-static ms_status read_dfsph_limits(ms_scene_ctx *c, json_t *o, ms_scene *sc)
+/* A part's refusal of the desc the scene filled (the sentence in
+ * ms_last_error, the desc field in ms_last_error_key), named at the scene
+ * key that set the field: section.key (key NULL: the section itself;
+ * section NULL: a top-level key). The range is the part's: the scene
+ * checks only that a value has the field's type. */
+static ms_status refused_at(ms_scene_ctx *c, ms_status st, const char *section, const char *key)
 {
-    static const char *const limits[] = {"max_density_error", "max_divergence_error",
-                                         "max_density_iterations", "max_divergence_iterations"};
-    long dens_it, div_it;
-    MS_TRY(ms_scene_get_float(c, o, "max_density_error", NAN, 0, 0.1, 1, "",
-                              &sc->volume.max_density_error));
-    MS_TRY(ms_scene_get_float(c, o, "max_divergence_error", NAN, 0, 0.1, 1, "",
-                              &sc->volume.max_divergence_error));
-    MS_TRY(ms_scene_get_int(c, o, "max_density_iterations", -1, 1, 10000, &dens_it));
-    MS_TRY(ms_scene_get_int(c, o, "max_divergence_iterations", -1, 0, 10000, &div_it));
-    sc->volume.max_density_iterations = (int)dens_it;
-    sc->volume.max_divergence_iterations = (int)div_it;
-    if (sc->volume.pressure == MS_PRESSURE_DFSPH)
+    char why[640];
+    snprintf(why, sizeof why, "%s", ms_last_error());
+    int depth = c->depth;
+    c->depth = 0;
+    if (section)
+        ms_scene_push_key(c, section);
+    if (key)
+        ms_scene_push_key(c, key);
+    st = ms_scene_fail(c, st, "is refused: %s", why);
+    c->depth = depth;
+    return st;
+}
+
+/* The volume desc's fields that a scene key of the same name sets. */
+static const char *const volume_keys[] = {"spacing",
+                                          "smoothing_length",
+                                          "rest_density",
+                                          "gas_constant",
+                                          "viscosity",
+                                          "gravity",
+                                          "pressure",
+                                          "max_particles",
+                                          "sound_speed",
+                                          "courant",
+                                          "max_substeps",
+                                          "threads",
+                                          "smooth_steps",
+                                          "smooth_energy",
+                                          "max_density_error",
+                                          "max_divergence_error",
+                                          "max_density_iterations",
+                                          "max_divergence_iterations",
+                                          NULL};
+/* The DFSPH stop rule and caps among them (the tail of volume_keys). */
+static const char *const *const dfsph_keys = volume_keys + 14;
+
+/* ms_volume_desc_check of the scene's volume desc; a refusal named at the
+ * key that set the field. h follows the spacing when the file does not
+ * set it, so a refused default h is named at volume.spacing. */
+static ms_status check_volume(ms_scene_ctx *c, json_t *o, const ms_volume_desc *v)
+{
+    ms_status st = ms_volume_desc_check(v);
+    if (st == MS_OK)
         return MS_OK;
-    for (size_t k = 0; k < sizeof limits / sizeof limits[0]; ++k)
-        if (json_object_get(o, limits[k])) {
-            ms_scene_push_key(c, limits[k]);
-            ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                         "is a limit of the \"dfsph\" pressure solver; "
-                                         "allowed only with volume.pressure \"dfsph\"");
-            ms_scene_pop(c);
-            return st;
-        }
+    const char *field = ms_last_error_key();
+    if (strcmp(field, "domain_min") == 0 || strcmp(field, "domain_max") == 0)
+        return refused_at(c, st, "domain", field + 7);
+    if (strcmp(field, "smoothing_length") == 0 && !json_object_get(o, field))
+        return refused_at(c, st, "volume", "spacing");
+    for (const char *const *k = volume_keys; *k; ++k)
+        if (strcmp(*k, field) == 0)
+            return refused_at(c, st, "volume", *k);
+    return refused_at(c, st, "volume", NULL);
+}
+
+/* A float key of a desc: any finite float (the part checks the range). */
+static ms_status get_field(ms_scene_ctx *c, json_t *o, const char *key, const char *unit,
+                           float *inout)
+{
+    return ms_scene_get_float(c, o, key, *inout, -FLT_MAX, FLT_MAX, 0, unit, inout);
+}
+
+static ms_status get_int_field(ms_scene_ctx *c, json_t *o, const char *key, int *inout)
+{
+    long v;
+    MS_TRY(ms_scene_get_int(c, o, key, *inout, INT_MIN, INT_MAX, &v));
+    *inout = (int)v;
     return MS_OK;
 }
 
+/* The volume section over ms_volume_desc_default(): each key sets the
+ * desc field of its name. Scene rules on top of the desc: h is the
+ * default's ratio h / spacing times the spacing unless set; max_particles
+ * 0 (or absent) is room for what volume.fill makes; the DFSPH limits are
+ * refused under the other laws (they would do nothing there). */
 static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
-    static const char *const keys[] = {"spacing",
-                                       "smoothing_length",
-                                       "rest_density",
-                                       "gas_constant",
-                                       "viscosity",
-                                       "gravity",
-                                       "pressure",
-                                       "max_particles",
-                                       "fill",
-                                       "field",
-                                       "sound_speed",
-                                       "courant",
-                                       "max_substeps",
-                                       "threads",
-                                       "smooth_steps",
-                                       "smooth_energy",
-                                       "max_density_error",
-                                       "max_divergence_error",
-                                       "max_density_iterations",
-                                       "max_divergence_iterations",
-                                       NULL};
+    static const char *const more[] = {"fill", "field", NULL};
     static const char *const pressures[] = {"ideal_gas", "tait", "dfsph", NULL};
-    static const float g[3] = {0, 0, -9.81f};
+    const char *keys[sizeof volume_keys / sizeof volume_keys[0] + 2];
+    size_t nk = 0;
+    for (const char *const *k = volume_keys; *k; ++k)
+        keys[nk++] = *k;
+    keys[nk++] = more[0];
+    keys[nk++] = more[1];
+    keys[nk] = NULL;
+    ms_volume_desc *v = &sc->volume;
+    *v = ms_volume_desc_default();
+    const float ratio = v->smoothing_length / v->spacing; /* the default h / spacing */
     json_t *o;
-    long maxp;
     int pressure, field[2] = {0, 0};
     MS_TRY(ms_scene_get_object(c, root, "volume", &o));
     if (!o)
         return MS_OK;
     sc->has_volume = 1;
-    float ext = MS_MIN(
-        sc->domain_max[0] - sc->domain_min[0],
-        MS_MIN(sc->domain_max[1] - sc->domain_min[1], sc->domain_max[2] - sc->domain_min[2]));
+    memcpy(v->domain_min, sc->domain_min, sizeof v->domain_min);
+    memcpy(v->domain_max, sc->domain_max, sizeof v->domain_max);
     ms_scene_push_key(c, "volume");
     MS_TRY(ms_scene_check_keys(c, o, keys));
-    MS_TRY(ms_scene_get_float(c, o, "spacing", 0.04, 0, ext, 1, "m", &sc->volume.spacing));
-    /* NAN: the volume solver's default ratio h / spacing (see sim/create.c) */
-    MS_TRY(ms_scene_get_float(c, o, "smoothing_length", NAN, sc->volume.spacing,
-                              4 * sc->volume.spacing, 0, "m", &sc->volume.smoothing_length));
-    MS_TRY(ms_scene_get_float(c, o, "rest_density", 1000, 0, 1e5, 1, "kg/m^3",
-                              &sc->volume.rest_density));
-    MS_TRY(ms_scene_get_float(c, o, "gas_constant", NAN, 0, 1e7, 1, "m^2/s^2",
-                              &sc->volume.gas_constant));
-    MS_TRY(ms_scene_get_float(c, o, "viscosity", NAN, 0, 1e4, 0, "Pa s", &sc->volume.viscosity));
-    MS_TRY(ms_scene_get_vec(c, o, "gravity", 3, g, -1e3, 1e3, "m/s^2", sc->volume.gravity));
-    MS_TRY(ms_scene_get_enum(c, o, "pressure", pressures, 0, &pressure));
-    sc->volume.pressure = (ms_pressure)pressure;
-    MS_TRY(ms_scene_get_int(c, o, "max_particles", 0, 0, MAX_PARTICLES, &maxp));
-    sc->volume.max_particles = (int)maxp;
-    /* NAN / 0 / -1: the volume solver's default (see sim/create.c) */
-    long maxsub, vthreads, smooth;
-    MS_TRY(ms_scene_get_float(c, o, "sound_speed", NAN, 0, 1e4, 1, "m/s", &sc->volume.sound_speed));
-    MS_TRY(ms_scene_get_float(c, o, "courant", NAN, 0, 0.5, 1, "", &sc->volume.courant));
-    MS_TRY(ms_scene_get_int(c, o, "max_substeps", 0, 1, 10000000, &maxsub));
-    MS_TRY(ms_scene_get_int(c, o, "threads", 0, 1, 64, &vthreads));
-    MS_TRY(ms_scene_get_int(c, o, "smooth_steps", -1, 0, 64, &smooth));
-    MS_TRY(ms_scene_get_float(c, o, "smooth_energy", NAN, 0, 1e6, 1, "J/kg",
-                              &sc->volume.smooth_energy));
-    sc->volume.max_substeps = (int)maxsub;
-    sc->volume.threads = (int)vthreads;
-    sc->volume.smooth_steps = (int)smooth;
-    MS_TRY(read_dfsph_limits(c, o, sc));
-    MS_TRY(ms_scene_get_ivec(c, o, "field", 2, field, 2, 4096, field));
-    sc->field_nx = field[0];
-    sc->field_ny = field[1];
+    MS_TRY(get_field(c, o, "spacing", "m", &v->spacing));
+    v->smoothing_length = ratio * v->spacing;
+    MS_TRY(get_field(c, o, "smoothing_length", "m", &v->smoothing_length));
+    MS_TRY(get_field(c, o, "rest_density", "kg/m^3", &v->rest_density));
+    MS_TRY(get_field(c, o, "gas_constant", "m^2/s^2", &v->gas_constant));
+    MS_TRY(get_field(c, o, "viscosity", "Pa s", &v->viscosity));
+    MS_TRY(
+        ms_scene_get_vec(c, o, "gravity", 3, v->gravity, -FLT_MAX, FLT_MAX, "m/s^2", v->gravity));
+    MS_TRY(ms_scene_get_enum(c, o, "pressure", pressures, (int)v->pressure, &pressure));
+    v->pressure = (ms_pressure)pressure;
+    int maxp = 0;
+    MS_TRY(get_int_field(c, o, "max_particles", &maxp));
+    if (maxp != 0)
+        v->max_particles = maxp;
+    MS_TRY(get_field(c, o, "sound_speed", "m/s", &v->sound_speed));
+    MS_TRY(get_field(c, o, "courant", "", &v->courant));
+    MS_TRY(get_int_field(c, o, "max_substeps", &v->max_substeps));
+    MS_TRY(get_int_field(c, o, "threads", &v->threads));
+    MS_TRY(get_int_field(c, o, "smooth_steps", &v->smooth_steps));
+    MS_TRY(get_field(c, o, "smooth_energy", "J/kg", &v->smooth_energy));
+    MS_TRY(get_field(c, o, "max_density_error", "", &v->max_density_error));
+    MS_TRY(get_field(c, o, "max_divergence_error", "", &v->max_divergence_error));
+    MS_TRY(get_int_field(c, o, "max_density_iterations", &v->max_density_iterations));
+    MS_TRY(get_int_field(c, o, "max_divergence_iterations", &v->max_divergence_iterations));
+    for (const char *const *k = dfsph_keys; v->pressure != MS_PRESSURE_DFSPH && *k; ++k)
+        if (json_object_get(o, *k)) {
+            ms_scene_push_key(c, *k);
+            return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                                 "is a limit of the \"dfsph\" pressure solver; allowed only with "
+                                 "volume.pressure \"dfsph\"");
+        }
+    MS_TRY(ms_scene_get_ivec(c, o, "field", 2, field, INT_MIN, INT_MAX, field));
+    sc->sim.field_nx = field[0];
+    sc->sim.field_ny = field[1];
+    MS_TRY(check_volume(c, o, v));
     double count = 0;
     MS_TRY(read_fill(c, o, sc, &count));
-    if (sc->volume.max_particles != 0 && count > sc->volume.max_particles) {
+    if (maxp != 0 && count > maxp) {
         ms_scene_push_key(c, "max_particles");
         ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
                                      "%d is below the %.0f particles volume.fill makes; allowed: "
                                      "0 (as many as the fill makes) or at least %.0f",
-                                     sc->volume.max_particles, count, count);
+                                     maxp, count, count);
         ms_scene_pop(c);
         return st;
+    }
+    if (maxp == 0) {
+        /* room for what the fill makes, counted generously (one more per
+         * axis) */
+        long particles = 0;
+        for (int i = 0; i < sc->nfill; ++i) {
+            long n = 1;
+            for (int k = 0; k < 3; ++k)
+                n *= (long)floor((double)(sc->fill_hi[i][k] - sc->fill_lo[i][k]) / v->spacing +
+                                 1e-6) +
+                     1;
+            particles += n;
+        }
+        v->max_particles = (int)MS_MIN(MS_MAX(particles, 64), MS_VOLUME_MAX_PARTICLES);
     }
     ms_scene_pop(c);
     return MS_OK;
 }
 
+/* ms_surface_desc_check of the scene's surface desc, named at the key that
+ * set the refused field: nx, ny at surface.cells, dx (the domain's x
+ * extent over cells[0]) at domain.max. */
+static ms_status check_surface(ms_scene_ctx *c, const ms_surface_desc *s)
+{
+    ms_status st = ms_surface_desc_check(s);
+    if (st == MS_OK)
+        return MS_OK;
+    const char *field = ms_last_error_key();
+    if (strcmp(field, "nx") == 0 || strcmp(field, "ny") == 0)
+        return refused_at(c, st, "surface", "cells");
+    if (strcmp(field, "dx") == 0)
+        return refused_at(c, st, "domain", "max");
+    if (strcmp(field, "seed") == 0)
+        return refused_at(c, st, NULL, "seed");
+    return refused_at(c, st, "surface", field[0] ? field : NULL);
+}
+
+/* The surface section over ms_surface_desc_default(); dx is the domain's
+ * x extent over cells[0] (square cells), the seed the scene's. */
 static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
     static const char *const keys[] = {"cells",        "wave_speed", "damping", "boundary",
                                        "max_substeps", "level",      NULL};
     static const char *const boundaries[] = {"reflect", "absorb", "periodic", NULL};
-    static const int cells_def[2] = {256, 256};
+    ms_surface_desc *s = &sc->surface;
+    *s = ms_surface_desc_default();
     json_t *o;
-    int cells[2], boundary;
-    long maxsub;
+    int cells[2] = {s->nx, s->ny}, boundary;
     float height = sc->domain_max[2] - sc->domain_min[2];
     /* still water: the height of the fill spread over the domain, or half the
      * domain's height without a volume */
@@ -394,19 +474,20 @@ static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     sc->has_surface = 1;
     ms_scene_push_key(c, "surface");
     MS_TRY(ms_scene_check_keys(c, o, keys));
-    MS_TRY(ms_scene_get_ivec(c, o, "cells", 2, cells_def, 2, 16384, cells));
-    MS_TRY(ms_scene_get_float(c, o, "wave_speed", 0.5, 0, MAX_SPEED, 1, "m/s",
-                              &sc->surface.wave_speed));
-    MS_TRY(ms_scene_get_float(c, o, "damping", 0.9, 0, 1, 1, "", &sc->surface.damping));
-    MS_TRY(ms_scene_get_enum(c, o, "boundary", boundaries, 0, &boundary));
-    MS_TRY(ms_scene_get_int(c, o, "max_substeps", 100000, 1, 10000000, &maxsub));
+    MS_TRY(ms_scene_get_ivec(c, o, "cells", 2, cells, INT_MIN, INT_MAX, cells));
+    MS_TRY(get_field(c, o, "wave_speed", "m/s", &s->wave_speed));
+    MS_TRY(get_field(c, o, "damping", "", &s->damping));
+    MS_TRY(ms_scene_get_enum(c, o, "boundary", boundaries, (int)s->boundary, &boundary));
+    MS_TRY(get_int_field(c, o, "max_substeps", &s->max_substeps));
     MS_TRY(ms_scene_get_float(c, o, "level", level, 0, height, 0, "m", &sc->level));
-    sc->surface.nx = cells[0];
-    sc->surface.ny = cells[1];
-    sc->surface.boundary = (ms_boundary)boundary;
-    sc->surface.max_substeps = (int)maxsub;
+    s->nx = cells[0];
+    s->ny = cells[1];
+    s->boundary = (ms_boundary)boundary;
+    s->seed = sc->seed;
     double dx = (double)(sc->domain_max[0] - sc->domain_min[0]) / cells[0];
     double dy = (double)(sc->domain_max[1] - sc->domain_min[1]) / cells[1];
+    s->dx = (float)dx;
+    MS_TRY(check_surface(c, s));
     if (fabs(dx - dy) > 1e-3 * dx) {
         ms_scene_push_key(c, "cells");
         ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
@@ -418,7 +499,6 @@ static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
         ms_scene_pop(c);
         return st;
     }
-    sc->surface.dx = (float)dx;
     ms_scene_pop(c);
     return MS_OK;
 }
@@ -428,20 +508,40 @@ static ms_status read_coupling(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     static const char *const keys[] = {"n_time", "surface_from_volume", "volume_from_surface",
                                        NULL};
     json_t *o;
-    long n_time;
     MS_TRY(ms_scene_get_object(c, root, "coupling", &o));
     if (!o)
         return MS_OK;
     ms_scene_push_key(c, "coupling");
     MS_TRY(ms_scene_check_keys(c, o, keys));
-    MS_TRY(ms_scene_get_int(c, o, "n_time", 0, 0, 100000, &n_time));
-    sc->n_time = (int)n_time;
-    MS_TRY(ms_scene_get_float(c, o, "surface_from_volume", 0, 0, 0.25f, 0, "",
-                              &sc->couple_surface_from_volume));
-    MS_TRY(ms_scene_get_float(c, o, "volume_from_surface", 0, 0, 1, 0, "",
-                              &sc->couple_volume_from_surface));
+    MS_TRY(get_int_field(c, o, "n_time", &sc->sim.surface_substeps));
+    MS_TRY(get_field(c, o, "surface_from_volume", "", &sc->sim.couple_surface_from_volume));
+    MS_TRY(get_field(c, o, "volume_from_surface", "", &sc->sim.couple_volume_from_surface));
     ms_scene_pop(c);
     return MS_OK;
+}
+
+/* ms_sim_desc_check of the scene's sim desc (its volume and surface point
+ * at the scene's), named at the key that set the refused field. */
+static ms_status check_sim(ms_scene_ctx *c, ms_scene *sc)
+{
+    static const char *const map[][3] = {
+        {"field_nx", "volume", "field"},
+        {"field_ny", "volume", "field"},
+        {"surface_substeps", "coupling", "n_time"},
+        {"couple_surface_from_volume", "coupling", "surface_from_volume"},
+        {"couple_volume_from_surface", "coupling", "volume_from_surface"},
+        {"threads", NULL, "threads"},
+    };
+    sc->sim.volume = sc->has_volume ? &sc->volume : NULL;
+    sc->sim.surface = sc->has_surface ? &sc->surface : NULL;
+    ms_status st = ms_sim_desc_check(&sc->sim);
+    if (st == MS_OK)
+        return MS_OK;
+    const char *field = ms_last_error_key();
+    for (size_t i = 0; i < sizeof map / sizeof map[0]; ++i)
+        if (strcmp(field, map[i][0]) == 0)
+            return refused_at(c, st, map[i][1], map[i][2]);
+    return refused_at(c, st, NULL, NULL);
 }
 
 static ms_status read_obstacles(ms_scene_ctx *c, json_t *root, ms_scene *sc)
@@ -479,7 +579,7 @@ ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, co
                                        /* --set overrides (override.c) */
                                        "overrides", NULL};
     const char *name;
-    long seed, threads;
+    long seed;
     if (!json_is_object(root))
         return ms_scene_fail(c, MS_ERR_PARSE,
                              "is not a JSON object; allowed: a scene {\"name\": ..., ...}");
@@ -497,8 +597,13 @@ ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, co
     MS_TRY(ms_scene_get_float(c, root, "frame_dt", 1.0 / 60, 0, 1, 1, "s", &sc->frame_dt));
     MS_TRY(ms_scene_get_int(c, root, "seed", 1, 0, 9007199254740992L, &seed));
     sc->seed = (uint64_t)seed;
-    MS_TRY(ms_scene_get_int(c, root, "threads", 2, 1, 2, &threads));
-    sc->threads = (int)threads;
+    /* the sim desc over ms_sim_desc_default(), but for threads: a scene
+     * is run by the tool, which splits the frame over two cores unless the
+     * scene says 1 (the desc's default 1 suits an engine that starts no
+     * threads of its own); 1 and 2 give the same bytes */
+    sc->sim = ms_sim_desc_default();
+    sc->sim.threads = 2;
+    MS_TRY(get_int_field(c, root, "threads", &sc->sim.threads));
     MS_TRY(read_domain(c, root, sc));
     MS_TRY(read_volume(c, root, sc));
     MS_TRY(read_surface(c, root, sc));
@@ -507,6 +612,7 @@ ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, co
                              "has neither a \"volume\" nor a \"surface\" section; allowed: a "
                              "scene with at least one of them");
     MS_TRY(read_coupling(c, root, sc));
+    MS_TRY(check_sim(c, sc));
     MS_TRY(read_obstacles(c, root, sc));
     MS_TRY(ms_scene_read_effects(c, root, sc));
     MS_TRY(ms_scene_read_render(c, root, sc, dir));

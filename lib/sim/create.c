@@ -6,7 +6,9 @@
 #include "modesplit/volume.h"
 #include "sim/sim_internal.h"
 #include "volume/volume_internal.h"
-#include "core/struct_sizes.h"
+#include "sim/sim_sizes.h"
+#include "surface/surface_sizes.h"
+#include "volume/volume_sizes.h"
 
 ms_sim_desc ms_sim_desc_default(void)
 {
@@ -36,7 +38,7 @@ static ms_status oom(const char *what)
     return ms_fail(MS_ERR_OUT_OF_MEMORY, "sim: out of memory for %s", what);
 }
 
-static ms_status check_desc(const ms_sim_desc *d)
+static ms_status check_own(const ms_sim_desc *d)
 {
     if (!d->volume && !d->surface)
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
@@ -44,12 +46,12 @@ static ms_status check_desc(const ms_sim_desc *d)
     MS_TRY(ms_check_int_range("sim", "field_nx", d->field_nx, 0, 4096));
     MS_TRY(ms_check_int_range("sim", "field_ny", d->field_ny, 0, 4096));
     if ((d->field_nx == 0) != (d->field_ny == 0))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "sim: field_nx %d and field_ny %d must both be 0 (derived) or both set",
-                       d->field_nx, d->field_ny);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "field_nx",
+                           "sim: field_nx %d and field_ny %d must both be 0 (derived) or both set",
+                           d->field_nx, d->field_ny);
     if (d->field_nx == 1 || d->field_ny == 1)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: field %d x %d must be at least 2 x 2",
-                       d->field_nx, d->field_ny);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "field_nx",
+                           "sim: field %d x %d must be at least 2 x 2", d->field_nx, d->field_ny);
     MS_TRY(ms_check_int_range("sim", "surface_substeps", d->surface_substeps, 0, 100000));
     /* [0, 1]: the waves are displaced by at most the SPH surface's own
      * change; a gain above 1 amplified it into waves of tens of metres in a
@@ -65,8 +67,8 @@ static ms_status check_desc(const ms_sim_desc *d)
                           ""));
     MS_TRY(ms_check_int_range("sim", "threads", d->threads, 1, 2));
     if ((d->enqueue_task == NULL) != (d->finish_task == NULL))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "sim: enqueue_task and finish_task must both be set or both be NULL");
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "enqueue_task",
+                           "sim: enqueue_task and finish_task must both be set or both be NULL");
     return MS_OK;
 }
 
@@ -90,6 +92,46 @@ static ms_status check_extent(const ms_sim_desc *d)
                            sx, sy, s->nx, s->ny, (double)s->dx, ex, ey);
     }
     return MS_OK;
+}
+
+/* Field cells per particle spacing (eq. 16-18): the derived field has 2;
+ * past 8 a cell is narrower than an eighth of the spacing, holds no
+ * particle of its own, and only adds extraction work (a 4096 x 4096 field
+ * over fig1's 20 spacings took 43 s of extraction a frame). */
+#define MAX_FIELD_PER_SPACING 8
+
+static ms_status check_field_resolution(const ms_sim_desc *d)
+{
+    const ms_volume_desc *v = d->volume;
+    const int n[2] = {d->field_nx, d->field_ny};
+    for (int a = 0; a < 2; ++a) {
+        double spacings = ((double)v->domain_max[a] - v->domain_min[a]) / v->spacing;
+        double most = MS_MAX(2.0, floor(MAX_FIELD_PER_SPACING * spacings + 1e-3));
+        if (n[a] > most)
+            return ms_fail_key(MS_ERR_INVALID_ARGUMENT, a ? "field_ny" : "field_nx",
+                               "sim: %s %d puts %.3g field cells on each particle spacing "
+                               "(%g m, %.4g spacings across the domain); allowed: at most %d a "
+                               "spacing (%s <= %.0f): finer cells hold no particle and cost "
+                               "extraction time for nothing",
+                               a ? "field_ny" : "field_nx", n[a], n[a] / spacings,
+                               (double)v->spacing, spacings, MAX_FIELD_PER_SPACING,
+                               a ? "field_ny" : "field_nx", most);
+    }
+    return MS_OK;
+}
+
+/* The sim's own fields, then each part's desc (a bad value named by its
+ * part), then the extent the parts must share. */
+static ms_status check_all(const ms_sim_desc *d)
+{
+    MS_TRY(check_own(d));
+    if (d->volume) {
+        MS_TRY(ms_volume_desc_check(d->volume));
+        MS_TRY(check_field_resolution(d));
+    }
+    if (d->surface)
+        MS_TRY(ms_surface_desc_check(d->surface));
+    return check_extent(d);
 }
 
 static ms_status alloc_buffers(ms_sim *sim, int floaters)
@@ -199,6 +241,13 @@ static ms_status read_descs(const ms_sim_desc *user, descs *out)
     return MS_OK;
 }
 
+ms_status ms_sim_desc_check(const ms_sim_desc *user)
+{
+    descs ds;
+    MS_TRY(read_descs(user, &ds));
+    return check_all(&ds.sim);
+}
+
 static ms_status create_common(const ms_sim_desc *user, const float *origin, float level,
                                const ms_scene *sc, ms_sim **out)
 {
@@ -207,7 +256,7 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
     descs ds;
     MS_TRY(read_descs(user, &ds));
     const ms_sim_desc *d = &ds.sim;
-    MS_TRY(check_desc(d));
+    MS_TRY(check_all(d));
     ms_sim *sim = ms_alloc(sizeof *sim);
     if (!sim)
         return oom("the sim");
@@ -265,8 +314,6 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
             }
         }
     }
-    if (st == MS_OK)
-        st = check_extent(d);
     if (st == MS_OK && sim->volume) {
         sim->fnx = d->field_nx ? d->field_nx
                                : derive_field(sim->domain_max[0] - sim->domain_min[0], sim->spacing,
@@ -298,7 +345,11 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
  * yet: there ms_sim_step refuses them on the first call. */
 static ms_status check_scene_frame(const ms_sim *sim, double frame_dt)
 {
-    MS_TRY(ms_sim_check_n_time(sim, frame_dt));
+    if (sim->surface) {
+        int n_time;
+        float wave_dt;
+        MS_TRY(ms_sim_plan_waves(sim, (float)frame_dt, &n_time, &wave_dt));
+    }
     if (sim->volume) {
         ms_volume_desc vd = ms_volume_get_desc(sim->volume);
         ms_volume_info in = ms_volume_info_init();
@@ -327,78 +378,10 @@ ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out
     *out = NULL;
     MS_TRY(ms_check_not_null("sim", "scene", sc));
     MS_TRY(ms_check_int_range("sim", "threads", threads, 0, 2));
-    ms_sim_desc d = ms_sim_desc_default();
-    ms_volume_desc vd;
-    ms_surface_desc sd;
-    long particles = 0;
-    if (sc->has_volume) {
-        vd = ms_volume_desc_default();
-        float ratio = vd.smoothing_length / vd.spacing; /* the solver's default h / spacing */
-        memcpy(vd.domain_min, sc->domain_min, sizeof vd.domain_min);
-        memcpy(vd.domain_max, sc->domain_max, sizeof vd.domain_max);
-        vd.spacing = sc->volume.spacing;
-        vd.smoothing_length = isnan(sc->volume.smoothing_length) ? ratio * sc->volume.spacing
-                                                                 : sc->volume.smoothing_length;
-        vd.rest_density = sc->volume.rest_density;
-        if (!isnan(sc->volume.gas_constant))
-            vd.gas_constant = sc->volume.gas_constant;
-        if (!isnan(sc->volume.viscosity))
-            vd.viscosity = sc->volume.viscosity;
-        memcpy(vd.gravity, sc->volume.gravity, sizeof vd.gravity);
-        vd.pressure = sc->volume.pressure;
-        if (!isnan(sc->volume.sound_speed))
-            vd.sound_speed = sc->volume.sound_speed;
-        if (!isnan(sc->volume.courant))
-            vd.courant = sc->volume.courant;
-        if (sc->volume.max_substeps > 0)
-            vd.max_substeps = sc->volume.max_substeps;
-        if (sc->volume.threads > 0)
-            vd.threads = sc->volume.threads;
-        if (sc->volume.smooth_steps >= 0)
-            vd.smooth_steps = sc->volume.smooth_steps;
-        if (!isnan(sc->volume.smooth_energy))
-            vd.smooth_energy = sc->volume.smooth_energy;
-        if (!isnan(sc->volume.max_density_error))
-            vd.max_density_error = sc->volume.max_density_error;
-        if (!isnan(sc->volume.max_divergence_error))
-            vd.max_divergence_error = sc->volume.max_divergence_error;
-        if (sc->volume.max_density_iterations >= 0)
-            vd.max_density_iterations = sc->volume.max_density_iterations;
-        if (sc->volume.max_divergence_iterations >= 0)
-            vd.max_divergence_iterations = sc->volume.max_divergence_iterations;
-        for (int i = 0; i < sc->nfill; ++i) {
-            long n = 1;
-            for (int k = 0; k < 3; ++k)
-                n *= (long)floor((double)(sc->fill_hi[i][k] - sc->fill_lo[i][k]) /
-                                     sc->volume.spacing +
-                                 1e-6) +
-                     1;
-            particles += n;
-        }
-        /* room for what the fill makes (counted generously: one more per
-         * axis) unless the scene says */
-        vd.max_particles =
-            sc->volume.max_particles > 0 ? sc->volume.max_particles : (int)MS_MAX(particles, 64);
-        d.volume = &vd;
-        d.field_nx = sc->field_nx;
-        d.field_ny = sc->field_ny;
-    }
-    if (sc->has_surface) {
-        sd = ms_surface_desc_default();
-        sd.nx = sc->surface.nx;
-        sd.ny = sc->surface.ny;
-        sd.dx = sc->surface.dx;
-        sd.wave_speed = sc->surface.wave_speed;
-        sd.damping = sc->surface.damping;
-        sd.boundary = sc->surface.boundary;
-        sd.max_substeps = sc->surface.max_substeps;
-        sd.seed = sc->seed;
-        d.surface = &sd;
-    }
-    d.surface_substeps = sc->n_time;
-    d.couple_surface_from_volume = sc->couple_surface_from_volume;
-    d.couple_volume_from_surface = sc->couple_volume_from_surface;
-    d.threads = threads ? threads : sc->threads;
+    /* the scene's descs as its keys set them (lib/scene/sections.c) */
+    ms_sim_desc d = sc->sim;
+    if (threads)
+        d.threads = threads;
     float origin[4] = {sc->domain_min[0], sc->domain_min[1], sc->domain_min[2], sc->domain_max[2]};
     ms_sim *sim;
     MS_TRY(create_common(&d, origin, sc->level, sc, &sim));

@@ -2,6 +2,7 @@
  * obstacles and the container (volume colliders, eq. 15, and solid cells
  * of the wave grid at the water level), rain, the boat (a disturber that
  * makes bow waves, Fig. 10b), scripted drops (Fig. 3a), floaters. */
+#include <stdio.h>
 #include <string.h>
 
 #include "modesplit/surface.h"
@@ -9,7 +10,41 @@
 #include "modesplit/volume.h"
 #include "sim/sim_internal.h"
 
-static ms_status add_shape(ms_sim *sim, const ms_scene_shape *spec, ms_sim_shape *sh)
+/* A collider that holds the whole domain leaves the liquid nowhere to be:
+ * every particle is pushed out of it on every sub-step, the sub-steps
+ * shrink to the force bound, and one frame ran for 85 s (fig10 inside a
+ * sphere of 50 m). Refused at create, when every point of a 5 x 5 x 5
+ * lattice over the domain (its corners included) lies inside the shape:
+ * for a convex shape, the whole domain is then inside. */
+static ms_status check_not_enclosing(const ms_sim *sim, const ms_shape *shape, int index)
+{
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j)
+            for (int k = 0; k < 5; ++k) {
+                const int ijk[3] = {i, j, k};
+                float p[3];
+                for (int a = 0; a < 3; ++a)
+                    p[a] = sim->domain_min[a] +
+                           (sim->domain_max[a] - sim->domain_min[a]) * (float)ijk[a] / 4.0f;
+                if (!(ms_shape_distance(shape, p, NULL) < 0.0f))
+                    return MS_OK;
+            }
+    char name[32];
+    if (index >= 0)
+        snprintf(name, sizeof name, "obstacles[%d]", index);
+    else
+        snprintf(name, sizeof name, "the container");
+    return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                   "sim: %s encloses the whole domain [%g, %g] x [%g, %g] x [%g, %g] m "
+                   "(all 125 points of a lattice over it are inside the shape): the liquid has "
+                   "nowhere to be and each frame would take unbounded time; allowed: a shape "
+                   "that leaves part of the domain free",
+                   name, (double)sim->domain_min[0], (double)sim->domain_max[0],
+                   (double)sim->domain_min[1], (double)sim->domain_max[1],
+                   (double)sim->domain_min[2], (double)sim->domain_max[2]);
+}
+
+static ms_status add_shape(ms_sim *sim, const ms_scene_shape *spec, ms_sim_shape *sh, int index)
 {
     ms_status st = MS_OK;
     sh->spec = spec;
@@ -20,6 +55,8 @@ static ms_status add_shape(ms_sim *sim, const ms_scene_shape *spec, ms_sim_shape
         st = ms_shape_create(spec->kind, spec->params_json, &sh->vol);
         if (st == MS_OK)
             st = ms_sim_shape_place(sh, sh->vol, 0.0);
+        if (st == MS_OK)
+            st = check_not_enclosing(sim, sh->vol, index);
         if (st == MS_OK)
             st = ms_volume_add_collider(sim->volume, sh->vol);
         if (st != MS_OK) {
@@ -49,7 +86,7 @@ static ms_status setup_shapes(ms_sim *sim, const ms_scene *sc)
     for (int i = 0; i < n; ++i) {
         const ms_scene_shape *spec = i < sc->nobstacles ? &sc->obstacles[i] : &sc->container;
         sim->nshapes = i + 1;
-        ms_status st = add_shape(sim, spec, &sim->shapes[i]);
+        ms_status st = add_shape(sim, spec, &sim->shapes[i], i < sc->nobstacles ? i : -1);
         if (st != MS_OK)
             return st;
         any_surf |= sim->shapes[i].surf != NULL;

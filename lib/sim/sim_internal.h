@@ -71,8 +71,23 @@ typedef struct ms_sim_drag_req {
 
 /* A running task's result: the status and the sentence of the thread that
  * ran it (ms_last_error is thread-local), and its stage times. */
+/* One frame's plan, made once by ms_sim_step for the frame it is called
+ * with (n) and received by both tasks: the volume task steps frame n by
+ * dt within its sub-step budget; the surface task, one call later (the
+ * pipeline's lag), takes the same record up and advances the waves over
+ * that frame in n_time steps of wave_dt (eq. 19). The wave part is filled
+ * when the surface takes the frame up (ms_sim_plan_waves), so a speed map
+ * an engine sets between the two calls is honoured. */
+typedef struct ms_frame_plan {
+    float dt;            /* s, the frame, in (0, 10] (checked once, in ms_sim_step) */
+    int volume_substeps; /* the volume's sub-step budget (its desc's max_substeps) */
+    int n_time;          /* eq. 19: wave steps over dt; 0 until the surface takes it up */
+    float wave_dt;       /* s, dt / n_time: each within the wave grid's CFL bound */
+} ms_frame_plan;
+
 typedef struct ms_sim_task {
     ms_sim *sim;
+    const ms_frame_plan *plan; /* V: frame n's; S: frame n - 1's */
     ms_status status;
     char err[MS_SIM_ERR_LEN];
     double ms_a, ms_b; /* V: step, extract (phase A, particle copy); S: waves, combine */
@@ -99,7 +114,6 @@ struct ms_sim {
     int snx, sny;           /* X_WE x Y_WE */
     float sdx;              /* m */
     int n_time_fixed;       /* eq. 19 from the scene/desc; 0 = derived */
-    int n_time_last;        /* wave steps of the last frame */
     float gain_sv, gain_vs; /* surface<-volume, volume<-surface */
 
     /* hand-over buffers (slot = call % 2, see above) */
@@ -148,9 +162,10 @@ struct ms_sim {
     long calls;      /* ms_sim_step calls done = frames finished */
     double t_volume; /* s, the volume's time (t_n after call n) */
     double t_fields; /* s, time of the published fields (t_{n-1}) */
-    float dt_prev;   /* s, frame_dt of the previous call */
-    float dt_cur;    /* s, frame_dt of the call running */
-    int primed;      /* H_0 and the particle copy of t_0 taken */
+    /* the plans of the last two frames, frame n's at plan[n % 2]: while
+     * call n runs, the volume's plan[n % 2], the surface's plan[(n - 1) % 2] */
+    ms_frame_plan plan[2];
+    int primed; /* H_0 and the particle copy of t_0 taken */
     int failed;
     _Atomic int busy; /* a thread is in ms_sim_step (one thread per handle) */
     char fail_msg[MS_SIM_ERR_LEN];
@@ -171,9 +186,21 @@ struct ms_sim {
     void *worker_arg;
 };
 
-/* step.c: MS_ERR_UNSTABLE when a fixed N_time (eq. 19) gives wave steps
- * of a frame of dt seconds over the CFL bound of the wave grid. */
-ms_status ms_sim_check_n_time(const ms_sim *sim, double dt);
+/* step.c: eq. 19 for a frame of dt seconds: *n_time wave steps of
+ * *wave_dt, the scene's N_time or the fewest within the CFL bound of the
+ * wave grid, the one place the sim reads that bound. MS_ERR_UNSTABLE when
+ * a fixed N_time's steps exceed it, or more than 1e7 steps are needed. */
+ms_status ms_sim_plan_waves(const ms_sim *sim, float dt, int *n_time, float *wave_dt);
+/* The plan of the frame whose waves were stepped last (n_time 0 before the
+ * surface took one up), and of the frame the volume stepped last. */
+static inline const ms_frame_plan *ms_sim_wave_plan(const ms_sim *sim)
+{
+    return &sim->plan[(unsigned long)(sim->calls - 1) & 1u];
+}
+static inline const ms_frame_plan *ms_sim_volume_plan(const ms_sim *sim)
+{
+    return &sim->plan[(unsigned long)sim->calls & 1u];
+}
 /* create.c */
 ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc);
 

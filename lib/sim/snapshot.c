@@ -189,22 +189,32 @@ static ms_status sim_io(ms_sim *sim, ms_blob *b)
     const int maxp = sim->volume ? ms_volume_snapshot_max_particles(sim->volume) : 0;
     const int ndrops = sim->scene ? sim->scene->ndrops : 0;
     ms_status st;
-    /* clock and pipeline */
+    /* clock and pipeline: of the plans, what the next call needs (the dt
+     * of the last frame, which its surface task takes up) and the wave
+     * steps of the frame before (ms_stats.n_time); the records keep their
+     * names (dt_cur: the last call's dt, as dt_prev) */
+    float dt_last = ms_sim_volume_plan(sim)->dt, dt_cur = dt_last;
+    int n_time_last = ms_sim_wave_plan(sim)->n_time;
     /* times within what ms_sim_step accepts: frame_dt in (0, 10] s, at
      * most 1e7 wave steps a frame (step.c) */
     if ((st = MS_BLOB_IO(b, "sim.calls", sim->calls)) ||
         (st = ms_blob_double(b, "sim.t_volume", &sim->t_volume, 0.0, 1e12, "s")) ||
         (st = ms_blob_double(b, "sim.t_fields", &sim->t_fields, 0.0, 1e12, "s")) ||
-        (st = ms_blob_floats(b, "sim.dt_prev", &sim->dt_prev, 1, 0.0, 10.0, "s")) ||
-        (st = ms_blob_floats(b, "sim.dt_cur", &sim->dt_cur, 1, 0.0, 10.0, "s")) ||
+        (st = ms_blob_floats(b, "sim.dt_prev", &dt_last, 1, 0.0, 10.0, "s")) ||
+        (st = ms_blob_floats(b, "sim.dt_cur", &dt_cur, 1, 0.0, 10.0, "s")) ||
         (st = MS_BLOB_IO(b, "sim.primed", sim->primed)) ||
-        (st = MS_BLOB_IO(b, "sim.n_time_last", sim->n_time_last)) ||
+        (st = MS_BLOB_IO(b, "sim.n_time_last", n_time_last)) ||
         (st = ms_blob_floats(b, "sim.wave_dt", &sim->wave_dt_last, 1, 0.0, 10.0, "s")))
         return st;
     if (b->reading && ((st = ms_blob_check_int("sim.calls", sim->calls, 0, LONG_MAX)) ||
                        (st = ms_blob_check_int("sim.primed", sim->primed, 0, 1)) ||
-                       (st = ms_blob_check_int("sim.n_time_last", sim->n_time_last, 0, 10000000))))
+                       (st = ms_blob_check_int("sim.n_time_last", n_time_last, 0, 10000000))))
         return st;
+    if (b->reading) {
+        memset(sim->plan, 0, sizeof sim->plan);
+        sim->plan[(unsigned long)sim->calls & 1u].dt = dt_last;
+        sim->plan[(unsigned long)(sim->calls - 1) & 1u].n_time = n_time_last;
+    }
     for (int k = 0; st == MS_OK && k < 2; ++k) {
         if (sim->volume &&
             (st = extract_io(b, sim->volume, &sim->snap[k], maxp, sim->calls == 0)) == MS_OK &&

@@ -53,40 +53,30 @@ static ms_status prime(ms_sim *sim)
 /* Eq. 19: N_time = dt_volume / dt_surface wave steps for a frame of dt:
  * the fewest that keep each step within the CFL bound, or the scene's,
  * which must keep within it. */
-ms_status ms_sim_check_n_time(const ms_sim *sim, double dt)
-{
-    if (!sim->surface || sim->n_time_fixed <= 0)
-        return MS_OK;
-    ms_surface_info info = ms_surface_info_init();
-    ms_surface_get_info(sim->surface, &info);
-    double max_dt = info.max_dt, step = dt / sim->n_time_fixed; /* s */
-    if (step > max_dt * (1 + 1e-6))
-        return ms_fail(MS_ERR_UNSTABLE,
-                       "sim: n_time %d gives wave steps of %.3g s for a frame of %g s; the "
-                       "CFL bound of the wave grid allows at most %.3g s (n_time >= %.0f)",
-                       sim->n_time_fixed, step, dt, max_dt, ceil(dt / max_dt));
-    return MS_OK;
-}
-
-static ms_status wave_steps(ms_sim *sim, float dt, int *n_time)
+ms_status ms_sim_plan_waves(const ms_sim *sim, float dt, int *n_time, float *wave_dt)
 {
     ms_surface_info info = ms_surface_info_init();
     ms_surface_get_info(sim->surface, &info);
-    double max_dt = info.max_dt; /* s */
-    if (sim->n_time_fixed > 0) {
-        ms_status st = ms_sim_check_n_time(sim, dt);
-        if (st != MS_OK)
-            return st;
-        *n_time = sim->n_time_fixed;
-        return MS_OK;
+    const double max_dt = info.max_dt; /* s, the CFL bound */
+    double n = sim->n_time_fixed;
+    if (n > 0) {
+        double step = (double)dt / n; /* s */
+        if (step > max_dt * (1 + 1e-6))
+            return ms_fail(MS_ERR_UNSTABLE,
+                           "sim: n_time %d gives wave steps of %.3g s for a frame of %g s; the "
+                           "CFL bound of the wave grid allows at most %.3g s (n_time >= %.0f)",
+                           sim->n_time_fixed, step, (double)dt, max_dt, ceil(dt / max_dt));
+    } else {
+        n = ceil((double)dt / max_dt * (1 - 1e-7));
+        if (!(n <= 1e7))
+            return ms_fail(MS_ERR_UNSTABLE,
+                           "sim: a frame of %g s needs %.3g wave steps of at most %.3g s; "
+                           "allowed: at most 1e7",
+                           (double)dt, n, max_dt);
+        n = MS_MAX(n, 1.0);
     }
-    double n = ceil((double)dt / max_dt * (1 - 1e-7));
-    if (!(n <= 1e7))
-        return ms_fail(MS_ERR_UNSTABLE,
-                       "sim: a frame of %g s needs %.3g wave steps of at most %.3g s; allowed: "
-                       "at most 1e7",
-                       (double)dt, n, max_dt);
-    *n_time = (int)MS_MAX(n, 1.0);
+    *n_time = (int)n;
+    *wave_dt = dt / (float)*n_time;
     return MS_OK;
 }
 
@@ -161,22 +151,32 @@ static ms_status step_frame(ms_sim *sim, float frame_dt)
     if (sim->failed)
         return ms_fail(MS_ERR_STATE, "sim: a previous step failed (%s); destroy the sim",
                        sim->fail_msg);
+    /* the frame's dt, checked here once: the tasks take it from the plan */
     if (!isfinite(frame_dt) || !(frame_dt > 0) || frame_dt > 10)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "sim: frame_dt %g s is outside (0, 10] s",
                        (double)frame_dt);
+    ms_frame_plan plan = {.dt = frame_dt};
+    if (sim->volume)
+        plan.volume_substeps = ms_volume_get_desc(sim->volume).max_substeps;
     /* a fixed N_time too small for this frame: refused before anything
      * runs, not a frame later when the pipeline's waves take
      * it up; a scene's sim was refused at creation already */
-    if ((st = ms_sim_check_n_time(sim, frame_dt)) != MS_OK)
+    int n_time;
+    float wave_dt;
+    if (sim->surface && sim->n_time_fixed > 0 &&
+        (st = ms_sim_plan_waves(sim, frame_dt, &n_time, &wave_dt)) != MS_OK)
         return st;
     double c0 = ms_now();
     if (!sim->primed && (st = prime(sim)) != MS_OK)
         return st;
     long n = sim->calls + 1;
-    if (sim->surface && n >= 2 && (st = wave_steps(sim, sim->dt_prev, &sim->n_time_last)) != MS_OK)
+    ms_frame_plan *waves = &sim->plan[(n - 1) & 1]; /* frame n - 1's, for the surface */
+    if (sim->surface && n >= 2 &&
+        (st = ms_sim_plan_waves(sim, waves->dt, &waves->n_time, &waves->wave_dt)) != MS_OK)
         return st;
-    sim->dt_cur = frame_dt;
-    ms_sim_task vt = {.sim = sim, .status = MS_OK}, stt = {.sim = sim, .status = MS_OK};
+    sim->plan[n & 1] = plan;
+    ms_sim_task vt = {.sim = sim, .plan = &sim->plan[n & 1], .status = MS_OK};
+    ms_sim_task stt = {.sim = sim, .plan = waves, .status = MS_OK};
     int need_s = sim->volume || sim->surface || sim->nfloaters;
     run_tasks(sim, sim->volume ? &vt : NULL, need_s ? &stt : NULL);
     sim->ndrags = 0; /* an engine's drags last one frame */
@@ -195,7 +195,6 @@ static ms_status step_frame(ms_sim *sim, float frame_dt)
     sim->calls = n;
     sim->t_fields = sim->t_volume; /* t_{n-1} */
     sim->t_volume += frame_dt;
-    sim->dt_prev = frame_dt;
     sim->stats.frames = n;
     sim->stats.total_ms += (ms_now() - c0) * 1e3;
     return MS_OK;

@@ -169,7 +169,7 @@ void ms_sim_surface_task(void *arg)
         /* a volume-only sim: the SPH field is the surface; only floaters */
         if (st == MS_OK && sim->nfloaters) {
             if (m >= 1)
-                ms_sim_floaters_step(sim, sim->flow[slot], NULL, sim->dt_prev);
+                ms_sim_floaters_step(sim, sim->flow[slot], NULL, task->plan->dt);
             ms_sim_floaters_height(sim);
         }
         task->ms_a = 0;
@@ -180,10 +180,11 @@ void ms_sim_surface_task(void *arg)
         return;
     }
     if (st == MS_OK && m >= 1) {
-        double t1 = sim->t_fields + sim->dt_prev; /* t_m */
-        float dt = sim->dt_prev;
-        int n_time = sim->n_time_last;
-        const float dt_step = dt / (float)n_time;
+        const ms_frame_plan *plan = task->plan; /* frame m's */
+        double t1 = sim->t_fields + plan->dt;   /* t_m */
+        float dt = plan->dt;
+        int n_time = plan->n_time;
+        const float dt_step = plan->wave_dt;
         st = scripted_effects(sim, sim->t_fields, t1);
         if (st == MS_OK && h && sim->hprev)
             st = couple_from_volume(sim, h, dt, dt_step);
@@ -219,7 +220,7 @@ void ms_sim_surface_task(void *arg)
         if (sim->nfloaters) {
             const float *wv = ms_surface_height(sim->surface, NULL, NULL);
             if (m >= 1)
-                ms_sim_floaters_step(sim, h ? sim->flow[slot] : NULL, wv, sim->dt_prev);
+                ms_sim_floaters_step(sim, h ? sim->flow[slot] : NULL, wv, task->plan->dt);
             ms_sim_floaters_height(sim);
         }
     }

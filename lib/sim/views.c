@@ -7,7 +7,7 @@
 #include "modesplit/volume.h"
 #include "shape/shape_internal.h"
 #include "sim/sim_internal.h"
-#include "core/struct_sizes.h"
+#include "sim/sim_sizes.h"
 
 /* The slot of the published frame's volume data. */
 static int pub_slot(const ms_sim *sim)
@@ -164,7 +164,7 @@ void ms_sim_get_stats(const ms_sim *sim, ms_stats *user)
         out->surface_steps = si.substeps;
         out->surface_bytes += si.bytes;
         out->drops = si.drops;
-        out->n_time = sim->n_time_last;
+        out->n_time = ms_sim_wave_plan(sim)->n_time;
     }
     out->bytes = sizeof *sim + out->volume_bytes + out->surface_bytes + out->effects_bytes;
     ms_struct_write(user, &full, size);
@@ -187,6 +187,7 @@ void ms_sim_get_info(const ms_sim *sim, ms_sim_info *user)
         out->field_nx = sim->fnx;
         out->field_ny = sim->fny;
         out->particles = ms_volume_count(sim->volume);
+        out->spacing = sim->spacing;
     }
     if (sim->surface) {
         out->surface_nx = sim->snx;

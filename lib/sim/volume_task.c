@@ -228,7 +228,7 @@ void ms_sim_volume_task(void *arg)
         st = ms_volume_adapt_to_waves(sim->volume, sim->wave_snap[prev], &sim->field_grid,
                                       sim->gain_vs);
     if (st == MS_OK)
-        st = ms_volume_step(sim->volume, sim->dt_cur);
+        st = ms_volume_step(sim->volume, task->plan->dt);
     /* the neighbour pass at the step's end positions, which phase A reads
      * and the next step's first sub-step takes as its own: SPH work, timed
      * as volume_ms unless no step can take it (a collider jumped) */

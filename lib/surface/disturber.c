@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "surface/surface_internal.h"
-#include "core/struct_sizes.h"
+#include "surface/surface_sizes.h"
 
 #define PART "surface"
 

@@ -4,7 +4,7 @@
  * one-cell spike (which would excite the grid's shortest, most dispersive
  * waves and show as noise); rain draws drops from the handle's seeded RNG. */
 #include "surface/surface_internal.h"
-#include "core/struct_sizes.h"
+#include "surface/surface_sizes.h"
 
 #define PART "surface"
 #define MIN_RADIUS_CELLS 2.0f

@@ -4,10 +4,11 @@
 #include <string.h>
 
 #include "surface/surface_internal.h"
-#include "core/struct_sizes.h"
+#include "surface/surface_sizes.h"
 
 #define PART "surface"
 #define MAX_CELLS_PER_SIDE 16384
+#define MIN_DX 1e-6 /* m */
 
 ms_surface_desc ms_surface_desc_default(void)
 {
@@ -31,28 +32,39 @@ static ms_status validate(const ms_surface_desc *d)
     if ((st = ms_check_int_range(PART, "nx", d->nx, 2, MAX_CELLS_PER_SIDE)) ||
         (st = ms_check_int_range(PART, "ny", d->ny, 2, MAX_CELLS_PER_SIDE)))
         return st;
-    if (!isfinite(d->dx) || !(d->dx > 0))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "surface: dx %g m must be finite and > 0 (the cell size)", d->dx);
+    /* a micrometre: below it capillarity, not gravity, carries the waves
+     * (eq. 2 no longer holds), and float32 cell centres (x + 0.5) dx of a
+     * grid placed metres from the origin lose the cell apart */
+    if (!isfinite(d->dx) || !(d->dx >= MIN_DX))
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "dx",
+                           "surface: dx %g m is below %g m or not finite (the cell size)", d->dx,
+                           MIN_DX);
     if (!isfinite(d->wave_speed) || !(d->wave_speed > 0))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "surface: wave_speed %g m/s must be finite and > 0 (c of eq. 2)",
-                       d->wave_speed);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "wave_speed",
+                           "surface: wave_speed %g m/s must be finite and > 0 (c of eq. 2)",
+                           d->wave_speed);
     if (!isfinite(d->damping) || !(d->damping > 0) || d->damping > 1)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "surface: damping %g is outside (0, 1] (fraction of the wave "
-                       "velocity kept per second; 1 = none)",
-                       d->damping);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "damping",
+                           "surface: damping %g is outside (0, 1] (fraction of the wave "
+                           "velocity kept per second; 1 = none)",
+                           d->damping);
     if (d->boundary != MS_BOUNDARY_REFLECT && d->boundary != MS_BOUNDARY_ABSORB &&
         d->boundary != MS_BOUNDARY_PERIODIC)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "surface: boundary %d is not one of reflect (0), absorb (1), "
-                       "periodic (2)",
-                       (int)d->boundary);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "boundary",
+                           "surface: boundary %d is not one of reflect (0), absorb (1), "
+                           "periodic (2)",
+                           (int)d->boundary);
     if (d->max_substeps < 1)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "surface: max_substeps %d must be >= 1",
-                       d->max_substeps);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "max_substeps",
+                           "surface: max_substeps %d must be >= 1", d->max_substeps);
     return MS_OK;
+}
+
+ms_status ms_surface_desc_check(const ms_surface_desc *user)
+{
+    ms_surface_desc d = ms_surface_desc_default();
+    MS_TRY(ms_struct_in(user, &d, MS_SIZES_SURFACE_DESC, PART));
+    return validate(&d);
 }
 
 ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out)

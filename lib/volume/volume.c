@@ -7,7 +7,7 @@
 
 #include "volume/extract.h"
 #include "volume/volume_internal.h"
-#include "core/struct_sizes.h"
+#include "volume/volume_sizes.h"
 
 /* Mass per particle such that a cubic lattice of the desc's spacing has
  * exactly the rest density under eq. 9: m = rho0 / sum W. */

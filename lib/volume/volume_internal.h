@@ -321,9 +321,6 @@ static inline unsigned ms_volume_walls_near(const ms_volume *v, float x, float y
     return mask;
 }
 
-/* desc.c */
-ms_status ms_volume_desc_check(const ms_volume_desc *d);
-
 /* volume.c */
 ms_status ms_volume_reserve(ms_volume *v, int n);
 /* Refresh ms_volume_particles' block (nothing if no caller asked for it);

@@ -158,7 +158,7 @@ static int frame_bench(int argc, char **argv, const char *machine, const char *c
                 fprintf(stderr, "bench_surface: %s\n", ms_last_error());
                 return 1;
             }
-        const int n_time = sim->n_time_last;
+        const int n_time = ms_sim_wave_plan(sim)->n_time;
         const float dt_step = frame_dt / (float)n_time;
         const size_t nf = (size_t)sim->fnx * sim->fny;
         float *e = malloc(nf * sizeof *e);

@@ -1,9 +1,9 @@
 /* modesplit check SCENE.json...: validate scenes without running them.
  * Each is parsed (unknown keys, wrong types, ranges: the error names
  * file:line:col and the key) and its sim is built (so a scene that cannot
- * be allocated or made stable is refused too), and the work of one frame
- * is bounded (tool_check_frame_work, which `run` calls too); nothing is
- * stepped. */
+ * be allocated or made stable is refused too), the work of one frame is
+ * bounded and the render section checked as the renderer takes it
+ * (tool_check_frame_work, which `run` calls too); nothing is stepped. */
 #include <math.h>
 #include <string.h>
 
@@ -24,6 +24,16 @@ static const char *field_list(unsigned f, char *buf, size_t size)
 
 int tool_check_frame_work(const ms_scene *sc, ms_sim *sim, const char *path)
 {
+    /* The render section as the renderer would take it (a cubemap's face
+     * sizes from the files' headers), so that check refuses what run
+     * --png would, and run refuses it before its first frame. */
+    if (ms_scene_has_render(sc)) {
+        ms_renderer_desc rd = ms_renderer_desc_default();
+        if (ms_renderer_desc_from_scene(sc, &rd) != MS_OK || ms_renderer_desc_check(&rd) != MS_OK) {
+            tool_error("%s: %s", path, ms_last_error());
+            return -1;
+        }
+    }
     /* The sim splits a frame into N_time wave steps (eq. 19), each within
      * the surface's own sub-step cap, so a domain whose cells are tiny
      * (dx ~ nm) runs ~1e6 sub-steps a frame for hours without an error:

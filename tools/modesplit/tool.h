@@ -44,7 +44,9 @@ const char *tool_bytes(double bytes, char *buf, size_t size);
  * 1e9; 0 on success, else prints "<path>: ..." and returns -1. */
 int tool_scene_frames(const ms_scene *sc, const char *path, double duration, long *frames);
 /* 0, or -1 after printing why a frame of the scene's sim would not end in
- * reasonable time (a domain too small for its wave cells); cmd_check.c. */
+ * reasonable time (a domain too small for its wave cells) or why its
+ * render section would be refused by the renderer (a cubemap's faces);
+ * cmd_check.c. `check` and `run` both call it. */
 int tool_check_frame_work(const ms_scene *sc, ms_sim *sim, const char *path);
 
 /* ---- --set KEY=VALUE (overrides.c) ---- */

@@ -1,0 +1,14 @@
+/* The known sizes of the output part's public structs that lead with `size`
+ * (core.h: struct sizes; lib/core/struct_size.c reads and writes them):
+ * the struct, the last field of its version 0.1 layout, and how a caller
+ * gets a valid size. Each part keeps its own, so core knows no part; a
+ * part that reads another's desc (the sim, the scene) includes this. */
+#ifndef MS_IO_SIZES_H
+#define MS_IO_SIZES_H
+
+#include "core/core_internal.h"
+#include "modesplit/io.h"
+
+#define MS_SIZES_PREVIEW_DESC MS_STRUCT_SIZES(ms_preview_desc, scale, "ms_preview_desc_default()")
+
+#endif /* MS_IO_SIZES_H */
