@@ -40,7 +40,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 DATA = os.path.join(ROOT, "data", "bench")
 LINK = re.compile(r'\[([-+]?[0-9]+(?:\.[0-9]+)?)\]\((?:\.\./)?(data/(?:bench|accuracy)/[A-Za-z0-9_.-]+\.csv) '
                   r'"([^"]*)"\)')
-PAGES = ["README.md", os.path.join("docs", "performance.md")]
+PAGES = ["README.md", os.path.join("docs", "performance.md"), os.path.join("docs", "accuracy.md")]
 TABLE = re.compile(r"<!-- bench-table ([a-z_]+) -->\n(.*?)<!-- /bench-table -->", re.S)
 
 
@@ -257,14 +257,24 @@ def table_accuracy_water():
 
 
 def table_accuracy_nsurf():
-    """What the wave grid buys in the coupler study: one line per N_surf."""
+    """What the wave grid buys in the coupler study: one line per N_surf,
+    the band spectrum's distance from the reference and each band's."""
     rows = [r for r in load(ACCURACY) if r["study"] == "coupler" and r["knob"] == "n_surf"]
     if not rows:
         raise Mismatch(f"{ACCURACY} has no coupler n_surf rows")
-    out = ["| N_surf | wave cells | metric | error | CPU ms per frame |", "|---|---|---|---|---|"]
-    for r in rows:
-        out.append(f"| {float(r['value']):g} | {r['config']} | {r['metric']} | "
-                   f"{100 * float(r['error']):.1f} % | {float(r['cpu_ms_per_step']):.1f} |")
+    metrics = list(dict.fromkeys(r["metric"] for r in rows))
+    bands = [m for m in metrics if m.startswith("energy at ")]
+    out = ["| N_surf | wave grid | spectrum off by | " +
+           " | ".join(m[len("energy at "):].replace(" rel. error", "") + " band off by"
+                      for m in bands) + " | wave stages, CPU ms per frame |",
+           "|---|---|---|" + "---|" * len(bands) + "---|"]
+    for value in dict.fromkeys(r["value"] for r in rows):
+        by = {r["metric"]: r for r in rows if r["value"] == value}
+        first = by[metrics[0]]
+        cells = [f"{100 * float(by[m]['error']):.1f} %" if m in by else "" for m in bands]
+        out.append(f"| {float(value):g} | {first['config'].split(',')[0]} | "
+                   f"{100 * float(first['error']):.1f} % | " + " | ".join(cells) +
+                   f" | {float(first['cpu_ms_per_step']):.2f} |")
     return out
 
 
@@ -303,6 +313,10 @@ def process(text, write, page="README.md"):
             return m.group(0)
         try:
             want = "\n".join(TABLES[name]()) + "\n"
+        except KeyError as e:
+            problems.append(f"{page}:{line_of(m.start())}: bench table {name}: no column {e} "
+                            "in its CSV")
+            return m.group(0)
         except Mismatch as e:
             problems.append(f"{page}:{line_of(m.start())}: {e}")
             return m.group(0)

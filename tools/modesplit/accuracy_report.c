@@ -244,7 +244,7 @@ static const char *cost_label(const acc_row *rows, int n, const char *study)
 {
     if (study_uses_per_s(rows, n, study))
         return "cost: CPU time per simulated second (ms, 1 thread)";
-    return !strcmp(study, "coupler") ? "cost: CPU time per frame (ms, 1 thread)"
+    return !strcmp(study, "coupler") ? "cost: CPU time of the wave stages per frame (ms, 1 thread)"
                                      : "cost: CPU time per extraction call (ms, 1 thread)";
 }
 
@@ -451,8 +451,9 @@ static const struct quote {
      "extraction, tilted layer, height error", "field cells a side", 0, 0, " spacings", NULL},
     {"extract", "column_field_cells", "height RMS error in spacings",
      "extraction, settled column, height error", "field cells a side", 0, 0, " spacings", NULL},
-    {"coupler", "n_surf", "sub-SPH-cell detail energy rel. error",
-     "coupler, detail below the SPH cell missing", "N_surf", 0, 1, "", NULL},
+    {"coupler", "n_surf", "sub-SPH-cell spectrum rel. error",
+     "coupler, the band spectrum below the SPH cell against the N_surf 16 reference", "N_surf", 0,
+     1, "", NULL},
 };
 
 static void fmt_cost(char *buf, size_t size, double ms, int per_s)
