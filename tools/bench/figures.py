@@ -212,8 +212,9 @@ def table_accuracy_choose():
     configs = dam_configs()
     if not configs:
         raise Mismatch(f"{ACCURACY} has no dam-break rows")
-    goals = [("column H error ≤ 5 %", 0.05, None), ("max compression ≤ 0.1 %", None, 0.001),
-             ("both", 0.05, 0.001)]
+    goals = [("column H error ≤ 5 %", 0.05, None), ("max compression ≤ 1 %", None, 0.01),
+             ("max compression ≤ 0.1 %", None, 0.001), ("column ≤ 5 % and compression ≤ 0.1 %",
+                                                         0.05, 0.001)]
     out = ["| solver | goal | cheapest configuration | particles | CPU s per simulated s | "
            "column H error | max compression |", "|---|---|---|---|---|---|---|"]
     for _, solver in SOLVERS:
@@ -226,6 +227,12 @@ def table_accuracy_choose():
             out.append(f"| {solver} | {goal} | {setting(c)} | {c['particles']} | "
                        f"{c['cpu'] / 1000:.2f} | {100 * c['column']:.1f} % | "
                        f"{100 * c['compression']:.3f} % |")
+        least = min((x for x in configs if x["solver"] == solver),
+                    key=lambda x: (x["compression"], x["cpu"]), default=None)
+        if least:
+            out.append(f"| {solver} | the least compression of the study | {setting(least)} | "
+                       f"{least['particles']} | {least['cpu'] / 1000:.2f} | "
+                       f"{100 * least['column']:.1f} % | {100 * least['compression']:.3f} % |")
     return out
 
 

@@ -703,6 +703,33 @@ static void gp_comment_text(FILE *gp, const char *text)
     }
 }
 
+/* A configuration as a point's label: for the SPH dam break the solver,
+ * the swept setting (c = sound speed, e = DFSPH's max density error, C =
+ * Courant factor) and the particle count; else knob=value. */
+static void config_label(char *buf, size_t size, const acc_row *r, int with_solver)
+{
+    const char *k = r->knob;
+    if (strcmp(r->study, "sph") != 0) {
+        snprintf(buf, size, "%s=%g", k, r->value);
+        return;
+    }
+    const char *solver = !strncmp(r->config, "ideal_gas", 9) ? "ideal gas "
+                         : !strncmp(r->config, "tait", 4)    ? "Tait "
+                         : !strncmp(r->config, "dfsph", 5)   ? "DFSPH "
+                                                             : "";
+    const char *sym = strstr(k, "sound")     ? "c="
+                      : strstr(k, "density") ? "e="
+                      : strstr(k, "courant") ? "C="
+                                             : NULL;
+    char count[32];
+    snprintf(count, sizeof count, r->size >= 1e4 ? "%.0fk p" : "%.0f p",
+             r->size >= 1e4 ? r->size / 1e3 : r->size);
+    if (sym)
+        snprintf(buf, size, "%s%s%g, %s", with_solver ? solver : "", sym, r->value, count);
+    else
+        snprintf(buf, size, "%s%s", with_solver ? solver : "", count);
+}
+
 /* The Pareto chart of spec p: every row of it, the front joined and
  * labelled with its knobs' values; dat and script lines. */
 static int write_pareto(FILE *gp, const char *dir, const acc_row *rows, int n, int per_s,
@@ -741,10 +768,9 @@ static int write_pareto(FILE *gp, const char *dir, const acc_row *rows, int n, i
         if (best < 0)
             break;
         last = cost(&rows[best], per_s);
-        char kl[96];
-        knob_label(kl, sizeof kl, rows[best].knob);
-        fprintf(d, "%.6g %.6g \"%g, %.0f\"\n", last, rows[best].error, rows[best].value,
-                rows[best].size);
+        char label[96];
+        config_label(label, sizeof label, &rows[best], 1);
+        fprintf(d, "%.6g %.6g \"%s\"\n", last, rows[best].error, label);
     }
     fclose(d);
     char title[256];
@@ -754,8 +780,10 @@ static int write_pareto(FILE *gp, const char *dir, const acc_row *rows, int n, i
     gp_axes(gp, xlo, xhi, ylo, yhi);
     fputs("set title ", gp);
     gp_string(gp, title);
-    fputs(" . \"\\n\" . 'the line joins those no other beats on both cost and error "
-          "(labels: knob value, particles or cells)'\nset xlabel ",
+    fputs(" . \"\\n\" . 'the line joins the Pareto front; ", gp);
+    fputs(!strcmp(p->study, "sph") ? "c sound speed, e max density error, C Courant factor, "
+                                     "p particles'\nset xlabel "
+                                   : "labels: knob=value'\nset xlabel ",
           gp);
     gp_string(gp, cost_label(rows, n, p->study));
     metric_label(ylabel, sizeof ylabel, p->metric);
@@ -823,17 +851,8 @@ static int write_solvers(FILE *gp, const char *dir, const acc_row *rows, int n, 
             if (rows[best].error >= best_e)
                 continue;
             best_e = rows[best].error;
-            const char *k = rows[best].knob;
-            char label[64];
-            if (strstr(k, "law_") || !strcmp(k, "particles"))
-                snprintf(label, sizeof label, "%.0f p", rows[best].size);
-            else
-                snprintf(label, sizeof label, "%s%g, %.0f p",
-                         strstr(k, "sound")     ? "c="
-                         : strstr(k, "density") ? "e="
-                         : strstr(k, "courant") ? "C="
-                                                : "",
-                         rows[best].value, rows[best].size);
+            char label[96];
+            config_label(label, sizeof label, &rows[best], 0);
             fprintf(d, "%.6g %.6g \"%s\"\n", last, rows[best].error, label);
         }
         if (!have[s])
@@ -849,8 +868,8 @@ static int write_solvers(FILE *gp, const char *dir, const acc_row *rows, int n, 
     gp_axes(gp, xlo, xhi, ylo, yhi);
     fputs("set title ", gp);
     gp_string(gp, title);
-    fputs(" . \"\\n\" . 'the lines join each solver''s front (labels: c = sound speed, e = max "
-          "density error, C = Courant factor; particles)'\nset xlabel ",
+    fputs(" . \"\\n\" . 'lines: each solver''s front; c sound speed, e max density error, C "
+          "Courant factor, p particles'\nset xlabel ",
           gp);
     gp_string(gp, cost_label(rows, n, "sph"));
     metric_label(ylabel, sizeof ylabel, metric);
