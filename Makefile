@@ -480,14 +480,16 @@ clean:
 
 # ---- the accuracy study and the long stability runs ----
 # make accuracy     the full study of `modesplit accuracy` (both cores, one
-#                   case per job), committed in data/accuracy/
+#                   case per job), committed in data/accuracy/; then the
+#                   accuracy figures of README.md and docs/accuracy.md are
+#                   rewritten from its CSV (tools/bench/figures.py)
 # make check-long   the coupled long runs of tests/test_stability.c (fig1 and
 #                   fig10 at the top coupling gains for 10 simulated minutes,
 #                   every shipped scene at 1 and 2 threads); .ci/run runs it
 ACCURACY_DIR ?= data/accuracy
 .PHONY: accuracy check-long
 accuracy: all
-	@rm -rf $(ACCURACY_DIR)/parts
+	@rm -rf $(ACCURACY_DIR)/parts $(ACCURACY_DIR)/*.dat $(ACCURACY_DIR)/*.png
 	$(BUILD)/bin/modesplit accuracy --jobs --out $(ACCURACY_DIR) | xargs -P $$(nproc) -I{} sh -c '{}'
 	$(BUILD)/bin/modesplit accuracy --merge $(ACCURACY_DIR)/parts --out $(ACCURACY_DIR)
 	$(PYTHON) tools/bench/figures.py --write README.md docs/accuracy.md
