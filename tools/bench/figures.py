@@ -400,7 +400,7 @@ def main(argv):
             if new != text:
                 with open(page, "w") as f:
                     f.write(new)
-            print(f"bench figures: {name} follows data/bench/*.csv")
+            print(f"bench figures: {name} follows its CSVs")
             continue
         if problems:
             print("\n".join(problems), file=sys.stderr)
