@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""The speed figures of README.md and docs/performance.md against the
-committed bench CSVs.
+"""The speed and accuracy figures of README.md, docs/performance.md and
+docs/accuracy.md against the committed CSVs.
 
 data/bench/*.csv are the CSVs of one `make bench` on a quiet machine
-(data/bench/README.md says which machine, commit and date). The pages
-quote them in two ways, both checked here:
+(data/bench/README.md says which machine, commit and date);
+data/accuracy/accuracy.csv is the study of one `make accuracy` (its
+accuracy.md says which machine and commit), which rewrites the accuracy
+figures. The pages quote them in two ways, both checked here:
 
   * a figure as a Markdown link to its CSV whose title picks the row and
     the column:
@@ -405,18 +407,19 @@ def main(argv):
         if problems:
             print("\n".join(problems), file=sys.stderr)
             print(f"check-bench-figures: {len(problems)} figure(s) of {name} differ from "
-                  "data/bench/*.csv (after a deliberate `make bench`: `make bench-commit`)",
+                  "data/bench/*.csv or data/accuracy/accuracy.csv (after a deliberate `make "
+                  "bench`: `make bench-commit`; `make accuracy` rewrites its own)",
                   file=sys.stderr)
             failed = 1
             continue
         figures = len(LINK.findall(text))
         tables = len(TABLE.findall(text))
         if figures + tables == 0:
-            print(f"check-bench-figures: {name} links no figure to data/bench/", file=sys.stderr)
+            print(f"check-bench-figures: {name} links no figure to data/", file=sys.stderr)
             failed = 1
             continue
         print(f"bench figures: {figures} linked figures and {tables} tables of {name} match "
-              "data/bench/*.csv")
+              "their CSVs")
     return failed
 
 
