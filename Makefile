@@ -485,16 +485,28 @@ clean:
 
 # ---- the accuracy study and the long stability runs ----
 # make accuracy     the full study of `modesplit accuracy` (both cores, one
-#                   case per job), committed in data/accuracy/
+#                   case per job), committed in data/accuracy/; then the
+#                   accuracy figures of README.md and docs/accuracy.md are
+#                   rewritten from its CSV (tools/bench/figures.py)
 # make check-long   the coupled long runs of tests/test_stability.c (fig1 and
 #                   fig10 at the top coupling gains for 10 simulated minutes,
 #                   every shipped scene at 1 and 2 threads); .ci/run runs it
 ACCURACY_DIR ?= data/accuracy
 .PHONY: accuracy check-long
 accuracy: all
-	@rm -rf $(ACCURACY_DIR)/parts
+	@rm -rf $(ACCURACY_DIR)/parts $(ACCURACY_DIR)/*.dat $(ACCURACY_DIR)/*.png
 	$(BUILD)/bin/modesplit accuracy --jobs --out $(ACCURACY_DIR) | xargs -P $$(nproc) -I{} sh -c '{}'
 	$(BUILD)/bin/modesplit accuracy --merge $(ACCURACY_DIR)/parts --out $(ACCURACY_DIR)
+	$(PYTHON) tools/bench/figures.py --write README.md docs/accuracy.md
+
+# check-accuracy (in make check): the quick study's rows against the
+# committed study's same cases (tools/modesplit/check_accuracy.py); a
+# change that moves them regenerates data/accuracy/ with `make accuracy`.
+# Not under a sanitizer (SAN=...): test_accuracy runs the quick study there.
+.PHONY: check-accuracy
+check-accuracy: all
+	$(Q)$(PYTHON) tools/modesplit/check_accuracy.py $(BUILD)/bin/modesplit
+CHECK_PRE += $(if $(SAN),,check-accuracy)
 
 # The two long cases run side by side (one core each); both must pass.
 check-long: all $(BUILD)/tests/test_stability $(BUILD)/tests/test_view
@@ -534,7 +546,7 @@ check-clang:
 .PHONY: check-bench-figures bench-commit
 check-bench-figures:
 	$(Q)$(PYTHON) tools/bench/test_figures.py
-	$(Q)$(PYTHON) tools/bench/figures.py --check README.md docs/performance.md
+	$(Q)$(PYTHON) tools/bench/figures.py --check README.md docs/performance.md docs/accuracy.md
 bench-commit:
 	$(Q)$(PYTHON) tools/bench/figures.py --commit bench
 

@@ -57,8 +57,9 @@ static int read_rows(const char *path, row *rows, int max)
     ck_assert_msg(f != NULL, "%s missing", path);
     char line[4096];
     ck_assert_ptr_nonnull(fgets(line, sizeof line, f));
-    ck_assert_msg(strstr(line, "ms_per_simulated_s") && strstr(line, "machine") &&
-                      strstr(line, "commit"),
+    ck_assert_msg(strstr(line, ",cpu_ms_per_simulated_s,cpu_ms_per_step,wall_ms_per_simulated_s,"
+                               "wall_ms_per_step,") &&
+                      strstr(line, "machine") && strstr(line, "commit"),
                   "header: %s", line);
     int n = 0;
     while (n < max && fgets(line, sizeof line, f)) {
@@ -81,9 +82,11 @@ static int read_rows(const char *path, row *rows, int max)
         p = q + 2;
         r->error = strtod(p, &p);
         r->reference = strtod(p + 1, &p);
-        r->ms_per_s = strtod(p + 1, &p);
-        r->ms_per_step = strtod(p + 1, &p);
-        r->size = strtod(p + 1, &p); /* cells or particles */
+        r->ms_per_s = strtod(p + 1, &p);    /* CPU time */
+        r->ms_per_step = strtod(p + 1, &p); /* CPU time */
+        strtod(p + 1, &p);                  /* wall clock per simulated s */
+        strtod(p + 1, &p);                  /* wall clock per step */
+        r->size = strtod(p + 1, &p);        /* cells or particles */
         ++n;
     }
     fclose(f);
@@ -135,8 +138,8 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
             log(sel[i]->error / sel[i + 1]->error) / log(sel[i + 1]->value / sel[i]->value);
         ck_assert_msg(order >= 1.9, "wave order %.3f between %.1f and %.1f cells per wavelength",
                       order, sel[i]->value, sel[i + 1]->value);
-        /* the cost columns are wall clock, which a loaded machine makes
-         * noisy: a test asserts the work (cells) and that a cost was
+        /* the cost columns (CPU time) vary with the machine and its
+         * load: a test asserts the work (cells) and that a cost was
          * measured, never how long it took */
         ck_assert_msg(sel[i + 1]->size > sel[i]->size && sel[i + 1]->ms_per_step > 0 &&
                           sel[i + 1]->ms_per_s > 0,
@@ -256,16 +259,25 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
                       sel[i]->error, sel[i + 1]->error);
     ck_assert_msg(sel[m - 1]->error < 0.15, "tilted layer: %.3f spacings", sel[m - 1]->error);
     /* the coupler: with N_surf = 1 the combined field holds nothing below
-     * the SPH cell; with N_surf >= 2 the waves resolve most of the
-     * reference run's detail (the flow is chaotic under two-way coupling,
-     * so no monotone order between finer grids is asserted) */
-    m = select_rows(rows, n, "coupler", "n_surf", "detail", sel);
+     * the SPH cell; each doubling of the wave grid resolves one more band
+     * of scales, so the band spectrum's distance from the reference falls
+     * (32 % at N_surf 2, 11 % at 4 measured), and a band the grid
+     * resolves is within 20 % of the reference's (5 to 7 % measured) */
+    m = select_rows(rows, n, "coupler", "n_surf", "spectrum", sel);
     ck_assert_int_ge(m, 3);
     ck_assert_msg(sel[0]->value == 1 && sel[0]->error == 1, "N_surf %.0f: %.3f", sel[0]->value,
                   sel[0]->error);
+    for (int i = 1; i < m; ++i) {
+        ck_assert_msg(sel[i]->error < 0.5, "N_surf %.0f misses %.0f %% of the spectrum",
+                      sel[i]->value, 100 * sel[i]->error);
+        ck_assert_msg(sel[i]->error < sel[i - 1]->error, "N_surf %.0f: %.3f, N_surf %.0f: %.3f",
+                      sel[i - 1]->value, sel[i - 1]->error, sel[i]->value, sel[i]->error);
+    }
+    m = select_rows(rows, n, "coupler", "n_surf", "energy at 1-2 cm", sel);
+    ck_assert_int_ge(m, 3);
     for (int i = 1; i < m; ++i)
-        ck_assert_msg(sel[i]->error < 0.5, "N_surf %.0f resolves only %.0f %% of the detail",
-                      sel[i]->value, 100 * (1 - sel[i]->error));
+        ck_assert_msg(sel[i]->error < 0.2, "N_surf %.0f: the 1-2 cm band %.3f off", sel[i]->value,
+                      sel[i]->error);
     /* orders only where theory gives one, per knob and metric, with the
      * fitted range; no power fitted to a knob without one */
     ck_assert_ptr_nonnull(strstr(text, "- cells_per_wavelength, standing-mode frequency rel. "
@@ -290,21 +302,28 @@ START_TEST(quick_study_writes_everything_and_shows_the_theory)
                                        "sph_cost_hydrostatic_pressure_rms_rho0_g_h.png",
                                        "sph_cost_mean_compression_at_rest_interior.png",
                                        "sph_pareto.png",
+                                       "sph_pareto_compression.png",
+                                       "sph_solvers_compression.png",
                                        "extract_cost.png",
-                                       "extract_pareto.png",
+                                       "extract_pareto_flat.png",
                                        "coupler_cost.png",
                                        "coupler_pareto.png"};
-    for (int i = 0; i < 13; ++i)
+    for (size_t i = 0; i < sizeof pngs / sizeof pngs[0]; ++i)
         ck_assert_msg(exists(pngs[i]), "%s missing", pngs[i]);
     snprintf(path, sizeof path, "%s/accuracy.gp", dir);
     FILE *gp = fopen(path, "r");
     len = fread(text, 1, sizeof text - 1, gp);
     text[len] = '\0';
     fclose(gp);
-    ck_assert_ptr_nonnull(strstr(text,
-                                 "set output 'sph_cost_dam_break_column_h_rel_rms_error.png'\n"
-                                 "set title 'sph: dam-break column H rel. RMS error against cost"));
-    ck_assert_ptr_nonnull(strstr(text, "set ylabel 'dam-break column H rel. RMS error'"));
+    const char *at = strstr(text, "set output 'sph_cost_dam_break_column_h_rel_rms_error.png'\n");
+    ck_assert_ptr_nonnull(at);
+    /* the axes (log or linear) and the title follow the output */
+    ck_assert_ptr_nonnull(strstr(at, "set title 'sph: dam-break column H rel. RMS error against "
+                                     "cost"));
+    /* the metric with its unit, the cost in CPU time */
+    ck_assert_ptr_nonnull(strstr(at, "set ylabel 'dam-break column H rel. RMS error (relative, "
+                                     "0.01 = 1 %)'"));
+    ck_assert_ptr_nonnull(strstr(at, "set xlabel 'cost: CPU time per simulated second"));
     remove_dir();
 }
 END_TEST
@@ -318,7 +337,7 @@ START_TEST(jobs_case_and_merge_give_the_same_rows)
     int lines = 0;
     for (char *p = out; (p = strstr(p, "--case ")) != NULL; ++p)
         ++lines;
-    ck_assert_int_eq(lines, 15);
+    ck_assert_int_eq(lines, 16);
     ck_assert_ptr_nonnull(strstr(out, "--case water-dispersion --out"));
     ck_assert_ptr_nonnull(strstr(out, "/parts'"));
     /* two cheap cases by hand, as GNU parallel would run them, then merge */
@@ -339,7 +358,7 @@ START_TEST(jobs_case_and_merge_give_the_same_rows)
     size_t len = fread(text, 1, sizeof text - 1, f);
     text[len] = '\0';
     fclose(f);
-    ck_assert_ptr_nonnull(strstr(text, "2 of 15 cases"));
+    ck_assert_ptr_nonnull(strstr(text, "2 of 16 cases"));
     remove_dir();
 }
 END_TEST
@@ -478,7 +497,8 @@ START_TEST(plot_script_runs_nothing_from_a_part)
     fclose(gp);
     /* the one line with the metric: a single-quoted string, its quote doubled */
     char want[900];
-    snprintf(want, sizeof want, "set ylabel 'err `touch PWNED` it''s @x'\n");
+    snprintf(want, sizeof want,
+             "set ylabel 'err `touch PWNED` it''s @x (relative, 0.01 = 1 %%)'\n");
     ck_assert_msg(strstr(text, want) != NULL, "%s", text);
     ck_assert_ptr_null(strstr(text, "\"err"));
     if (system("command -v gnuplot >/dev/null 2>&1") == 0) {
@@ -546,7 +566,9 @@ static Suite *accuracy_suite(void)
 {
     Suite *s = suite_create("accuracy");
     TCase *t = tcase_create("accuracy");
-    tcase_set_timeout(t, 240); /* --quick: under 45 s on a quiet 2-core machine */
+    /* --quick: ~30 s of one core; 268 s of wall clock under a load of 20 on
+     * 2 cores, when 240 s timed out: a guard against a hang, not a bound */
+    tcase_set_timeout(t, 600);
     tcase_add_test(t, quick_study_writes_everything_and_shows_the_theory);
     tcase_add_test(t, jobs_case_and_merge_give_the_same_rows);
     tcase_add_test(t, bad_options_are_refused);

@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""The speed figures of README.md and docs/performance.md against the
-committed bench CSVs.
+"""The speed and accuracy figures of README.md, docs/performance.md and
+docs/accuracy.md against the committed CSVs.
 
 data/bench/*.csv are the CSVs of one `make bench` on a quiet machine
-(data/bench/README.md says which machine, commit and date). The pages
-quote them in two ways, both checked here:
+(data/bench/README.md says which machine, commit and date);
+data/accuracy/accuracy.csv is the study of one `make accuracy` (its
+accuracy.md says which machine and commit), which rewrites the accuracy
+figures. The pages quote them in two ways, both checked here:
 
   * a figure as a Markdown link to its CSV whose title picks the row and
     the column:
@@ -32,13 +34,15 @@ import datetime
 import glob
 import os
 import re
+import shlex
 import shutil
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DATA = os.path.join(ROOT, "data", "bench")
-LINK = re.compile(r'\[([-+]?[0-9]+(?:\.[0-9]+)?)\]\((?:\.\./)?(data/bench/[A-Za-z0-9_.-]+\.csv) "([^"]*)"\)')
-PAGES = ["README.md", os.path.join("docs", "performance.md")]
+LINK = re.compile(r'\[([-+]?[0-9]+(?:\.[0-9]+)?)\]\((?:\.\./)?(data/(?:bench|accuracy)/[A-Za-z0-9_.-]+\.csv) '
+                  r'"([^"]*)"\)')
+PAGES = ["README.md", os.path.join("docs", "performance.md"), os.path.join("docs", "accuracy.md")]
 TABLE = re.compile(r"<!-- bench-table ([a-z_]+) -->\n(.*?)<!-- /bench-table -->", re.S)
 
 
@@ -57,16 +61,24 @@ def load(name, cache={}):
 
 
 def lookup(name, selector):
-    words = selector.split()
+    """The value a selector names: key=value words (a value with spaces in
+    single quotes, as a shell reads it), then the column; a column ending
+    in % is given in percent (the CSV's fraction times 100)."""
+    try:
+        words = shlex.split(selector)
+    except ValueError as e:
+        raise Mismatch(f'"{selector}": {e}')
     if not words or "=" in words[-1]:
         raise Mismatch(f'"{selector}" names no column (key=value ... column)')
     column, keys = words[-1], dict(w.split("=", 1) for w in words[:-1])
+    scale = 100.0 if column.endswith("%") else 1.0
+    column = column.rstrip("%")
     rows = [r for r in load(name) if all(r.get(k) == v for k, v in keys.items())]
     if len(rows) != 1:
         raise Mismatch(f'"{selector}" picks {len(rows)} rows of {name}, not one')
     if column not in rows[0]:
         raise Mismatch(f"{name} has no column {column}")
-    return float(rows[0][column])
+    return scale * float(rows[0][column])
 
 
 def decimals(text):
@@ -155,7 +167,129 @@ def table_laws():
     return out
 
 
-TABLES = {"scenes": table_scenes, "parts": table_parts, "laws": table_laws}
+ACCURACY = "data/accuracy/accuracy.csv"
+SOLVERS = [("ideal_gas c=", "ideal gas"), ("tait c=", "Tait"), ("dfsph ", "DFSPH")]
+COLUMN = "dam-break column H rel. RMS error"
+COMPRESSION = "dam-break max compression"
+
+
+def dam_configs():
+    """The dam-break configurations of the committed study, one dict each:
+    solver, knob, value, config, particles, CPU and wall ms per simulated
+    s, column error and max compression (fractions)."""
+    out = {}
+    for r in load(ACCURACY):
+        if r["study"] != "sph" or r["metric"] not in (COLUMN, COMPRESSION):
+            continue
+        solver = next((name for prefix, name in SOLVERS if r["config"].startswith(prefix)), None)
+        if solver is None:
+            continue
+        key = r["config"]  # one run however many knobs list it
+        c = out.setdefault(key, {"solver": solver, "knob": r["knob"], "value": r["value"],
+                                 "config": r["config"], "particles": int(float(r["cells_or_particles"])),
+                                 "cpu": float(r["cpu_ms_per_simulated_s"]),
+                                 "wall": float(r["wall_ms_per_simulated_s"])})
+        c["column" if r["metric"] == COLUMN else "compression"] = float(r["error"])
+    return [c for c in out.values() if "column" in c and "compression" in c]
+
+
+def setting(c):
+    """A configuration in words: the config text without the particle count
+    (given apart)."""
+    words = c["config"].split(", ")
+    return ", ".join(w for w in words if not w.endswith(" particles")).replace("_", " ")
+
+
+def cheapest(configs, solver, column=None, compression=None):
+    ok = [c for c in configs if c["solver"] == solver and
+          (column is None or c["column"] <= column) and
+          (compression is None or c["compression"] <= compression)]
+    return min(ok, key=lambda c: c["cpu"]) if ok else None
+
+
+def table_accuracy_choose():
+    """How to choose an SPH solver and its settings: per solver the
+    cheapest dam-break configuration (CPU time per simulated second) that
+    reaches a residual-column error, a compression, and both."""
+    configs = dam_configs()
+    if not configs:
+        raise Mismatch(f"{ACCURACY} has no dam-break rows")
+    goals = [("column H error ≤ 5 %", 0.05, None), ("max compression ≤ 1 %", None, 0.01),
+             ("max compression ≤ 0.1 %", None, 0.001), ("column ≤ 5 % and compression ≤ 0.1 %",
+                                                         0.05, 0.001)]
+    out = ["| solver | goal | cheapest configuration | particles | CPU s per simulated s | "
+           "column H error | max compression |", "|---|---|---|---|---|---|---|"]
+    for _, solver in SOLVERS:
+        for goal, col, comp in goals:
+            c = cheapest(configs, solver, col, comp)
+            if c is None:
+                out.append(f"| {solver} | {goal} | none of the "
+                           f"{sum(1 for x in configs if x['solver'] == solver)} run | | | | |")
+                continue
+            out.append(f"| {solver} | {goal} | {setting(c)} | {c['particles']} | "
+                       f"{c['cpu'] / 1000:.2f} | {100 * c['column']:.1f} % | "
+                       f"{100 * c['compression']:.3f} % |")
+        least = min((x for x in configs if x["solver"] == solver),
+                    key=lambda x: (x["compression"], x["cpu"]), default=None)
+        if least:
+            out.append(f"| {solver} | the least compression of the study | {setting(least)} | "
+                       f"{least['particles']} | {least['cpu'] / 1000:.2f} | "
+                       f"{100 * least['column']:.1f} % | {100 * least['compression']:.3f} % |")
+    return out
+
+
+def table_accuracy_water():
+    """Where eq. 2 (c = sqrt(g d)) holds against real water: per depth the
+    shortest wavelength from which on every longer one is within 1 %, and
+    the error there."""
+    rows = [r for r in load(ACCURACY) if r["study"] == "water"]
+    if not rows:
+        raise Mismatch(f"{ACCURACY} has no water rows")
+    out = []
+    for knob in dict.fromkeys(r["knob"] for r in rows):
+        pts = sorted((float(r["value"]), float(r["error"])) for r in rows if r["knob"] == knob)
+        depth = knob.split("depth_")[1]
+        start = None
+        for lam, err in reversed(pts):
+            if err > 0.01:
+                break
+            start = (lam, err)
+        short = [(lam, err) for lam, err in pts if lam <= 0.1]
+        worst = max(err for _, err in short) if short else float("nan")
+        if start is None:
+            out.append(f"- depth {depth}: no wavelength of the study (up to {pts[-1][0]:g} m) is "
+                       "within 1 %.")
+        else:
+            out.append(f"- depth {depth}: within 1 % from {start[0]:.3g} m on ({100 * start[1]:.2f} % "
+                       f"there); at 1 mm to 10 cm off by up to {100 * worst:.0f} %.")
+    return out
+
+
+def table_accuracy_nsurf():
+    """What the wave grid buys in the coupler study: one line per N_surf,
+    the band spectrum's distance from the reference and each band's."""
+    rows = [r for r in load(ACCURACY) if r["study"] == "coupler" and r["knob"] == "n_surf"]
+    if not rows:
+        raise Mismatch(f"{ACCURACY} has no coupler n_surf rows")
+    metrics = list(dict.fromkeys(r["metric"] for r in rows))
+    bands = [m for m in metrics if m.startswith("energy at ")]
+    out = ["| N_surf | wave grid | spectrum off by | " +
+           " | ".join(m[len("energy at "):].replace(" rel. error", "") + " band off by"
+                      for m in bands) + " | wave stages, CPU ms per frame |",
+           "|---|---|---|" + "---|" * len(bands) + "---|"]
+    for value in dict.fromkeys(r["value"] for r in rows):
+        by = {r["metric"]: r for r in rows if r["value"] == value}
+        first = by[metrics[0]]
+        cells = [f"{100 * float(by[m]['error']):.1f} %" if m in by else "" for m in bands]
+        out.append(f"| {float(value):g} | {first['config'].split(',')[0]} | "
+                   f"{100 * float(first['error']):.1f} % | " + " | ".join(cells) +
+                   f" | {float(first['cpu_ms_per_step']):.2f} |")
+    return out
+
+
+TABLES = {"scenes": table_scenes, "parts": table_parts, "laws": table_laws,
+          "accuracy_choose": table_accuracy_choose, "accuracy_water": table_accuracy_water,
+          "accuracy_nsurf": table_accuracy_nsurf}
 
 
 def process(text, write, page="README.md"):
@@ -188,6 +322,10 @@ def process(text, write, page="README.md"):
             return m.group(0)
         try:
             want = "\n".join(TABLES[name]()) + "\n"
+        except KeyError as e:
+            problems.append(f"{page}:{line_of(m.start())}: bench table {name}: no column {e} "
+                            "in its CSV")
+            return m.group(0)
         except Mismatch as e:
             problems.append(f"{page}:{line_of(m.start())}: {e}")
             return m.group(0)
@@ -264,23 +402,24 @@ def main(argv):
             if new != text:
                 with open(page, "w") as f:
                     f.write(new)
-            print(f"bench figures: {name} follows data/bench/*.csv")
+            print(f"bench figures: {name} follows its CSVs")
             continue
         if problems:
             print("\n".join(problems), file=sys.stderr)
             print(f"check-bench-figures: {len(problems)} figure(s) of {name} differ from "
-                  "data/bench/*.csv (after a deliberate `make bench`: `make bench-commit`)",
+                  "data/bench/*.csv or data/accuracy/accuracy.csv (after a deliberate `make "
+                  "bench`: `make bench-commit`; `make accuracy` rewrites its own)",
                   file=sys.stderr)
             failed = 1
             continue
         figures = len(LINK.findall(text))
         tables = len(TABLE.findall(text))
         if figures + tables == 0:
-            print(f"check-bench-figures: {name} links no figure to data/bench/", file=sys.stderr)
+            print(f"check-bench-figures: {name} links no figure to data/", file=sys.stderr)
             failed = 1
             continue
         print(f"bench figures: {figures} linked figures and {tables} tables of {name} match "
-              "data/bench/*.csv")
+              "their CSVs")
     return failed
 
 

@@ -63,4 +63,19 @@ _, _, table = run("<!-- bench-table scenes -->\n<!-- /bench-table -->\n", "--wri
 expect(True, table)
 expect(False, table.replace("| fig1 | 2000 |", "| fig1 | 2001 |", 1), "bench table scenes")
 expect(False, "<!-- bench-table nope -->\n<!-- /bench-table -->\n", "no bench table")
-print("bench figures: the check refuses wrong figures, selectors and tables (14 cases)")
+# the accuracy study: a selector value with spaces in single quotes, a
+# column in percent (the CSV's fraction times 100)
+with open(os.path.join(HERE, "..", "..", "data", "accuracy", "accuracy.csv"), newline="") as f:
+    A = next(r for r in csv.DictReader(f) if r["study"] == "sph" and r["knob"] == "particles")
+AVALUE, AMETRIC, AERROR = A["value"], A["metric"], float(A["error"])
+AROW = (f'data/accuracy/accuracy.csv "study=sph knob=particles value={AVALUE} '
+        f"metric='{AMETRIC}' error%\"")
+AV = f"{100 * AERROR:.2f}"
+expect(True, f"[{AV}]({AROW}) %\n")
+expect(False, f"[{float(AV) + 0.01:.2f}]({AROW}) %\n", AV)
+expect(False, f"[{AV}]({AROW.replace(' error%', ' error')}) %\n", "is")
+expect(False, f'[1](data/accuracy/accuracy.csv "study=sph knob=particles metric=\'oops error")\n',
+       "closing quotation")
+_, _, table = run("<!-- bench-table accuracy_choose -->\n<!-- /bench-table -->\n", "--write")
+expect(True, table)
+print("bench figures: the check refuses wrong figures, selectors and tables (19 cases)")

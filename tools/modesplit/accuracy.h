@@ -18,16 +18,18 @@
 
 /* One run of one configuration: a row of accuracy.csv. */
 typedef struct acc_row {
-    char study[24];     /* waves, water, sph, extract, coupler */
-    char knob[32];      /* what was varied: cells, courant, particles, ... */
-    double value;       /* the knob's value (its unit in the knob's name) */
-    char config[96];    /* the configuration in words ("tait c0=20 m/s") */
-    char metric[48];    /* what the error measures */
-    double error;       /* that error (relative unless the metric says) */
-    double reference;   /* the reference value it was measured against */
-    double ms_per_s;    /* ms of wall clock per simulated second (NAN: n/a) */
-    double ms_per_step; /* ms per step (wave step, SPH frame, extraction) */
-    double size;        /* cells or particles */
+    char study[24];         /* waves, water, sph, extract, coupler */
+    char knob[32];          /* what was varied: cells, courant, particles, ... */
+    double value;           /* the knob's value (its unit in the knob's name) */
+    char config[96];        /* the configuration in words ("tait c0=20 m/s") */
+    char metric[48];        /* what the error measures */
+    double error;           /* that error (relative unless the metric says) */
+    double reference;       /* the reference value it was measured against */
+    double ms_per_s;        /* ms of wall clock per simulated second (NAN: n/a) */
+    double ms_per_step;     /* ms of wall clock per step (wave step, SPH step, extraction) */
+    double cpu_ms_per_s;    /* ms of CPU time (every thread of the work) per simulated s */
+    double cpu_ms_per_step; /* the same per step: the costs the report plots */
+    double size;            /* cells or particles */
     int threads;
     char machine[256]; /* as read from a part ("": this run's) */
     char commit[128];  /* as read from a part ("": this run's) */
@@ -38,7 +40,27 @@ typedef struct acc_ctx {
     acc_row *rows;
     int nrows, cap;
     char note[16384]; /* notes for accuracy.md: solvers not in this build, ... */
+    char *trace;      /* curves for the overlay plots (acc_trace), NULL: none */
+    size_t trace_len, trace_cap;
 } acc_ctx;
+
+/* Append text to the case's curves: gnuplot data blocks ("# title" line,
+ * "x y" lines, two blank lines), written to the part's NAME.trace and
+ * merged into DIR/STUDY_trace.dat by --merge. */
+void acc_trace(acc_ctx *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* The cost of a piece of work, wall clock and CPU time: the CPU time is
+ * the process's (CLOCK_PROCESS_CPUTIME_ID, every thread summed), read
+ * only around the library calls a case times. Each case of `make
+ * accuracy` runs in its own process and nothing else runs in it while a
+ * timer is open, so the sum is the work's own: unlike the wall clock, other
+ * work on a loaded machine does not inflate it. */
+typedef struct acc_timer {
+    double wall, cpu;   /* s, summed over the tic/toc pairs */
+    double wall0, cpu0; /* the open pair's start */
+} acc_timer;
+void acc_tic(acc_timer *t);
+void acc_toc(acc_timer *t);
 
 /* Append a row; 0 on success. */
 int acc_add(acc_ctx *c, const acc_row *r);
@@ -64,6 +86,7 @@ int study_sph_particles_51k(acc_ctx *c);
 int study_sph_particles_64k(acc_ctx *c);
 int study_sph_laws(acc_ctx *c);
 int study_sph_sound(acc_ctx *c);
+int study_sph_dfsph(acc_ctx *c);
 int study_sph_courant(acc_ctx *c);
 int study_sph_rest(acc_ctx *c);
 int study_extract_flat(acc_ctx *c);
@@ -74,9 +97,11 @@ int study_coupler(acc_ctx *c);
 /* The report from rows: DIR/accuracy.md, DIR/accuracy.gp (+ the .dat files
  * it reads) and, when gnuplot runs, the PNG plots in DIR: per study one
  * cost plot per metric (STUDY_cost.png for the first, STUDY_cost_SLUG.png
- * for the others) and the Pareto chart of the first. 0 on success. */
+ * for the others), the Pareto charts and, when traces > 0 (the blocks of
+ * DIR/sph_trace.dat), the dam break's curves over the experiment's points.
+ * 0 on success. */
 int acc_report(const char *dir, const acc_row *rows, int n, const char *notes, const char *machine,
-               const char *commit, int *plotted);
+               const char *commit, int traces, int *plotted);
 /* Observed order: minus the least-squares slope of log(error) against
  * log(value) over the rows of (study, knob) with the knob's first metric
  * (accuracy.md gives it per knob and metric, only where theory gives an

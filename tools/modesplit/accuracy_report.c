@@ -33,20 +33,64 @@ static double theory_order(const char *study, const char *knob, const char *metr
     return NAN;
 }
 
-/* Cost of a row on the study's cost axis: ms per simulated second when
- * every row of the study has it, else ms per step (extraction: one call,
- * coupler: one frame). */
+/* Cost of a row on the study's cost axis, in CPU time (the wall clock a
+ * loaded machine inflates is in the CSV beside it): ms per simulated
+ * second when every row of the study has it, else ms per step
+ * (extraction: one call, coupler: one frame). */
 static int study_uses_per_s(const acc_row *rows, int n, const char *study)
 {
     for (int i = 0; i < n; ++i)
-        if (!strcmp(rows[i].study, study) && !isfinite(rows[i].ms_per_s))
+        if (!strcmp(rows[i].study, study) && !isfinite(rows[i].cpu_ms_per_s))
             return 0;
     return 1;
 }
 
 static double cost(const acc_row *r, int per_s)
 {
-    return per_s ? r->ms_per_s : r->ms_per_step;
+    return per_s ? r->cpu_ms_per_s : r->cpu_ms_per_step;
+}
+
+/* The Pareto charts: per study the metric that trades against cost and,
+ * where a study mixes test shapes, one chart per shape (the rows whose
+ * knob starts with prefix). A study not listed gets one chart of its
+ * first metric, STUDY_pareto.png. The SPH dam break's front is not one:
+ * its error is a start lag that sits at 8-12 % at every cost. */
+typedef struct pareto_spec {
+    const char *study, *metric, *prefix, *stem;
+} pareto_spec;
+static const pareto_spec pareto_specs[] = {
+    {"sph", "dam-break column H rel. RMS error", "", "sph_pareto"},
+    {"sph", "dam-break max compression", "", "sph_pareto_compression"},
+    {"extract", "height RMS error in spacings", "flat", "extract_pareto_flat"},
+    {"extract", "height RMS error in spacings", "tilted", "extract_pareto_tilted"},
+    {"extract", "height RMS error in spacings", "column", "extract_pareto_column"},
+};
+#define NSPECS ((int)(sizeof pareto_specs / sizeof pareto_specs[0]))
+
+/* The specs of a study into out (the default one in *dflt when it has
+ * none listed); their count. */
+static int specs_of(const char *study, const char *first_metric, pareto_spec *dflt,
+                    const pareto_spec **out)
+{
+    int k = 0;
+    for (int i = 0; i < NSPECS; ++i)
+        if (!strcmp(pareto_specs[i].study, study))
+            out[k++] = &pareto_specs[i];
+    if (k == 0) {
+        static char stems[MAXK][48];
+        static int used;
+        char *stem = stems[used++ % MAXK];
+        snprintf(stem, 48, "%s_pareto", study);
+        *dflt = (pareto_spec){study, first_metric, "", stem};
+        out[k++] = dflt;
+    }
+    return k;
+}
+
+static int in_spec(const acc_row *r, const pareto_spec *p)
+{
+    return !strcmp(r->study, p->study) && !strcmp(r->metric, p->metric) &&
+           !strncmp(r->knob, p->prefix, strlen(p->prefix));
 }
 
 /* Minus the least-squares slope of log(error) against log(value) over
@@ -90,23 +134,15 @@ double acc_order(const acc_row *rows, int n, const char *study, const char *knob
     return NAN;
 }
 
-/* Row i is on the Pareto front of its study: its metric is the study's
- * first, and no other configuration of the study with that metric is at
- * most as costly and at most as wrong, and better in one. */
-static int on_front(const acc_row *rows, int n, int i, int per_s)
+/* Row i is on the Pareto front of spec p: no other row of p is at most
+ * as costly and at most as wrong, and better in one. */
+static int on_front(const acc_row *rows, int n, int i, int per_s, const pareto_spec *p)
 {
     double ci = cost(&rows[i], per_s), ei = rows[i].error;
-    if (!isfinite(ci))
+    if (!in_spec(&rows[i], p) || !isfinite(ci) || !isfinite(ei))
         return 0;
-    for (int j = 0; j < n; ++j) /* the study's first metric */
-        if (!strcmp(rows[j].study, rows[i].study)) {
-            if (strcmp(rows[j].metric, rows[i].metric))
-                return 0;
-            break;
-        }
     for (int j = 0; j < n; ++j) {
-        if (j == i || strcmp(rows[j].study, rows[i].study) ||
-            strcmp(rows[j].metric, rows[i].metric))
+        if (j == i || !in_spec(&rows[j], p))
             continue;
         double cj = cost(&rows[j], per_s), ej = rows[j].error;
         if (cj <= ci && ej <= ei && (cj < ci || ej < ei))
@@ -207,9 +243,158 @@ static void metric_stem(char *buf, size_t size, const char *study, int m, const 
 static const char *cost_label(const acc_row *rows, int n, const char *study)
 {
     if (study_uses_per_s(rows, n, study))
-        return "cost: ms of wall clock per simulated second (1 thread)";
-    return !strcmp(study, "coupler") ? "cost: ms of wall clock per frame (1 thread)"
-                                     : "cost: ms of wall clock per extraction call (1 thread)";
+        return "cost: CPU time per simulated second (ms, 1 thread)";
+    return !strcmp(study, "coupler") ? "cost: CPU time of the wave stages per frame (ms, 1 thread)"
+                                     : "cost: CPU time per extraction call (ms, 1 thread)";
+}
+
+/* A metric with its unit, for an axis. */
+static void metric_label(char *buf, size_t size, const char *metric)
+{
+    const char *unit = "relative, 0.01 = 1 %";
+    if (strstr(metric, "in spacings"))
+        unit = "particle spacings";
+    else if (strstr(metric, "time shift T0"))
+        unit = "T = t sqrt(2 g / a)";
+    else if (strstr(metric, "Ritter"))
+        unit = "ratio";
+    else if (strstr(metric, "rho0 g H"))
+        unit = "fraction of rho0 g H";
+    snprintf(buf, size, "%s (%s)", metric, unit);
+}
+
+/* A knob as a legend names it. */
+static void knob_label(char *buf, size_t size, const char *knob)
+{
+    static const struct {
+        const char *knob, *label;
+    } names[] = {
+        {"cells_per_wavelength", "cells per wavelength"},
+        {"courant", "Courant number"},
+        {"ring_cells_per_drop_radius", "cells per drop radius"},
+        {"particles", "Tait c0 = 20 m/s, by particle count"},
+        {"law_ideal_gas", "ideal gas sqrt(k) = 20 m/s, by particle count"},
+        {"law_tait", "Tait c0 = 20 m/s, by particle count"},
+        {"law_dfsph", "DFSPH 0.1 %, by particle count"},
+        {"sound_speed_ideal_gas", "ideal gas: sqrt(k) (m/s)"},
+        {"sound_speed_tait", "Tait: sound speed c0 (m/s)"},
+        {"max_density_error_dfsph", "DFSPH: max density error"},
+        {"courant_ideal_gas", "ideal gas: Courant factor"},
+        {"courant_tait", "Tait: Courant factor"},
+        {"courant_dfsph", "DFSPH: Courant factor"},
+        {"rest_particles_ideal_gas", "ideal gas at rest, by particle count"},
+        {"rest_particles_tait", "Tait at rest, by particle count"},
+        {"rest_particles_dfsph", "DFSPH at rest, by particle count"},
+        {"n_surf", "N_surf (wave cells per SPH cell)"},
+        {"n_time", "N_time (wave steps per SPH step)"},
+        {"two_way_gain", "two-way coupling gain"},
+    };
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i)
+        if (!strcmp(knob, names[i].knob)) {
+            snprintf(buf, size, "%s", names[i].label);
+            return;
+        }
+    /* extraction: SHAPE[_fine]_field_cells, SHAPE[_fine]_smoothing_passes */
+    snprintf(buf, size, "%s", knob);
+    for (char *p = buf; *p; ++p)
+        if (*p == '_')
+            *p = ' ';
+}
+
+/* The curves of a plot: a knob's rows, split by particle count when the
+ * knob was swept at several (several values at one size). */
+typedef struct curve {
+    const char *knob;
+    double size; /* NAN: every size */
+} curve;
+
+static int split_by_size(const acc_row *rows, int n, const char *study, const char *knob,
+                         const char *metric)
+{
+    int sizes = 0; /* more than one particle / cell count */
+    for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+            sizes |= !strcmp(rows[i].study, study) && !strcmp(rows[i].knob, knob) &&
+                     !strcmp(rows[i].metric, metric) && !strcmp(rows[j].study, study) &&
+                     !strcmp(rows[j].knob, knob) && !strcmp(rows[j].metric, metric) &&
+                     rows[i].size != rows[j].size;
+    for (int i = 0; sizes && i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+            if (!strcmp(rows[i].study, study) && !strcmp(rows[i].knob, knob) &&
+                !strcmp(rows[i].metric, metric) && !strcmp(rows[j].study, study) &&
+                !strcmp(rows[j].knob, knob) && !strcmp(rows[j].metric, metric) &&
+                rows[i].size == rows[j].size && rows[i].value != rows[j].value)
+                return 1;
+    return 0;
+}
+
+static int curves_of(const acc_row *rows, int n, const char *study, const char *metric, curve *out,
+                     int max)
+{
+    const char *kn[MAXK];
+    int nk = knobs(rows, n, study, kn), m = 0;
+    for (int k = 0; k < nk; ++k) {
+        if (!has_rows(rows, n, study, kn[k], metric))
+            continue;
+        if (!split_by_size(rows, n, study, kn[k], metric)) {
+            if (m < max)
+                out[m++] = (curve){kn[k], NAN};
+            continue;
+        }
+        for (int i = 0; i < n; ++i) {
+            const acc_row *r = &rows[i];
+            if (strcmp(r->study, study) || strcmp(r->knob, kn[k]) || strcmp(r->metric, metric))
+                continue;
+            int seen = 0;
+            for (int j = 0; j < m; ++j)
+                seen |= out[j].knob == kn[k] && out[j].size == r->size;
+            if (!seen && m < max)
+                out[m++] = (curve){kn[k], r->size};
+        }
+    }
+    return m;
+}
+
+static int in_curve(const acc_row *r, const char *study, const char *metric, const curve *cv)
+{
+    return !strcmp(r->study, study) && !strcmp(r->knob, cv->knob) && !strcmp(r->metric, metric) &&
+           (isnan(cv->size) || r->size == cv->size);
+}
+
+/* A point's label: the knob's value, or the particle / cell count when
+ * the curve runs over that count. */
+static void point_label(char *buf, size_t size, const acc_row *r, const curve *cv, int by_count)
+{
+    (void)cv;
+    if (by_count)
+        snprintf(buf, size, r->size >= 1e4 ? "%.0fk" : "%.0f",
+                 r->size >= 1e4 ? r->size / 1e3 : r->size);
+    else
+        snprintf(buf, size, "%g", r->value);
+}
+
+/* The knob's rows run over the particle / cell count: its value is the
+ * count, or one value at every count (a law at several counts). */
+static int runs_by_count(const acc_row *rows, int n, const char *study, const curve *cv,
+                         const char *metric)
+{
+    int eq = 1, same = 1, first = -1;
+    for (int i = 0; i < n; ++i)
+        if (in_curve(&rows[i], study, metric, cv)) {
+            eq &= rows[i].value == rows[i].size;
+            if (first < 0)
+                first = i;
+            else
+                same &= rows[i].value == rows[first].value;
+        }
+    return (eq || same) && strcmp(study, "waves") != 0 && strstr(cv->knob, "field_cells") == NULL;
+}
+
+/* Axes: log where the plotted range spans a decade or more, else linear. */
+static void gp_axes(FILE *gp, double xlo, double xhi, double ylo, double yhi)
+{
+    fprintf(gp, "\n%s x\n%s y\n", xlo > 0 && xhi >= 10 * xlo ? "set logscale" : "unset logscale",
+            ylo > 0 && yhi >= 10 * ylo ? "set logscale" : "unset logscale");
 }
 
 /* "Figures to quote": the sentences a user would repeat ("dam-break front
@@ -241,12 +426,18 @@ static const struct quote {
      "the experiment's"},
     {"sph", "particles", "dam-break column H rel. RMS error",
      "SPH dam break, residual column H(tau) RMS error", "particles", 1, 1, "", NULL},
-    {"sph", "law_ideal_gas", "dam-break front Z rel. RMS error", "front Z error, ideal gas",
+    {"sph", "law_ideal_gas", "dam-break column H rel. RMS error", "column H error, ideal gas",
      "particles", 1, 1, "", NULL},
-    {"sph", "law_tait", "dam-break front Z rel. RMS error", "front Z error, Tait", "particles", 1,
+    {"sph", "law_tait", "dam-break column H rel. RMS error", "column H error, Tait", "particles", 1,
      1, "", NULL},
-    {"sph", "law_dfsph", "dam-break front Z rel. RMS error", "front Z error, DFSPH", "particles", 1,
-     1, "", NULL},
+    {"sph", "law_dfsph", "dam-break column H rel. RMS error", "column H error, DFSPH", "particles",
+     1, 1, "", NULL},
+    {"sph", "law_ideal_gas", "dam-break max compression", "max compression, ideal gas", "particles",
+     1, 1, "", NULL},
+    {"sph", "law_tait", "dam-break max compression", "max compression, Tait", "particles", 1, 1, "",
+     NULL},
+    {"sph", "law_dfsph", "dam-break max compression", "max compression, DFSPH", "particles", 1, 1,
+     "", NULL},
     {"sph", "rest_particles_ideal_gas", "hydrostatic pressure RMS / (rho0 g H)",
      "SPH at rest, pressure profile RMS error over rho0 g H, ideal gas", "particles", 1, 1, "",
      NULL},
@@ -260,8 +451,9 @@ static const struct quote {
      "extraction, tilted layer, height error", "field cells a side", 0, 0, " spacings", NULL},
     {"extract", "column_field_cells", "height RMS error in spacings",
      "extraction, settled column, height error", "field cells a side", 0, 0, " spacings", NULL},
-    {"coupler", "n_surf", "sub-SPH-cell detail energy rel. error",
-     "coupler, detail below the SPH cell missing", "N_surf", 0, 1, "", NULL},
+    {"coupler", "n_surf", "sub-SPH-cell spectrum rel. error",
+     "coupler, the band spectrum below the SPH cell against the N_surf 16 reference", "N_surf", 0,
+     1, "", NULL},
 };
 
 static void fmt_cost(char *buf, size_t size, double ms, int per_s)
@@ -283,8 +475,8 @@ static void write_quotes(FILE *f, const acc_row *rows, int n)
             continue;
         int per_s = study_uses_per_s(rows, n, Q->study), first = 1;
         if (!any)
-            fprintf(f, "## Figures to quote\n\nWritten from the rows below (costs: one thread "
-                       "of the machine above).\n\n");
+            fprintf(f, "## Figures to quote\n\nWritten from the rows below (costs: CPU time "
+                       "of one thread of the machine above).\n\n");
         any = 1;
         fprintf(f, "- %s:", Q->what);
         for (int i = 0; i < n; ++i) {
@@ -316,6 +508,20 @@ static void write_quotes(FILE *f, const acc_row *rows, int n)
         fprintf(f, "\n");
 }
 
+/* Row i is on a Pareto front of its study. */
+static int front_any(const acc_row *rows, int n, int i, int per_s)
+{
+    const char *ms[MAXK];
+    metrics(rows, n, rows[i].study, ms);
+    pareto_spec dflt;
+    const pareto_spec *sp[NSPECS + 1];
+    int np = specs_of(rows[i].study, ms[0], &dflt, sp);
+    for (int k = 0; k < np; ++k)
+        if (on_front(rows, n, i, per_s, sp[k]))
+            return 1;
+    return 0;
+}
+
 static int write_md(const char *dir, const acc_row *rows, int n, const char *notes,
                     const char *machine, const char *commit, int plots)
 {
@@ -328,16 +534,21 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
     }
     fprintf(f,
             "# modesplit accuracy\n\nMachine: %s (the load of the last case merged; "
-            "every case's is in the notes and in the CSV's machine column). Commit: %s. "
-            "Wall-clock costs are of one thread on this machine: a load average above "
-            "the core count means other work shared the cores and inflated them, so "
-            "costs measured under load are noisy (compare them within a case, not across "
-            "cases); the errors do not depend on the load.\n\n"
+            "every case's is in the notes and in the CSV's machine column). Commit: %s.\n\n"
+            "Costs are CPU time: the CPU time of the process that ran the case "
+            "(CLOCK_PROCESS_CPUTIME_ID, every thread summed), read around the library calls "
+            "the case times; one thread did the work (the CSV's cpu_ms_* columns). Other "
+            "work on a loaded machine inflates the wall clock (the CSV's wall_ms_* columns) "
+            "but hardly the CPU time, so the tables and plots use CPU time. The errors do "
+            "not depend on the load: `make check` compares the quick study's rows with "
+            "these.\n\n"
             "Orders of convergence are given only where theory gives one (the waves' "
             "standing-mode frequency against cells per wavelength), fitted per knob and "
-            "metric over the range stated. The Pareto column marks, among the rows of a "
-            "study's first metric, those no other configuration beats on both cost and "
-            "error.\n\n",
+            "metric over the range stated. The Pareto column marks the rows no other "
+            "configuration beats on both cost and error, on the metric that trades: the "
+            "residual column H(tau) and the max compression for the SPH dam break (its "
+            "front's error is a start lag that no setting removes), one test shape at a "
+            "time for the extraction, the first metric for the others.\n\n",
             machine, commit);
     write_quotes(f, rows, n);
     if (notes && notes[0])
@@ -383,7 +594,15 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
                 metric_stem(stem, sizeof stem, st[s], m, ms[m], "_cost");
                 fprintf(f, "![%s: %s](%s.png) ", st[s], ms[m], stem);
             }
-            fprintf(f, "![%s pareto](%s_pareto.png)\n\n", st[s], st[s]);
+            pareto_spec dflt;
+            const pareto_spec *sp[NSPECS + 1];
+            int np = specs_of(st[s], ms[0], &dflt, sp);
+            for (int k = 0; k < np; ++k)
+                fprintf(f, "![%s: %s](%s.png) ", st[s], sp[k]->metric, sp[k]->stem);
+            if (!strcmp(st[s], "sph"))
+                fprintf(f, "![sph: compression by solver](sph_solvers_compression.png) "
+                           "![sph: column by solver](sph_solvers_column.png)");
+            fprintf(f, "\n\n");
             for (int m = 0; m < nm; ++m) {
                 metric_stem(stem, sizeof stem, st[s], m, ms[m], "_cost");
                 fprintf(f, "- `%s.png`: %s against %s; one curve per knob (", stem, ms[m],
@@ -408,27 +627,34 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
                             hidden, hidden > 1 ? "s" : "");
                 fprintf(f, ".\n");
             }
-            fprintf(f,
-                    "- `%s_pareto.png`: %s of every configuration against its cost; the "
-                    "line joins the Pareto front.\n\n",
-                    st[s], ms[0]);
+            for (int k = 0; k < np; ++k)
+                fprintf(f,
+                        "- `%s.png`: %s of every configuration%s%s against its cost; the line "
+                        "joins the Pareto front.\n",
+                        sp[k]->stem, sp[k]->metric, sp[k]->prefix[0] ? " of knobs " : "",
+                        sp[k]->prefix);
+            if (!strcmp(st[s], "sph"))
+                fprintf(f, "- `sph_solvers_compression.png`, `sph_solvers_column.png`: the dam "
+                           "break's max compression and residual-column error against cost, "
+                           "every configuration of each solver and its front.\n");
+            fprintf(f, "\n");
         }
         fprintf(f,
-                "| knob | value | configuration | metric | error | %s | ms per step | "
+                "| knob | value | configuration | metric | error | %s | CPU ms per step | "
                 "cells/particles | Pareto |\n|---|---|---|---|---|---|---|---|---|\n",
-                per_s ? "ms per simulated s" : "ms per simulated s (n/a)");
+                per_s ? "CPU ms per simulated s" : "CPU ms per simulated s (n/a)");
         for (int i = 0; i < n; ++i) {
             const acc_row *r = &rows[i];
             if (strcmp(r->study, st[s]))
                 continue;
             char a[32], b[32], c[32], d[32];
             fmt_num(a, sizeof a, r->error);
-            fmt_num(b, sizeof b, r->ms_per_s);
-            fmt_num(c, sizeof c, r->ms_per_step);
+            fmt_num(b, sizeof b, r->cpu_ms_per_s);
+            fmt_num(c, sizeof c, r->cpu_ms_per_step);
             fmt_num(d, sizeof d, r->size);
             fprintf(f, "| %s | %.4g | %s | %s | %s | %s | %s | %s | %s |\n", r->knob, r->value,
                     r->config, r->metric, a, b, c, d,
-                    !water && on_front(rows, n, i, per_s) ? "**yes**" : "");
+                    !water && front_any(rows, n, i, per_s) ? "**yes**" : "");
         }
         fprintf(f, "\n");
         for (int k = 0; k < nk; ++k)
@@ -477,7 +703,266 @@ static void gp_comment_text(FILE *gp, const char *text)
     }
 }
 
-static int write_plots(const char *dir, const acc_row *rows, int n, const char *commit)
+/* A configuration as a point's label: for the SPH dam break the solver,
+ * the swept setting (c = sound speed, e = DFSPH's max density error, C =
+ * Courant factor) and the particle count; else knob=value. */
+static void config_label(char *buf, size_t size, const acc_row *r, int with_solver)
+{
+    const char *k = r->knob;
+    if (strcmp(r->study, "sph") != 0) {
+        snprintf(buf, size, "%s=%g", k, r->value);
+        return;
+    }
+    const char *solver = !strncmp(r->config, "ideal_gas", 9) ? "ideal gas "
+                         : !strncmp(r->config, "tait", 4)    ? "Tait "
+                         : !strncmp(r->config, "dfsph", 5)   ? "DFSPH "
+                                                             : "";
+    const char *sym = strstr(k, "sound")     ? "c="
+                      : strstr(k, "density") ? "e="
+                      : strstr(k, "courant") ? "C="
+                                             : NULL;
+    char count[32];
+    snprintf(count, sizeof count, r->size >= 1e4 ? "%.0fk p" : "%.0f p",
+             r->size >= 1e4 ? r->size / 1e3 : r->size);
+    if (sym)
+        snprintf(buf, size, "%s%s%g, %s", with_solver ? solver : "", sym, r->value, count);
+    else
+        snprintf(buf, size, "%s%s", with_solver ? solver : "", count);
+}
+
+/* The Pareto chart of spec p: every row of it, the front joined and
+ * labelled with its knobs' values; dat and script lines. */
+static int write_pareto(FILE *gp, const char *dir, const acc_row *rows, int n, int per_s,
+                        const pareto_spec *p)
+{
+    char path[1200], dat[300], out[300], ylabel[160];
+    snprintf(dat, sizeof dat, "%s.dat", p->stem);
+    snprintf(out, sizeof out, "%s.png", p->stem);
+    snprintf(path, sizeof path, "%s/%s", dir, dat);
+    FILE *d = fopen(path, "w");
+    if (!d) {
+        tool_error("accuracy: cannot write %s", path);
+        return -1;
+    }
+    double xlo = INFINITY, xhi = 0, ylo = INFINITY, yhi = 0;
+    fprintf(d, "# every configuration (%s): cost error label\n", p->metric);
+    for (int i = 0; i < n; ++i)
+        if (in_spec(&rows[i], p)) {
+            double c = cost(&rows[i], per_s), e = rows[i].error;
+            fprintf(d, "%.6g %.6g \"%s=%g\"\n", c, e, rows[i].knob, rows[i].value);
+            if (c > 0 && e > 0) {
+                xlo = fmin(xlo, c);
+                xhi = fmax(xhi, c);
+                ylo = fmin(ylo, e);
+                yhi = fmax(yhi, e);
+            }
+        }
+    fprintf(d, "\n\n# the front, by cost\n");
+    double last = -1;
+    for (;;) {
+        int best = -1;
+        for (int i = 0; i < n; ++i)
+            if (on_front(rows, n, i, per_s, p) && cost(&rows[i], per_s) > last &&
+                (best < 0 || cost(&rows[i], per_s) < cost(&rows[best], per_s)))
+                best = i;
+        if (best < 0)
+            break;
+        last = cost(&rows[best], per_s);
+        char label[96];
+        config_label(label, sizeof label, &rows[best], 1);
+        fprintf(d, "%.6g %.6g \"%s\"\n", last, rows[best].error, label);
+    }
+    fclose(d);
+    char title[256];
+    snprintf(title, sizeof title, "%s: %s, every configuration;", p->study, p->metric);
+    fputs("set output ", gp);
+    gp_string(gp, out);
+    gp_axes(gp, xlo, xhi, ylo, yhi);
+    fputs("set title ", gp);
+    gp_string(gp, title);
+    fputs(" . \"\\n\" . 'the line joins the Pareto front; ", gp);
+    fputs(!strcmp(p->study, "sph") ? "c sound speed, e max density error, C Courant factor, "
+                                     "p particles'\nset xlabel "
+                                   : "labels: knob=value'\nset xlabel ",
+          gp);
+    gp_string(gp, cost_label(rows, n, p->study));
+    metric_label(ylabel, sizeof ylabel, p->metric);
+    fputs("\nset ylabel ", gp);
+    gp_string(gp, ylabel);
+    fputs("\nplot ", gp);
+    gp_string(gp, dat);
+    fputs(" index 0 using 1:2 with points pt 6 title 'configuration', \\\n     ", gp);
+    gp_string(gp, dat);
+    fputs(" index 1 using 1:2 with linespoints lw 2 pt 7 title 'Pareto front', \\\n     ", gp);
+    gp_string(gp, dat);
+    fputs(" index 1 using 1:2:3 with labels offset 1,0.7 left font ',8' notitle\n", gp);
+    return 0;
+}
+
+/* The dam break's rows of one metric by solver: per solver every
+ * configuration (each knob it was swept over) and its Pareto front,
+ * labelled; the plot a user reads "for 0.1 % compression DFSPH costs X,
+ * Tait Y" from. */
+static int write_solvers(FILE *gp, const char *dir, const acc_row *rows, int n, const char *metric,
+                         const char *stem)
+{
+    static const char *const solver[] = {"ideal_gas", "tait", "dfsph"};
+    static const char *const names[] = {"ideal gas", "Tait", "DFSPH"};
+    char path[1200], dat[300], out[300], ylabel[160];
+    snprintf(dat, sizeof dat, "%s.dat", stem);
+    snprintf(out, sizeof out, "%s.png", stem);
+    snprintf(path, sizeof path, "%s/%s", dir, dat);
+    FILE *d = fopen(path, "w");
+    if (!d) {
+        tool_error("accuracy: cannot write %s", path);
+        return -1;
+    }
+    double xlo = INFINITY, xhi = 0, ylo = INFINITY, yhi = 0;
+    int have[3] = {0, 0, 0};
+    for (int s = 0; s < 3; ++s) {
+        char tag[32];
+        snprintf(tag, sizeof tag, "%s ", solver[s]);
+        pareto_spec p = {"sph", metric, "", stem};
+        fprintf(d, "# %s: every configuration, cost error\n", names[s]);
+        for (int i = 0; i < n; ++i)
+            if (in_spec(&rows[i], &p) && !strncmp(rows[i].config, tag, strlen(tag)) &&
+                cost(&rows[i], 1) > 0 && rows[i].error > 0) {
+                fprintf(d, "%.6g %.6g\n", cost(&rows[i], 1), rows[i].error);
+                xlo = fmin(xlo, cost(&rows[i], 1));
+                xhi = fmax(xhi, cost(&rows[i], 1));
+                ylo = fmin(ylo, rows[i].error);
+                yhi = fmax(yhi, rows[i].error);
+                have[s] = 1;
+            }
+        if (!have[s])
+            fprintf(d, "nan nan\n");
+        fprintf(d, "\n\n# %s: its front, cost error label\n", names[s]);
+        double last = -1, best_e = INFINITY;
+        for (;;) { /* by cost, each point less wrong than every cheaper one */
+            int best = -1;
+            for (int i = 0; i < n; ++i)
+                if (in_spec(&rows[i], &p) && !strncmp(rows[i].config, tag, strlen(tag)) &&
+                    cost(&rows[i], 1) > last && rows[i].error > 0 &&
+                    (best < 0 || cost(&rows[i], 1) < cost(&rows[best], 1)))
+                    best = i;
+            if (best < 0)
+                break;
+            last = cost(&rows[best], 1);
+            if (rows[best].error >= best_e)
+                continue;
+            best_e = rows[best].error;
+            char label[96];
+            config_label(label, sizeof label, &rows[best], 0);
+            fprintf(d, "%.6g %.6g \"%s\"\n", last, rows[best].error, label);
+        }
+        if (!have[s])
+            fprintf(d, "nan nan \"\"\n");
+        fprintf(d, "\n\n");
+    }
+    fclose(d);
+    char title[256];
+    snprintf(title, sizeof title, "dam break: %s against cost, every configuration per solver;",
+             metric);
+    fputs("set output ", gp);
+    gp_string(gp, out);
+    gp_axes(gp, xlo, xhi, ylo, yhi);
+    fputs("set title ", gp);
+    gp_string(gp, title);
+    fputs(" . \"\\n\" . 'lines: each solver''s front; c sound speed, e max density error, C "
+          "Courant factor, p particles'\nset xlabel ",
+          gp);
+    gp_string(gp, cost_label(rows, n, "sph"));
+    metric_label(ylabel, sizeof ylabel, metric);
+    fputs("\nset ylabel ", gp);
+    gp_string(gp, ylabel);
+    fputs("\nplot ", gp);
+    for (int s = 0; s < 3; ++s) {
+        fprintf(gp, "%s", s ? ", \\\n     " : "");
+        gp_string(gp, dat);
+        fprintf(gp, " index %d using 1:2 with points pt 6 lc %d title '%s, every configuration'",
+                2 * s, s + 1, names[s]);
+        fputs(", \\\n     ", gp);
+        gp_string(gp, dat);
+        fprintf(gp, " index %d using 1:2 with linespoints lw 2 pt 7 lc %d title '%s, front'",
+                2 * s + 1, s + 1, names[s]);
+        fputs(", \\\n     ", gp);
+        gp_string(gp, dat);
+        fprintf(gp,
+                " index %d using 1:2:3 with labels offset 0.8,0.6 left font ',7' tc lt %d "
+                "notitle",
+                2 * s + 1, s + 1);
+    }
+    fputs("\n", gp);
+    return 0;
+}
+
+/* The dam break's curves over Martin & Moyce's points: the blocks of
+ * DIR/sph_trace.dat ("# front Z(T): WHO" or "# column H(tau): WHO"),
+ * the experiment's drawn as points, the runs' as lines. */
+static int write_overlays(FILE *gp, const char *dir)
+{
+    char path[1200], line[512];
+    snprintf(path, sizeof path, "%s/sph_trace.dat", dir);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return 0;
+    static char title[256][160];
+    int nb = 0;
+    while (fgets(line, sizeof line, f) && nb < 256)
+        if (line[0] == '#') {
+            line[strcspn(line, "\n")] = '\0';
+            snprintf(title[nb++], sizeof title[0], "%.159s", line + 2);
+        }
+    fclose(f);
+    static const struct {
+        const char *prefix, *png, *title, *xlabel, *ylabel;
+    } plot[] = {
+        {"front Z(T): ", "sph_front_overlay.png",
+         "dam break, surge front: simulated Z(T) at each solver's defaults against Martin & "
+         "Moyce (1952)",
+         "T = t sqrt(2 g / a)", "Z = front x / a"},
+        {"column H(tau): ", "sph_column_overlay.png",
+         "dam break, residual column at the wall: simulated H(tau) against Martin & Moyce "
+         "(1952)",
+         "tau = t sqrt(g / a)", "H = height / 2a"},
+    };
+    for (int p = 0; p < 2; ++p) {
+        fputs("set output ", gp);
+        gp_string(gp, plot[p].png);
+        fputs("\nunset logscale x\nunset logscale y\nset title ", gp);
+        gp_string(gp, plot[p].title);
+        fputs("\nset xlabel ", gp);
+        gp_string(gp, plot[p].xlabel);
+        fputs("\nset ylabel ", gp);
+        gp_string(gp, plot[p].ylabel);
+        fputs("\nplot ", gp);
+        int first = 1, lc = 0;
+        size_t pl = strlen(plot[p].prefix);
+        for (int b = 0; b < nb; ++b) {
+            if (strncmp(title[b], plot[p].prefix, pl))
+                continue;
+            int exp = strstr(title[b], "Martin") != NULL;
+            fputs(first ? "" : ", \\\n     ", gp);
+            if (exp)
+                fprintf(gp,
+                        "'sph_trace.dat' index %d using 1:2 with points pt 5 ps 1.3 "
+                        "lc rgb 'black' title ",
+                        b);
+            else /* a colour per solver, a dash per particle count */
+                fprintf(gp,
+                        "'sph_trace.dat' index %d using 1:2 with lines lw 1.5 dt %d lc %d "
+                        "title ",
+                        b, 1 + lc / 3, 1 + lc % 3),
+                    ++lc;
+            gp_string(gp, title[b] + pl);
+            first = 0;
+        }
+        fputs("\n", gp);
+    }
+    return 0;
+}
+
+static int write_plots(const char *dir, const acc_row *rows, int n, const char *commit, int traces)
 {
     char path[1200], stem[256], png[256];
     snprintf(path, sizeof path, "%s/accuracy.gp", dir);
@@ -490,19 +975,21 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
     gp_comment_text(gp, commit);
     fputs("); run it in this\n"
           "# directory: gnuplot accuracy.gp. Restyle freely.\n"
-          "set terminal pngcairo noenhanced size 1000,650 font 'sans,11'\n"
-          "set logscale xy\nset format xy '%g'\nset grid\nset key outside right\n",
+          "set terminal pngcairo noenhanced size 1100,700 font 'sans,11'\n"
+          "set format xy '%g'\nset grid\nset key outside right\n",
           gp);
     const char *st[MAXK];
     int ns = studies(rows, n, st);
     for (int s = 0; s < ns; ++s) {
         int per_s = study_uses_per_s(rows, n, st[s]);
         int water = !strcmp(st[s], "water");
-        const char *kn[MAXK], *ms[MAXK];
-        int nk = knobs(rows, n, st[s], kn), nm = metrics(rows, n, st[s], ms);
+        const char *ms[MAXK];
+        int nm = metrics(rows, n, st[s], ms);
         /* one plot per metric: its rows against cost (water: against the
-         * wavelength), one curve per knob that has the metric */
+         * wavelength), one curve per knob (and particle count) */
         for (int m = 0; m < nm; ++m) {
+            curve cv[MAXK];
+            int nc = curves_of(rows, n, st[s], ms[m], cv, MAXK);
             metric_stem(stem, sizeof stem, st[s], m, ms[m], "");
             snprintf(path, sizeof path, "%s/%s.dat", dir, stem);
             FILE *d = fopen(path, "w");
@@ -511,32 +998,40 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
                 fclose(gp);
                 return -1;
             }
-            int idx = 0;
-            for (int k = 0; k < nk; ++k) {
-                if (!has_rows(rows, n, st[s], kn[k], ms[m]))
-                    continue;
-                fprintf(d, "# %s, %s: %s error value\n", kn[k], ms[m],
+            double xlo = INFINITY, xhi = 0, ylo = INFINITY, yhi = 0;
+            for (int k = 0; k < nc; ++k) {
+                int by_count = runs_by_count(rows, n, st[s], &cv[k], ms[m]);
+                fprintf(d, "# %s, %s: %s error value label\n", cv[k].knob, ms[m],
                         water ? "wavelength" : "cost");
                 for (int i = 0; i < n; ++i)
-                    if (!strcmp(rows[i].study, st[s]) && !strcmp(rows[i].knob, kn[k]) &&
-                        !strcmp(rows[i].metric, ms[m]))
-                        fprintf(d, "%.6g %.6g %.6g\n",
-                                water ? rows[i].value : cost(&rows[i], per_s), rows[i].error,
-                                rows[i].value);
+                    if (in_curve(&rows[i], st[s], ms[m], &cv[k])) {
+                        double x = water ? rows[i].value : cost(&rows[i], per_s), y = rows[i].error;
+                        char label[32];
+                        point_label(label, sizeof label, &rows[i], &cv[k], by_count);
+                        fprintf(d, "%.6g %.6g %.6g \"%s\"\n", x, y, rows[i].value, label);
+                        if (x > 0 && y > 0) {
+                            xlo = fmin(xlo, x);
+                            xhi = fmax(xhi, x);
+                            ylo = fmin(ylo, y);
+                            yhi = fmax(yhi, y);
+                        }
+                    }
                 fprintf(d, "\n\n");
-                ++idx;
             }
             fclose(d);
+            char ylabel[160];
+            metric_label(ylabel, sizeof ylabel, ms[m]);
             /* names from the parts only as gp_string writes them */
             if (water) {
                 snprintf(png, sizeof png, "%s_error.png", st[s]);
                 fputs("set output ", gp);
                 gp_string(gp, png);
-                fputs("\nset title 'water: the paper''s non-dispersive eq. 2 against real "
+                gp_axes(gp, xlo, xhi, ylo, yhi);
+                fputs("set title 'water: the paper''s non-dispersive eq. 2 against real "
                       "capillary-gravity waves, one curve per depth'\n"
                       "set xlabel 'wavelength (m)'\nset ylabel ",
                       gp);
-                gp_string(gp, ms[m]);
+                gp_string(gp, ylabel);
             } else {
                 char title[256];
                 metric_stem(png, sizeof png, st[s], m, ms[m], "_cost");
@@ -545,85 +1040,62 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
                          ms[m]);
                 fputs("set output ", gp);
                 gp_string(gp, png);
-                fputs("\nset title ", gp);
+                gp_axes(gp, xlo, xhi, ylo, yhi);
+                fputs("set title ", gp);
                 gp_string(gp, title);
-                fputs("\nset xlabel ", gp);
+                fputs(" . \"\\n\" . 'labels: the knob''s value, or the particle or cell count "
+                      "where the curve runs over it'\nset xlabel ",
+                      gp);
                 gp_string(gp, cost_label(rows, n, st[s]));
                 fputs("\nset ylabel ", gp);
-                gp_string(gp, ms[m]);
+                gp_string(gp, ylabel);
             }
             fprintf(gp, "\nplot ");
-            idx = 0;
-            for (int k = 0; k < nk; ++k)
-                if (has_rows(rows, n, st[s], kn[k], ms[m])) {
-                    char dat[300];
-                    snprintf(dat, sizeof dat, "%s.dat", stem);
-                    fputs(idx ? ", \\\n     " : "", gp);
+            for (int k = 0; k < nc; ++k) {
+                char dat[300], name[160], kl[120];
+                snprintf(dat, sizeof dat, "%s.dat", stem);
+                knob_label(kl, sizeof kl, cv[k].knob);
+                if (isnan(cv[k].size))
+                    snprintf(name, sizeof name, "%s", kl);
+                else
+                    snprintf(name, sizeof name, "%s, %.0f %s", kl, cv[k].size,
+                             !strcmp(st[s], "sph") ? "particles" : "cells");
+                fputs(k ? ", \\\n     " : "", gp);
+                gp_string(gp, dat);
+                fprintf(gp, " index %d using 1:2 with linespoints pt 7 lc %d title ", k, k + 1);
+                gp_string(gp, name);
+                if (!water) {
+                    fputs(", \\\n     ", gp);
                     gp_string(gp, dat);
-                    fprintf(gp, " index %d using 1:2 with linespoints pt 7 title ", idx);
-                    gp_string(gp, kn[k]);
-                    ++idx;
+                    fprintf(gp,
+                            " index %d using 1:2:4 with labels offset 0.6,0.5 left font ',7' "
+                            "tc lt %d notitle",
+                            k, k + 1);
                 }
+            }
             fprintf(gp, "\n");
         }
         if (water)
             continue;
-        /* the Pareto chart of the study's first metric: every
-         * configuration, the front joined */
-        const char *metric = ms[0];
-        snprintf(path, sizeof path, "%s/%s_pareto.dat", dir, st[s]);
-        FILE *d = fopen(path, "w");
-        if (!d) {
-            tool_error("accuracy: cannot write %s", path);
+        pareto_spec dflt;
+        const pareto_spec *sp[NSPECS + 1];
+        int np = specs_of(st[s], ms[0], &dflt, sp);
+        for (int k = 0; k < np; ++k)
+            if (write_pareto(gp, dir, rows, n, per_s, sp[k]) != 0) {
+                fclose(gp);
+                return -1;
+            }
+        if (!strcmp(st[s], "sph") &&
+            (write_solvers(gp, dir, rows, n, "dam-break max compression",
+                           "sph_solvers_compression") != 0 ||
+             write_solvers(gp, dir, rows, n, "dam-break column H rel. RMS error",
+                           "sph_solvers_column") != 0)) {
             fclose(gp);
             return -1;
         }
-        fprintf(d, "# every configuration (%s): cost error label\n", metric);
-        for (int i = 0; i < n; ++i)
-            if (!strcmp(rows[i].study, st[s]) && !strcmp(rows[i].metric, metric))
-                fprintf(d, "%.6g %.6g \"%s=%g\"\n", cost(&rows[i], per_s), rows[i].error,
-                        rows[i].knob, rows[i].value);
-        fprintf(d, "\n\n# the front, by cost\n");
-        double last = -1;
-        for (;;) {
-            int best = -1;
-            for (int i = 0; i < n; ++i)
-                if (!strcmp(rows[i].study, st[s]) && on_front(rows, n, i, per_s) &&
-                    cost(&rows[i], per_s) > last &&
-                    (best < 0 || cost(&rows[i], per_s) < cost(&rows[best], per_s)))
-                    best = i;
-            if (best < 0)
-                break;
-            last = cost(&rows[best], per_s);
-            fprintf(d, "%.6g %.6g \"%s=%g\"\n", last, rows[best].error, rows[best].knob,
-                    rows[best].value);
-        }
-        fclose(d);
-        /* the title's line break is a double-quoted "\n" of its own,
-         * joined with gnuplot's string operator: no name from a part is
-         * ever inside double quotes */
-        char title[256], out[300], dat[300];
-        snprintf(title, sizeof title, "%s: %s, every configuration;", st[s], metric);
-        snprintf(out, sizeof out, "%s_pareto.png", st[s]);
-        snprintf(dat, sizeof dat, "%s_pareto.dat", st[s]);
-        fputs("set output ", gp);
-        gp_string(gp, out);
-        fputs("\nset title ", gp);
-        gp_string(gp, title);
-        fputs(" . \"\\n\" . 'the line joins those no other beats on both cost and error'\n"
-              "set xlabel ",
-              gp);
-        gp_string(gp, cost_label(rows, n, st[s]));
-        fputs("\nset ylabel ", gp);
-        gp_string(gp, metric);
-        fputs("\nplot ", gp);
-        gp_string(gp, dat);
-        fputs(" index 0 using 1:2 with points pt 6 title 'configuration', \\\n     ", gp);
-        gp_string(gp, dat);
-        fputs(" index 1 using 1:2 with linespoints lw 2 pt 7 title 'Pareto front', \\\n     ", gp);
-        gp_string(gp, dat);
-        fputs(" index 1 using 1:2:3 with labels offset 1,0.7 left font ',8' notitle\n", gp);
     }
+    if (traces > 0)
+        write_overlays(gp, dir);
     return fclose(gp) == 0 ? 0 : -1;
 }
 
@@ -651,10 +1123,10 @@ static int run_gnuplot(const char *dir)
 }
 
 int acc_report(const char *dir, const acc_row *rows, int n, const char *notes, const char *machine,
-               const char *commit, int *plotted)
+               const char *commit, int traces, int *plotted)
 {
     *plotted = 0;
-    if (write_plots(dir, rows, n, commit) != 0)
+    if (write_plots(dir, rows, n, commit, traces) != 0)
         return -1;
     int drawn = run_gnuplot(dir);
     if (drawn < 0) {

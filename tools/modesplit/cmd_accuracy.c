@@ -14,6 +14,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/utsname.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "accuracy.h"
@@ -31,6 +32,7 @@ static const struct {
     {"sph-particles-64k", study_sph_particles_64k},
     {"sph-laws", study_sph_laws},
     {"sph-sound", study_sph_sound},
+    {"sph-dfsph", study_sph_dfsph},
     {"sph-courant", study_sph_courant},
     {"sph-rest", study_sph_rest},
     {"extract-flat", study_extract_flat},
@@ -40,9 +42,31 @@ static const struct {
 };
 #define NCASES ((int)(sizeof cases / sizeof cases[0]))
 
+/* cpu_ms_*: CPU time of the process (every thread of the work summed,
+ * acc_timer); wall_ms_*: wall clock of the same work. */
 static const char csv_header[] =
-    "study,knob,value,config,metric,error,reference,ms_per_simulated_s,ms_per_step,"
-    "cells_or_particles,threads,machine,commit\n";
+    "study,knob,value,config,metric,error,reference,cpu_ms_per_simulated_s,cpu_ms_per_step,"
+    "wall_ms_per_simulated_s,wall_ms_per_step,cells_or_particles,threads,machine,commit\n";
+#define NFIELDS 15
+
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void acc_tic(acc_timer *t)
+{
+    t->wall0 = tool_now();
+    t->cpu0 = cpu_now();
+}
+
+void acc_toc(acc_timer *t)
+{
+    t->cpu += cpu_now() - t->cpu0;
+    t->wall += tool_now() - t->wall0;
+}
 
 int acc_add(acc_ctx *c, const acc_row *r)
 {
@@ -72,6 +96,28 @@ void acc_note(acc_ctx *c, const char *fmt, ...)
         c->note[used] = '\n';
         c->note[used + 1] = '\0';
     }
+}
+
+void acc_trace(acc_ctx *c, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int need = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    if (need < 0)
+        return;
+    if (c->trace_len + (size_t)need + 1 > c->trace_cap) {
+        size_t cap = 2 * (c->trace_len + (size_t)need + 1) + 4096;
+        char *t = realloc(c->trace, cap);
+        if (!t)
+            return; /* the overlay loses a curve; the rows are whole */
+        c->trace = t;
+        c->trace_cap = cap;
+    }
+    va_start(ap, fmt);
+    vsnprintf(c->trace + c->trace_len, c->trace_cap - c->trace_len, fmt, ap);
+    va_end(ap);
+    c->trace_len += (size_t)need;
 }
 
 ms_scene *acc_scene(const char *json, const char *const *sets)
@@ -192,8 +238,9 @@ static int write_rows(const char *path, const acc_row *rows, int n, const char *
         csv_text(f, r->config);
         fputc(',', f);
         csv_text(f, r->metric);
-        fprintf(f, ",%.6g,%.9g,%.6g,%.6g,%.9g,%d,", r->error, r->reference, r->ms_per_s,
-                r->ms_per_step, r->size, r->threads);
+        fprintf(f, ",%.6g,%.9g,%.6g,%.6g,%.6g,%.6g,%.9g,%d,", r->error, r->reference,
+                r->cpu_ms_per_s, r->cpu_ms_per_step, r->ms_per_s, r->ms_per_step, r->size,
+                r->threads);
         csv_text(f, r->machine[0] ? r->machine : machine);
         fputc(',', f);
         csv_text(f, r->commit[0] ? r->commit : commit);
@@ -274,8 +321,8 @@ static int refuse_fields(const char *path, int lineno, char *const *fl)
         {1, 1, sizeof((acc_row *)0)->knob, "knob"},
         {3, 0, sizeof((acc_row *)0)->config, "config"},
         {4, 0, sizeof((acc_row *)0)->metric, "metric"},
-        {11, 0, sizeof((acc_row *)0)->machine, "machine"},
-        {12, 0, sizeof((acc_row *)0)->commit, "commit"},
+        {13, 0, sizeof((acc_row *)0)->machine, "machine"},
+        {14, 0, sizeof((acc_row *)0)->commit, "commit"},
     };
     for (size_t i = 0; i < sizeof rule / sizeof rule[0]; ++i) {
         const char *v = fl[rule[i].field];
@@ -316,16 +363,16 @@ static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, 
             }
             continue;
         }
-        char *fl[13];
+        char *fl[NFIELDS];
         acc_row r;
         memset(&r, 0, sizeof r);
-        if (split_csv(line, fl, 13) != 13) {
-            tool_error("accuracy: %s:%d: not 13 fields", path, lineno);
+        if (split_csv(line, fl, NFIELDS) != NFIELDS) {
+            tool_error("accuracy: %s:%d: not %d fields", path, lineno, NFIELDS);
             rc = -1;
             break;
         }
         /* a newline ends the last field; fgets keeps it */
-        fl[12][strcspn(fl[12], "\r\n")] = '\0';
+        fl[NFIELDS - 1][strcspn(fl[NFIELDS - 1], "\r\n")] = '\0';
         if (refuse_fields(path, lineno, fl)) {
             rc = -1;
             break;
@@ -337,14 +384,16 @@ static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, 
         snprintf(r.metric, sizeof r.metric, "%s", fl[4]);
         r.error = strtod(fl[5], NULL);
         r.reference = strtod(fl[6], NULL);
-        r.ms_per_s = strtod(fl[7], NULL);
-        r.ms_per_step = strtod(fl[8], NULL);
-        r.size = strtod(fl[9], NULL);
-        r.threads = atoi(fl[10]);
-        snprintf(machine, size, "%s", fl[11]);
-        snprintf(commit, size, "%s", fl[12]);
-        snprintf(r.machine, sizeof r.machine, "%s", fl[11]);
-        snprintf(r.commit, sizeof r.commit, "%s", fl[12]);
+        r.cpu_ms_per_s = strtod(fl[7], NULL);
+        r.cpu_ms_per_step = strtod(fl[8], NULL);
+        r.ms_per_s = strtod(fl[9], NULL);
+        r.ms_per_step = strtod(fl[10], NULL);
+        r.size = strtod(fl[11], NULL);
+        r.threads = atoi(fl[12]);
+        snprintf(machine, size, "%s", fl[13]);
+        snprintf(commit, size, "%s", fl[14]);
+        snprintf(r.machine, sizeof r.machine, "%s", fl[13]);
+        snprintf(r.commit, sizeof r.commit, "%s", fl[14]);
         if (acc_add(c, &r) != 0) {
             rc = -1;
             break;
@@ -411,11 +460,55 @@ static int run_case(int k, int quick, const char *parts)
             fputs(c.note, f);
             fclose(f);
         }
+        snprintf(path, sizeof path, "%s/%s.trace", parts, cases[k].name);
+        f = rc == 0 && c.trace_len ? fopen(path, "w") : NULL;
+        if (f) {
+            fputs(c.trace, f);
+            fclose(f);
+        }
         fprintf(stderr, "accuracy: %s: %d rows in %.1f s\n", cases[k].name, c.nrows,
                 tool_now() - t0);
     }
     free(c.rows);
+    free(c.trace);
     return rc;
+}
+
+/* The parts' curves (NAME.trace, each a case's gnuplot blocks) into
+ * OUT/sph_trace.dat, in the cases' order; the number of blocks, 0 when
+ * no part has any, -1 on an error. */
+static int merge_traces(const char *parts, const char *out)
+{
+    char path[1200];
+    snprintf(path, sizeof path, "%s/sph_trace.dat", out);
+    FILE *o = NULL;
+    int blocks = 0;
+    for (int k = 0; k < NCASES; ++k) {
+        snprintf(path, sizeof path, "%s/%s.trace", parts, cases[k].name);
+        FILE *f = fopen(path, "r");
+        if (!f)
+            continue;
+        if (!o) {
+            snprintf(path, sizeof path, "%s/sph_trace.dat", out);
+            o = fopen(path, "w");
+            if (!o) {
+                fclose(f);
+                tool_error("accuracy: cannot write %s: %s", path, strerror(errno));
+                return -1;
+            }
+        }
+        char line[512];
+        while (fgets(line, sizeof line, f)) {
+            blocks += line[0] == '#';
+            fputs(line, o);
+        }
+        fclose(f);
+    }
+    if (!o) { /* no curves: no stale file from an earlier run */
+        snprintf(path, sizeof path, "%s/sph_trace.dat", out);
+        remove(path);
+    }
+    return o && fclose(o) != 0 ? -1 : blocks;
 }
 
 static int merge(const char *parts, const char *out)
@@ -468,8 +561,11 @@ static int merge(const char *parts, const char *out)
         snprintf(path, sizeof path, "%s/accuracy.csv", out);
         rc = write_rows(path, c.rows, c.nrows, machine, commit);
     }
+    int traces = rc == 0 ? merge_traces(parts, out) : 0;
+    if (traces < 0)
+        rc = -1;
     if (rc == 0)
-        rc = acc_report(out, c.rows, c.nrows, c.note, machine, commit, &plotted);
+        rc = acc_report(out, c.rows, c.nrows, c.note, machine, commit, traces, &plotted);
     if (rc == 0)
         fprintf(stderr, "accuracy: wrote %s/accuracy.csv (%d rows), %s/accuracy.md%s\n", out,
                 c.nrows, out, plotted ? " and the PNG plots" : " (no plots: see above)");

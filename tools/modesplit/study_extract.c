@@ -26,9 +26,9 @@
  * under gravity (-gx, 0, -g). */
 typedef struct ext_shape {
     const char *name;
-    double L, fill, top;           /* m: box side, fill height, domain height */
-    double gx;                     /* m/s^2 */
-    double spacing, quick_spacing; /* m */
+    double L, fill, top;    /* m: box side, fill height, domain height */
+    double gx;              /* m/s^2 */
+    double spacing, coarse; /* m: the fine and the coarse particle spacing */
 } ext_shape;
 
 /* The settled liquid of sh; NULL after printing. A tilted surface is laid
@@ -105,24 +105,34 @@ static double surface_at(const ms_volume *v, double L, double slope, double spac
 /* RMS (in spacings) of the extracted field against the known plane, and
  * the median time of one extraction (ms). */
 static int measure(ms_volume *v, int R, double L, double slope, double spacing, double *rms,
-                   double *ms)
+                   double *ms, double *cpu_ms)
 {
     float *h = malloc(sizeof(float) * (size_t)R * R);
-    double t[5];
+    double t[5], u[5];
     for (int rep = 0; rep < 5; ++rep) {
-        double t0 = tool_now();
-        if (ms_volume_extract_height(v, R, R, h) != MS_OK) {
+        acc_timer tm = {0};
+        acc_tic(&tm);
+        ms_status st = ms_volume_extract_height(v, R, R, h);
+        acc_toc(&tm);
+        if (st != MS_OK) {
             tool_error("accuracy: extract: %s", ms_last_error());
             free(h);
             return -1;
         }
-        t[rep] = tool_now() - t0;
+        t[rep] = tm.wall;
+        u[rep] = tm.cpu;
     }
-    for (int i = 1; i < 5; ++i) /* median of 5 */
+    for (int i = 1; i < 5; ++i) /* medians of 5 */
         for (int j = i; j > 0 && t[j] < t[j - 1]; --j) {
             double x = t[j];
             t[j] = t[j - 1];
             t[j - 1] = x;
+        }
+    for (int i = 1; i < 5; ++i)
+        for (int j = i; j > 0 && u[j] < u[j - 1]; --j) {
+            double x = u[j];
+            u[j] = u[j - 1];
+            u[j - 1] = x;
         }
     double e2 = 0;
     for (int y = 0; y < R; ++y)
@@ -133,6 +143,7 @@ static int measure(ms_volume *v, int R, double L, double slope, double spacing, 
     free(h);
     *rms = sqrt(e2 / ((double)R * R)) / spacing;
     *ms = 1e3 * t[2];
+    *cpu_ms = 1e3 * u[2];
     return 0;
 }
 
@@ -202,13 +213,15 @@ static void diagnose(acc_ctx *c, ms_volume *v, const char *name, double L, doubl
 }
 
 static int row(acc_ctx *c, const char *knob, double value, const char *shape, int R, int smooth,
-               double level, int count, double rms, double ms)
+               double level, int count, double rms, double ms, double cpu_ms)
 {
     acc_row r = {.value = value,
                  .error = rms,
                  .reference = level,
                  .ms_per_s = NAN,
                  .ms_per_step = ms,
+                 .cpu_ms_per_s = NAN,
+                 .cpu_ms_per_step = cpu_ms,
                  .size = (double)R * R,
                  .threads = 1};
     snprintf(r.study, sizeof r.study, "extract");
@@ -240,44 +253,57 @@ static ms_volume *with_smoothing(ms_volume *v, int smooth)
     return w;
 }
 
-static int study(acc_ctx *c, const ext_shape *sh)
+/* The rows of sh at spacing s under the name (the knobs' prefix). */
+static int study_at(acc_ctx *c, const ext_shape *sh, double s, const char *name)
 {
-    const double s = c->quick ? sh->quick_spacing : sh->spacing;
     ms_scene *sc = NULL;
     ms_sim *sim = settle(sh, s, &sc);
     if (!sim)
         return -1;
     ms_volume *v = ms_sim_volume(sim);
     int n = ms_volume_count(v), rc = 0;
-    double slope = -sh->gx / 9.81, rms, ms; /* gravity (-gx, 0, -g): z falls along x */
+    double slope = -sh->gx / 9.81, rms, ms, cpu; /* gravity (-gx, 0, -g): z falls along x */
     const double ref = surface_at(v, sh->L, slope, s, 0.5 * sh->L); /* the level mid-box */
     static const int full[] = {8, 16, 32, 64, 128}, quick[] = {8, 16, 32};
     const int *Rs = c->quick ? quick : full;
     char knob[32];
-    snprintf(knob, sizeof knob, "%s_field_cells", sh->name);
+    snprintf(knob, sizeof knob, "%s_field_cells", name);
     for (int i = 0; i < (c->quick ? 3 : 5) && rc == 0; ++i) {
-        rc = measure(v, Rs[i], sh->L, slope, s, &rms, &ms);
+        rc = measure(v, Rs[i], sh->L, slope, s, &rms, &ms, &cpu);
         if (rc == 0)
-            rc = row(c, knob, Rs[i], sh->name, Rs[i], ms_volume_get_desc(v).smooth_steps, ref, n,
-                     rms, ms);
+            rc = row(c, knob, Rs[i], name, Rs[i], ms_volume_get_desc(v).smooth_steps, ref, n, rms,
+                     ms, cpu);
     }
     static const int smooth[] = {0, 1, 2, 4, 8, 16};
-    snprintf(knob, sizeof knob, "%s_smoothing_passes", sh->name);
+    snprintf(knob, sizeof knob, "%s_smoothing_passes", name);
     for (int i = 0; i < (c->quick ? 3 : 6) && rc == 0; ++i) {
         ms_volume *w = with_smoothing(v, smooth[i]);
         if (!w) {
             rc = -1;
             break;
         }
-        rc = measure(w, 32, sh->L, slope, s, &rms, &ms);
+        rc = measure(w, 32, sh->L, slope, s, &rms, &ms, &cpu);
         if (rc == 0)
-            rc = row(c, knob, smooth[i], sh->name, 32, smooth[i], ref, n, rms, ms);
+            rc = row(c, knob, smooth[i], name, 32, smooth[i], ref, n, rms, ms, cpu);
         ms_volume_destroy(w);
     }
     if (rc == 0)
-        diagnose(c, v, sh->name, sh->L, slope, s);
+        diagnose(c, v, name, sh->L, slope, s);
     acc_free(sc, sim);
     return rc;
+}
+
+/* Each shape at the coarse spacing (SHAPE_*) and, but for --quick, at the
+ * fine one (SHAPE_fine_*): --quick runs a subset of the full study's
+ * cases at the same settings, so the check of the committed study can
+ * compare its rows. */
+static int study(acc_ctx *c, const ext_shape *sh)
+{
+    char fine[32];
+    snprintf(fine, sizeof fine, "%s_fine", sh->name);
+    if (study_at(c, sh, sh->coarse, sh->name) != 0)
+        return -1;
+    return c->quick ? 0 : study_at(c, sh, sh->spacing, fine);
 }
 
 int study_extract_flat(acc_ctx *c)

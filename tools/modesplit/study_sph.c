@@ -42,6 +42,7 @@ typedef struct dam_cfg {
     int law;        /* index into law_names */
     double sound;   /* m/s: Tait's c0, or sqrt(k) of the ideal gas */
     double courant; /* 0: the default */
+    double dfsph;   /* DFSPH's volume.max_density_error; 0: the default */
 } dam_cfg;
 
 /* y of a curve sampled at t[0..m-1] (t[0] = 0, the release) at x, linear
@@ -137,7 +138,7 @@ static int add_metric(acc_ctx *c, acc_row *r, const char *metric, double error, 
 static int dam_break(acc_ctx *c, const char *knob, double value, const dam_cfg *cfg)
 {
     const double a = 0.1, s = cfg->spacing, g = 9.81;
-    char json[1024], law[64], snd[64], cou[64];
+    char json[1024], law[64], snd[64], cou[64], lim[64];
     snprintf(json, sizeof json,
              "{\"name\": \"accuracy-dam-break\", \"frame_dt\": 0.002, \"threads\": 1,"
              " \"domain\": {\"min\": [0, 0, 0], \"max\": [%.9g, %.9g, %.9g]},"
@@ -150,7 +151,8 @@ static int dam_break(acc_ctx *c, const char *knob, double value, const dam_cfg *
     else
         snprintf(snd, sizeof snd, "volume.sound_speed=%.9g", cfg->sound);
     snprintf(cou, sizeof cou, "volume.courant=%.9g", cfg->courant > 0 ? cfg->courant : 0.4);
-    const char *sets[] = {law, snd, cou, NULL};
+    snprintf(lim, sizeof lim, "volume.max_density_error=%.9g", cfg->dfsph);
+    const char *sets[] = {law, snd, cou, cfg->dfsph > 0 ? lim : NULL, NULL};
     ms_scene *sc = NULL;
     ms_sim *sim = NULL;
     ms_status st = acc_sim(json, sets, &sc, &sim);
@@ -182,16 +184,18 @@ static int dam_break(acc_ctx *c, const char *knob, double value, const dam_cfg *
     tZ[0] = tH[0] = 1;
     int m = 1, rc = 0;
     const double tscale = sqrt(2.0 * g / a), hscale = sqrt(g / a);
-    double wall = 0, maxc = 0;
+    double maxc = 0;
+    acc_timer tm = {0};
     /* until both curves pass their last point by the largest shift */
     while (tT[m - 1] < mm[14][0] + SHIFT_MAX || tt[m - 1] < mmh[MM_H - 1][0] + SHIFT_MAX) {
-        double w0 = tool_now();
-        if (ms_sim_step(sim, 0.002f) != MS_OK) {
+        acc_tic(&tm);
+        ms_status sst = ms_sim_step(sim, 0.002f);
+        acc_toc(&tm);
+        if (sst != MS_OK) {
             tool_error("accuracy: dam break: %s", ms_last_error());
             rc = -1;
             break;
         }
-        wall += tool_now() - w0;
         ms_volume_get_particles(v, p, NULL);
         /* the front: the farthest particle; the column: the highest of
          * the layer at the wall (x < s, its centres at s / 2) */
@@ -222,6 +226,18 @@ static int dam_break(acc_ctx *c, const char *knob, double value, const dam_cfg *
     if (rc != 0) {
         free(tr);
         return rc;
+    }
+    /* the curves of the runs at the law's defaults, for the overlay plots
+     * against Martin & Moyce's points (every other frame, 4 ms) */
+    if (!strncmp(knob, "law_", 4)) {
+        static const char *const names[] = {"ideal gas", "Tait", "DFSPH"};
+        acc_trace(c, "# front Z(T): %s, %d particles\n", names[cfg->law], n);
+        for (int i = 0; i < m; i += 2)
+            acc_trace(c, "%.4f %.4f\n", tT[i], tZ[i]);
+        acc_trace(c, "\n\n# column H(tau): %s, %d particles\n", names[cfg->law], n);
+        for (int i = 0; i < m; i += 2)
+            acc_trace(c, "%.4f %.4f\n", tt[i], tH[i]);
+        acc_trace(c, "\n\n");
     }
     /* the errors: Z(T) and H(tau) interpolated linearly between frames */
     double ez = trace_rms(tT, tZ, m, mm, 15, 0), eh = trace_rms(tt, tH, m, mmh, MM_H, 0);
@@ -258,15 +274,22 @@ static int dam_break(acc_ctx *c, const char *knob, double value, const dam_cfg *
                  100 * eh);
     free(tr);
     acc_row r = {.value = value < 0 ? n : value,
-                 .ms_per_s = 1e3 * wall / in.time,
-                 .ms_per_step = 1e3 * wall / in.substeps,
+                 .ms_per_s = 1e3 * tm.wall / in.time,
+                 .ms_per_step = 1e3 * tm.wall / in.substeps,
+                 .cpu_ms_per_s = 1e3 * tm.cpu / in.time,
+                 .cpu_ms_per_step = 1e3 * tm.cpu / in.substeps,
                  .size = n,
                  .threads = 1};
     snprintf(r.study, sizeof r.study, "sph");
     snprintf(r.knob, sizeof r.knob, "%s", knob);
-    snprintf(r.config, sizeof r.config, "%s c=%g m/s, courant %g, %d particles, %ld substeps",
-             law_names[cfg->law], cfg->sound, cfg->courant > 0 ? cfg->courant : 0.4, n,
-             in.substeps);
+    /* the settings only (the check of the committed study finds a row by
+     * them): what the run gave is in the metrics */
+    if (cfg->law == 2)
+        snprintf(r.config, sizeof r.config, "dfsph max density error %g, courant %g, %d particles",
+                 cfg->dfsph > 0 ? cfg->dfsph : 0.001, cfg->courant > 0 ? cfg->courant : 0.4, n);
+    else
+        snprintf(r.config, sizeof r.config, "%s c=%g m/s, courant %g, %d particles",
+                 law_names[cfg->law], cfg->sound, cfg->courant > 0 ? cfg->courant : 0.4, n);
     const double zref = 4.11, href = mmh[MM_H - 1][1];
     if (add_metric(c, &r, "dam-break front Z rel. RMS error", ez, zref) ||
         add_metric(c, &r, "dam-break column H rel. RMS error", eh, href) ||
@@ -318,44 +341,85 @@ int study_sph_particles_64k(acc_ctx *c)
     return particles_at(c, 0.001118);
 }
 
+/* The particle counts of the solver sweeps: 4 layers thick, 800, ~1.6k
+ * and 3.2k particles; --quick runs the first, at the same settings. */
+static const double sweep_spacing[] = {0.01, 0.007, 0.005};
+#define SWEEP_COUNTS(c) ((c)->quick ? 1 : 3)
+
 int study_sph_laws(acc_ctx *c)
 {
-    for (int law = 0; law < 3; ++law) {
-        dam_cfg cfg = {.spacing = c->quick ? 0.01 : 0.005, .law = law, .sound = 20};
-        if (dam_break(c,
-                      law == 0   ? "law_ideal_gas"
-                      : law == 1 ? "law_tait"
-                                 : "law_dfsph",
-                      law, &cfg) < 0)
-            return -1;
-    }
+    /* the experiment's points first: the overlay plots' blocks 0 and 1 */
+    acc_trace(c, "# front Z(T): Martin & Moyce (1952)\n");
+    for (int k = 0; k < 15; ++k)
+        acc_trace(c, "%.2f %.2f\n", mm[k][0], mm[k][1]);
+    acc_trace(c, "\n\n# column H(tau): Martin & Moyce (1952)\n");
+    for (int k = 0; k < MM_H; ++k)
+        acc_trace(c, "%.2f %.2f\n", mmh[k][0], mmh[k][1]);
+    acc_trace(c, "\n\n");
+    for (int i = 0; i < SWEEP_COUNTS(c); ++i)
+        for (int law = 0; law < 3; ++law) {
+            dam_cfg cfg = {.spacing = sweep_spacing[i], .law = law, .sound = 20};
+            if (dam_break(c,
+                          law == 0   ? "law_ideal_gas"
+                          : law == 1 ? "law_tait"
+                                     : "law_dfsph",
+                          law, &cfg) < 0)
+                return -1;
+        }
     return 0;
 }
 
+/* The stiffness of the weakly compressible laws: Tait's c0 and the ideal
+ * gas's sqrt(k); compression ~ g H / c^2 against a time step ~ h / c. */
 int study_sph_sound(acc_ctx *c)
 {
     static const double full[] = {10, 15, 20, 30, 40}, quick[] = {10, 40};
     const double *cs = c->quick ? quick : full;
     int n = c->quick ? 2 : 5;
     for (int law = 0; law < 2; ++law)
+        for (int k = 0; k < SWEEP_COUNTS(c); ++k)
+            for (int i = 0; i < n; ++i) {
+                dam_cfg cfg = {.spacing = sweep_spacing[k], .law = law, .sound = cs[i]};
+                if (dam_break(c, law ? "sound_speed_tait" : "sound_speed_ideal_gas", cs[i], &cfg) <
+                    0)
+                    return -1;
+            }
+    return 0;
+}
+
+/* DFSPH's own knob: the average density error its pressure solve stops
+ * at (volume.max_density_error, default 0.1 %). */
+int study_sph_dfsph(acc_ctx *c)
+{
+    static const double full[] = {0.01, 0.003, 0.001, 0.0003}, quick[] = {0.01, 0.001};
+    const double *es = c->quick ? quick : full;
+    int n = c->quick ? 2 : 4;
+    for (int k = 0; k < SWEEP_COUNTS(c); ++k)
         for (int i = 0; i < n; ++i) {
-            dam_cfg cfg = {.spacing = c->quick ? 0.01 : 0.005, .law = law, .sound = cs[i]};
-            if (dam_break(c, law ? "sound_speed_tait" : "sound_speed_ideal_gas", cs[i], &cfg) < 0)
+            dam_cfg cfg = {.spacing = sweep_spacing[k], .law = 2, .sound = 20, .dfsph = es[i]};
+            if (dam_break(c, "max_density_error_dfsph", es[i], &cfg) < 0)
                 return -1;
         }
     return 0;
 }
 
+/* The time-step factor of every law, at 800 and 3.2k particles. */
 int study_sph_courant(acc_ctx *c)
 {
     static const double full[] = {0.1, 0.2, 0.3, 0.4, 0.5}, quick[] = {0.2, 0.5};
+    static const double spacing[] = {0.01, 0.005};
+    static const char *const knob[] = {"courant_ideal_gas", "courant_tait", "courant_dfsph"};
     const double *cr = c->quick ? quick : full;
     int n = c->quick ? 2 : 5;
-    for (int i = 0; i < n; ++i) {
-        dam_cfg cfg = {.spacing = c->quick ? 0.01 : 0.005, .law = 1, .sound = 20, .courant = cr[i]};
-        if (dam_break(c, "courant", cr[i], &cfg) < 0)
-            return -1;
-    }
+    for (int law = 0; law < 3; ++law)
+        for (int k = 0; k < (c->quick ? 1 : 2); ++k)
+            for (int i = 0; i < n; ++i) {
+                if (c->quick && law != 1)
+                    continue;
+                dam_cfg cfg = {.spacing = spacing[k], .law = law, .sound = 20, .courant = cr[i]};
+                if (dam_break(c, knob[law], cr[i], &cfg) < 0)
+                    return -1;
+            }
     return 0;
 }
 
@@ -511,18 +575,19 @@ int study_sph_rest(acc_ctx *c)
                 tool_error("accuracy: rest: out of memory");
                 return -1;
             }
-            double wall = 0;
+            acc_timer tm = {0};
             /* 75 frames of 20 ms to settle, then 100 of 5 ms sampled */
             for (int f = 0; f < 175; ++f) {
-                double w0 = tool_now();
-                if (ms_sim_step(sim, f < 75 ? 0.02f : 0.005f) != MS_OK) {
+                acc_tic(&tm);
+                ms_status sst = ms_sim_step(sim, f < 75 ? 0.02f : 0.005f);
+                acc_toc(&tm);
+                if (sst != MS_OK) {
                     tool_error("accuracy: rest: %s", ms_last_error());
                     free(p);
                     free(ra);
                     acc_free(sc, sim);
                     return -1;
                 }
-                wall += tool_now() - w0;
                 if (f >= 75)
                     rest_sample(v, law, 2 * s, cs, p, p + 3 * (size_t)np, ra);
             }
@@ -555,15 +620,16 @@ int study_sph_rest(acc_ctx *c)
             acc_row r = {.value = in.count,
                          .error = p_err,
                          .reference = 1000 * g * H,
-                         .ms_per_s = 1e3 * wall / in.time,
-                         .ms_per_step = 1e3 * wall / in.substeps,
+                         .ms_per_s = 1e3 * tm.wall / in.time,
+                         .ms_per_step = 1e3 * tm.wall / in.substeps,
+                         .cpu_ms_per_s = 1e3 * tm.cpu / in.time,
+                         .cpu_ms_per_step = 1e3 * tm.cpu / in.substeps,
                          .size = in.count,
                          .threads = 1};
             snprintf(r.study, sizeof r.study, "sph");
             snprintf(r.knob, sizeof r.knob, "rest_particles_%s", law_names[law]);
-            snprintf(r.config, sizeof r.config,
-                     "%s, spacing %g m, compression mean %.4f (g H / c^2 = %.4f)", law_names[law],
-                     s, mean_c, g * H / (cs * cs));
+            snprintf(r.config, sizeof r.config, "%s, spacing %g m, c=%g m/s (g H / c^2 = %.4f)",
+                     law_names[law], s, cs, g * H / (cs * cs));
             snprintf(r.metric, sizeof r.metric, "hydrostatic pressure RMS / (rho0 g H)");
             /* DFSPH solves for its pressure, no law of the density gives
              * it, and the public API has no particle pressure: a pressure

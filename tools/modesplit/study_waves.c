@@ -36,7 +36,8 @@ static ms_surface *wave_surface(const char *json, const char *const *sets, ms_sc
 /* Measured angular frequency (rad/s) of the (2, 1) mode on an N x N grid
  * at Courant number cr, from the zero crossings of the mode's amplitude;
  * *ms_step and *ms_per_s the cost of the wave steps alone. */
-static int standing_mode(int N, double cr, double *omega, double *ms_step, double *ms_per_s)
+/* The mode's angular frequency into *omega, its costs into r's cost fields. */
+static int standing_mode(int N, double cr, double *omega, acc_row *r)
 {
     char cells[64];
     snprintf(cells, sizeof cells, "surface.cells=[%d,%d]", N, N);
@@ -60,16 +61,18 @@ static int standing_mode(int N, double cr, double *omega, double *ms_step, doubl
     const double w_exact = c * PI * sqrt(m * m + n * n);
     const float dt = (float)(cr * dx / c);
     const int steps = (int)ceil(4.5 * 2 * PI / w_exact / dt);
-    double prev = 1.0, t_first = -1, t_last = -1, wall = 0;
+    double prev = 1.0, t_first = -1, t_last = -1;
+    acc_timer tm = {0};
     int crossings = 0, rc = 0;
     for (int k = 1; k <= steps; ++k) {
-        double t0 = tool_now();
-        if (ms_surface_step(s, dt) != MS_OK) {
+        acc_tic(&tm);
+        ms_status sst = ms_surface_step(s, dt);
+        acc_toc(&tm);
+        if (sst != MS_OK) {
             tool_error("accuracy: waves: %s", ms_last_error());
             rc = -1;
             break;
         }
-        wall += tool_now() - t0;
         const float *h = ms_surface_height(s, NULL, NULL);
         double a = 0;
         for (int i = 0; i < N * N; ++i)
@@ -91,24 +94,22 @@ static int standing_mode(int N, double cr, double *omega, double *ms_step, doubl
         return -1;
     }
     *omega = PI * (crossings - 1) / (t_last - t_first);
-    *ms_step = 1e3 * wall / steps;
-    *ms_per_s = 1e3 * wall / (steps * (double)dt);
+    r->ms_per_step = 1e3 * tm.wall / steps;
+    r->ms_per_s = 1e3 * tm.wall / (steps * (double)dt);
+    r->cpu_ms_per_step = 1e3 * tm.cpu / steps;
+    r->cpu_ms_per_s = 1e3 * tm.cpu / (steps * (double)dt);
     return rc;
 }
 
 static int mode_row(acc_ctx *c, const char *knob, double value, int N, double cr)
 {
-    double w, ms_step, ms_s;
-    if (standing_mode(N, cr, &w, &ms_step, &ms_s) != 0)
+    double w;
+    acc_row r = {.value = value, .size = (double)N * N, .threads = 1};
+    if (standing_mode(N, cr, &w, &r) != 0)
         return -1;
     const double w_exact = PI * sqrt(5.0);
-    acc_row r = {.value = value,
-                 .error = fabs(w - w_exact) / w_exact,
-                 .reference = w_exact,
-                 .ms_per_s = ms_s,
-                 .ms_per_step = ms_step,
-                 .size = (double)N * N,
-                 .threads = 1};
+    r.error = fabs(w - w_exact) / w_exact;
+    r.reference = w_exact;
     snprintf(r.study, sizeof r.study, "waves");
     snprintf(r.knob, sizeof r.knob, "%s", knob);
     snprintf(r.config, sizeof r.config, "%dx%d cells, Courant %.2f", N, N, cr);
@@ -119,7 +120,7 @@ static int mode_row(acc_ctx *c, const char *knob, double value, int N, double cr
 int study_waves_cells(acc_ctx *c)
 {
     /* the (2, 1) mode's wavelength is 2 pi / (pi sqrt 5) = 0.894 m */
-    static const int full[] = {64, 128, 256, 512, 1024}, quick[] = {32, 64, 128};
+    static const int full[] = {64, 128, 256, 512, 1024}, quick[] = {64, 128, 256};
     const int *N = c->quick ? quick : full;
     int n = c->quick ? 3 : 5;
     for (int i = 0; i < n; ++i)
@@ -132,7 +133,7 @@ int study_waves_courant(acc_ctx *c)
 {
     static const double full[] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7}, quick[] = {0.1, 0.4, 0.7};
     const double *cr = c->quick ? quick : full;
-    int n = c->quick ? 3 : 7, N = c->quick ? 64 : 128;
+    int n = c->quick ? 3 : 7, N = 128;
     for (int i = 0; i < n; ++i)
         if (mode_row(c, "courant", cr[i], N, cr[i]) != 0)
             return -1;
@@ -154,7 +155,7 @@ static double crest_radius(const float *h, int N, double dx)
 
 int study_waves_ring(acc_ctx *c)
 {
-    static const int full[] = {128, 256, 512, 1024}, quick[] = {64, 128, 256};
+    static const int full[] = {128, 256, 512, 1024}, quick[] = {128, 256, 512};
     const int *Ns = c->quick ? quick : full;
     int n = c->quick ? 3 : 4;
     static const char ring_scene[] =
@@ -176,16 +177,18 @@ int study_waves_ring(acc_ctx *c)
         /* a drop 0.1 m wide: resolved by 6 cells on the coarsest grid */
         ms_surface_add_drop(s, 1.0f, 1.0f, 0.1f, 0.01f);
         const float dt = (float)(0.5 * dx / c0);
-        double t = 0, wall = 0, r1 = NAN, t1 = 0.3, t2 = 0.7, r2 = NAN;
+        double t = 0, r1 = NAN, t1 = 0.3, t2 = 0.7, r2 = NAN;
+        acc_timer tm = {0};
         long steps = 0;
         while (t < t2 + 0.5 * dt) {
-            double w0 = tool_now();
-            if (ms_surface_step(s, dt) != MS_OK) {
+            acc_tic(&tm);
+            ms_status sst = ms_surface_step(s, dt);
+            acc_toc(&tm);
+            if (sst != MS_OK) {
                 tool_error("accuracy: ring: %s", ms_last_error());
                 acc_free(sc, sim);
                 return -1;
             }
-            wall += tool_now() - w0;
             ++steps;
             t = steps * (double)dt;
             if (isnan(r1) && t >= t1) {
@@ -200,13 +203,15 @@ int study_waves_ring(acc_ctx *c)
         acc_row r = {.value = 0.1 / dx,
                      .error = fabs(speed - c0) / c0,
                      .reference = c0,
-                     .ms_per_s = 1e3 * wall / t,
-                     .ms_per_step = 1e3 * wall / steps,
+                     .ms_per_s = 1e3 * tm.wall / t,
+                     .ms_per_step = 1e3 * tm.wall / steps,
+                     .cpu_ms_per_s = 1e3 * tm.cpu / t,
+                     .cpu_ms_per_step = 1e3 * tm.cpu / steps,
                      .size = (double)N * N,
                      .threads = 1};
         snprintf(r.study, sizeof r.study, "waves");
         snprintf(r.knob, sizeof r.knob, "ring_cells_per_drop_radius");
-        snprintf(r.config, sizeof r.config, "%dx%d cells over 2 m, speed %.4f m/s", N, N, speed);
+        snprintf(r.config, sizeof r.config, "%dx%d cells over 2 m", N, N);
         snprintf(r.metric, sizeof r.metric, "ring front speed rel. error");
         if (acc_add(c, &r) != 0)
             return -1;
@@ -237,11 +242,13 @@ int study_water_dispersion(acc_ctx *c)
                          .reference = creal,
                          .ms_per_s = NAN,
                          .ms_per_step = NAN,
+                         .cpu_ms_per_s = NAN,
+                         .cpu_ms_per_step = NAN,
                          .size = NAN,
                          .threads = 1};
             snprintf(r.study, sizeof r.study, "water");
             snprintf(r.knob, sizeof r.knob, "lambda_m_depth_%.3gm", (double)depths[di]);
-            snprintf(r.config, sizeof r.config, "depth %g m, model c = %.4f m/s", depths[di], cm);
+            snprintf(r.config, sizeof r.config, "depth %g m", depths[di]);
             snprintf(r.metric, sizeof r.metric, "phase speed rel. error vs real water");
             if (acc_add(c, &r) != 0)
                 return -1;
