@@ -274,15 +274,17 @@ split_cases = $(if $(filter $(words $(shell grep -o 'tcase_create$(LP)' tests/te
 #   check-long-view, the plain build); without it the job ran no test and
 #   was listed as passed.
 ASAN_LEAVE_OUT ?= view.window view.view_long
-ifeq ($(SAN),asan)
-CHECK_SPLIT += $(foreach j,$(ASAN_LEAVE_OUT),$(if $(findstring .,$(j)),$(firstword $(subst ., ,$(j)))))
-endif
+# ThreadSanitizer (SAN=tsan) runs the jobs of TSAN_SUITES but those named in
+# TSAN_LEAVE_OUT:
+#   determinism.golden: the golden hash of a one-thread run; TSan finds
+#   nothing where no second thread runs. The plain and ASan builds check it.
+TSAN_LEAVE_OUT ?= determinism.golden
+SAN_LEAVE_OUT := $(if $(filter asan,$(SAN)),$(ASAN_LEAVE_OUT))$(if $(filter tsan,$(SAN)),$(TSAN_LEAVE_OUT))
+CHECK_SPLIT += $(foreach j,$(SAN_LEAVE_OUT),$(if $(findstring .,$(j)),$(firstword $(subst ., ,$(j)))))
 SUITE_NAMES := $(TESTS:$(BUILD)/tests/test_%=%)
 SUITE_JOBS  := $(foreach n,$(SUITE_NAMES),$(or $(if $(filter $(n),$(CHECK_SPLIT)),\
     $(addprefix $(n).,$(call split_cases,$(n)))),$(n)))
-ifeq ($(SAN),asan)
-SUITE_JOBS  := $(filter-out $(ASAN_LEAVE_OUT),$(SUITE_JOBS))
-endif
+SUITE_JOBS  := $(filter-out $(SAN_LEAVE_OUT),$(SUITE_JOBS))
 # the suites with a job to run (all but one wholly left out)
 SUITE_NAMES := $(foreach n,$(SUITE_NAMES),$(if $(filter $(n) $(n).%,$(SUITE_JOBS)),$(n)))
 # The longest jobs start first, so that none of them starts last (each
@@ -291,7 +293,9 @@ SUITE_NAMES := $(foreach n,$(SUITE_NAMES),$(if $(filter $(n) $(n).%,$(SUITE_JOBS
 # alloc, volume.hard and volume.model ~150 s, render and tool ~75 s on a
 # loaded 2-core machine); the plain build's longest are the same ones, at
 # 13-27 s.
-CHECK_FIRST ?= stability accuracy colliders alloc volume.hard volume.model tool render io
+# Under TSan the longest are sim and determinism (~210 s each) and pool (~95 s).
+CHECK_FIRST ?= stability accuracy colliders alloc volume.hard volume.model tool render io \
+               sim determinism determinism.determinism pool
 SUITE_JOBS  := $(foreach j,$(CHECK_FIRST),$(filter $(j),$(SUITE_JOBS))) \
                $(filter-out $(CHECK_FIRST),$(SUITE_JOBS))
 # Suites that must have the machine to themselves run after all the
@@ -341,7 +345,8 @@ $(CHECK_DIR)/%.result:
 	    "$$(grep '^[0-9]*%: Checks' $(@:.result=.log) | tail -n 1)"
 
 check-suites: $(CHECK_RESULTS)
-	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS))";) \
+	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS));" \
+	    "left out (TSAN_LEAVE_OUT; the Makefile says why): $(TSAN_LEAVE_OUT)";) \
 	$(if $(filter asan,$(SAN)),echo "asan: left out (ASAN_LEAVE_OUT; the Makefile says why): $(ASAN_LEAVE_OUT)";) \
 	failed=""; for r in $(CHECK_RESULTS); do \
 	    res=failed; [ -f "$$r" ] && read -r res sec < "$$r"; [ "$$res" = passed ] && continue; \
