@@ -270,16 +270,21 @@ split_cases = $(if $(filter $(words $(shell grep -o 'tcase_create$(LP)' tests/te
 #   drop, rain, shader switch, orbit, resize, lost context, F12, Esc) under
 #   memcheck. The viewer's own parts (input logs, camera, stats: view.parts)
 #   run here.
-ASAN_LEAVE_OUT ?= view.window
-ifeq ($(SAN),asan)
-CHECK_SPLIT += $(foreach j,$(ASAN_LEAVE_OUT),$(if $(findstring .,$(j)),$(firstword $(subst ., ,$(j)))))
-endif
+#   view.view_long: registered only with MS_TEST_LONG=1 (make
+#   check-long-view, the plain build); without it the job ran no test and
+#   was listed as passed.
+ASAN_LEAVE_OUT ?= view.window view.view_long
+# ThreadSanitizer (SAN=tsan) runs the jobs of TSAN_SUITES but those named in
+# TSAN_LEAVE_OUT:
+#   determinism.golden: the golden hash of a one-thread run; TSan finds
+#   nothing where no second thread runs. The plain and ASan builds check it.
+TSAN_LEAVE_OUT ?= determinism.golden
+SAN_LEAVE_OUT := $(if $(filter asan,$(SAN)),$(ASAN_LEAVE_OUT))$(if $(filter tsan,$(SAN)),$(TSAN_LEAVE_OUT))
+CHECK_SPLIT += $(foreach j,$(SAN_LEAVE_OUT),$(if $(findstring .,$(j)),$(firstword $(subst ., ,$(j)))))
 SUITE_NAMES := $(TESTS:$(BUILD)/tests/test_%=%)
 SUITE_JOBS  := $(foreach n,$(SUITE_NAMES),$(or $(if $(filter $(n),$(CHECK_SPLIT)),\
     $(addprefix $(n).,$(call split_cases,$(n)))),$(n)))
-ifeq ($(SAN),asan)
-SUITE_JOBS  := $(filter-out $(ASAN_LEAVE_OUT),$(SUITE_JOBS))
-endif
+SUITE_JOBS  := $(filter-out $(SAN_LEAVE_OUT),$(SUITE_JOBS))
 # the suites with a job to run (all but one wholly left out)
 SUITE_NAMES := $(foreach n,$(SUITE_NAMES),$(if $(filter $(n) $(n).%,$(SUITE_JOBS)),$(n)))
 # The longest jobs start first, so that none of them starts last (each
@@ -288,7 +293,9 @@ SUITE_NAMES := $(foreach n,$(SUITE_NAMES),$(if $(filter $(n) $(n).%,$(SUITE_JOBS
 # alloc, volume.hard and volume.model ~150 s, render and tool ~75 s on a
 # loaded 2-core machine); the plain build's longest are the same ones, at
 # 13-27 s.
-CHECK_FIRST ?= stability accuracy colliders alloc volume.hard volume.model tool render io
+# Under TSan the longest are sim and determinism (~210 s each) and pool (~95 s).
+CHECK_FIRST ?= stability accuracy colliders alloc volume.hard volume.model tool render io \
+               sim determinism determinism.determinism pool
 SUITE_JOBS  := $(foreach j,$(CHECK_FIRST),$(filter $(j),$(SUITE_JOBS))) \
                $(filter-out $(CHECK_FIRST),$(SUITE_JOBS))
 # Suites that must have the machine to themselves run after all the
@@ -338,7 +345,8 @@ $(CHECK_DIR)/%.result:
 	    "$$(grep '^[0-9]*%: Checks' $(@:.result=.log) | tail -n 1)"
 
 check-suites: $(CHECK_RESULTS)
-	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS))";) \
+	@$(if $(filter tsan,$(SAN)),echo "tsan: the threaded suites: $(notdir $(TESTS));" \
+	    "left out (TSAN_LEAVE_OUT; the Makefile says why): $(TSAN_LEAVE_OUT)";) \
 	$(if $(filter asan,$(SAN)),echo "asan: left out (ASAN_LEAVE_OUT; the Makefile says why): $(ASAN_LEAVE_OUT)";) \
 	failed=""; for r in $(CHECK_RESULTS); do \
 	    res=failed; [ -f "$$r" ] && read -r res sec < "$$r"; [ "$$res" = passed ] && continue; \
@@ -490,7 +498,9 @@ clean:
 #                   rewritten from its CSV (tools/bench/figures.py)
 # make check-long   the coupled long runs of tests/test_stability.c (fig1 and
 #                   fig10 at the top coupling gains for 10 simulated minutes,
-#                   every shipped scene at 1 and 2 threads); .ci/run runs it
+#                   every shipped scene at 1 and 2 threads, a pool at rest for
+#                   each pressure law) and the viewer left open for 10 minutes;
+#                   .ci/run runs them (check-long-physics, check-long-view)
 ACCURACY_DIR ?= data/accuracy
 .PHONY: accuracy check-long
 accuracy: all
@@ -508,19 +518,33 @@ check-accuracy: all
 	$(Q)$(PYTHON) tools/modesplit/check_accuracy.py $(BUILD)/bin/modesplit
 CHECK_PRE += $(if $(SAN),,check-accuracy)
 
-# The two long cases run side by side (one core each); both must pass.
-check-long: all $(BUILD)/tests/test_stability $(BUILD)/tests/test_view
-	@skips=$(abspath $(BUILD))/skipped-long.txt; rm -f $$skips; pids=; \
-	for c in coupled_top_gains coupled_every_scene still_pool; do \
-	    MS_TEST_LONG=1 CK_RUN_CASE=$$c MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) \
-	        MS_TEST_SKIP_FILE=$$skips $(BUILD)/tests/test_stability & pids="$$pids $$!"; \
+# The long cases run side by side, each its own process; all must pass.
+# <suite>:<case> each: the stability suite's long physics runs (all CPU),
+# and the viewer left open on a still pool (test_view's view_long: 12
+# minutes of wall clock, paced in real time, which uses under a core).
+# check-long runs them all; .ci/run runs check-long-physics as a stage and
+# check-long-view beside the stages after it, which leave a core to it.
+LONG_PHYSICS := stability:coupled_top_gains stability:coupled_every_scene stability:still_pool
+LONG_VIEW    := view:view_long
+.PHONY: check-long-physics check-long-view
+# $(1): the jobs, $(2): the target's name
+define run_long
+	@skips=$(abspath $(BUILD))/skipped-$(2).txt; rm -f $$skips; pids=; \
+	for j in $(1); do \
+	    MS_TEST_LONG=1 CK_RUN_CASE=$${j#*:} MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) \
+	        MS_TEST_SKIP_FILE=$$skips $(BUILD)/tests/test_$${j%%:*} & pids="$$pids $$!"; \
 	done; \
-	MS_TEST_LONG=1 CK_RUN_CASE=view_long MS_TEST_BUILD=$(BUILD) MS_TEST_SAN=$(SAN) \
-	    MS_TEST_SKIP_FILE=$$skips $(BUILD)/tests/test_view & pids="$$pids $$!"; \
 	fail=0; for p in $$pids; do wait $$p || fail=1; done; \
-	if [ -s $$skips ]; then echo "make check-long: skipped:"; cat $$skips; fi; \
-	if [ $$fail -ne 0 ]; then echo "make check-long: FAILED"; exit 1; fi; \
-	echo "make check-long: passed ($(BUILD))"
+	if [ -s $$skips ]; then echo "make $(2): skipped:"; cat $$skips; fi; \
+	if [ $$fail -ne 0 ]; then echo "make $(2): FAILED"; exit 1; fi; \
+	echo "make $(2): passed ($(BUILD))"
+endef
+check-long: all $(BUILD)/tests/test_stability $(BUILD)/tests/test_view
+	$(call run_long,$(LONG_PHYSICS) $(LONG_VIEW),check-long)
+check-long-physics: all $(BUILD)/tests/test_stability
+	$(call run_long,$(LONG_PHYSICS),check-long-physics)
+check-long-view: all $(BUILD)/tests/test_view
+	$(call run_long,$(LONG_VIEW),check-long-view)
 
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
 # Plugins include plugins/common/*.h: their dependency files too.
