@@ -120,6 +120,7 @@ struct ms_scene {
         float damping;    /* (0, 1], velocity kept per second */
         ms_boundary boundary;
         int max_substeps;
+        ms_surface_model model; /* wave (eq. 2) or dispersive */
     } surface;
     float level; /* m above domain_min z: still water when there is no volume */
 

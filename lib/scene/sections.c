@@ -369,11 +369,13 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
     static const char *const keys[] = {"cells",        "wave_speed", "damping", "boundary",
-                                       "max_substeps", "level",      NULL};
+                                       "max_substeps", "level",      "model",   NULL};
     static const char *const boundaries[] = {"reflect", "absorb", "periodic", NULL};
+    /* in the order of ms_surface_model; the default is the desc's */
+    static const char *const models[] = {"wave", "dispersive", NULL};
     static const int cells_def[2] = {256, 256};
     json_t *o;
-    int cells[2], boundary;
+    int cells[2], boundary, model;
     long maxsub;
     float height = sc->domain_max[2] - sc->domain_min[2];
     /* still water: the height of the fill spread over the domain, or half the
@@ -401,6 +403,8 @@ static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     MS_TRY(ms_scene_get_enum(c, o, "boundary", boundaries, 0, &boundary));
     MS_TRY(ms_scene_get_int(c, o, "max_substeps", 100000, 1, 10000000, &maxsub));
     MS_TRY(ms_scene_get_float(c, o, "level", level, 0, height, 0, "m", &sc->level));
+    MS_TRY(ms_scene_get_enum(c, o, "model", models, (int)ms_surface_desc_default().model, &model));
+    sc->surface.model = (ms_surface_model)model;
     sc->surface.nx = cells[0];
     sc->surface.ny = cells[1];
     sc->surface.boundary = (ms_boundary)boundary;

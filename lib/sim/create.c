@@ -389,6 +389,7 @@ ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out
         sd.damping = sc->surface.damping;
         sd.boundary = sc->surface.boundary;
         sd.max_substeps = sc->surface.max_substeps;
+        sd.model = sc->surface.model;
         sd.seed = sc->seed;
         d.surface = &sd;
     }
