@@ -335,6 +335,26 @@ static void transpose_cpx(ms_cpx *restrict dst, const ms_cpx *restrict src, int 
                     dst[(size_t)c * rows + r] = src[(size_t)r * cols + c];
 }
 
+/* DCT-II (inverse: its inverse) of the `count` rows of length len at
+ * rows, two at a time */
+static void dct_rows(ms_fft *f, float *rows, int count, int len, int inverse)
+{
+    int r = 0;
+    for (; r + 1 < count; r += 2) {
+        float *a = rows + (size_t)r * len, *b = a + len;
+        if (inverse)
+            ms_dct_inverse2(f, a, b);
+        else
+            ms_dct_forward2(f, a, b);
+    }
+    if (r < count) {
+        if (inverse)
+            ms_dct_inverse(f, rows + (size_t)r * len);
+        else
+            ms_dct_forward(f, rows + (size_t)r * len);
+    }
+}
+
 /* spec (or zspec) <- the transform of in, transposed (index x * ny + y) */
 static void forward(ms_surface *s, const float *in)
 {
@@ -343,11 +363,9 @@ static void forward(ms_surface *s, const float *in)
     const size_t n = (size_t)nx * ny;
     if (!p->periodic) {
         memcpy(p->u, in, n * sizeof *in);
-        for (int y = 0; y < ny; ++y)
-            ms_dct_forward(p->fx, p->u + (size_t)y * nx);
+        dct_rows(p->fx, p->u, ny, nx, 0);
         transpose(p->spec, p->u, ny, nx);
-        for (int x = 0; x < nx; ++x)
-            ms_dct_forward(p->fy, p->spec + (size_t)x * ny);
+        dct_rows(p->fy, p->spec, nx, ny, 0);
         return;
     }
     for (size_t j = 0; j < n; ++j) {
@@ -371,11 +389,9 @@ static void band_inverse(ms_surface *s, int b)
     if (!p->periodic) {
         for (size_t j = 0; j < n; ++j)
             p->t[j] = p->spec[j] * sym[j];
-        for (int x = 0; x < nx; ++x)
-            ms_dct_inverse(p->fy, p->t + (size_t)x * ny);
+        dct_rows(p->fy, p->t, nx, ny, 1);
         transpose(p->u, p->t, nx, ny);
-        for (int y = 0; y < ny; ++y)
-            ms_dct_inverse(p->fx, p->u + (size_t)y * nx);
+        dct_rows(p->fx, p->u, ny, nx, 1);
         return;
     }
     for (size_t j = 0; j < n; ++j) {

@@ -1,7 +1,8 @@
 /* Mixed-radix FFT and the DCT-II built on it (fft.h). The recursion is
  * the classic decimation in time over the factors of n (as kissfft): each
  * level splits the sequence into p interleaved subsequences of length
- * m = n / p, transforms them, and joins them with a radix-p butterfly. */
+ * m = n / p, transforms them, and joins them with a radix-p butterfly
+ * (4, 2 and 5 written out, other primes by the definition). */
 #include <math.h>
 #include <string.h>
 
@@ -21,11 +22,11 @@ struct ms_fft {
 
 static void factorise(ms_fft *p)
 {
-    int n = p->n, f = 2, k = 0;
+    int n = p->n, f = 4, k = 0;
     p->maxp = 1;
     while (n > 1) {
         while (n % f)
-            f = f == 2 ? 3 : (f * f > n ? n : f + 2);
+            f = f == 4 ? 2 : f == 2 ? 3 : (f * f > n ? n : f + 2);
         n /= f;
         p->factors[k++] = f;
         p->factors[k++] = n;
@@ -100,6 +101,57 @@ static void bfly2(ms_cpx *out, int fstride, const ms_fft *p, int m)
     }
 }
 
+static void bfly4(ms_cpx *out, int fstride, const ms_fft *p, int m)
+{
+    for (int k = 0; k < m; ++k) {
+        const ms_cpx s0 = cmul(out[k + m], p->tw[(size_t)k * fstride]);
+        const ms_cpx s1 = cmul(out[k + 2 * m], p->tw[(size_t)2 * k * fstride]);
+        const ms_cpx s2 = cmul(out[k + 3 * m], p->tw[(size_t)3 * k * fstride]);
+        const ms_cpx f0 = out[k];
+        const ms_cpx s5 = {f0.re - s1.re, f0.im - s1.im}, a = {f0.re + s1.re, f0.im + s1.im};
+        const ms_cpx s3 = {s0.re + s2.re, s0.im + s2.im}, s4 = {s0.re - s2.re, s0.im - s2.im};
+        out[k + 2 * m].re = a.re - s3.re;
+        out[k + 2 * m].im = a.im - s3.im;
+        out[k].re = a.re + s3.re;
+        out[k].im = a.im + s3.im;
+        out[k + m].re = s5.re + s4.im;
+        out[k + m].im = s5.im - s4.re;
+        out[k + 3 * m].re = s5.re - s4.im;
+        out[k + 3 * m].im = s5.im + s4.re;
+    }
+}
+
+static void bfly5(ms_cpx *out, int fstride, const ms_fft *p, int m)
+{
+    const ms_cpx ya = p->tw[(size_t)fstride * m], yb = p->tw[(size_t)fstride * 2 * m];
+    ms_cpx *f0 = out, *f1 = out + m, *f2 = out + 2 * m, *f3 = out + 3 * m, *f4 = out + 4 * m;
+    for (int u = 0; u < m; ++u) {
+        const ms_cpx s0 = f0[u];
+        const ms_cpx s1 = cmul(f1[u], p->tw[(size_t)u * fstride]);
+        const ms_cpx s2 = cmul(f2[u], p->tw[(size_t)2 * u * fstride]);
+        const ms_cpx s3 = cmul(f3[u], p->tw[(size_t)3 * u * fstride]);
+        const ms_cpx s4 = cmul(f4[u], p->tw[(size_t)4 * u * fstride]);
+        const ms_cpx s7 = {s1.re + s4.re, s1.im + s4.im}, s10 = {s1.re - s4.re, s1.im - s4.im};
+        const ms_cpx s8 = {s2.re + s3.re, s2.im + s3.im}, s9 = {s2.re - s3.re, s2.im - s3.im};
+        f0[u].re = s0.re + s7.re + s8.re;
+        f0[u].im = s0.im + s7.im + s8.im;
+        const ms_cpx s5 = {s0.re + s7.re * ya.re + s8.re * yb.re,
+                           s0.im + s7.im * ya.re + s8.im * yb.re};
+        const ms_cpx s6 = {s10.im * ya.im + s9.im * yb.im, -s10.re * ya.im - s9.re * yb.im};
+        f1[u].re = s5.re - s6.re;
+        f1[u].im = s5.im - s6.im;
+        f4[u].re = s5.re + s6.re;
+        f4[u].im = s5.im + s6.im;
+        const ms_cpx s11 = {s0.re + s7.re * yb.re + s8.re * ya.re,
+                            s0.im + s7.im * yb.re + s8.im * ya.re};
+        const ms_cpx s12 = {-s10.im * yb.im + s9.im * ya.im, s10.re * yb.im - s9.re * ya.im};
+        f2[u].re = s11.re + s12.re;
+        f2[u].im = s11.im + s12.im;
+        f3[u].re = s11.re - s12.re;
+        f3[u].im = s11.im - s12.im;
+    }
+}
+
 /* Radix q by the definition: q twiddled inputs summed into each of q outputs. */
 static void bfly_generic(ms_cpx *out, int fstride, ms_fft *p, int m, int q)
 {
@@ -137,6 +189,10 @@ static void work(ms_cpx *out, const ms_cpx *in, int fstride, const int *factors,
     }
     if (q == 2)
         bfly2(beg, fstride, p, m);
+    else if (q == 4)
+        bfly4(beg, fstride, p, m);
+    else if (q == 5)
+        bfly5(beg, fstride, p, m);
     else if (q > 2)
         bfly_generic(beg, fstride, p, m, q);
 }
@@ -192,4 +248,56 @@ void ms_dct_inverse(ms_fft *p, float *x)
         x[2 * j] = v[j].re * inv;
     for (int j = 0; 2 * j + 1 < n; ++j)
         x[2 * j + 1] = v[n - 1 - j].re * inv;
+}
+
+/* Two DCT-IIs at once: x in the real part, y in the imaginary part of one
+ * complex FFT, split by the symmetry of real transforms,
+ * V_x[k] = (Z_k + conj Z_{n-k}) / 2, V_y[k] = (Z_k - conj Z_{n-k}) / 2i. */
+void ms_dct_forward2(ms_fft *p, float *x, float *y)
+{
+    const int n = p->n, h = (n + 1) / 2;
+    ms_cpx *v = p->buf;
+    for (int j = 0; j < h; ++j) {
+        v[j].re = x[2 * j];
+        v[j].im = y[2 * j];
+    }
+    for (int j = 0; 2 * j + 1 < n; ++j) {
+        v[n - 1 - j].re = x[2 * j + 1];
+        v[n - 1 - j].im = y[2 * j + 1];
+    }
+    ms_fft_forward(p, v);
+    for (int k = 0; k < n; ++k) {
+        const ms_cpx zk = v[k], zn = v[k ? n - k : 0];
+        const float ar = 0.5f * (zk.re + zn.re), ai = 0.5f * (zk.im - zn.im);
+        const float br = 0.5f * (zk.im + zn.im), bi = -0.5f * (zk.re - zn.re);
+        x[k] = ar * p->dtw[k].re - ai * p->dtw[k].im;
+        y[k] = br * p->dtw[k].re - bi * p->dtw[k].im;
+    }
+}
+
+/* The inverse of ms_dct_forward2: both spectra into one complex FFT, x
+ * back from the real part and y from the imaginary part. */
+void ms_dct_inverse2(ms_fft *p, float *x, float *y)
+{
+    const int n = p->n, h = (n + 1) / 2;
+    ms_cpx *v = p->buf;
+    const float inv = 1.0f / (float)n;
+    for (int k = 0; k < n; ++k) {
+        const float c = p->dtw[k].re, s = -p->dtw[k].im;
+        const float xa = x[k], xb = k ? -x[n - k] : 0.0f;
+        const float ya = y[k], yb = k ? -y[n - k] : 0.0f;
+        const float ar = xa * c - xb * s, ai = xa * s + xb * c; /* V_x */
+        const float br = ya * c - yb * s, bi = ya * s + yb * c; /* V_y */
+        v[k].re = ar - bi;                                      /* V_x + i V_y */
+        v[k].im = ai + br;
+    }
+    ms_fft_inverse(p, v);
+    for (int j = 0; j < h; ++j) {
+        x[2 * j] = v[j].re * inv;
+        y[2 * j] = v[j].im * inv;
+    }
+    for (int j = 0; 2 * j + 1 < n; ++j) {
+        x[2 * j + 1] = v[n - 1 - j].re * inv;
+        y[2 * j + 1] = v[n - 1 - j].im * inv;
+    }
 }

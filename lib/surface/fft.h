@@ -2,9 +2,10 @@
  * the spectral operator of the dispersive surface model (dispersive.c)
  * applies its symbol in the basis of the grid's boundary: cosines (DCT-II,
  * the eigenvectors of the reflecting, cell-centred grid) or complex
- * exponentials (the periodic grid). Any length >= 1: mixed radix, with a
- * specialised radix 2 and a generic butterfly for the other prime factors
- * (a length with a large prime factor p costs ~p operations a point).
+ * exponentials (the periodic grid). Any length >= 1: mixed radix, with
+ * radices 4, 2 and 5 written out and a generic butterfly for the other
+ * prime factors (a length with a large prime factor p costs ~p operations
+ * a point).
  * Single precision data, twiddles computed in double; the same operations
  * in the same order on every call, so the same bits. */
 #ifndef MS_SURFACE_FFT_H
@@ -31,5 +32,8 @@ void ms_fft_inverse(ms_fft *p, ms_cpx *x);
  * included), by Makhoul's reordering and one complex FFT of length n. */
 void ms_dct_forward(ms_fft *p, float *x);
 void ms_dct_inverse(ms_fft *p, float *x);
+/* The same for two sequences x and y at the cost of one (both in place). */
+void ms_dct_forward2(ms_fft *p, float *x, float *y);
+void ms_dct_inverse2(ms_fft *p, float *x, float *y);
 
 #endif /* MS_SURFACE_FFT_H */
