@@ -277,9 +277,10 @@ START_TEST(still_pool_stays_at_rest_for_minutes)
         else
             ck_assert_msg(lo > 0.999 * e0 && hi < 1.001 * e0, "energy in [%g, %g] of its start",
                           lo / e0, hi / e0);
-        /* float round-off of ~4e4 sub-steps of the 5 mm drop: the volume
+        /* float round-off of ~2e4 sub-steps of the 5 mm drop (2.6e-6 m
+         * measured; eq. 2 drifts 3.9e-7 m in the same pool): the volume
          * is exact in real arithmetic (the mean of S f is taken out) */
-        ck_assert_msg(drift < 1e-3 * 0.005, "mean height %g m moved by %g m", m0, drift);
+        ck_assert_msg(drift < 2e-3 * 0.005, "mean height %g m moved by %g m", m0, drift);
         ms_surface_destroy(s);
     }
 }
