@@ -345,6 +345,29 @@ START_TEST(damping_and_obstacles_hold)
 }
 END_TEST
 
+/* An absorbing edge (its sponge) lets a drop's waves leave an undamped
+ * basin: after 8 s under 2 % of their energy is left (0.5 % measured),
+ * where reflecting walls keep all of it. */
+START_TEST(absorbing_edge_lets_the_waves_leave)
+{
+    double left[2];
+    for (int absorb = 0; absorb < 2; ++absorb) {
+        ms_surface *s =
+            make(128, 128, 0.01f, 0.1f, 1.0f, absorb ? MS_BOUNDARY_ABSORB : MS_BOUNDARY_REFLECT,
+                 MS_SURFACE_MODEL_DISPERSIVE);
+        ck_assert_int_eq(ms_surface_add_drop(s, 0.64f, 0.64f, 0.05f, 0.01f), MS_OK);
+        ck_assert_int_eq(ms_surface_step(s, 0.5f), MS_OK);
+        const double e0 = ms_surface_energy(s);
+        for (int k = 0; k < 15; ++k)
+            ck_assert_int_eq(ms_surface_step(s, 0.5f), MS_OK);
+        left[absorb] = ms_surface_energy(s) / e0;
+        ms_surface_destroy(s);
+    }
+    ck_assert_msg(fabs(left[0] - 1) < 1e-3, "reflecting walls kept %g of the energy", left[0]);
+    ck_assert_msg(left[1] < 0.02, "an absorbing edge left %g of the energy", left[1]);
+}
+END_TEST
+
 /* A still disturber settles into its dent, a moving one leaves a wake, and
  * neither adds water. */
 START_TEST(disturbers_press_and_leave_a_wake)
@@ -481,6 +504,7 @@ int main(void)
     tcase_set_timeout(stab, 600);
     tcase_add_test(stab, still_pool_stays_at_rest_for_minutes);
     tcase_add_test(stab, damping_and_obstacles_hold);
+    tcase_add_test(stab, absorbing_edge_lets_the_waves_leave);
     tcase_add_test(stab, disturbers_press_and_leave_a_wake);
     suite_add_tcase(s, stab);
     TCase *use = tcase_create("use");
