@@ -39,6 +39,15 @@ typedef enum ms_boundary {
     MS_BOUNDARY_FORCE_32BIT_ = 0x7fffffff
 } ms_boundary;
 
+/* How the surface waves are computed (docs/surface.md). */
+typedef enum ms_surface_model {
+    MS_SURFACE_MODEL_WAVE = 0,       /* eq. 2: every wavelength at c (non-dispersive) */
+    MS_SURFACE_MODEL_DISPERSIVE = 1, /* linear water waves, omega^2 = (g k + T k^3) tanh(k d),
+                                        d = c^2 / g the local depth: capillary ripples run
+                                        ahead, long waves behind */
+    MS_SURFACE_MODEL_FORCE_32BIT_ = 0x7fffffff
+} ms_surface_model;
+
 typedef struct ms_surface_desc {
     uint32_t size;    /* sizeof, set by ms_surface_desc_default() (core.h: struct sizes) */
     int nx, ny;       /* cells; 2 .. 16384 each                         */
@@ -50,12 +59,20 @@ typedef struct ms_surface_desc {
                             how many sub-steps are taken.                  */
     ms_boundary boundary;
     /* --- grown at the end (ABI: descs only grow) --- */
-    uint64_t seed;    /* seeds the rain RNG held in the handle          */
-    int max_substeps; /* refuse a step needing more sub-steps (MS_ERR_UNSTABLE); >= 1 */
+    uint64_t seed;          /* seeds the rain RNG held in the handle          */
+    int max_substeps;       /* refuse a step needing more sub-steps (MS_ERR_UNSTABLE); >= 1 */
+    ms_surface_model model; /* MS_SURFACE_MODEL_WAVE or _DISPERSIVE */
+    float gravity;          /* m/s^2, g of the dispersive model; (0, 1000] */
+    float surface_tension;  /* m^3/s^2, T = sigma / rho of the dispersive
+                               model (capillarity); [0, 1] */
 } ms_surface_desc;
 
 /* nx = ny = 256, dx = 0.01 m, wave_speed = 0.5 m/s, damping = 0.9,
- * reflecting walls, seed = 1, max_substeps = 100000. */
+ * reflecting walls, seed = 1, max_substeps = 100000, model wave,
+ * gravity 9.81 m/s^2, surface_tension 7.28e-5 m^3/s^2 (clean water at
+ * 20 C: 0.0728 N/m over 1000 kg/m^3). With the dispersive model,
+ * wave_speed (and the speed map) is the long-wave speed sqrt(g d) of the
+ * depth d: ms_surface_speed_from_depth gives it. */
 MS_API ms_surface_desc ms_surface_desc_default(void);
 
 MS_API ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out);
@@ -67,7 +84,8 @@ MS_API ms_status ms_surface_desc_check(const ms_surface_desc *d);
 MS_API void ms_surface_destroy(ms_surface *s);
 
 /* Advance by dt seconds (0 <= dt <= 10), in equal sub-steps that keep the
- * Courant number below 1/sqrt(2). MS_ERR_UNSTABLE if that needs more than
+ * Courant number below 1/sqrt(2) (the dispersive model: omega dt <= 2 for
+ * the grid's fastest mode). MS_ERR_UNSTABLE if that needs more than
  * desc.max_substeps sub-steps. */
 MS_API ms_status ms_surface_step(ms_surface *s, float dt);
 
@@ -154,7 +172,9 @@ MS_API const float *ms_surface_height(const ms_surface *s, int *nx, int *ny);
  * (1/2) sum over faces of c^2 (grad f)^2 dx^2, in m^4/s^2 (multiply by the
  * density over the depth for joules). It is the quantity the leapfrog
  * scheme conserves exactly without damping, so it is constant to round-off
- * on a closed, undamped basin. */
+ * on a closed, undamped basin. The dispersive model: (1/2) sum of
+ * (df/dt)^2 dx^2 plus (1/2) sum of f Omega^2 f dx^2, Omega^2 its operator
+ * (the same staggered form, kept the same way). */
 MS_API double ms_surface_energy(const ms_surface *s);
 
 typedef struct ms_surface_info {

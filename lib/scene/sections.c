@@ -449,12 +449,14 @@ static ms_status check_surface(ms_scene_ctx *c, const ms_surface_desc *s)
 static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
     static const char *const keys[] = {"cells",        "wave_speed", "damping", "boundary",
-                                       "max_substeps", "level",      NULL};
+                                       "max_substeps", "level",      "model",   NULL};
     static const char *const boundaries[] = {"reflect", "absorb", "periodic", NULL};
+    /* in the order of ms_surface_model; the default is the desc's */
+    static const char *const models[] = {"wave", "dispersive", NULL};
     ms_surface_desc *s = &sc->surface;
     *s = ms_surface_desc_default();
     json_t *o;
-    int cells[2] = {s->nx, s->ny}, boundary;
+    int cells[2] = {s->nx, s->ny}, boundary, model;
     float height = sc->domain_max[2] - sc->domain_min[2];
     /* still water: the height of the fill spread over the domain, or half the
      * domain's height without a volume */
@@ -480,6 +482,8 @@ static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     MS_TRY(ms_scene_get_enum(c, o, "boundary", boundaries, (int)s->boundary, &boundary));
     MS_TRY(get_int_field(c, o, "max_substeps", &s->max_substeps));
     MS_TRY(ms_scene_get_float(c, o, "level", level, 0, height, 0, "m", &sc->level));
+    MS_TRY(ms_scene_get_enum(c, o, "model", models, (int)s->model, &model));
+    s->model = (ms_surface_model)model;
     s->nx = cells[0];
     s->ny = cells[1];
     s->boundary = (ms_boundary)boundary;

@@ -276,3 +276,30 @@ void ms_surface_disturbers_force_row(const ms_surface *s, int y, float *v_row, c
         }
     }
 }
+
+/* The heads of all disturbers at xy added to field (nx * ny values, row
+ * major, no ghosts): the dispersive model applies its operator to f + P
+ * (dispersive.c). Solid cells get none: the model keeps them at 0. */
+void ms_surface_disturbers_head_field(const ms_surface *s, const float *xy, float *field)
+{
+    const float dx = s->desc.dx;
+    for (int k = 0; k < s->ndist; ++k) {
+        const disturber *b = &s->dist[k];
+        const float bx = xy[2 * k], by = xy[2 * k + 1];
+        const float reach = b->d.radius + dx;
+        if (b->d.depth == 0)
+            continue;
+        const int x0 = MS_MAX((int)floorf((bx - reach) / dx), 0);
+        const int x1 = MS_MIN((int)ceilf((bx + reach) / dx), s->nx - 1);
+        const int y0 = MS_MAX((int)floorf((by - reach) / dx), 0);
+        const int y1 = MS_MIN((int)ceilf((by + reach) / dx), s->ny - 1);
+        for (int y = y0; y <= y1; ++y) {
+            const float cy = ((float)y + 0.5f) * dx;
+            for (int x = x0; x <= x1; ++x) {
+                if (s->solid && s->solid[ms_surface_at(s, x, y)])
+                    continue;
+                field[(size_t)y * s->nx + x] += head(b, bx, by, ((float)x + 0.5f) * dx, cy);
+            }
+        }
+    }
+}

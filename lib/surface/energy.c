@@ -51,5 +51,7 @@ double ms_surface_energy(const ms_surface *s)
 {
     if (!s)
         return 0.0;
+    if (s->disp)
+        return ms_surface_dispersive_energy(s);
     return ms_surface_energy_region(s, 0, s->nx, 0, s->ny);
 }

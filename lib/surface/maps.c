@@ -61,8 +61,8 @@ static void set_ghost_speeds(ms_surface *s)
 }
 
 /* Rebuild the stepped speeds from the map (or the uniform speed) and the
- * obstacle mask. */
-static void rebuild_speed(ms_surface *s)
+ * obstacle mask (and the dispersive model's depth bands from them). */
+static ms_status rebuild_speed(ms_surface *s)
 {
     float maxc = 0.0f;
     for (int y = 0; y < s->ny; ++y) {
@@ -79,6 +79,7 @@ static void rebuild_speed(ms_surface *s)
     s->max_speed = maxc;
     set_ghost_speeds(s);
     s->coef_dt = 0.0f; /* the coefficients are stale */
+    return s->disp ? ms_surface_dispersive_bands(s) : MS_OK;
 }
 
 void ms_surface_refresh_coefficients(ms_surface *s, float dt)
@@ -110,6 +111,7 @@ void ms_surface_refresh_coefficients(ms_surface *s, float dt)
     }
     s->coef_dt = dt;
     ms_surface_find_uniform(s);
+    ms_surface_dispersive_invalidate(s);
 }
 
 /* The same bits, not only equal values (+0 and -0 compare equal). */
@@ -144,8 +146,7 @@ ms_status ms_surface_set_speed_map(ms_surface *s, const float *c)
     if (!c) {
         ms_free(s->speed_map);
         s->speed_map = NULL;
-        rebuild_speed(s);
-        return MS_OK;
+        return rebuild_speed(s);
     }
     size_t n = (size_t)s->nx * s->ny;
     for (size_t i = 0; i < n; ++i)
@@ -157,8 +158,7 @@ ms_status ms_surface_set_speed_map(ms_surface *s, const float *c)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: out of memory for the speed map");
     for (int y = 0; y < s->ny; ++y)
         memcpy(s->speed_map + ms_surface_at(s, 0, y), c + (size_t)y * s->nx, s->nx * sizeof(float));
-    rebuild_speed(s);
-    return MS_OK;
+    return rebuild_speed(s);
 }
 
 ms_status ms_surface_set_damping_map(ms_surface *s, const float *d)
@@ -207,8 +207,7 @@ ms_status ms_surface_set_obstacle_mask(ms_surface *s, const unsigned char *mask)
         ms_free(s->solid);
         s->solid = NULL;
     }
-    rebuild_speed(s);
-    return MS_OK;
+    return rebuild_speed(s);
 }
 
 ms_status ms_surface_speed_from_depth(const float *depth, size_t n, float gravity, float *speed_out)

@@ -146,6 +146,10 @@ ms_status ms_surface_snapshot_io(ms_surface *s, ms_blob *b)
     }
     s->rain = rain;
     s->uniform = -1; /* a and delta as read: wave.c looks again */
+    /* the dispersive model's bands follow the speeds as read; its symbols
+     * are rebuilt at the next step */
+    if (b->reading && s->disp && (st = ms_surface_dispersive_bands(s)))
+        return st;
     if ((st = disturbers_io(s, b)))
         return st;
     if (b->reading) {
@@ -163,5 +167,11 @@ uint64_t ms_surface_snapshot_hash(const ms_surface *s, uint64_t h)
     h = ms_blob_hash(h, &d->dx, sizeof d->dx);
     h = ms_blob_hash(h, &d->wave_speed, sizeof d->wave_speed);
     h = ms_blob_hash(h, &d->damping, sizeof d->damping);
-    return ms_blob_hash(h, &d->boundary, sizeof d->boundary);
+    h = ms_blob_hash(h, &d->boundary, sizeof d->boundary);
+    if (d->model != MS_SURFACE_MODEL_WAVE) { /* eq. 2's snapshots keep their hash */
+        h = ms_blob_hash(h, &d->model, sizeof d->model);
+        h = ms_blob_hash(h, &d->gravity, sizeof d->gravity);
+        h = ms_blob_hash(h, &d->surface_tension, sizeof d->surface_tension);
+    }
+    return h;
 }

@@ -13,7 +13,7 @@
  * mask), the disturbers with their paths, the rain and its RNG, time and
  * counters. */
 ms_status ms_surface_snapshot_io(ms_surface *s, ms_blob *b);
-/* What makes two surfaces step alike (grid, speed, damping, boundary). */
+/* What makes two surfaces step alike (grid, speed, damping, boundary, model). */
 uint64_t ms_surface_snapshot_hash(const ms_surface *s, uint64_t h);
 
 #endif /* MS_SURFACE_SNAPSHOT_H */

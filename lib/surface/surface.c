@@ -23,6 +23,9 @@ ms_surface_desc ms_surface_desc_default(void)
     d.boundary = MS_BOUNDARY_REFLECT;
     d.seed = 1;
     d.max_substeps = 100000;
+    d.model = MS_SURFACE_MODEL_WAVE;
+    d.gravity = 9.81f;            /* m/s^2 */
+    d.surface_tension = 7.28e-5f; /* m^3/s^2: 0.0728 N/m / 1000 kg/m^3 */
     return d;
 }
 
@@ -57,6 +60,13 @@ static ms_status validate(const ms_surface_desc *d)
     if (d->max_substeps < 1)
         return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "max_substeps",
                            "surface: max_substeps %d must be >= 1", d->max_substeps);
+    if (d->model != MS_SURFACE_MODEL_WAVE && d->model != MS_SURFACE_MODEL_DISPERSIVE)
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "model",
+                           "surface: model %d is not one of wave (0), dispersive (1)",
+                           (int)d->model);
+    if ((st = ms_check_range(PART, "gravity", d->gravity, 1e-9, 1000, "m/s^2")) ||
+        (st = ms_check_range(PART, "surface_tension", d->surface_tension, 0, 1, "m^3/s^2")))
+        return st;
     return MS_OK;
 }
 
@@ -99,7 +109,11 @@ ms_status ms_surface_create(const ms_surface_desc *d, ms_surface **out)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "surface: a %d x %d grid needs %zu MiB", d->nx, d->ny,
                        mb);
     }
-    ms_surface_set_speed_map(s, NULL);
+    if ((d->model == MS_SURFACE_MODEL_DISPERSIVE && (st = ms_surface_dispersive_create(s))) ||
+        (st = ms_surface_set_speed_map(s, NULL))) {
+        ms_surface_destroy(s);
+        return st;
+    }
     ms_rng_seed(&s->rng, d->seed);
     s->next_id = 1;
     *out = s;
@@ -123,6 +137,7 @@ void ms_surface_destroy(ms_surface *s)
         ms_free(s->dist[i].path);
     ms_free(s->dist);
     ms_free(s->level_xy);
+    ms_surface_dispersive_destroy(s);
     ms_free(s);
 }
 
@@ -223,6 +238,7 @@ void ms_surface_get_info(const ms_surface *s, ms_surface_info *user)
                  (size_t)s->nx * s->ny * sizeof(float) + (size_t)s->cap_dist * sizeof(disturber);
     for (int i = 0; i < s->ndist; ++i)
         out->bytes += (size_t)s->dist[i].npath * 2 * sizeof(float);
+    out->bytes += ms_surface_dispersive_bytes(s);
     ms_struct_write(user, &info, size);
 }
 

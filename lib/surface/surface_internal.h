@@ -72,10 +72,11 @@ struct ms_surface {
 
     disturber *dist;
     int ndist, cap_dist, next_id;
-    float *level_xy;    /* disturber positions at each fused sub-step
+    float *level_xy;            /* disturber positions at each fused sub-step
                              (wave.c), kept so a step allocates nothing */
-    int level_cap;      /* disturbers level_xy has room for */
-    _Atomic int cancel; /* ms_surface_cancel: stop before the next block */
+    int level_cap;              /* disturbers level_xy has room for */
+    _Atomic int cancel;         /* ms_surface_cancel: stop before the next block */
+    struct ms_dispersion *disp; /* the dispersive model's state, or NULL (eq. 2) */
 };
 
 #define MS_SURFACE_ORIGIN 15
@@ -115,6 +116,20 @@ ms_status ms_surface_check_disturber(const ms_surface *s, const ms_disturber_des
 void ms_surface_disturbers_advance(ms_surface *s, float dt);
 void ms_surface_disturbers_positions(const ms_surface *s, float *xy);
 void ms_surface_disturbers_force_row(const ms_surface *s, int y, float *v_row, const float *xy);
+void ms_surface_disturbers_head_field(const ms_surface *s, const float *xy, float *field);
+/* dispersive.c: the dispersive model (desc.model), NULL disp for eq. 2 */
+ms_status ms_surface_dispersive_create(ms_surface *s);
+void ms_surface_dispersive_destroy(ms_surface *s);
+size_t ms_surface_dispersive_bytes(const ms_surface *s);
+/* depth bands from the stepped speeds: when the speeds change */
+ms_status ms_surface_dispersive_bands(ms_surface *s);
+/* how many depth bands the operator sums (0 for eq. 2) */
+int ms_surface_dispersive_band_count(const ms_surface *s);
+/* the operator's symbols are stale (the coefficients were recomputed) */
+void ms_surface_dispersive_invalidate(ms_surface *s);
+float ms_surface_dispersive_stable_dt(const ms_surface *s);
+ms_status ms_surface_dispersive_advance(ms_surface *s, float dt, int n);
+double ms_surface_dispersive_energy(const ms_surface *s);
 /* energy.c: the energy of the cells in [x0, x1) x [y0, y1) */
 double ms_surface_energy_region(const ms_surface *s, int x0, int x1, int y0, int y1);
 /* surface.c */

@@ -45,6 +45,8 @@
 
 float ms_surface_stable_dt(const ms_surface *s)
 {
+    if (s->disp)
+        return ms_surface_dispersive_stable_dt(s);
     if (!(s->max_speed > 0))
         return FLT_MAX; /* all cells dry or solid: nothing moves */
     return COURANT_MAX * s->desc.dx / s->max_speed;
@@ -297,7 +299,10 @@ static ms_status step_calls(ms_surface *s, float dt, int calls)
             ms_surface_rain(s, dt);
         ms_surface_refresh_coefficients(s, sub);
         rescale_velocity(s, sub);
-        st = fuse ? advance(s, sub, calls, 1) : advance(s, sub, nsub, 0);
+        if (s->disp)
+            st = ms_surface_dispersive_advance(s, sub, fuse ? calls : nsub);
+        else
+            st = fuse ? advance(s, sub, calls, 1) : advance(s, sub, nsub, 0);
     }
 #if defined(__SSE__)
     _mm_setcsr(csr);

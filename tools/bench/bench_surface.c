@@ -11,7 +11,14 @@
  * up-sample + sum, the per-run average) against today's (one pass each,
  * fused sweeps), on the same sim, interleaved repeat by repeat, 1 thread
  * (both with today's wave kernel: the uniform rows speed either).
- * Writes surface_frame.csv. */
+ * Writes surface_frame.csv.
+ *
+ * Then each surface model (desc.model) on the same pools: ns of CPU time
+ * per cell per sub-step, and the sub-steps a simulated second takes (the
+ * dispersive model's bound is omega dt <= 2, eq. 2's the Courant number),
+ * at fig10's 200^2 grid and at 512^2, with one depth (one band) and with
+ * the sloping beach (several bands), the models interleaved repeat by
+ * repeat. Writes surface_models.csv. */
 #include <math.h>
 
 #include "bench_common.h"
@@ -23,9 +30,10 @@
  * a, delta; writes v, h (4-byte floats). */
 #define BYTES_PER_CELL 24.0
 
-static ms_surface *make_pool(int n)
+static ms_surface *make_pool_model(int n, ms_surface_model model, int beach)
 {
     ms_surface_desc d = ms_surface_desc_default();
+    d.model = model;
     d.nx = d.ny = n;
     d.dx = 2.0f / n; /* a 2 m pool */
     d.wave_speed = 0.7f;
@@ -44,7 +52,8 @@ static ms_surface *make_pool(int n)
             damp[(size_t)y * n + x] = y < n / 8 ? 0.5f : 1.0f;
         }
     ms_surface_speed_from_depth(depth, (size_t)n * n, 9.81f, c);
-    ms_surface_set_speed_map(s, c);
+    if (beach)
+        ms_surface_set_speed_map(s, c);
     ms_surface_set_damping_map(s, damp);
     for (int k = 0; k < 20; ++k)
         ms_surface_add_drop(s, 0.1f + 0.09f * k, 0.2f + 0.08f * k, 0.05f, 0.01f);
@@ -52,6 +61,72 @@ static ms_surface *make_pool(int n)
     free(c);
     free(damp);
     return s;
+}
+
+static ms_surface *make_pool(int n)
+{
+    return make_pool_model(n, MS_SURFACE_MODEL_WAVE, 1);
+}
+
+static double cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* ns of CPU time per cell per sub-step of each model, interleaved */
+static int models_bench(int argc, char **argv, const char *machine, const char *commit, int quick)
+{
+    FILE *csv = bench_csv_open(bench_csv_dir(argc, argv), "surface_models.csv",
+                               "commit,machine,threads,grid,depth,model,bands,substeps_per_s,"
+                               "ns_per_cell_median,ns_per_cell_p10,ns_per_cell_p90,repeats");
+    if (!csv)
+        return 1;
+    static const char *const names[2] = {"wave", "dispersive"};
+    printf("\nsurface models: CPU ns per cell per sub-step, median [p10, p90], 1 thread\n");
+    printf("%8s %6s %11s %6s %12s %12s %12s %12s\n", "grid", "depth", "model", "bands",
+           "substeps/s", "ns/cell", "p10", "p90");
+    const int sizes[2] = {200, 512};
+    for (int k = 0; k < 2; ++k)
+        for (int beach = 0; beach < 2; ++beach) {
+            const int n = sizes[k];
+            const double cells = (double)n * n;
+            ms_surface *s[2];
+            float sub[2];
+            const int reps = quick ? 3 : 9;
+            double t[2][32];
+            for (int m = 0; m < 2; ++m) {
+                s[m] = make_pool_model(n, (ms_surface_model)m, beach);
+                ms_surface_info info = ms_surface_info_init();
+                ms_surface_get_info(s[m], &info);
+                sub[m] = info.max_dt * 0.999f;
+                ms_surface_step(s[m], sub[m]); /* warm-up: caches, coefficients */
+            }
+            const int steps = (int)fmax(1.0, round(4e6 / cells));
+            for (int r = 0; r < reps; ++r)
+                for (int m = 0; m < 2; ++m) {
+                    double t0 = cpu_now();
+                    for (int i = 0; i < steps; ++i)
+                        if (ms_surface_step(s[m], sub[m]) != MS_OK) {
+                            fprintf(stderr, "bench_surface: %s\n", ms_last_error());
+                            return 1;
+                        }
+                    t[m][r] = (cpu_now() - t0) * 1e9 / (steps * cells);
+                }
+            for (int m = 0; m < 2; ++m) {
+                bench_stats st = bench_summarise(t[m], reps);
+                const int bands = m ? ms_surface_dispersive_band_count(s[m]) : 0;
+                const char *depth = beach ? "beach" : "0.05m"; /* 0.7 m/s */
+                printf("%5d^2 %6s %11s %6d %12.0f %12.2f %12.2f %12.2f\n", n, depth, names[m],
+                       bands, 1.0 / sub[m], st.median, st.p10, st.p90);
+                fprintf(csv, "%s,%s,1,%d,%s,%s,%d,%.1f,%.3f,%.3f,%.3f,%d\n", commit, machine, n,
+                        depth, names[m], bands, 1.0 / sub[m], st.median, st.p10, st.p90, reps);
+                ms_surface_destroy(s[m]);
+            }
+        }
+    fclose(csv);
+    return 0;
 }
 
 /* The separate-call sequence's average: a run of wave columns summed in a
@@ -206,18 +281,24 @@ static int frame_bench(int argc, char **argv, const char *machine, const char *c
 
 int main(int argc, char **argv)
 {
-    if (bench_help(argc, argv,
-                   "usage: bench_surface [--csv-dir DIR] [--quick] [--data DIR]\n"
-                   "ns per cell-update of the wave equation with speed and damping maps on grids\n"
-                   "256^2 to 2048^2, one core (median, 10th-90th percentile), beside the memory\n"
-                   "bandwidth; writes DIR/surface.csv (default DIR: bench). Then the surface side\n"
-                   "of a sim frame on fig1 and fig1_x10 (--data DIR: the scenes), separate\n"
-                   "calls against today's sequence, interleaved; writes DIR/surface_frame.csv.\n"))
+    if (bench_help(
+            argc, argv,
+            "usage: bench_surface [--csv-dir DIR] [--quick] [--data DIR] [--models]\n"
+            "ns per cell-update of the wave equation with speed and damping maps on grids\n"
+            "256^2 to 2048^2, one core (median, 10th-90th percentile), beside the memory\n"
+            "bandwidth; writes DIR/surface.csv (default DIR: bench). Then the surface side\n"
+            "of a sim frame on fig1 and fig1_x10 (--data DIR: the scenes), separate\n"
+            "calls against today's sequence, interleaved; writes DIR/surface_frame.csv.\n"
+            "Then CPU ns per cell per sub-step of each surface model (wave, dispersive)\n"
+            "at 200^2 and 512^2; writes DIR/surface_models.csv (--models: that part alone).\n"))
         return 0;
     const int quick = bench_quick(argc, argv);
     char machine[320], commit[64];
     bench_machine(machine, sizeof machine);
     bench_commit(commit, sizeof commit);
+    for (int i = 1; i < argc; ++i)
+        if (strcmp(argv[i], "--models") == 0) /* the models' part alone */
+            return models_bench(argc, argv, machine, commit, quick);
     const double gbps = bench_memcpy_gbps((size_t)256 << 20, quick ? 3 : 9);
     printf("surface: leapfrog step with speed + damping maps, 1 thread\n");
     printf("machine: %s; commit %s\n", machine, commit);
@@ -263,5 +344,7 @@ int main(int argc, char **argv)
         ms_surface_destroy(s);
     }
     fclose(csv);
-    return frame_bench(argc, argv, machine, commit, quick);
+    if (frame_bench(argc, argv, machine, commit, quick))
+        return 1;
+    return models_bench(argc, argv, machine, commit, quick);
 }

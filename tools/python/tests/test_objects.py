@@ -19,6 +19,28 @@ def test_undamped_closed_basin_keeps_its_energy():
     assert s.info()["substeps"] > 60 and s.desc()["boundary"] == 0
 
 
+def test_dispersive_surface_ring_travels_at_its_group_speed():
+    """model="dispersive": a 2 cm drop in 10 cm of water sends its ring out
+    at the group speed of its ~4 cm waves (~0.15 m/s), not at eq. 2's
+    sqrt(g d) = 1 m/s; the model and its constants read back."""
+    radius = {}
+    for model in ("wave", "dispersive"):
+        s = ms.Surface(nx=128, ny=128, dx=0.005, wave_speed=1.0, damping=1.0, model=model)
+        s.add_drop(0.32, 0.32, 0.02, 0.005)
+        e0 = s.energy
+        s.step(0.15)
+        assert abs(s.energy / e0 - 1) < 1e-3          # kept, undamped
+        row = np.abs(s.height[64, 64:])
+        radius[model] = (np.argmax(row) + 0.5) * 0.005
+        d = s.desc()
+        assert d["model"] == (1 if model == "dispersive" else 0)
+        assert abs(d["gravity"] - 9.81) < 1e-6 and d["surface_tension"] > 0
+    assert abs(radius["wave"] - 0.15) < 0.03
+    assert radius["dispersive"] < 0.5 * radius["wave"]
+    with pytest.raises(ms.InvalidArgument, match="airy"):
+        ms.Surface(nx=8, ny=8, model="airy")
+
+
 def test_speed_map_zero_is_dry_and_mask_is_solid():
     s = ms.Surface(nx=32, ny=32, dx=0.01, damping=1.0)
     mask = np.zeros((32, 32), np.uint8)
