@@ -28,20 +28,21 @@ static ms_status read_png(const char *path, int max_w, int max_h, unsigned char 
     memset(&img, 0, sizeof img);
     img.version = PNG_IMAGE_VERSION;
     *out = NULL;
-    if (!png_image_begin_read_from_file(&img, path)) {
-        FILE *f = fopen(path, "rb");
-        int exists = f != NULL;
-        if (f)
-            fclose(f);
-        ms_status st =
-            ms_fail(exists ? MS_ERR_PARSE : MS_ERR_IO,
-                    "render: cubemap \"%s\" is not a readable PNG (%s)", path, img.message);
+    const char *why;
+    FILE *f = ms_fopen_regular(path, &why);
+    if (!f)
+        return ms_fail(MS_ERR_IO, "render: cubemap \"%s\" cannot be read: %s", path, why);
+    if (!png_image_begin_read_from_stdio(&img, f)) {
+        fclose(f);
+        ms_status st = ms_fail(MS_ERR_PARSE, "render: cubemap \"%s\" is not a readable PNG (%s)",
+                               path, img.message);
         png_image_free(&img);
         return st;
     }
     if (img.width < 1 || img.height < 1 || img.width > (unsigned)max_w ||
         img.height > (unsigned)max_h) {
         png_image_free(&img);
+        fclose(f);
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "render: cubemap \"%s\" is %u x %u pixels (at most %d x %d here); faces "
                        "may be at most %d texels a side",
@@ -51,9 +52,12 @@ static ms_status read_png(const char *path, int max_w, int max_h, unsigned char 
     unsigned char *px = ms_alloc(PNG_IMAGE_SIZE(img));
     if (!px) {
         png_image_free(&img);
+        fclose(f);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"", path);
     }
-    if (!png_image_finish_read(&img, NULL, px, 0, NULL)) {
+    int done = png_image_finish_read(&img, NULL, px, 0, NULL);
+    fclose(f);
+    if (!done) {
         ms_status st = ms_fail(MS_ERR_PARSE, "render: cubemap \"%s\" cannot be decoded (%s)", path,
                                img.message);
         png_image_free(&img);
@@ -72,18 +76,27 @@ static int file_exists(const char *path)
     return stat(path, &sb) == 0 && S_ISREG(sb.st_mode);
 }
 
+/* Face f of the cubemap directory dir: its path into path, or a refusal. */
+static ms_status face_path(const char *dir, int f, char *path, size_t size)
+{
+    snprintf(path, size, "%s/%s.png", dir, short_names[f]);
+    if (!file_exists(path))
+        snprintf(path, size, "%s/%s.png", dir, long_names[f]);
+    if (!file_exists(path))
+        return ms_fail(MS_ERR_IO,
+                       "render: cubemap directory \"%s\" has no %s.png (or %s.png) as a "
+                       "regular file; it needs six faces px nx py ny pz nz",
+                       dir, short_names[f], long_names[f]);
+    return MS_OK;
+}
+
 static ms_status load_dir(const char *dir, ms_cubemap *out)
 {
     for (int f = 0; f < 6; ++f) {
         char path[4096];
-        snprintf(path, sizeof path, "%s/%s.png", dir, short_names[f]);
-        if (!file_exists(path))
-            snprintf(path, sizeof path, "%s/%s.png", dir, long_names[f]);
-        if (!file_exists(path))
-            return ms_fail(MS_ERR_IO,
-                           "render: cubemap directory \"%s\" has no %s.png (or %s.png); it "
-                           "needs six faces px nx py ny pz nz",
-                           dir, short_names[f], long_names[f]);
+        ms_status fst = face_path(dir, f, path, sizeof path);
+        if (fst != MS_OK)
+            return fst;
         int w, h;
         ms_status st = read_png(path, MAX_FACE, MAX_FACE, &out->face[f], &w, &h);
         if (st != MS_OK)
@@ -126,18 +139,44 @@ static ms_status load_strip(const char *path, ms_cubemap *out)
     return MS_OK;
 }
 
+ms_status ms_cubemap_check_path(const char *path)
+{
+    ms_status st = ms_check_not_null("render", "cubemap", path);
+    if (st != MS_OK || strcmp(path, "builtin") == 0)
+        return st;
+    struct stat sb;
+    if (!*path || stat(path, &sb) != 0)
+        return ms_fail(MS_ERR_IO,
+                       "render: cubemap \"%s\" cannot be opened (%s); allowed: \"builtin\", a "
+                       "directory of six PNG faces or one PNG strip",
+                       path, *path ? strerror(errno) : "empty name");
+    if (S_ISDIR(sb.st_mode)) {
+        char face[4096];
+        for (int f = 0; f < 6 && st == MS_OK; ++f)
+            st = face_path(path, f, face, sizeof face);
+        return st;
+    }
+    if (!S_ISREG(sb.st_mode))
+        return ms_fail(MS_ERR_IO,
+                       "render: cubemap \"%s\" is %s; allowed: \"builtin\", a directory of "
+                       "six PNG faces or one PNG strip (regular files)",
+                       path, ms_file_kind(sb.st_mode));
+    return MS_OK;
+}
+
 ms_status ms_cubemap_load(const char *path, ms_cubemap *out)
 {
     out->size = 0;
     for (int f = 0; f < 6; ++f)
         out->face[f] = NULL;
+    ms_status st = ms_cubemap_check_path(path);
+    if (st != MS_OK)
+        return st;
     struct stat sb;
     if (stat(path, &sb) != 0)
-        return ms_fail(MS_ERR_IO,
-                       "render: cubemap \"%s\" does not exist; allowed: \"builtin\", a "
-                       "directory of six PNG faces or one PNG strip",
-                       path);
-    ms_status st = S_ISDIR(sb.st_mode) ? load_dir(path, out) : load_strip(path, out);
+        return ms_fail(MS_ERR_IO, "render: cubemap \"%s\" cannot be opened (%s)", path,
+                       strerror(errno));
+    st = S_ISDIR(sb.st_mode) ? load_dir(path, out) : load_strip(path, out);
     if (st != MS_OK)
         ms_cubemap_free(out);
     return st;

@@ -8,6 +8,7 @@
 
 #include "core/core_internal.h"
 #include "modesplit/plugin.h"
+#include "modesplit/render.h"
 #include "plugin/plugin_internal.h"
 #include "scene/reader.h"
 #include "scene/scene_internal.h"
@@ -81,14 +82,15 @@ ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, cons
         r->cubemap = ms_alloc(n);
         if (r->cubemap)
             snprintf(r->cubemap, n, "%s%s", cubemap[0] == '/' ? "" : dir, cubemap);
-        struct stat stbuf;
-        if (r->cubemap && (!cubemap[0] || stat(r->cubemap, &stbuf) != 0)) {
-            int err = errno;
+        /* what the renderer will require of the path's files (kind and
+         * faces, not yet their pixels), so check refuses what run refuses;
+         * absolute paths are allowed (docs/scenes.md says why) */
+        if (r->cubemap && (!cubemap[0] || ms_cubemap_check_path(r->cubemap) != MS_OK)) {
+            char why[600]; /* a copy: the refusal below rewrites ms_last_error */
+            snprintf(why, sizeof why, "%s", cubemap[0] ? ms_last_error() : "\"\" is an empty name");
             ms_scene_push_key(c, "cubemap");
             return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                 "\"%.200s\" cannot be opened (%s); allowed: \"builtin\" or an "
-                                 "existing file or directory (relative to the scene file)",
-                                 r->cubemap, cubemap[0] ? strerror(err) : "empty name");
+                                 "%s (a relative path is relative to the scene file)", why);
         }
     }
     if (!r->shader || !r->cubemap)
