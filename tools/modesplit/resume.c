@@ -58,6 +58,15 @@ static int verify_frame(const char *path, ms_reader *r, long k, const ms_sim *si
         const float *h = i == 0   ? ms_sim_height(sim, &nx, &ny)
                          : i == 1 ? ms_sim_surface_height(sim, &nx, &ny)
                                   : ms_sim_volume_height(sim, &nx, &ny);
+        /* a grid that differs is named as such: only equal grids can
+         * differ by build or platform */
+        ms_grid g;
+        if (h && ms_reader_field_grid(r, bits[i], &g) == MS_OK && (g.nx != nx || g.ny != ny)) {
+            tool_error("%s: its %s field is %d x %d cells, this scene's sim makes %d x %d: the "
+                       "file was written with another grid, so it cannot be continued",
+                       path, names[i], g.nx, g.ny, nx, ny);
+            return -1;
+        }
         size_t n = (size_t)nx * (size_t)ny;
         float *f = h ? malloc(n * sizeof *f) : NULL;
         if (!f || ms_reader_read_field(r, bits[i], k, f, n) != MS_OK) {
@@ -141,9 +150,12 @@ static long restore_checkpoint(const char *path, ms_reader *r, ms_sim *sim, int 
                        ms_last_error());
             return -1;
         }
-        if (!quiet)
-            printf("modesplit: %s: cannot use the checkpoint of frame %ld (%s)\n", path, at[i],
-                   ms_last_error());
+        if (!quiet) {
+            /* the sentence may quote the file's bytes */
+            printf("modesplit: %s: cannot use the checkpoint of frame %ld (", path, at[i]);
+            tool_put_escaped(stdout, ms_last_error(), "");
+            printf(")\n");
+        }
     }
     return 0;
 }
