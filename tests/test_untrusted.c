@@ -430,7 +430,7 @@ START_TEST(a_resume_of_another_grid_says_what_differs)
     H5Fclose(f);
     free(v);
     result r = run_tool((const char *[]){"run", scene, "--frames", "6", "--resume", run, NULL});
-    ASSERT_REFUSED(r, 1, "combined field is 48 x 64 cells, this scene's sim makes 64 x 48");
+    ASSERT_REFUSED(r, 2, "combined field is 48 x 64 cells, this scene's sim makes 64 x 48");
     ck_assert_ptr_null(strstr(r.err, "another build"));
     result_free(&r);
 }

@@ -86,8 +86,13 @@ ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, cons
          * faces, not yet their pixels), so check refuses what run refuses;
          * absolute paths are allowed (docs/scenes.md says why) */
         if (r->cubemap && (!cubemap[0] || ms_cubemap_check_path(r->cubemap) != MS_OK)) {
-            char why[600]; /* a copy: the refusal below rewrites ms_last_error */
-            snprintf(why, sizeof why, "%s", cubemap[0] ? ms_last_error() : "\"\" is an empty name");
+            /* a copy (the refusal below rewrites ms_last_error), without
+             * the renderer's "render: cubemap " since the key names it */
+            const char *e = ms_last_error(), *head = "render: cubemap ";
+            if (!strncmp(e, head, strlen(head)))
+                e += strlen(head);
+            char why[600];
+            snprintf(why, sizeof why, "%s", cubemap[0] ? e : "\"\" is an empty name");
             ms_scene_push_key(c, "cubemap");
             return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
                                  "%s (a relative path is relative to the scene file)", why);
