@@ -147,9 +147,10 @@ ms_status ms_cubemap_check_path(const char *path)
     struct stat sb;
     if (!*path || stat(path, &sb) != 0)
         return ms_fail(MS_ERR_IO,
-                       "render: cubemap \"%s\" cannot be opened (%s); allowed: \"builtin\", a "
-                       "directory of six PNG faces or one PNG strip",
-                       path, *path ? strerror(errno) : "empty name");
+                       "render: cubemap \"%s\" %s (%s); allowed: \"builtin\", a directory of six "
+                       "PNG faces or one PNG strip",
+                       path, *path && errno == ENOENT ? "does not exist" : "cannot be opened",
+                       *path ? strerror(errno) : "empty name");
     if (S_ISDIR(sb.st_mode)) {
         char face[4096];
         for (int f = 0; f < 6 && st == MS_OK; ++f)
