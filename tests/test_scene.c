@@ -263,9 +263,31 @@ START_TEST(missing_files_are_refused)
     REFUSED("{\"surface\": {},\n \"render\": {\"cubemap\": \"/nonexistent/sky\"}}",
             MS_ERR_INVALID_ARGUMENT, "<scene>:2:13: render.cubemap \"/nonexistent/sky\"");
     ck_assert_ptr_nonnull(strstr(ms_last_error(), "\"builtin\""));
-    sc = parse_ok("{\"surface\": {}, \"render\": {\"cubemap\": \"/tmp\"}}");
+    /* what the renderer would refuse (a folder without the six faces, a
+     * device, a FIFO) is refused here, so check agrees with run */
+    REFUSED("{\"surface\": {}, \"render\": {\"cubemap\": \"/etc\"}}", MS_ERR_INVALID_ARGUMENT,
+            "has no px.png");
+    REFUSED("{\"surface\": {}, \"render\": {\"cubemap\": \"/dev/zero\"}}", MS_ERR_INVALID_ARGUMENT,
+            "is a character device");
+    char dir[] = "/tmp/ms_scene_sky_XXXXXX";
+    ck_assert_ptr_nonnull(mkdtemp(dir));
+    static const char *const faces[6] = {"px", "nx", "py", "ny", "posz", "negz"};
+    char path[512], json[700];
+    for (int f = 0; f < 6; ++f) {
+        snprintf(path, sizeof path, "%s/%s.png", dir, faces[f]);
+        FILE *fp = fopen(path, "w");
+        ck_assert_ptr_nonnull(fp);
+        fclose(fp);
+    }
+    snprintf(json, sizeof json, "{\"surface\": {}, \"render\": {\"cubemap\": \"%s\"}}", dir);
+    sc = parse_ok(json);
     ck_assert_int_eq(ms_scene_has_render(sc), 1);
     ms_scene_destroy(sc);
+    for (int f = 0; f < 6; ++f) {
+        snprintf(path, sizeof path, "%s/%s.png", dir, faces[f]);
+        remove(path);
+    }
+    rmdir(dir);
     MS_ASSERT_REFUSED(ms_scene_load(NULL, &sc), MS_ERR_INVALID_ARGUMENT, "path");
     MS_ASSERT_REFUSED(ms_scene_parse(NULL, 3, &sc), MS_ERR_INVALID_ARGUMENT, "NULL");
     MS_ASSERT_REFUSED(ms_scene_parse("{}", 2, NULL), MS_ERR_INVALID_ARGUMENT, "NULL");

@@ -220,6 +220,10 @@ START_TEST(input_log_round_trips_and_refuses_bad_lines)
         {"5 quit\n2 quit\n", "must not decrease"},
         {"x quit\n", "FRAME"},
         {"1 resize 8 8\n", "bad arguments"},
+        /* each side allowed, but 64 Mpixel: over what the renderer takes */
+        {"1 resize 8192 8192\n", "at most 33554432 pixels"},
+        /* a key name is printable: an escape would reach the terminal */
+        {"1 key-down \x1b]0;title\x07\n", "bad arguments"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof *bad; ++i) {
         write_file("bad.txt", bad[i].text);
@@ -231,6 +235,21 @@ START_TEST(input_log_round_trips_and_refuses_bad_lines)
     snprintf(p, sizeof p, "%s/none.txt", tmp_dir);
     ck_assert_int_eq(view_script_load(p, &s, err, sizeof err), -1);
     ck_assert_ptr_nonnull(strstr(err, "cannot open"));
+    /* files that never end or block: refused before a line is read */
+    ck_assert_int_eq(view_script_load("/dev/zero", &s, err, sizeof err), -1);
+    ck_assert_msg(strstr(err, "regular file"), "%s", err);
+    snprintf(p, sizeof p, "%s/fifo", tmp_dir);
+    ck_assert_int_eq(mkfifo(p, 0600), 0);
+    ck_assert_int_eq(view_script_load(p, &s, err, sizeof err), -1);
+    ck_assert_msg(strstr(err, "regular file"), "%s", err);
+    /* a sparse log over the bound: refused by its size, not read */
+    snprintf(p, sizeof p, "%s/huge.txt", tmp_dir);
+    FILE *h = fopen(p, "w");
+    ck_assert_ptr_nonnull(h);
+    ck_assert_int_eq(ftruncate(fileno(h), (off_t)VIEW_LOG_MAX_BYTES + 1), 0);
+    fclose(h);
+    ck_assert_int_eq(view_script_load(p, &s, err, sizeof err), -1);
+    ck_assert_msg(strstr(err, "over the"), "%s", err);
     remove_tmp_dir();
 }
 END_TEST
@@ -742,6 +761,33 @@ START_TEST(scripted_drag_moves_the_water_and_the_particles_along_it)
 }
 END_TEST
 
+/* A script that pauses and never resumes still ends at --frames: each
+ * frame shown counts, paused or not. */
+START_TEST(a_paused_script_ends_at_frames)
+{
+    NEED_X();
+    make_tmp_dir();
+    write_file("pause.log", VIEW_LOG_HEADER "\n"
+                                            "3 key-down Space\n"); /* pause at frame 3 */
+    char args[1536];
+    snprintf(args, sizeof args, "%s --fast --frames 8 --script %s/pause.log --out %s/pause.h5",
+             POOL, tmp_dir, tmp_dir);
+    ck_assert_int_eq(run_view("pause", args), 0);
+    char p[512];
+    snprintf(p, sizeof p, "%s/pause.out", tmp_dir);
+    char *out = ms_test_slurp(p);
+    ck_assert_msg(strstr(out, "view: paused"), "%s", out);
+    ck_assert_msg(strstr(out, "view: 3 frames stepped"), "%s", out);
+    free(out);
+    ms_reader *r;
+    snprintf(p, sizeof p, "%s/pause.h5", tmp_dir);
+    ck_assert_int_eq(ms_reader_open(p, &r), MS_OK);
+    ck_assert_int_eq(ms_reader_frames(r), 3);
+    ms_reader_close(r);
+    remove_tmp_dir();
+}
+END_TEST
+
 START_TEST(keys_toggle_what_they_say_and_escape_exits_0)
 {
     NEED_X();
@@ -943,6 +989,7 @@ static Suite *view_suite(void)
     tcase_add_test(tc, view_refuses_an_output_that_is_an_input);
     tcase_add_test(tc, scripted_drag_moves_the_water_and_the_particles_along_it);
     tcase_add_test(tc, keys_toggle_what_they_say_and_escape_exits_0);
+    tcase_add_test(tc, a_paused_script_ends_at_frames);
     tcase_add_test(tc, closing_resizing_and_a_lost_context_are_handled);
     tcase_add_test(tc, real_x_events_drag_the_water_in_a_screenshot_and_replay_exactly);
     suite_add_tcase(s, tc);

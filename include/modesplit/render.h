@@ -55,8 +55,11 @@
 extern "C" {
 #endif
 
-/* Largest image side (pixels), and largest cubemap face / light map side. */
+/* Largest image side (pixels), and largest cubemap face / light map side.
+ * An image also has at most MS_RENDER_MAX_PIXELS pixels (32 Mpixel: 128 MB
+ * of RGBA8, as much again on the GL side). */
 #define MS_RENDER_MAX_SIDE 8192
+#define MS_RENDER_MAX_PIXELS (1L << 25)
 #define MS_RENDER_MAX_CAUSTICS 4096
 
 typedef struct ms_renderer_desc {
@@ -101,6 +104,14 @@ typedef struct ms_renderer_desc {
 } ms_renderer_desc;
 
 MS_API ms_renderer_desc ms_renderer_desc_default(void);
+/* What a cubemap path (the desc's `cubemap`) must be, checked without
+ * decoding, as ms_renderer_create checks it and as a scene's check does:
+ * "builtin"; a directory holding six faces px nx py ny pz nz (.png, or
+ * posx ... negz) as regular files; or one regular file (a PNG strip).
+ * FIFOs, devices and sockets are refused before they are opened (a FIFO
+ * would block, /dev/zero never ends). Absolute paths are allowed: the
+ * files are read with the rights of the user who runs the scene. */
+MS_API ms_status ms_cubemap_check_path(const char *path);
 /* The desc of a scene: its `render` section (defaults where it has none)
  * and its pool: domain.min / domain.max x-y, the floor at domain.min z, the
  * still water at surface.level, the rim a little above. The strings point

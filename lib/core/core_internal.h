@@ -8,6 +8,8 @@
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <sys/types.h>
 
 #include "modesplit/core.h"
 
@@ -51,6 +53,14 @@ void *ms_alloc_array(size_t count, size_t size);
 void *ms_malloc(size_t n);
 void *ms_realloc(void *p, size_t n);
 char *ms_strdup(const char *s);
+
+/* A file named by untrusted input, opened for reading only when it is a
+ * regular file (lib/core/file.c): NULL with *why a phrase ("a FIFO (named
+ * pipe)", "a character device", the system's reason) otherwise. Never
+ * blocks on a FIFO. */
+FILE *ms_fopen_regular(const char *path, const char **why);
+/* "a regular file", "a directory", "a FIFO (named pipe)", ... */
+const char *ms_file_kind(mode_t mode);
 void ms_free(void *p);
 /* Blocks allocated since the process started, and blocks live now (for
  * the tests that prove a step allocates nothing). */

@@ -18,32 +18,36 @@
 static const char *const short_names[6] = {"px", "nx", "py", "ny", "pz", "nz"};
 static const char *const long_names[6] = {"posx", "negx", "posy", "negy", "posz", "negz"};
 
-/* Opens a PNG and checks the size in its header against max_w x max_h
- * before anything is decoded (a small PNG can declare faces of
- * gigabytes); *img is freed on failure. */
-static ms_status open_png(const char *path, int max_w, int max_h, png_image *img)
+/* Opens a PNG (a regular file only: ms_fopen_regular) and checks the size
+ * in its header against max_w x max_h before anything is decoded (a small
+ * PNG can declare faces of gigabytes); on failure *img is freed and *fp
+ * closed, on success the caller closes *fp after the read. */
+static ms_status open_png(const char *path, int max_w, int max_h, png_image *img, FILE **fp)
 {
     memset(img, 0, sizeof *img);
     img->version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(img, path)) {
-        FILE *f = fopen(path, "rb");
-        int exists = f != NULL;
-        if (f)
-            fclose(f);
-        ms_status st =
-            ms_fail(exists ? MS_ERR_PARSE : MS_ERR_IO,
-                    "render: cubemap \"%s\" is not a readable PNG (%s)", path, img->message);
+    const char *why;
+    FILE *f = ms_fopen_regular(path, &why);
+    *fp = NULL;
+    if (!f)
+        return ms_fail(MS_ERR_IO, "render: cubemap \"%s\" cannot be read: %s", path, why);
+    if (!png_image_begin_read_from_stdio(img, f)) {
+        fclose(f);
+        ms_status st = ms_fail(MS_ERR_PARSE, "render: cubemap \"%s\" is not a readable PNG (%s)",
+                               path, img->message);
         png_image_free(img);
         return st;
     }
     if (img->width < 1 || img->height < 1 || img->width > (unsigned)max_w ||
         img->height > (unsigned)max_h) {
         png_image_free(img);
+        fclose(f);
         return ms_fail(MS_ERR_INVALID_ARGUMENT,
                        "render: cubemap \"%s\" is %u x %u pixels (at most %d x %d here); faces "
                        "may be at most %d texels a side",
                        path, (unsigned)img->width, (unsigned)img->height, max_w, max_h, MAX_FACE);
     }
+    *fp = f;
     return MS_OK;
 }
 
@@ -52,15 +56,19 @@ static ms_status read_png(const char *path, int max_w, int max_h, unsigned char 
                           int *h)
 {
     png_image img;
+    FILE *f;
     *out = NULL;
-    MS_TRY(open_png(path, max_w, max_h, &img));
+    MS_TRY(open_png(path, max_w, max_h, &img, &f));
     img.format = PNG_FORMAT_RGBA;
     unsigned char *px = ms_alloc(PNG_IMAGE_SIZE(img));
     if (!px) {
         png_image_free(&img);
+        fclose(f);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"", path);
     }
-    if (!png_image_finish_read(&img, NULL, px, 0, NULL)) {
+    int done = png_image_finish_read(&img, NULL, px, 0, NULL);
+    fclose(f);
+    if (!done) {
         ms_status st = ms_fail(MS_ERR_PARSE, "render: cubemap \"%s\" cannot be decoded (%s)", path,
                                img.message);
         png_image_free(&img);
@@ -79,7 +87,7 @@ static int file_exists(const char *path)
     return stat(path, &sb) == 0 && S_ISREG(sb.st_mode);
 }
 
-/* The path of face f in a cubemap directory; MS_ERR_IO when it has none. */
+/* Face f of the cubemap directory dir: its path into path, or a refusal. */
 static ms_status face_path(const char *dir, int f, char *path, size_t size)
 {
     snprintf(path, size, "%s/%s.png", dir, short_names[f]);
@@ -87,8 +95,8 @@ static ms_status face_path(const char *dir, int f, char *path, size_t size)
         snprintf(path, size, "%s/%s.png", dir, long_names[f]);
     if (!file_exists(path))
         return ms_fail(MS_ERR_IO,
-                       "render: cubemap directory \"%s\" has no %s.png (or %s.png); it "
-                       "needs six faces px nx py ny pz nz",
+                       "render: cubemap directory \"%s\" has no %s.png (or %s.png) as a "
+                       "regular file; it needs six faces px nx py ny pz nz",
                        dir, short_names[f], long_names[f]);
     return MS_OK;
 }
@@ -153,18 +161,45 @@ static ms_status load_strip(const char *path, ms_cubemap *out)
     return MS_OK;
 }
 
+ms_status ms_cubemap_check_path(const char *path)
+{
+    ms_status st = ms_check_not_null("render", "cubemap", path);
+    if (st != MS_OK || strcmp(path, "builtin") == 0)
+        return st;
+    struct stat sb;
+    if (!*path || stat(path, &sb) != 0)
+        return ms_fail(MS_ERR_IO,
+                       "render: cubemap \"%s\" %s (%s); allowed: \"builtin\", a directory of six "
+                       "PNG faces or one PNG strip",
+                       path, *path && errno == ENOENT ? "does not exist" : "cannot be opened",
+                       *path ? strerror(errno) : "empty name");
+    if (S_ISDIR(sb.st_mode)) {
+        char face[4096];
+        for (int f = 0; f < 6 && st == MS_OK; ++f)
+            st = face_path(path, f, face, sizeof face);
+        return st;
+    }
+    if (!S_ISREG(sb.st_mode))
+        return ms_fail(MS_ERR_IO,
+                       "render: cubemap \"%s\" is %s; allowed: \"builtin\", a directory of "
+                       "six PNG faces or one PNG strip (regular files)",
+                       path, ms_file_kind(sb.st_mode));
+    return MS_OK;
+}
+
 ms_status ms_cubemap_load(const char *path, ms_cubemap *out)
 {
     out->size = 0;
     for (int f = 0; f < 6; ++f)
         out->face[f] = NULL;
+    ms_status st = ms_cubemap_check_path(path);
+    if (st != MS_OK)
+        return st;
     struct stat sb;
     if (stat(path, &sb) != 0)
-        return ms_fail(MS_ERR_IO,
-                       "render: cubemap \"%s\" does not exist; allowed: \"builtin\", a "
-                       "directory of six PNG faces or one PNG strip",
-                       path);
-    ms_status st = S_ISDIR(sb.st_mode) ? load_dir(path, out) : load_strip(path, out);
+        return ms_fail(MS_ERR_IO, "render: cubemap \"%s\" cannot be opened (%s)", path,
+                       strerror(errno));
+    st = S_ISDIR(sb.st_mode) ? load_dir(path, out) : load_strip(path, out);
     if (st != MS_OK)
         ms_cubemap_free(out);
     return st;
@@ -233,26 +268,28 @@ ms_status ms_sky_write_cubemap(const char *dir, int size, const float light_dir[
 
 ms_status ms_cubemap_probe(const char *path)
 {
+    MS_TRY(ms_cubemap_check_path(path));
     struct stat sb;
     if (stat(path, &sb) != 0)
-        return ms_fail(MS_ERR_IO,
-                       "render: cubemap \"%s\" does not exist; allowed: \"builtin\", a "
-                       "directory of six PNG faces or one PNG strip",
-                       path);
+        return ms_fail(MS_ERR_IO, "render: cubemap \"%s\" cannot be opened (%s)", path,
+                       strerror(errno));
     png_image img;
+    FILE *fp;
     if (!S_ISDIR(sb.st_mode)) {
-        MS_TRY(open_png(path, MAX_FACE, 6 * MAX_FACE, &img));
+        MS_TRY(open_png(path, MAX_FACE, 6 * MAX_FACE, &img, &fp));
         int w = (int)img.width, h = (int)img.height;
         png_image_free(&img);
+        fclose(fp);
         return check_strip(path, w, h);
     }
     int size = 0;
     for (int f = 0; f < 6; ++f) {
         char face[4096];
         MS_TRY(face_path(path, f, face, sizeof face));
-        MS_TRY(open_png(face, MAX_FACE, MAX_FACE, &img));
+        MS_TRY(open_png(face, MAX_FACE, MAX_FACE, &img, &fp));
         int w = (int)img.width, h = (int)img.height;
         png_image_free(&img);
+        fclose(fp);
         MS_TRY(check_face(face, f, w, h, size));
         size = w;
     }

@@ -13,7 +13,6 @@
 
 #define PART "render"
 #define MAX_FIELD_CELLS (1L << 24) /* 4096 x 4096 */
-#define MAX_PIXELS (1L << 25)      /* 32 Mpixel: 128 MB of RGBA8, as much again on the GL side */
 
 ms_renderer_desc ms_renderer_desc_default(void)
 {
@@ -119,9 +118,9 @@ static ms_status check_desc(const ms_renderer_desc *d)
     if ((st = ms_check_int_range(PART, "width", d->width, 16, MS_RENDER_MAX_SIDE)) != MS_OK ||
         (st = ms_check_int_range(PART, "height", d->height, 16, MS_RENDER_MAX_SIDE)) != MS_OK)
         return st;
-    if ((long)d->width * d->height > MAX_PIXELS)
+    if ((long)d->width * d->height > MS_RENDER_MAX_PIXELS)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "render: image %d x %d pixels is over %ld pixels",
-                       d->width, d->height, MAX_PIXELS);
+                       d->width, d->height, MS_RENDER_MAX_PIXELS);
     if ((st = ms_check_not_null(PART, "shader", d->shader)) != MS_OK ||
         (st = ms_check_not_null(PART, "cubemap", d->cubemap)) != MS_OK)
         return st;

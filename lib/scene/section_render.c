@@ -159,14 +159,21 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
         sc->render_cubemap = ms_alloc(n);
         if (sc->render_cubemap)
             snprintf(sc->render_cubemap, n, "%s%s", cubemap[0] == '/' ? "" : dir, cubemap);
-        struct stat stbuf;
-        if (sc->render_cubemap && (!cubemap[0] || stat(sc->render_cubemap, &stbuf) != 0)) {
-            int err = errno;
+        /* what the renderer will require of the path's files (kind and
+         * faces, not yet their pixels), so check refuses what run refuses;
+         * absolute paths are allowed (docs/scenes.md says why) */
+        if (sc->render_cubemap &&
+            (!cubemap[0] || ms_cubemap_check_path(sc->render_cubemap) != MS_OK)) {
+            /* a copy (the refusal below rewrites ms_last_error), without
+             * the renderer's "render: cubemap " since the key names it */
+            const char *e = ms_last_error(), *head = "render: cubemap ";
+            if (!strncmp(e, head, strlen(head)))
+                e += strlen(head);
+            char why[600];
+            snprintf(why, sizeof why, "%s", cubemap[0] ? e : "\"\" is an empty name");
             ms_scene_push_key(c, "cubemap");
             return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                 "\"%.200s\" cannot be opened (%s); allowed: \"builtin\" or an "
-                                 "existing file or directory (relative to the scene file)",
-                                 sc->render_cubemap, cubemap[0] ? strerror(err) : "empty name");
+                                 "%s (a relative path is relative to the scene file)", why);
         }
     }
     if (!sc->render_shader || !sc->render_cubemap)

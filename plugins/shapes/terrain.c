@@ -23,10 +23,17 @@
  * above and below the height surface (exact for a plane, first order in the
  * curvature otherwise), combined with the sides and the bottom as for a box.
  */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L /* open, fstat, fdopen */
+#endif
+#include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <png.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "../common/params.h"
 #include "modesplit/plugin.h"
@@ -112,12 +119,59 @@ static void read_heights(terrain *t, params *pm, json_t *rows)
 
 /* A grey-scale PNG through libpng's simplified API: 8-bit files are read
  * as 8-bit grey, 16-bit files as 16-bit grey, values unchanged. */
+/* The PNG only when it is a regular file, opened without blocking: a FIFO
+ * would hang the open (and `check`), a device such as /dev/zero or
+ * /dev/stdin never ends. The same rule as the library's own inputs
+ * (lib/core/file.c); a plugin cannot call the library's internals. */
+static FILE *open_regular(const char *path, const char **why)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0) {
+        *why = strerror(errno);
+        return NULL;
+    }
+    struct stat sb;
+    memset(&sb, 0, sizeof sb); /* a failed fstat reads as "not a regular file" */
+    if (fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        *why = S_ISDIR(sb.st_mode)    ? "a directory"
+               : S_ISFIFO(sb.st_mode) ? "a FIFO (named pipe)"
+               : S_ISCHR(sb.st_mode)  ? "a character device"
+               : S_ISBLK(sb.st_mode)  ? "a block device"
+                                      : "not a regular file";
+        close(fd);
+        return NULL;
+    }
+    int fl = fcntl(fd, F_GETFL);
+    if (fl >= 0)
+        (void)fcntl(fd, F_SETFL, fl & ~O_NONBLOCK);
+    FILE *f = fdopen(fd, "rb");
+    if (!f) {
+        *why = strerror(errno);
+        close(fd);
+    }
+    return f;
+}
+
+static void read_png_from(terrain *t, params *pm, FILE *f, const char *path, const float range[2]);
+
 static void read_png(terrain *t, params *pm, const char *path, const float range[2])
+{
+    const char *why = "";
+    FILE *f = open_regular(path, &why);
+    if (!f) {
+        params_fail(pm, MS_PLUGIN_ERR_IO, "png \"%s\" cannot be read: %s", path, why);
+        return;
+    }
+    read_png_from(t, pm, f, path, range);
+    fclose(f);
+}
+
+static void read_png_from(terrain *t, params *pm, FILE *f, const char *path, const float range[2])
 {
     png_image img;
     memset(&img, 0, sizeof img);
     img.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&img, path)) {
+    if (!png_image_begin_read_from_stdio(&img, f)) {
         params_fail(pm, MS_PLUGIN_ERR_IO, "png \"%s\" cannot be read: %s", path, img.message);
         return;
     }

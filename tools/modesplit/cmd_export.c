@@ -10,9 +10,11 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
 #include <limits.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "tool.h"
@@ -49,6 +51,128 @@ static char *python_dir(void)
     return NULL;
 }
 
+/* USD writes a stage when it is saved: every time sample (points and
+ * normals of each cell, 24 bytes; the particles' positions, velocities and
+ * ids) is held in memory until then, with some bookkeeping per time code
+ * and attribute. The export is refused when that estimate passes half this
+ * machine's memory or EXPORT_MAX_BYTES, whichever is smaller, before
+ * Python starts. */
+#define EXPORT_MAX_BYTES (16.0 * (1u << 30))
+#define EXPORT_CELL_BYTES 24.0      /* a point and a normal, float3 each */
+#define EXPORT_FRAME_BYTES 4096.0   /* a time code's samples and Python's objects */
+#define EXPORT_PARTICLE_FACTOR 1.34 /* in memory per stored byte: +8 B of id to 24 */
+
+static double export_bound(void)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), size = sysconf(_SC_PAGESIZE);
+    double half = pages > 0 && size > 0 ? 0.5 * (double)pages * (double)size : EXPORT_MAX_BYTES;
+    return half < EXPORT_MAX_BYTES ? half : EXPORT_MAX_BYTES;
+}
+
+/* What the export will read, checked by the library's reader first: a file
+ * `info` refuses is refused here in the same sentence, and the Python
+ * side only ever sees a file the reader accepted. *field becomes the field
+ * the mesh is made of (NULL: none). 0, or an exit status after a message. */
+static int check_run(const char *run, const char **field)
+{
+    static const char *const names[3] = {"combined", "surface", "volume"};
+    static const unsigned bits[3] = {MS_FIELD_COMBINED, MS_FIELD_SURFACE, MS_FIELD_VOLUME};
+    ms_reader *r;
+    if (ms_reader_open(run, &r) != MS_OK) {
+        tool_error("export: %s", ms_last_error());
+        return EXIT_USAGE;
+    }
+    unsigned have = ms_reader_fields(r);
+    int pick = -1;
+    for (int i = 0; i < 3; ++i)
+        if (*field ? !strcmp(*field, names[i]) : pick < 0 && (have & bits[i]))
+            pick = i;
+    if (*field && (pick < 0 || !(have & bits[pick]))) {
+        char list[64] = "";
+        for (int i = 0; i < 3; ++i)
+            if (have & bits[i])
+                snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", *list ? ", " : "",
+                         names[i]);
+        tool_error("export: %s has no field %s (it has: %s)", run, *field, *list ? list : "none");
+        ms_reader_close(r);
+        return EXIT_USAGE;
+    }
+    *field = pick >= 0 ? names[pick] : NULL;
+    long frames = ms_reader_frames(r);
+    ms_grid g = {0};
+    if (pick >= 0)
+        ms_reader_field_grid(r, bits[pick], &g);
+    /* the particles' arrays are stored unfiltered (the reader checks that
+     * the file holds their bytes), so the file's allocated size bounds
+     * them: a sparse file's holes count for nothing */
+    struct stat sb;
+    double stored = stat(run, &sb) == 0 ? 512.0 * (double)sb.st_blocks : 0.0;
+    double need = (double)frames * ((double)g.nx * g.ny * EXPORT_CELL_BYTES + EXPORT_FRAME_BYTES) +
+                  EXPORT_PARTICLE_FACTOR * stored;
+    double bound = export_bound();
+    if (need > bound) {
+        char a[32], b[32];
+        tool_error("export: %s: %ld frames of a %d x %d field and its particles would need about "
+                   "%s of memory (USD holds every time sample until it saves the stage); this "
+                   "machine's bound is %s (half its memory, at most 16 GiB), so it is refused",
+                   run, frames, g.nx, g.ny, tool_bytes(need, a, sizeof a),
+                   tool_bytes(bound, b, sizeof b));
+        ms_reader_close(r);
+        return EXIT_USAGE;
+    }
+    /* every step's particles as the reader sees them (their bytes stored
+     * in the file), before Python reads them whole */
+    for (long k = 0; k < frames && (have & MS_FIELD_PARTICLES); ++k) {
+        int n;
+        if (ms_reader_particle_count(r, k, &n) != MS_OK) {
+            tool_error("export: %s", ms_last_error());
+            ms_reader_close(r);
+            return EXIT_USAGE;
+        }
+    }
+    ms_reader_close(r);
+    return 0;
+}
+
+/* The USD file to write: a .usd/.usda/.usdc name in an existing folder
+ * (export creates no folders: a typo would otherwise leave a file in a
+ * tree nobody asked for), not the run file, not a FIFO or a device. */
+static int check_out(const char *run, const char *usd)
+{
+    size_t n = strlen(usd);
+    int ext = (n > 4 && !strcmp(usd + n - 4, ".usd")) || (n > 5 && !strcmp(usd + n - 5, ".usda")) ||
+              (n > 5 && !strcmp(usd + n - 5, ".usdc"));
+    if (!ext) {
+        tool_error("export: --usd %s: the name must end in .usdc, .usda or .usd", usd);
+        return EXIT_USAGE;
+    }
+    char *dir = strdup(usd);
+    if (!dir) {
+        tool_error("export: out of memory");
+        return EXIT_RUNTIME;
+    }
+    char *slash = strrchr(dir, '/');
+    if (slash)
+        slash[slash == dir ? 1 : 0] = '\0';
+    struct stat sb;
+    int ok = stat(slash ? dir : ".", &sb) == 0 && S_ISDIR(sb.st_mode);
+    if (!ok) {
+        tool_error("export: --usd %s: the folder %s does not exist (export creates no folders; "
+                   "make it first)",
+                   usd, slash ? dir : ".");
+        free(dir);
+        return EXIT_USAGE;
+    }
+    free(dir);
+    if (stat(usd, &sb) == 0 && !S_ISREG(sb.st_mode)) {
+        tool_error("export: --usd %s is not a regular file; give a file name to write", usd);
+        return EXIT_USAGE;
+    }
+    if (tool_refuse_same_file("export", "--usd", usd, "the run file", run) != 0)
+        return EXIT_USAGE;
+    return 0;
+}
+
 int cmd_export(int argc, char **argv)
 {
     const char *run = NULL, *usd = NULL, *field = NULL;
@@ -83,6 +207,11 @@ int cmd_export(int argc, char **argv)
                    !run ? "which run file?" : "--usd OUT.usdc is needed (the USD file to write)");
         return EXIT_USAGE;
     }
+    int rc = check_out(run, usd);
+    if (rc == 0)
+        rc = check_run(run, &field);
+    if (rc != 0)
+        return rc;
     char *dir = python_dir();
     if (!dir) {
         tool_error("export: cannot find modesplit/usd_export.py (looked in share/modesplit/python "

@@ -8,19 +8,6 @@
 
 #include "tool.h"
 
-/* Strings from a run file are data, not terminal commands: control
- * characters (ESC sequences that retitle or rewrite the terminal, CR,
- * BEL, ...) are written as \xNN; `keep` lists the ones kept as they are. */
-static void put_escaped(const char *s, const char *keep)
-{
-    for (const unsigned char *p = (const unsigned char *)s; *p; ++p) {
-        if ((*p < 0x20 && !strchr(keep, *p)) || *p == 0x7f)
-            printf("\\x%02x", *p);
-        else
-            putchar(*p);
-    }
-}
-
 static void field_line(ms_reader *r, unsigned bit, const char *name, long frames)
 {
     ms_grid g;
@@ -53,7 +40,10 @@ static void field_line(ms_reader *r, unsigned bit, const char *name, long frames
             if (bad)
                 printf(", %zu non-finite values", bad);
         } else if (h) {
-            printf(", last frame unreadable: %s", ms_last_error());
+            {
+                printf(", last frame unreadable: ");
+                tool_put_escaped(stdout, ms_last_error(), "");
+            }
         }
         free(h);
     }
@@ -92,7 +82,7 @@ int cmd_info(int argc, char **argv)
     }
     if (scene_only) {
         const char *s = ms_reader_scene(r);
-        put_escaped(s, "\n\t");
+        tool_put_escaped(stdout, s, "\n\t");
         if (*s && s[strlen(s) - 1] != '\n')
             fputc('\n', stdout);
         ms_reader_close(r);
@@ -102,11 +92,12 @@ int cmd_info(int argc, char **argv)
     unsigned fields = ms_reader_fields(r);
     printf("%s: modesplit run file, format %d, written by libmodesplit ", path,
            ms_reader_format_version(r));
-    put_escaped(*ms_reader_library_version(r) ? ms_reader_library_version(r) : "(unknown)", "");
+    tool_put_escaped(
+        stdout, *ms_reader_library_version(r) ? ms_reader_library_version(r) : "(unknown)", "");
     printf("\n");
     const char *name = ms_reader_scene_name(r);
     printf("  scene     ");
-    put_escaped(*name ? name : "(unnamed)", "");
+    tool_put_escaped(stdout, *name ? name : "(unnamed)", "");
     printf(", %zu bytes of JSON", strlen(ms_reader_scene(r)));
     double dt = ms_reader_frame_dt(r);
     if (isfinite(dt))
@@ -119,8 +110,11 @@ int cmd_info(int argc, char **argv)
     json_t *root = json_loads(ms_reader_scene(r), 0, NULL);
     json_t *ovr = root ? json_object_get(root, "overrides") : NULL;
     for (size_t k = 0; json_is_array(ovr) && k < json_array_size(ovr); ++k)
-        if (json_is_string(json_array_get(ovr, k)))
-            printf("  --set     %s\n", json_string_value(json_array_get(ovr, k)));
+        if (json_is_string(json_array_get(ovr, k))) {
+            printf("  --set     ");
+            tool_put_escaped(stdout, json_string_value(json_array_get(ovr, k)), "");
+            printf("\n");
+        }
     json_decref(root);
     if (frames > 0) {
         double t0 = NAN, t1 = NAN;
@@ -145,8 +139,11 @@ int cmd_info(int argc, char **argv)
             ms_reader_particle_count(r, frames - 1, &n1) == MS_OK)
             printf("  particles H5Part /Step#0 .. /Step#%ld, %d in the first, %d in the last\n",
                    frames - 1, n0, n1);
-        else if (frames > 0)
-            printf("  particles unreadable: %s\n", ms_last_error());
+        else if (frames > 0) {
+            printf("  particles unreadable: ");
+            tool_put_escaped(stdout, ms_last_error(), "");
+            printf("\n");
+        }
     }
     struct stat sb;
     char buf[32];

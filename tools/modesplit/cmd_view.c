@@ -136,7 +136,8 @@ static int parse_size(const char *s, int *w, int *h)
 {
     char x, extra;
     return sscanf(s, "%d%c%d%c", w, &x, h, &extra) == 3 && (x == 'x' || x == 'X') && *w >= 16 &&
-           *h >= 16 && *w <= MS_RENDER_MAX_SIDE && *h <= MS_RENDER_MAX_SIDE;
+           *h >= 16 && *w <= MS_RENDER_MAX_SIDE && *h <= MS_RENDER_MAX_SIDE &&
+           (long)*w * *h <= MS_RENDER_MAX_PIXELS;
 }
 
 static int parse_args(int argc, char **argv, view_opts *o)
@@ -153,8 +154,9 @@ static int parse_args(int argc, char **argv, view_opts *o)
             if (bad)
                 return EXIT_USAGE;
             if (!parse_size(v, &o->w, &o->h)) {
-                tool_error("view: --size %s must be WxH pixels, each in [16, %d]", v,
-                           MS_RENDER_MAX_SIDE);
+                tool_error("view: --size %s must be WxH pixels, each in [16, %d], at most %ld "
+                           "pixels in all",
+                           v, MS_RENDER_MAX_SIDE, MS_RENDER_MAX_PIXELS);
                 return EXIT_USAGE;
             }
         } else if (tool_opt_value(argc, argv, &i, "--threads", &v, &bad)) {
@@ -640,7 +642,7 @@ static int run(viewer *vw)
     vw->fps_t0 = tool_now();
     double next = tool_now();
     const double t_start = next;
-    long stepped_total = 0;
+    long stepped_total = 0, shown = 0;
     while (!v->quit) {
         if (input(vw) != 0)
             return EXIT_RUNTIME;
@@ -668,7 +670,9 @@ static int run(viewer *vw)
             return EXIT_RUNTIME;
         if (x_window_gone)
             break;
-        if (vw->o.frames >= 0 && ms_sim_frame(vw->sim) >= vw->o.frames)
+        /* --frames counts the frames shown, paused or not: a script that
+         * pauses (and never resumes) still ends */
+        if (vw->o.frames >= 0 && ++shown >= vw->o.frames)
             break;
         /* pacing: one frame each frame_dt of wall time (paused: about
          * the same rate of redraws); a late frame does not make the next

@@ -61,7 +61,7 @@ static const char usage_text[] =
     "      --size WxH             window size (default: the scene's render size)\n"
     "      --threads 1|2          as for run\n"
     "      --fast                 start as fast as it can (F toggles) instead of at frame_dt\n"
-    "      --frames N             quit after N frames\n"
+    "      --frames N             quit after N frames shown (paused ones count)\n"
     "      --record DIR           DIR/frame_NNNNN.png: every frame as the user saw it\n"
     "      --record-input FILE    log the mouse and keys with their frame numbers\n"
     "      --script FILE          replay such a log (the same frames, the same water)\n"
@@ -203,14 +203,38 @@ int tool_refuse_same_file(const char *cmd, const char *option, const char *out, 
     return -1;
 }
 
+void tool_put_escaped(FILE *f, const char *s, const char *keep)
+{
+    for (const unsigned char *p = (const unsigned char *)s; *p; ++p) {
+        if ((*p < 0x20 && !strchr(keep, *p)) || *p == 0x7f)
+            fprintf(f, "\\x%02x", *p);
+        else
+            fputc(*p, f);
+    }
+}
+
 void tool_error(const char *fmt, ...)
 {
+    /* a message quotes file names, scene text and run-file strings: it is
+     * escaped as a whole, so no caller has to remember which part came
+     * from a file */
+    char small[1024], *msg = small;
     va_list ap;
     va_start(ap, fmt);
-    fputs("modesplit: ", stderr);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
+    int n = vsnprintf(small, sizeof small, fmt, ap);
     va_end(ap);
+    if (n >= (int)sizeof small && (msg = malloc((size_t)n + 1)) != NULL) {
+        va_start(ap, fmt);
+        vsnprintf(msg, (size_t)n + 1, fmt, ap);
+        va_end(ap);
+    } else if (n >= (int)sizeof small) {
+        msg = small; /* cut, but printed */
+    }
+    fputs("modesplit: ", stderr);
+    tool_put_escaped(stderr, n < 0 ? fmt : msg, "\n\t");
+    fputc('\n', stderr);
+    if (msg != small)
+        free(msg);
 }
 
 int tool_opt_value(int argc, char **argv, int *i, const char *name, const char **value, int *bad)

@@ -34,7 +34,8 @@ static long first_diff(const float *a, const float *b, size_t n)
     return -1;
 }
 
-/* The sim's published frame against frame k of the file. */
+/* The sim's published frame against frame k of the file: 0, -1 when it
+ * differs (another build), -2 when the file is of another grid. */
 static int verify_frame(const char *path, ms_reader *r, long k, const ms_sim *sim)
 {
     static const unsigned bits[3] = {MS_FIELD_COMBINED, MS_FIELD_SURFACE, MS_FIELD_VOLUME};
@@ -58,6 +59,15 @@ static int verify_frame(const char *path, ms_reader *r, long k, const ms_sim *si
         const float *h = i == 0   ? ms_sim_height(sim, &nx, &ny)
                          : i == 1 ? ms_sim_surface_height(sim, &nx, &ny)
                                   : ms_sim_volume_height(sim, &nx, &ny);
+        /* a grid that differs is named as such: only equal grids can
+         * differ by build or platform */
+        ms_grid g;
+        if (h && ms_reader_field_grid(r, bits[i], &g) == MS_OK && (g.nx != nx || g.ny != ny)) {
+            tool_error("%s: its %s field is %d x %d cells, this scene's sim makes %d x %d: the "
+                       "file was written with another grid, so it cannot be continued",
+                       path, names[i], g.nx, g.ny, nx, ny);
+            return -2;
+        }
         size_t n = (size_t)nx * (size_t)ny;
         float *f = h ? malloc(n * sizeof *f) : NULL;
         if (!f || ms_reader_read_field(r, bits[i], k, f, n) != MS_OK) {
@@ -141,9 +151,12 @@ static long restore_checkpoint(const char *path, ms_reader *r, ms_sim *sim, int 
                        ms_last_error());
             return -1;
         }
-        if (!quiet)
-            printf("modesplit: %s: cannot use the checkpoint of frame %ld (%s)\n", path, at[i],
-                   ms_last_error());
+        if (!quiet) {
+            /* the sentence may quote the file's bytes */
+            printf("modesplit: %s: cannot use the checkpoint of frame %ld (", path, at[i]);
+            tool_put_escaped(stdout, ms_last_error(), "");
+            printf(")\n");
+        }
     }
     return 0;
 }
@@ -207,10 +220,10 @@ int resume_run(const char *path, ms_sim *sim, float dt, int every, long frames, 
             ms_reader_close(r);
             return EXIT_RUNTIME;
         }
-    int bad = kept > 0 && verify_frame(path, r, kept - 1, sim) != 0;
+    int bad = kept > 0 ? verify_frame(path, r, kept - 1, sim) : 0;
     ms_reader_close(r);
     if (bad)
-        return EXIT_RUNTIME;
+        return bad == -2 ? EXIT_USAGE : EXIT_RUNTIME;
     if (ms_writer_open_append(path, sim, 0, w) != MS_OK) {
         tool_error("--resume: %s", ms_last_error());
         return EXIT_RUNTIME;

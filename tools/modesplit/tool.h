@@ -19,7 +19,14 @@
 
 enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
 
-/* Print "modesplit: <message>\n" to stderr. */
+/* Strings from a file are data, not terminal commands: control
+ * characters (ESC sequences that retitle or rewrite the terminal, CR, BEL,
+ * ...) and DEL are written to f as \xNN; `keep` lists the ones written as
+ * they are. The one escaping of the tool: `info`, `--resume`, `export`,
+ * the viewer and every tool_error message use it. */
+void tool_put_escaped(FILE *f, const char *s, const char *keep);
+/* Print "modesplit: <message>\n" to stderr, the message escaped
+ * (tool_put_escaped, newlines and tabs kept). */
 void tool_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 /* An output never overwrites an input: 0 when `out` (an option's file to
  * write) is not the existing file `in`, under any spelling or hard link

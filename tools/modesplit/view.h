@@ -48,6 +48,9 @@ typedef struct view_event {
 } view_event;
 
 #define VIEW_LOG_HEADER "# modesplit view input log 1"
+/* Largest input log --script reads (a line is at most 254 characters: about
+ * 250 000 events). */
+#define VIEW_LOG_MAX_BYTES (64 << 20)
 /* One line per event: "FRAME key-down NAME", "FRAME button-down B X Y
  * SHIFT", "FRAME motion X Y", "FRAME wheel D", "FRAME quit", "FRAME resize
  * W H", "FRAME lose-context". */

@@ -2,8 +2,11 @@
  * happened in, so a session can be replayed exactly (--script) and an
  * interaction re-simulated in batch. */
 #include <errno.h>
+#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "view.h"
 
@@ -75,6 +78,9 @@ static int parse_line(char *line, view_event *e, char *err, size_t errlen)
     case VIEW_KEY_UP: {
         size_t n = strlen(rest);
         ok = n > 0 && n < sizeof e->key;
+        /* a key's name is printable text: it reaches the terminal */
+        for (size_t k = 0; k < n && ok; ++k)
+            ok = (unsigned char)rest[k] >= 0x20 && rest[k] != 0x7f;
         if (ok)
             memcpy(e->key, rest, n + 1);
         break;
@@ -96,7 +102,8 @@ static int parse_line(char *line, view_event *e, char *err, size_t errlen)
         break;
     case VIEW_RESIZE:
         ok = sscanf(rest, "%d %d %c", &e->w, &e->h, &extra) == 2 && e->w >= 16 &&
-             e->w <= MS_RENDER_MAX_SIDE && e->h >= 16 && e->h <= MS_RENDER_MAX_SIDE;
+             e->w <= MS_RENDER_MAX_SIDE && e->h >= 16 && e->h <= MS_RENDER_MAX_SIDE &&
+             (long)e->w * e->h <= MS_RENDER_MAX_PIXELS; /* what the renderer takes */
         break;
     default:
         ok = *rest == '\0';
@@ -105,8 +112,9 @@ static int parse_line(char *line, view_event *e, char *err, size_t errlen)
     if (!ok) {
         snprintf(err, errlen,
                  "bad arguments for \"%s\": \"%s\" (a key name; button 1-3 and x, "
-                 "y in [0, 1]; wheel in [-100, 100]; size in [16, %d])",
-                 type, rest, MS_RENDER_MAX_SIDE);
+                 "y in [0, 1]; wheel in [-100, 100]; size in [16, %d] a side and at most %ld "
+                 "pixels)",
+                 type, rest, MS_RENDER_MAX_SIDE, MS_RENDER_MAX_PIXELS);
         return -1;
     }
     return 0;
@@ -115,9 +123,28 @@ static int parse_line(char *line, view_event *e, char *err, size_t errlen)
 int view_script_load(const char *path, view_script *s, char *err, size_t errlen)
 {
     memset(s, 0, sizeof *s);
-    FILE *f = fopen(path, "r");
+    /* a regular file of bounded size: /dev/zero would be read forever (its
+     * NUL "lines" are empty), a FIFO would block the open */
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    struct stat sb;
+    if (fd < 0 || fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode) || sb.st_size > VIEW_LOG_MAX_BYTES) {
+        if (fd < 0 || fstat(fd, &sb) != 0)
+            snprintf(err, errlen, "%s: cannot open the input log: %s", path, strerror(errno));
+        else if (!S_ISREG(sb.st_mode))
+            snprintf(err, errlen,
+                     "%s: the input log must be a regular file (not a FIFO or a device)", path);
+        else
+            snprintf(err, errlen,
+                     "%s: the input log is %lld bytes, over the %d bytes a log may have", path,
+                     (long long)sb.st_size, VIEW_LOG_MAX_BYTES);
+        if (fd >= 0)
+            close(fd);
+        return -1;
+    }
+    FILE *f = fdopen(fd, "r");
     if (!f) {
         snprintf(err, errlen, "%s: cannot open the input log: %s", path, strerror(errno));
+        close(fd);
         return -1;
     }
     char line[256], why[200];
