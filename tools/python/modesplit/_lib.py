@@ -92,7 +92,8 @@ def load_library():
         except OSError as e:
             tried.append("%s: %s: %s" % (what, path, e))
     raise LibraryNotFound("modesplit: cannot load %s; looked in:\n  %s\n(install the package "
-                          "from a clone with `pip install ./tools/python`, which builds the library "
+                          "from a clone with `pip install ./tools/python`, which builds the "
+                          "library "
                           "into it; or set MODESPLIT_LIB to the library or its directory)"
                           % (LIB_NAME, "\n  ".join(tried)))
 
