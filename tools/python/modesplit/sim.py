@@ -80,8 +80,8 @@ class Sim(Handle):
     def cancel(self):
         """Ask a step running on another thread to stop at the next sub-step:
         that step raises modesplit.Canceled, and the sim is then failed as
-        in C (restore() of a snapshot() makes it step again). Safe from any thread; asked between
-        steps it stops the next one at once (as in C)."""
+        in C (restore() of a snapshot() makes it step again). Safe from
+        any thread; asked between steps it stops the next one at once."""
         self._cancel(L().ms_sim_cancel)
 
     def step(self, frame_dt=None):
