@@ -1,7 +1,8 @@
 """Finding libmodesplit.so and binding its C ABI with ctypes.
 
-Why ctypes (not cffi): it is in the standard library, so `pip install` needs
-no compiler and no extra package, and every declaration the binding needs is
+Why ctypes (not cffi): it is in the standard library, so the package has no
+extension module to compile against a Python version (the wheel's one
+compiled part is the library itself), and every declaration the binding needs is
 already machine-readable in the ABI listing (abi.json, made by
 tools/abi/abi_listing.py from the headers and the compiler). The struct
 layouts and the function signatures are BUILT from that listing, and each
