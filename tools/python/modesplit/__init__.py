@@ -8,11 +8,12 @@
 
 Every failing C call raises a modesplit.Error subclass (InvalidArgument,
 Unstable, ParseError, ...) carrying ms_last_error()'s sentence and the status
-name. The library is found from $MODESPLIT_LIB, pkg-config, the build tree
-beside this package, or the system loader (see modesplit._lib).
+name. The library is found from $MODESPLIT_LIB, the copy inside the installed
+wheel, pkg-config, the build tree beside this package, or the system loader
+(see modesplit._lib).
 """
 from ._lib import ABI, LibraryNotFound, lib
-from .errors import (Closed, Error, InvalidArgument, IoError, OutOfMemory, ParseError,
+from .errors import (Canceled, Closed, Error, InvalidArgument, IoError, OutOfMemory, ParseError,
                      PluginError, StateError, Unstable, Unsupported, ViewsAlive)
 from .io import Reader, Writer
 from .render import Renderer
@@ -22,7 +23,8 @@ from .sim import FIELDS, Sim
 from .surface import Surface
 from .volume import Volume
 
-__all__ = ["ABI", "LibraryNotFound", "lib", "Closed", "Error", "InvalidArgument", "IoError",
+__all__ = ["ABI", "LibraryNotFound", "lib", "Canceled", "Closed", "Error", "InvalidArgument",
+           "IoError",
            "OutOfMemory", "ParseError", "PluginError", "StateError", "Unstable", "Unsupported",
            "Reader", "Writer", "Renderer", "Scene", "Shape", "FIELDS", "Sim", "Surface",
            "Volume", "ViewsAlive", "plugins", "version"]

@@ -1,13 +1,16 @@
 """Handles that own (or borrow) a C object, desc helpers, views and inputs."""
 import ctypes
 import functools
+import os
+import queue
+import signal
 import threading
 import weakref
 
 import numpy as np
 
 from ._lib import ABI, STRUCTS, check_int, ctype, int_range, lib
-from .errors import Closed, InvalidArgument
+from .errors import Closed, InvalidArgument, check, last_error
 
 
 def _finish(destroy, ptr, deps):
@@ -41,6 +44,7 @@ class Handle:
         self._finalizer = (weakref.finalize(self, _finish, destroy, ptr, self._deps)
                            if destroy is not None else None)
         self._lock = threading.RLock()  # one call at a time (serialised)
+        self._cancel_lock = threading.Lock()  # cancel() against close()
 
     @classmethod
     def _borrow(cls, ptr, owner):
@@ -96,7 +100,8 @@ class Handle:
         if n:
             from .errors import ViewsAlive
             raise ViewsAlive("modesplit: %s would change the particle count while %d view%s of "
-                             "the particles (positions, velocities) %s alive; a view has a "
+                             "the particles (positions, velocities, particle_views) %s alive; "
+                             "a view has a "
                              "fixed shape and a grown count moves the memory it reads: del "
                              "the views (or keep .copy()s) first"
                              % (what, n, "" if n == 1 else "s", "is" if n == 1 else "are"))
@@ -134,10 +139,20 @@ class Handle:
         """Close the object (idempotent): further use raises Closed; the C
         object is freed now, or when the last view or user of it goes. A
         close() from another thread while a call runs waits for that call."""
-        with self._root()._lock:
+        root = self._root()
+        with root._lock, root._cancel_lock:
             self._h = None
             if self._holds == 0:
                 self._destroy_now()
+
+    def _cancel(self, fn):
+        """fn(ptr) (ms_*_cancel) from any thread, without the handle's lock
+        (a step on another thread holds it): under the cancel lock, which
+        close() takes too, so the pointer is never one close() freed."""
+        root = self._root()
+        with root._cancel_lock:
+            if not self.closed:
+                fn(self._h)
 
     def _no_copy(self, *args):
         raise TypeError("modesplit: a %s is a handle to C memory and cannot be copied or "
@@ -158,6 +173,83 @@ class Handle:
                                       "closed" if self.closed else hex(self._h))
 
 
+class _Worker:
+    """One thread that runs the main thread's long C calls (steps), so the
+    main thread can wait for them where Python's SIGINT handler runs.
+    ctypes releases the GIL around a C call, but the handler runs only on
+    the main thread between bytecodes: with the step itself on the main
+    thread, Ctrl-C waited for C to return (12.6 s for a 4096^2 surface
+    step). One thread for the whole process: only the main thread gets
+    signals, so only its calls come here."""
+
+    def __init__(self):
+        self.jobs = queue.SimpleQueue()
+        threading.Thread(target=self._run, name="modesplit-step", daemon=True).start()
+
+    def _run(self):
+        while True:
+            fn, args, box, done = self.jobs.get()
+            try:
+                box.append(fn(*args))
+            except BaseException as e:  # handed to the waiting caller
+                box.append(e)
+            done.set()
+
+
+_worker = None
+
+
+def _forget_worker():
+    global _worker
+    _worker = None  # a forked child has the queue but not the thread
+
+
+os.register_at_fork(after_in_child=_forget_worker)
+
+
+def _status_call(fn, args):
+    """fn(*args) and, when it failed, this thread's ms_last_error()."""
+    st = fn(*args)
+    return st, (last_error() if st else None)
+
+
+def interruptible(fn, args, cancel):
+    """check(fn(*args)) -- a C call that may run long (a step) -- such that Ctrl-C
+    stops it: on the main thread with a Python SIGINT handler, the call
+    runs on the worker thread while the main thread waits interruptibly;
+    when the handler raises (KeyboardInterrupt), cancel() asks C to stop
+    (ms_*_cancel: at its next sub-step), the wait goes on until C has
+    returned -- so nothing is freed under it -- and the exception is
+    raised. Elsewhere (another thread, SIGINT ignored or C's) fn runs here."""
+    global _worker
+    if (threading.current_thread() is not threading.main_thread()
+            or not callable(signal.getsignal(signal.SIGINT))):
+        check(fn(*args))
+        return
+    if _worker is None:
+        _worker = _Worker()
+    box, done = [], threading.Event()
+    _worker.jobs.put((_status_call, (fn, args), box, done))
+    try:
+        done.wait()  # a lock wait: signal handlers run in it (POSIX)
+    except BaseException:
+        # C keeps a cancel that comes after its step ended for the next
+        # step; asking only while it runs leaves a window of a few
+        # instructions, not a whole step, for that
+        if not done.is_set():
+            cancel()
+        while not done.is_set():
+            try:
+                done.wait()
+            except BaseException:  # another Ctrl-C: C must return first
+                cancel()
+        raise
+    r = box[0]
+    if isinstance(r, BaseException):
+        raise r
+    check(*r)
+
+
 def _serial(fn):
     @functools.wraps(fn)
     def call(self, *args, **kwargs):
@@ -173,10 +265,11 @@ def serialised(cls):
     """Class decorator: every public method and property of cls runs under
     the handle's lock (Handle._busy). The rule, one for Surface, Volume and
     Sim: a call while another thread is in a call on the same handle raises
-    StateError at once; close() waits for the running call. A call that
+    StateError at once; close() waits for the running call; cancel() is
+    the one call another thread makes during a step. A call that
     re-enters from the same thread (a method using a property) is fine."""
     for name, attr in list(vars(cls).items()):
-        if name.startswith("_") or name == "close":
+        if name.startswith("_") or name in ("close", "cancel"):
             continue
         if isinstance(attr, property):
             setattr(cls, name, property(_serial(attr.fget) if attr.fget else None,

@@ -1,7 +1,8 @@
 """Finding libmodesplit.so and binding its C ABI with ctypes.
 
-Why ctypes (not cffi): it is in the standard library, so `pip install` needs
-no compiler and no extra package, and every declaration the binding needs is
+Why ctypes (not cffi): it is in the standard library, so the package has no
+extension module to compile against a Python version (the wheel's one
+compiled part is the library itself), and every declaration the binding needs is
 already machine-readable in the ABI listing (abi.json, made by
 tools/abi/abi_listing.py from the headers and the compiler). The struct
 layouts and the function signatures are BUILT from that listing, and each
@@ -10,10 +11,14 @@ import, so the Python side cannot drift from the C side: after an ABI change
 `make abi` regenerates the listing and the package follows with no hand edits.
 
 Where the library is looked for, in order (the error lists every place):
-  1. $MODESPLIT_LIB: the library file, or a directory holding it;
-  2. pkg-config's libdir of `modesplit` (an installed library);
-  3. the build tree beside the package (tools/python/../../build/lib);
-  4. the system loader (ld.so: LD_LIBRARY_PATH, ldconfig's cache).
+  1. $MODESPLIT_LIB: the library file, or a directory holding it; the word
+     `pkg-config` asks for the installed library (pkg-config's libdir of
+     `modesplit`) and nothing else;
+  2. the wheel's own copy (modesplit/_native/libmodesplit.so, with its
+     plugins beside it: setup.py builds both with the Makefile);
+  3. pkg-config's libdir of `modesplit` (an installed library);
+  4. the build tree beside the package (tools/python/../../build/lib);
+  5. the system loader (ld.so: LD_LIBRARY_PATH, ldconfig's cache).
 """
 import ctypes
 import operator
@@ -55,11 +60,16 @@ def candidates():
     """(description, path or None, why-not) for each place, in search order."""
     out = []
     env = os.environ.get("MODESPLIT_LIB")
+    if env == "pkg-config":
+        libdir, why = _pkg_config_libdir()
+        return [("MODESPLIT_LIB=pkg-config",
+                 os.path.join(libdir, LIB_NAME) if libdir else None, why)]
     if env:
         p = os.path.join(env, LIB_NAME) if os.path.isdir(env) else env
         out.append(("MODESPLIT_LIB", p, None))
     else:
         out.append(("MODESPLIT_LIB", None, "not set"))
+    out.append(("the wheel's copy", os.path.join(_HERE, "_native", LIB_NAME), None))
     libdir, why = _pkg_config_libdir()
     out.append(("pkg-config libdir", os.path.join(libdir, LIB_NAME) if libdir else None, why))
     build = os.path.normpath(os.path.join(_HERE, "..", "..", "..", "build", "lib", LIB_NAME))
@@ -82,8 +92,10 @@ def load_library():
             return ctypes.CDLL(path), path
         except OSError as e:
             tried.append("%s: %s: %s" % (what, path, e))
-    raise LibraryNotFound("modesplit: cannot load %s; looked in:\n  %s\n(set MODESPLIT_LIB to "
-                          "the library or its directory, or build it with `make`)"
+    raise LibraryNotFound("modesplit: cannot load %s; looked in:\n  %s\n(install the package "
+                          "from a clone with `pip install ./tools/python`, which builds the "
+                          "library "
+                          "into it; or set MODESPLIT_LIB to the library or its directory)"
                           % (LIB_NAME, "\n  ".join(tried)))
 
 

@@ -62,6 +62,11 @@ class ViewsAlive(StateError, BufferError):
     refuses to resize while a memoryview of it exists)."""
 
 
+class Canceled(Error):
+    """MS_ERR_CANCELED: a step stopped by cancel() (from another thread;
+    Ctrl-C on the main thread raises KeyboardInterrupt instead)."""
+
+
 class Closed(Error, ValueError):
     """The Python object's handle was closed (raised before C is called)."""
 
@@ -75,6 +80,7 @@ _BY_NAME = {
     "MS_ERR_PLUGIN": PluginError,
     "MS_ERR_UNSUPPORTED": Unsupported,
     "MS_ERR_STATE": StateError,
+    "MS_ERR_CANCELED": Canceled,
 }
 STATUS = {name: value for name, value in enum_values("ms_status").items()
           if not name.endswith("_")}
@@ -88,12 +94,19 @@ def error_class(status):
     return _BY_NAME.get(_BY_VALUE.get(status), Error)
 
 
-def check(status):
-    """Raise the Error subclass of a non-OK status with the library's sentence."""
+def last_error():
+    """ms_last_error() of the calling thread (the sentence is thread-local)."""
+    from ._lib import lib
+    return lib().ms_last_error().decode()
+
+
+def check(status, message=None):
+    """Raise the Error subclass of a non-OK status with the library's sentence
+    (`message`: the sentence when the call ran on another thread)."""
     if status == 0:
         return
     from ._lib import lib
     L = lib()
     name = L.ms_status_name(status).decode()
-    message = L.ms_last_error().decode() or L.ms_status_text(status).decode()
+    message = message or L.ms_last_error().decode() or L.ms_status_text(status).decode()
     raise error_class(status)(message, status, name)

@@ -3,7 +3,8 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, filled, new_struct, set_fields, soa_view, to_dict, view, serialised
+from ._base import (Handle, L, filled, interruptible, new_struct, serialised, set_fields, soa_view,
+                    to_dict, vec, view)
 from ._lib import ABI
 from .errors import InvalidArgument, check
 from .surface import Surface, surface_desc
@@ -76,14 +77,25 @@ class Sim(Handle):
         self._keep = (vd, sd)
         return self
 
+    def cancel(self):
+        """Ask a step running on another thread to stop at the next sub-step:
+        that step raises modesplit.Canceled, and the sim is then failed as
+        in C (restore() of a snapshot() makes it step again). Safe from
+        any thread; asked between steps it stops the next one at once."""
+        self._cancel(L().ms_sim_cancel)
+
     def step(self, frame_dt=None):
-        """Advance one frame (s; default the scene's frame_dt)."""
+        """Advance one frame (s; default the scene's frame_dt). Ctrl-C stops
+        a long step at the next sub-step with KeyboardInterrupt
+        (ms_sim_cancel); as in C the sim is then failed (further steps
+        raise StateError) but open: its views, stats and a writer's frames
+        stay valid, and restore() of a snapshot() makes it step again."""
         ptr = self._ptr
         if frame_dt is None:
             if self._frame_dt is None:
                 raise InvalidArgument("sim: step needs frame_dt for a sim made from descs")
             frame_dt = self._frame_dt
-        check(L().ms_sim_step(ptr, frame_dt))
+        interruptible(L().ms_sim_step, (ptr, frame_dt), lambda: L().ms_sim_cancel(ptr))
 
     def snapshot(self):
         """The sim's whole state between two steps as bytes (ms_sim_snapshot):
@@ -172,7 +184,7 @@ class Sim(Handle):
 
     def stats(self):
         """ms_stats as a dict (stage ms, sub-steps, frames, bytes, ...)."""
-        return filled("ms_stats", L().ms_sim_stats, self._ptr)
+        return filled("ms_stats", L().ms_sim_get_stats, self._ptr)
 
     def info(self):
         return filled("ms_sim_info", L().ms_sim_get_info, self._ptr)
@@ -183,6 +195,62 @@ class Sim(Handle):
         return to_dict(out)
 
     def drag(self, pos, vel, radius, depth, strength):
-        from ._base import vec
+        """Pull the water within radius (m) of the point depth (m) below the
+        surface at pos (x, y, m) towards vel (m/s) at strength (1/s), during
+        the next frame (up to 8 a frame; StateError without a volume)."""
         check(L().ms_sim_drag(self._ptr, vec(pos, 2, "sim: pos"), vec(vel, 2, "sim: vel"),
                               radius, depth, strength))
+
+    # ---- the scene's effects, driven by hand (sim.h) ----
+
+    def set_rain(self, on):
+        """Rain on (the scene's effects.rain, or a light shower) or off,
+        from the next frame on; StateError without a surface."""
+        check(L().ms_sim_set_rain(self._ptr, 1 if on else 0))
+
+    def steer_boat(self, vel):
+        """Move the scene's boat at vel (vx, vy, m/s) from where it is, its
+        scripted path dropped; StateError without a boat."""
+        check(L().ms_sim_steer_boat(self._ptr, vec(vel, 2, "sim: boat vel")))
+
+    @property
+    def boat(self):
+        """Where the boat is now (x, y, m); StateError without a boat."""
+        pos = (ctypes.c_float * 2)()
+        check(L().ms_sim_boat(self._ptr, pos))
+        return tuple(pos)
+
+    def move_container(self, pos, vel=(0, 0, 0)):
+        """Put the scene's container at pos (m) moving at vel (m/s) from the
+        next frame on, replacing its path; StateError without one."""
+        check(L().ms_sim_move_container(self._ptr, vec(pos, 3, "sim: pos"),
+                                        vec(vel, 3, "sim: vel")))
+
+    def turn_container(self, orientation, omega=(0, 0, 0)):
+        """Orient the container: a quaternion (w, x, y, z), omega (rad/s)."""
+        check(L().ms_sim_turn_container(self._ptr, vec(orientation, 4, "sim: orientation"),
+                                        vec(omega, 3, "sim: omega")))
+
+    @property
+    def container_pose(self):
+        """((x, y, z) m, (w, x, y, z)) of the container now."""
+        pos, q = (ctypes.c_float * 3)(), (ctypes.c_float * 4)()
+        check(L().ms_sim_container_pose(self._ptr, pos, q))
+        return tuple(pos), tuple(q)
+
+    def move_obstacle(self, i, pos, vel=(0, 0, 0)):
+        """Put the scene's obstacle i (scene order) at pos moving at vel."""
+        check(L().ms_sim_move_obstacle(self._ptr, i, vec(pos, 3, "sim: pos"),
+                                       vec(vel, 3, "sim: vel")))
+
+    def turn_obstacle(self, i, orientation, omega=(0, 0, 0)):
+        check(L().ms_sim_turn_obstacle(self._ptr, i, vec(orientation, 4, "sim: orientation"),
+                                       vec(omega, 3, "sim: omega")))
+
+    def run(self, frames, frame_dt=None, writer=None):
+        """step() `frames` times (each frame written to `writer` when
+        given); Ctrl-C stops it within the running step (see step)."""
+        for _ in range(frames):
+            self.step(frame_dt)
+            if writer is not None:
+                writer.frame(self)

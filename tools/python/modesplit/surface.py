@@ -3,8 +3,8 @@ import ctypes
 
 import numpy as np
 
-from ._base import (Handle, L, as_input, cint, filled, new_struct, serialised, set_fields,
-                    to_dict, view)
+from ._base import (Handle, L, as_input, cint, filled, interruptible, new_struct, serialised,
+                    set_fields, to_dict, view)
 from .errors import check
 
 
@@ -47,8 +47,19 @@ class Surface(Handle):
         p = L().ms_surface_height(self._ptr, ctypes.byref(nx), ctypes.byref(ny))
         return view(p, (ny.value, nx.value), np.float32, self)
 
+    def cancel(self):
+        """Ask a step running on another thread to stop before its next
+        block of sub-steps (the field valid at the time reached): that
+        step raises modesplit.Canceled. Safe from any thread; asked between
+        steps it stops the next one at once (as in C)."""
+        self._cancel(L().ms_surface_cancel)
+
     def step(self, dt):
-        check(L().ms_surface_step(self._ptr, dt))
+        """Advance dt seconds. Ctrl-C stops a long step at its next block
+        of sub-steps (KeyboardInterrupt; the field valid at the time
+        reached, the surface usable)."""
+        ptr = self._ptr
+        interruptible(L().ms_surface_step, (ptr, dt), lambda: L().ms_surface_cancel(ptr))
 
     def add_drop(self, x, y, radius, amplitude):
         check(L().ms_surface_add_drop(self._ptr, x, y, radius, amplitude))
@@ -60,6 +71,14 @@ class Surface(Handle):
             return
         a = as_input(x, self.shape, dtype, what)
         check(fn(ptr, a.ctypes.data))
+
+    def excite(self, dh, gain=1.0):
+        """Add gain*dh ((ny, nx) float32, m) to the current field only: an
+        impulse changing the surface velocity by gain*dh/dt (the coupler's
+        excitation from the SPH height field, paper 3.5)."""
+        ptr = self._ptr
+        a = as_input(dh, self.shape, np.float32, "surface: excite")
+        check(L().ms_surface_excite(ptr, a.ctypes.data, gain))
 
     def set_height(self, h):
         """Replace the field (shape (ny, nx), float32) and start it at rest."""

@@ -3,7 +3,8 @@ import ctypes
 
 import numpy as np
 
-from ._base import Handle, L, as_input, filled, set_fields, soa_view, to_dict, vec, view, serialised
+from ._base import (Handle, L, as_input, filled, interruptible, serialised, set_fields, soa_view,
+                    to_dict, vec, view)
 from .errors import check
 
 
@@ -55,8 +56,19 @@ class Volume(Handle):
         check(L().ms_volume_add_particles(ptr, n, p.ctypes.data,
                                           None if v is None else v.ctypes.data))
 
+    def cancel(self):
+        """Ask a step running on another thread to stop at its next
+        sub-step (the state valid at the time reached): that step raises
+        modesplit.Canceled. Safe from any thread; asked between
+        steps it stops the next one at once (as in C)."""
+        self._cancel(L().ms_volume_cancel)
+
     def step(self, dt):
-        check(L().ms_volume_step(self._ptr, dt))
+        """Advance dt seconds. Ctrl-C stops a long step at its next
+        sub-step (KeyboardInterrupt; the state valid at the time reached,
+        the volume usable)."""
+        ptr = self._ptr
+        interruptible(L().ms_volume_step, (ptr, dt), lambda: L().ms_volume_cancel(ptr))
 
     @property
     def count(self):
@@ -90,8 +102,11 @@ class Volume(Handle):
         n = ctypes.c_int()
         pos, vel = (ctypes.c_void_p * 3)(), (ctypes.c_void_p * 3)()
         check(L().ms_volume_particle_views(self._ptr, ctypes.byref(n), pos, vel))
-        return (tuple(view(p, (n.value,), np.float32, self) for p in pos),
-                tuple(view(p, (n.value,), np.float32, self) for p in vel))
+        # particle views: a call that changes the count (fill_box that
+        # grows the arrays, add_particles, remove_box) is refused while
+        # they live, as for positions/velocities
+        return (tuple(view(p, (n.value,), np.float32, self, particles=True) for p in pos),
+                tuple(view(p, (n.value,), np.float32, self, particles=True) for p in vel))
 
     def extract_height(self, nx, ny):
         """The liquid's height field (eqs. 16-18), (ny, nx), m (a new array)."""

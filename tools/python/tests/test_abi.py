@@ -48,7 +48,8 @@ def test_library_not_found_lists_where_it_looked(tmp_path, monkeypatch):
         msg = str(e)
     else:
         raise AssertionError("a library loaded from nowhere")
-    for place in ("MODESPLIT_LIB", "nowhere.so", "pkg-config", "build tree", "system loader"):
+    for place in ("MODESPLIT_LIB", "nowhere.so", "the wheel's copy", "pkg-config", "build tree",
+                  "system loader"):
         assert place in msg, msg
 
 
@@ -107,3 +108,43 @@ def test_library_found_through_pkg_config(tmp_path, monkeypatch):
     monkeypatch.setattr(_lib, "_HERE", str(tmp_path / "a" / "b"))
     dll, path = _lib.load_library()
     assert path == os.path.join(libdir, "libmodesplit.so") and dll.ms_version
+
+
+def _pc(tmp_path, libdir):
+    (tmp_path / "modesplit.pc").write_text(
+        "libdir=%s\nName: modesplit\nDescription: test\nVersion: 0.1.0\n" % libdir)
+
+
+def test_the_wheels_own_copy_comes_after_MODESPLIT_LIB_before_pkg_config(tmp_path, monkeypatch):
+    import os
+    import shutil
+    if shutil.which("pkg-config") is None:
+        import pytest
+        pytest.skip("no pkg-config here")
+    real = os.path.realpath(modesplit.lib().path)
+    pkg = tmp_path / "site" / "modesplit"
+    (pkg / "_native").mkdir(parents=True)
+    os.symlink(real, pkg / "_native" / "libmodesplit.so")
+    installed = tmp_path / "installed"
+    installed.mkdir()
+    os.symlink(real, installed / "libmodesplit.so")
+    _pc(tmp_path, installed)
+    monkeypatch.setenv("PKG_CONFIG_PATH", str(tmp_path))
+    monkeypatch.setattr(_lib, "_HERE", str(pkg))
+    monkeypatch.delenv("MODESPLIT_LIB", raising=False)
+    assert _lib.load_library()[1] == str(pkg / "_native" / "libmodesplit.so")
+    # asked for: MODESPLIT_LIB=pkg-config takes the installed one
+    monkeypatch.setenv("MODESPLIT_LIB", "pkg-config")
+    assert _lib.load_library()[1] == str(installed / "libmodesplit.so")
+    # and only that: without a modesplit.pc it says so, not the wheel's
+    monkeypatch.setenv("PKG_CONFIG_PATH", str(tmp_path / "none"))
+    monkeypatch.setenv("PKG_CONFIG_LIBDIR", str(tmp_path / "none"))
+    try:
+        _lib.load_library()
+    except _lib.LibraryNotFound as e:
+        assert "MODESPLIT_LIB=pkg-config" in str(e) and "_native" not in str(e)
+    else:
+        raise AssertionError("MODESPLIT_LIB=pkg-config loaded a library pkg-config does not know")
+    # MODESPLIT_LIB as a path still wins over the wheel's copy
+    monkeypatch.setenv("MODESPLIT_LIB", str(installed))
+    assert _lib.load_library()[1] == str(installed / "libmodesplit.so")

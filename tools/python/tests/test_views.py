@@ -249,3 +249,27 @@ def test_caustics_light_map_view():
         assert c.shape == (64, 64) and not c.flags.owndata
         # light is focused and spread, and none is lost: the mean stays 1
         assert c.max() > 1 > c.min() and abs(float(c.mean()) - 1) < 0.1
+
+
+def test_particle_views_kept_across_a_growing_fill_box_are_refused_not_read_freed():
+    # particle_views() are the C arrays themselves (internal order); a
+    # fill_box that grows past their storage moves them, so it is refused
+    # while a view lives (under `make check-python SAN=asan` a read of the
+    # old arrays would be a heap-use-after-free).
+    v = ms.Volume(domain_max=(0.8, 0.4, 0.4))
+    v.fill_box((0, 0, 0), (0.2, 0.4, 0.2))
+    n = v.count
+    pos, vel = v.particle_views()
+    x, vz = pos[0], vel[2]
+    before = x.copy()
+    with pytest.raises(ms.ViewsAlive, match="del the views"):
+        v.fill_box((0.2, 0, 0), (0.8, 0.4, 0.4))
+    assert v.count == n and np.array_equal(x, before) and vz.shape == (n,)
+    del pos, vel
+    with pytest.raises(ms.ViewsAlive):     # one view left is one too many
+        v.fill_box((0.2, 0, 0), (0.8, 0.4, 0.4))
+    del x, vz
+    v.fill_box((0.2, 0, 0), (0.8, 0.4, 0.4))   # no view left: it grows (and moves)
+    assert v.count > 4 * n
+    (x, _, _), _ = v.particle_views()
+    assert x.shape == (v.count,) and np.isfinite(x).all()

@@ -1,0 +1,19 @@
+import os
+from typing import Any, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from ._base import F32, Handle
+from .scene import Scene
+from .sim import Sim
+
+class Renderer(Handle):
+    def __init__(self, scene: Scene | None = ..., **desc: Any) -> None: ...
+    def draw(self, sim: Sim) -> None: ...
+    @property
+    def pixels(self) -> npt.NDArray[np.uint8]: ...
+    @property
+    def caustics(self) -> F32: ...
+    def write_png(self, path: Union[str, bytes, os.PathLike[str]]) -> None: ...
+    def stats(self) -> dict[str, Any]: ...
