@@ -24,6 +24,7 @@
 #include "support.h"
 #include "support_volume.h"
 #include "volume/extract.h"
+#include "volume/passes.h"
 #include "volume/volume_internal.h"
 
 /* Kinetic plus gravitational energy (J), potential from the domain floor. */
@@ -1183,6 +1184,18 @@ static uint64_t state_hash(const ms_volume *v)
     return hsh;
 }
 
+/* Whether path isa runs here; a path this build has and the CPU lacks
+ * is recorded as not applicable (a path of another target, NEON on
+ * x86-64, is not built at all). */
+static int isa_here(int isa)
+{
+    if (ms_volume_isa_runs(isa))
+        return 1;
+    if (ms_volume_passes_of(isa))
+        MS_NOT_APPLICABLE(ms_volume_isa_name(isa));
+    return 0;
+}
+
 static uint64_t run_dam_law(int threads, int isa, ms_pressure law)
 {
     ms_volume_desc d = box_desc(0.5f, 0.1f, 0.25f, 0.01f);
@@ -1237,24 +1250,69 @@ START_TEST(dfsph_gives_the_same_bytes_for_threads_and_instruction_sets)
     uint64_t a = run_dam_law(1, -1, MS_PRESSURE_DFSPH), b = run_dam_law(2, -1, MS_PRESSURE_DFSPH);
     ck_assert_msg(a == b, "DFSPH: 1 and 2 threads differ");
     ck_assert_msg(a != run_dam(1), "DFSPH ran the ideal gas law");
-    const int best = ms_volume_pick_isa();
-    for (int isa = MS_VOLUME_ISA_C; isa <= best; ++isa)
-        ck_assert_msg(run_dam_law(1, isa, MS_PRESSURE_DFSPH) == a,
-                      "DFSPH: instruction set %d differs", isa);
+    for (int isa = MS_VOLUME_ISA_C; isa < MS_VOLUME_ISA_COUNT; ++isa)
+        if (isa_here(isa))
+            ck_assert_msg(run_dam_law(1, isa, MS_PRESSURE_DFSPH) == a, "DFSPH: path %s differs",
+                          ms_volume_isa_name(isa));
 }
 END_TEST
 
-/* The neighbour filter runs in plain C, SSE2 or AVX-512 (picked at run
- * time) and the pair sums in C lanes or AVX-512 intrinsics: every path
- * gives the same bytes. */
+/* Every instruction-set path this build has (plain C, SSE2, AVX2,
+ * AVX-512; NEON on aarch64), picked at run time, gives the same bytes;
+ * a path the CPU lacks is not applicable. */
 START_TEST(every_instruction_set_path_gives_the_same_bytes)
 {
     if (skip_under_tsan())
         MS_SKIP(TSAN_WHY);
-    const int best = ms_volume_pick_isa();
     const uint64_t ref = run_dam_isa(1, MS_VOLUME_ISA_C);
-    for (int isa = MS_VOLUME_ISA_C + 1; isa <= best; ++isa)
-        ck_assert_msg(run_dam_isa(1, isa) == ref, "instruction set %d differs from plain C", isa);
+    for (int isa = MS_VOLUME_ISA_C + 1; isa < MS_VOLUME_ISA_COUNT; ++isa)
+        if (isa_here(isa))
+            ck_assert_msg(run_dam_isa(1, isa) == ref, "path %s differs from plain C",
+                          ms_volume_isa_name(isa));
+}
+END_TEST
+
+/* MODESPLIT_ISA forces a path: a path this CPU runs is taken; a name
+ * that is no path, or a path this CPU or build lacks, is refused with a
+ * sentence naming the paths it has; ms_get_build_info says the same. */
+START_TEST(modesplit_isa_forces_a_path_or_is_refused)
+{
+    ms_volume_desc d = box_desc(0.2f, 0.2f, 0.2f, 0.02f);
+    for (int isa = MS_VOLUME_ISA_C; isa < MS_VOLUME_ISA_COUNT; ++isa) {
+        ck_assert_int_eq(setenv("MODESPLIT_ISA", ms_volume_isa_name(isa), 1), 0);
+        ms_volume *v = NULL;
+        ms_build_info b;
+        ms_status st = ms_volume_create(&d, &v);
+        if (ms_volume_isa_runs(isa)) {
+            ck_assert_int_eq(st, MS_OK);
+            ck_assert_int_eq(v->isa, isa);
+            ms_volume_destroy(v);
+            ck_assert_int_eq(ms_get_build_info(&b), MS_OK);
+            ck_assert_str_eq(b.path_chosen, ms_volume_isa_name(isa));
+            ck_assert_ptr_nonnull(strstr(b.paths_cpu, ms_volume_isa_name(isa)));
+        } else {
+            ck_assert_int_eq(st, MS_ERR_UNSUPPORTED);
+            ck_assert_ptr_null(v);
+            ck_assert_msg(strstr(ms_last_error(), "this CPU runs") &&
+                              strstr(ms_last_error(), "it has: c"),
+                          "%s", ms_last_error());
+            ck_assert_int_eq(ms_get_build_info(&b), MS_ERR_UNSUPPORTED);
+            ck_assert_ptr_null(b.path_chosen);
+        }
+    }
+    ck_assert_int_eq(setenv("MODESPLIT_ISA", "avx1024", 1), 0);
+    ms_volume *v = NULL;
+    ck_assert_int_eq(ms_volume_create(&d, &v), MS_ERR_INVALID_ARGUMENT);
+    ck_assert_ptr_nonnull(strstr(ms_last_error(), "MODESPLIT_ISA=avx1024 names no path"));
+    ck_assert_int_eq(unsetenv("MODESPLIT_ISA"), 0);
+    ck_assert_int_eq(ms_volume_create(&d, &v), MS_OK);
+    ck_assert_int_eq(v->isa, ms_volume_pick_isa());
+    ms_volume_destroy(v);
+    ms_build_info b;
+    ck_assert_int_eq(ms_get_build_info(&b), MS_OK);
+    ck_assert_str_eq(b.path_chosen, ms_volume_isa_name(ms_volume_pick_isa()));
+    ck_assert_ptr_nonnull(strstr(b.paths_built, "c"));
+    ck_assert(strlen(b.compiler) > 3);
 }
 END_TEST
 
@@ -1290,13 +1348,14 @@ START_TEST(every_instruction_set_path_gives_the_same_bytes_with_poly6_and_a_shap
 {
     if (skip_under_tsan())
         MS_SKIP(TSAN_WHY);
-    const int best = ms_volume_pick_isa();
     const ms_pressure laws[2] = {MS_PRESSURE_IDEAL_GAS, MS_PRESSURE_TAIT};
     for (int k = 0; k < 2; ++k) {
         const uint64_t ref = run_ball_isa(MS_VOLUME_ISA_C, laws[k]);
-        for (int isa = MS_VOLUME_ISA_C + 1; isa <= best; ++isa)
-            ck_assert_msg(run_ball_isa(isa, laws[k]) == ref,
-                          "law %d: instruction set %d differs from plain C", (int)laws[k], isa);
+        for (int isa = MS_VOLUME_ISA_C + 1; isa < MS_VOLUME_ISA_COUNT; ++isa)
+            if (isa_here(isa))
+                ck_assert_msg(run_ball_isa(isa, laws[k]) == ref,
+                              "law %d: path %s differs from plain C", (int)laws[k],
+                              ms_volume_isa_name(isa));
     }
 }
 END_TEST
@@ -1733,6 +1792,7 @@ static Suite *volume_suite(void)
     tcase_set_timeout(hard, 300);
     tcase_add_test(hard, one_and_two_threads_give_the_same_bytes);
     tcase_add_test(hard, every_instruction_set_path_gives_the_same_bytes);
+    tcase_add_test(hard, modesplit_isa_forces_a_path_or_is_refused);
     tcase_add_test(hard, every_instruction_set_path_gives_the_same_bytes_with_poly6_and_a_shape);
     tcase_add_test(hard, dfsph_gives_the_same_bytes_for_threads_and_instruction_sets);
     tcase_add_test(hard, all_particles_at_one_point_spread_and_stay_bounded);

@@ -1,0 +1,121 @@
+/* The lane type in plain C (lane.h): 16 floats in a struct, each
+ * operation a loop over them; the sum in lane.h's tree order. Include
+ * lane.h, not this. */
+#ifndef MS_VOLUME_LANE_C_H
+#define MS_VOLUME_LANE_C_H
+
+#include <math.h>
+#include <stdint.h>
+
+typedef struct ms_lane {
+    float f[16];
+} ms_lane;
+typedef struct ms_lmask {
+    int32_t m[16]; /* 0 or -1 */
+} ms_lmask;
+
+#define MS_LANE_MAP(expr)        \
+    ms_lane r_;                  \
+    for (int l = 0; l < 16; ++l) \
+        r_.f[l] = (expr);        \
+    return r_
+#define MS_LANE_CMP(op)                      \
+    ms_lmask r_;                             \
+    for (int l = 0; l < 16; ++l)             \
+        r_.m[l] = a.f[l] op b.f[l] ? -1 : 0; \
+    return r_
+
+static inline ms_lane ms_lane_set1(float s)
+{
+    MS_LANE_MAP(s);
+}
+static inline ms_lane ms_lane_zero(void)
+{
+    return ms_lane_set1(0.0f);
+}
+static inline ms_lane ms_lane_load(const float *p)
+{
+    MS_LANE_MAP(p[l]);
+}
+static inline void ms_lane_store(float *p, ms_lane a)
+{
+    for (int l = 0; l < 16; ++l)
+        p[l] = a.f[l];
+}
+static inline ms_lane ms_lane_load_n(const float *p, int n)
+{
+    MS_LANE_MAP(l < n ? p[l] : 0.0f);
+}
+static inline void ms_lane_store_n(float *p, ms_lane a, int n)
+{
+    for (int l = 0; l < n; ++l)
+        p[l] = a.f[l];
+}
+static inline ms_lane ms_lane_add(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(a.f[l] + b.f[l]);
+}
+static inline ms_lane ms_lane_sub(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(a.f[l] - b.f[l]);
+}
+static inline ms_lane ms_lane_mul(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(a.f[l] * b.f[l]);
+}
+static inline ms_lane ms_lane_div(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(a.f[l] / b.f[l]);
+}
+static inline ms_lane ms_lane_sqrt(ms_lane a)
+{
+    MS_LANE_MAP(sqrtf(a.f[l]));
+}
+static inline ms_lane ms_lane_max(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(a.f[l] > b.f[l] ? a.f[l] : b.f[l]);
+}
+static inline ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
+{
+    MS_LANE_CMP(<);
+}
+static inline ms_lmask ms_lane_le(ms_lane a, ms_lane b)
+{
+    MS_LANE_CMP(<=);
+}
+static inline ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
+{
+    MS_LANE_CMP(>);
+}
+static inline ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(m.m[l] ? a.f[l] : b.f[l]);
+}
+static inline int ms_lane_count(ms_lmask m)
+{
+    int c = 0;
+    for (int l = 0; l < 16; ++l)
+        c -= m.m[l];
+    return c;
+}
+static inline float ms_lane_sum(ms_lane a)
+{
+    float t8[8], t4[4];
+    for (int l = 0; l < 8; ++l)
+        t8[l] = a.f[l] + a.f[l + 8];
+    for (int l = 0; l < 4; ++l)
+        t4[l] = t8[l] + t8[l + 4];
+    return (t4[0] + t4[2]) + (t4[1] + t4[3]);
+}
+static inline float ms_lane_max_of(ms_lane a)
+{
+    float m = a.f[0];
+    for (int l = 1; l < 16; ++l)
+        m = a.f[l] > m ? a.f[l] : m;
+    return m;
+}
+
+#undef MS_LANE_MAP
+#undef MS_LANE_CMP
+
+#endif

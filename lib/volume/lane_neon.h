@@ -1,0 +1,118 @@
+/* The lane type in NEON (lane.h, aarch64): four float32x4_t, lanes
+ * 4k..4k+3 in q[k]; a mask is four all-ones-or-zero vectors. The max is
+ * a compare and select (vmaxq_f32 differs from a > b ? a : b on a NaN).
+ * Include lane.h, not this. */
+#ifndef MS_VOLUME_LANE_NEON_H
+#define MS_VOLUME_LANE_NEON_H
+
+#include <arm_neon.h>
+
+typedef struct ms_lane {
+    float32x4_t q[4];
+} ms_lane;
+typedef struct ms_lmask {
+    uint32x4_t q[4];
+} ms_lmask;
+
+#define MS_LANE_MAP(T, expr)    \
+    T r_;                       \
+    for (int k = 0; k < 4; ++k) \
+        r_.q[k] = (expr);       \
+    return r_
+
+static inline ms_lane ms_lane_set1(float s)
+{
+    MS_LANE_MAP(ms_lane, vdupq_n_f32(s));
+}
+static inline ms_lane ms_lane_zero(void)
+{
+    return ms_lane_set1(0.0f);
+}
+static inline ms_lane ms_lane_load(const float *p)
+{
+    MS_LANE_MAP(ms_lane, vld1q_f32(p + 4 * k));
+}
+static inline void ms_lane_store(float *p, ms_lane a)
+{
+    for (int k = 0; k < 4; ++k)
+        vst1q_f32(p + 4 * k, a.q[k]);
+}
+static inline ms_lane ms_lane_load_n(const float *p, int n)
+{
+    float t[16] = {0};
+    for (int l = 0; l < n; ++l)
+        t[l] = p[l];
+    return ms_lane_load(t);
+}
+static inline void ms_lane_store_n(float *p, ms_lane a, int n)
+{
+    float t[16];
+    ms_lane_store(t, a);
+    for (int l = 0; l < n; ++l)
+        p[l] = t[l];
+}
+static inline ms_lane ms_lane_add(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, vaddq_f32(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_sub(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, vsubq_f32(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_mul(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, vmulq_f32(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_div(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, vdivq_f32(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_sqrt(ms_lane a)
+{
+    MS_LANE_MAP(ms_lane, vsqrtq_f32(a.q[k]));
+}
+static inline ms_lane ms_lane_max(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, vbslq_f32(vcgtq_f32(a.q[k], b.q[k]), a.q[k], b.q[k]));
+}
+static inline ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lmask, vcltq_f32(a.q[k], b.q[k]));
+}
+static inline ms_lmask ms_lane_le(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lmask, vcleq_f32(a.q[k], b.q[k]));
+}
+static inline ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lmask, vcgtq_f32(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, vbslq_f32(m.q[k], a.q[k], b.q[k]));
+}
+static inline int ms_lane_count(ms_lmask m)
+{
+    uint32x4_t c = vaddq_u32(vaddq_u32(vshrq_n_u32(m.q[0], 31), vshrq_n_u32(m.q[1], 31)),
+                             vaddq_u32(vshrq_n_u32(m.q[2], 31), vshrq_n_u32(m.q[3], 31)));
+    return (int)vaddvq_u32(c);
+}
+static inline float ms_lane_sum(ms_lane a)
+{
+    const float32x4_t t4 = vaddq_f32(vaddq_f32(a.q[0], a.q[2]), vaddq_f32(a.q[1], a.q[3]));
+    const float32x2_t t2 = vadd_f32(vget_low_f32(t4), vget_high_f32(t4)); /* (0+2, 1+3) */
+    return vget_lane_f32(t2, 0) + vget_lane_f32(t2, 1);
+}
+static inline float ms_lane_max_of(ms_lane a)
+{
+    float t[16];
+    ms_lane_store(t, a);
+    float m = t[0];
+    for (int l = 1; l < 16; ++l)
+        m = t[l] > m ? t[l] : m;
+    return m;
+}
+
+#undef MS_LANE_MAP
+
+#endif

@@ -1,0 +1,113 @@
+/* The lane type in SSE2 (lane.h): four __m128, lanes 4k..4k+3 in q[k];
+ * a mask is four all-ones-or-zero vectors. Include lane.h, not this. */
+#ifndef MS_VOLUME_LANE_SSE2_H
+#define MS_VOLUME_LANE_SSE2_H
+
+#include <emmintrin.h>
+
+typedef struct ms_lane {
+    __m128 q[4];
+} ms_lane;
+typedef struct ms_lmask {
+    __m128 q[4];
+} ms_lmask;
+
+#define MS_LANE_MAP(T, expr)    \
+    T r_;                       \
+    for (int k = 0; k < 4; ++k) \
+        r_.q[k] = (expr);       \
+    return r_
+
+static inline ms_lane ms_lane_set1(float s)
+{
+    MS_LANE_MAP(ms_lane, _mm_set1_ps(s));
+}
+static inline ms_lane ms_lane_zero(void)
+{
+    MS_LANE_MAP(ms_lane, _mm_setzero_ps());
+}
+static inline ms_lane ms_lane_load(const float *p)
+{
+    MS_LANE_MAP(ms_lane, _mm_loadu_ps(p + 4 * k));
+}
+static inline void ms_lane_store(float *p, ms_lane a)
+{
+    for (int k = 0; k < 4; ++k)
+        _mm_storeu_ps(p + 4 * k, a.q[k]);
+}
+static inline ms_lane ms_lane_load_n(const float *p, int n)
+{
+    float t[16] = {0};
+    for (int l = 0; l < n; ++l)
+        t[l] = p[l];
+    return ms_lane_load(t);
+}
+static inline void ms_lane_store_n(float *p, ms_lane a, int n)
+{
+    float t[16];
+    ms_lane_store(t, a);
+    for (int l = 0; l < n; ++l)
+        p[l] = t[l];
+}
+static inline ms_lane ms_lane_add(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, _mm_add_ps(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_sub(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, _mm_sub_ps(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_mul(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, _mm_mul_ps(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_div(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, _mm_div_ps(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_sqrt(ms_lane a)
+{
+    MS_LANE_MAP(ms_lane, _mm_sqrt_ps(a.q[k]));
+}
+static inline ms_lane ms_lane_max(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, _mm_max_ps(a.q[k], b.q[k])); /* a > b ? a : b */
+}
+static inline ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lmask, _mm_cmplt_ps(a.q[k], b.q[k]));
+}
+static inline ms_lmask ms_lane_le(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lmask, _mm_cmple_ps(a.q[k], b.q[k]));
+}
+static inline ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lmask, _mm_cmpgt_ps(a.q[k], b.q[k]));
+}
+static inline ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
+{
+    MS_LANE_MAP(ms_lane, _mm_or_ps(_mm_and_ps(m.q[k], a.q[k]), _mm_andnot_ps(m.q[k], b.q[k])));
+}
+static inline int ms_lane_count(ms_lmask m)
+{
+    const int bits = _mm_movemask_ps(m.q[0]) | _mm_movemask_ps(m.q[1]) << 4 |
+                     _mm_movemask_ps(m.q[2]) << 8 | _mm_movemask_ps(m.q[3]) << 12;
+    return __builtin_popcount((unsigned)bits);
+}
+static inline float ms_lane_sum(ms_lane a)
+{
+    const __m128 t4 = _mm_add_ps(_mm_add_ps(a.q[0], a.q[2]), _mm_add_ps(a.q[1], a.q[3]));
+    const __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
+    return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
+}
+static inline float ms_lane_max_of(ms_lane a)
+{
+    __m128 m = _mm_max_ps(_mm_max_ps(a.q[0], a.q[1]), _mm_max_ps(a.q[2], a.q[3]));
+    m = _mm_max_ps(m, _mm_movehl_ps(m, m));
+    return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
+#undef MS_LANE_MAP
+
+#endif
