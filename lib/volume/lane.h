@@ -23,6 +23,13 @@
  *   ms_lane_lt, _le, _gt (ordered compares: false with a NaN) -> mask
  *   ms_lane_select(m, a, b) (m ? a : b), ms_lane_count(m) (lanes set)
  *   ms_lane_sum(a) (the tree above), ms_lane_max_of(a) (largest lane)
+ *   ms_lane_neg(a) (a sign flip: -(+0) = -0, not 0 - a)
+ *   ms_lane_test_bit(p, bit): the lanes l with p[l] & bit (16 int32)
+ *   ms_lane_records8(pk, j, o0..o7): field f of the 8-float record
+ *       pk[8 j[l] + f] into lane l of o_f (the volume's packed copy)
+ *   ms_lane_records4(b, j, o0..o3): b[8 j[l] + f], f < 4 (half records)
+ *   ms_lane_prefetch(p): a hint, nothing on the plain-C path
+ * Values are moved by the loads and transposes, never computed.
  */
 #ifndef MS_VOLUME_LANE_H
 #define MS_VOLUME_LANE_H

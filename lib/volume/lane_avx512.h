@@ -5,6 +5,8 @@
 #define MS_VOLUME_LANE_AVX512_H
 
 #include <immintrin.h>
+#include <stddef.h>
+#include <stdint.h>
 
 typedef struct ms_lane {
     __m512 z;
@@ -109,6 +111,86 @@ static inline float ms_lane_sum(ms_lane a)
 static inline float ms_lane_max_of(ms_lane a)
 {
     return _mm512_reduce_max_ps(a.z);
+}
+
+static inline ms_lane ms_lane_neg(ms_lane a)
+{
+    return ms_lane_of(_mm512_castsi512_ps(
+        _mm512_xor_si512(_mm512_castps_si512(a.z), _mm512_set1_epi32((int)0x80000000u))));
+}
+static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
+{
+    return ms_lmask_of(
+        _mm512_test_epi32_mask(_mm512_loadu_si512((const void *)p), _mm512_set1_epi32(bit)));
+}
+
+/* The records pk[8 j .. 8 j + 7] of j[0..16) as eight lanes: sixteen
+ * 32-byte loads and an 8 x 8 transpose in each 256-bit half, in place of
+ * eight gathers (measured on a Zen 4 CPU, the force pass's share of a 32k
+ * sub-step went from 30 % to 20 %; with arrays in place of the written-out
+ * temporaries GCC spilled them to the stack and there was no gain).
+ * Vector a[k] holds the records of j[k] | j[k+4] (k < 4) or j[k+4] |
+ * j[k+8] (k >= 4), so that the last lane shuffle puts the lanes in order. */
+static inline __m512 record_pair(const float *pk, int lo, int hi)
+{
+    return _mm512_insertf32x8(_mm512_castps256_ps512(_mm256_loadu_ps(pk + 8 * (size_t)lo)),
+                              _mm256_loadu_ps(pk + 8 * (size_t)hi), 1);
+}
+
+#define MS_LANE_TRANSPOSE4(a0, a1, a2, a3, s0, s1, s2, s3)                               \
+    do {                                                                                 \
+        const __m512 t0_ = _mm512_unpacklo_ps(a0, a1), t1_ = _mm512_unpackhi_ps(a0, a1); \
+        const __m512 t2_ = _mm512_unpacklo_ps(a2, a3), t3_ = _mm512_unpackhi_ps(a2, a3); \
+        s0 = _mm512_shuffle_ps(t0_, t2_, 0x44);                                          \
+        s1 = _mm512_shuffle_ps(t0_, t2_, 0xee);                                          \
+        s2 = _mm512_shuffle_ps(t1_, t3_, 0x44);                                          \
+        s3 = _mm512_shuffle_ps(t1_, t3_, 0xee);                                          \
+    } while (0)
+
+static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
+                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
+                                    ms_lane *o6, ms_lane *o7)
+{
+    const __m512 a0 = record_pair(pk, j[0], j[4]), a1 = record_pair(pk, j[1], j[5]);
+    const __m512 a2 = record_pair(pk, j[2], j[6]), a3 = record_pair(pk, j[3], j[7]);
+    const __m512 a4 = record_pair(pk, j[8], j[12]), a5 = record_pair(pk, j[9], j[13]);
+    const __m512 a6 = record_pair(pk, j[10], j[14]), a7 = record_pair(pk, j[11], j[15]);
+    __m512 s0, s1, s2, s3, s4, s5, s6, s7;
+    MS_LANE_TRANSPOSE4(a0, a1, a2, a3, s0, s1, s2, s3);
+    MS_LANE_TRANSPOSE4(a4, a5, a6, a7, s4, s5, s6, s7);
+    o0->z = _mm512_shuffle_f32x4(s0, s4, 0x88);
+    o4->z = _mm512_shuffle_f32x4(s0, s4, 0xdd);
+    o1->z = _mm512_shuffle_f32x4(s1, s5, 0x88);
+    o5->z = _mm512_shuffle_f32x4(s1, s5, 0xdd);
+    o2->z = _mm512_shuffle_f32x4(s2, s6, 0x88);
+    o6->z = _mm512_shuffle_f32x4(s2, s6, 0xdd);
+    o3->z = _mm512_shuffle_f32x4(s3, s7, 0x88);
+    o7->z = _mm512_shuffle_f32x4(s3, s7, 0xdd);
+}
+
+/* The quads b[8 j + 0..3] of j[0..16): sixteen 16-byte loads and a 4 x 4
+ * transpose in each 128-bit lane; vector a[k] holds the quads of j[k],
+ * j[k+4], j[k+8], j[k+12]. */
+#define MS_LANE_QUAD(k) _mm_loadu_ps(b + 8 * (size_t)j[k])
+#define MS_LANE_ROW(k)                                                                             \
+    _mm512_insertf32x4(                                                                            \
+        _mm512_insertf32x4(                                                                        \
+            _mm512_insertf32x4(_mm512_castps128_ps512(MS_LANE_QUAD(k)), MS_LANE_QUAD((k) + 4), 1), \
+            MS_LANE_QUAD((k) + 8), 2),                                                             \
+        MS_LANE_QUAD((k) + 12), 3)
+static inline void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                    ms_lane *o2, ms_lane *o3)
+{
+    const __m512 a0 = MS_LANE_ROW(0), a1 = MS_LANE_ROW(1), a2 = MS_LANE_ROW(2), a3 = MS_LANE_ROW(3);
+    MS_LANE_TRANSPOSE4(a0, a1, a2, a3, o0->z, o1->z, o2->z, o3->z);
+}
+#undef MS_LANE_ROW
+#undef MS_LANE_QUAD
+#undef MS_LANE_TRANSPOSE4
+
+static inline void ms_lane_prefetch(const void *p)
+{
+    _mm_prefetch((const char *)p, _MM_HINT_T0);
 }
 
 #endif

@@ -115,6 +115,49 @@ static inline float ms_lane_max_of(ms_lane a)
     return m;
 }
 
+static inline ms_lane ms_lane_neg(ms_lane a)
+{
+    MS_LANE_MAP(-a.f[l]);
+}
+static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
+{
+    ms_lmask r_;
+    for (int l = 0; l < 16; ++l)
+        r_.m[l] = p[l] & bit ? -1 : 0;
+    return r_;
+}
+static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
+                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
+                                    ms_lane *o6, ms_lane *o7)
+{
+    for (int l = 0; l < 16; ++l) {
+        const float *r = pk + 8 * (size_t)j[l];
+        o0->f[l] = r[0];
+        o1->f[l] = r[1];
+        o2->f[l] = r[2];
+        o3->f[l] = r[3];
+        o4->f[l] = r[4];
+        o5->f[l] = r[5];
+        o6->f[l] = r[6];
+        o7->f[l] = r[7];
+    }
+}
+static inline void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                    ms_lane *o2, ms_lane *o3)
+{
+    for (int l = 0; l < 16; ++l) {
+        const float *r = b + 8 * (size_t)j[l];
+        o0->f[l] = r[0];
+        o1->f[l] = r[1];
+        o2->f[l] = r[2];
+        o3->f[l] = r[3];
+    }
+}
+static inline void ms_lane_prefetch(const void *p)
+{
+    (void)p;
+}
+
 #undef MS_LANE_MAP
 #undef MS_LANE_CMP
 

@@ -6,6 +6,8 @@
 #define MS_VOLUME_LANE_NEON_H
 
 #include <arm_neon.h>
+#include <stddef.h>
+#include <stdint.h>
 
 typedef struct ms_lane {
     float32x4_t q[4];
@@ -111,6 +113,47 @@ static inline float ms_lane_max_of(ms_lane a)
     for (int l = 1; l < 16; ++l)
         m = t[l] > m ? t[l] : m;
     return m;
+}
+
+static inline ms_lane ms_lane_neg(ms_lane a)
+{
+    MS_LANE_MAP(ms_lane, vnegq_f32(a.q[k]));
+}
+static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
+{
+    MS_LANE_MAP(ms_lmask,
+                vtstq_u32(vreinterpretq_u32_s32(vld1q_s32(p + 4 * k)), vdupq_n_u32((uint32_t)bit)));
+}
+/* Four records' quads b[8 j + 0..3] as four lanes of four. */
+static inline void quads4(const float *b, const int *restrict j, float32x4_t *o0, float32x4_t *o1,
+                          float32x4_t *o2, float32x4_t *o3)
+{
+    const float32x4_t a0 = vld1q_f32(b + 8 * (size_t)j[0]), a1 = vld1q_f32(b + 8 * (size_t)j[1]);
+    const float32x4_t a2 = vld1q_f32(b + 8 * (size_t)j[2]), a3 = vld1q_f32(b + 8 * (size_t)j[3]);
+    const float32x4x2_t t01 = vtrnq_f32(a0, a1), t23 = vtrnq_f32(a2, a3);
+    *o0 = vcombine_f32(vget_low_f32(t01.val[0]), vget_low_f32(t23.val[0]));
+    *o1 = vcombine_f32(vget_low_f32(t01.val[1]), vget_low_f32(t23.val[1]));
+    *o2 = vcombine_f32(vget_high_f32(t01.val[0]), vget_high_f32(t23.val[0]));
+    *o3 = vcombine_f32(vget_high_f32(t01.val[1]), vget_high_f32(t23.val[1]));
+}
+static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
+                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
+                                    ms_lane *o6, ms_lane *o7)
+{
+    for (int k = 0; k < 4; ++k) {
+        quads4(pk, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
+        quads4(pk + 4, j + 4 * k, &o4->q[k], &o5->q[k], &o6->q[k], &o7->q[k]);
+    }
+}
+static inline void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                    ms_lane *o2, ms_lane *o3)
+{
+    for (int k = 0; k < 4; ++k)
+        quads4(b, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
+}
+static inline void ms_lane_prefetch(const void *p)
+{
+    __builtin_prefetch(p);
 }
 
 #undef MS_LANE_MAP

@@ -4,6 +4,8 @@
 #define MS_VOLUME_LANE_SSE2_H
 
 #include <emmintrin.h>
+#include <stddef.h>
+#include <stdint.h>
 
 typedef struct ms_lane {
     __m128 q[4];
@@ -106,6 +108,51 @@ static inline float ms_lane_max_of(ms_lane a)
     __m128 m = _mm_max_ps(_mm_max_ps(a.q[0], a.q[1]), _mm_max_ps(a.q[2], a.q[3]));
     m = _mm_max_ps(m, _mm_movehl_ps(m, m));
     return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
+}
+
+static inline ms_lane ms_lane_neg(ms_lane a)
+{
+    MS_LANE_MAP(ms_lane, _mm_xor_ps(a.q[k], _mm_set1_ps(-0.0f)));
+}
+static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
+{
+    const __m128i b = _mm_set1_epi32(bit);
+    MS_LANE_MAP(
+        ms_lmask,
+        _mm_castsi128_ps(_mm_cmpeq_epi32(
+            _mm_and_si128(_mm_loadu_si128((const __m128i *)(const void *)(p + 4 * k)), b), b)));
+}
+/* Four records' quads b[8 j + 0..3] as four lanes of four: a 4 x 4
+ * transpose. */
+static inline void quads4(const float *b, const int *restrict j, __m128 *o0, __m128 *o1, __m128 *o2,
+                          __m128 *o3)
+{
+    __m128 a0 = _mm_loadu_ps(b + 8 * (size_t)j[0]), a1 = _mm_loadu_ps(b + 8 * (size_t)j[1]);
+    __m128 a2 = _mm_loadu_ps(b + 8 * (size_t)j[2]), a3 = _mm_loadu_ps(b + 8 * (size_t)j[3]);
+    _MM_TRANSPOSE4_PS(a0, a1, a2, a3);
+    *o0 = a0;
+    *o1 = a1;
+    *o2 = a2;
+    *o3 = a3;
+}
+static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
+                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
+                                    ms_lane *o6, ms_lane *o7)
+{
+    for (int k = 0; k < 4; ++k) {
+        quads4(pk, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
+        quads4(pk + 4, j + 4 * k, &o4->q[k], &o5->q[k], &o6->q[k], &o7->q[k]);
+    }
+}
+static inline void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                    ms_lane *o2, ms_lane *o3)
+{
+    for (int k = 0; k < 4; ++k)
+        quads4(b, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
+}
+static inline void ms_lane_prefetch(const void *p)
+{
+    _mm_prefetch((const char *)p, _MM_HINT_T0);
 }
 
 #undef MS_LANE_MAP
