@@ -28,6 +28,7 @@
  *   ms_lane_records8(pk, j, o0..o7): field f of the 8-float record
  *       pk[8 j[l] + f] into lane l of o_f (the volume's packed copy)
  *   ms_lane_records4(b, j, o0..o3): b[8 j[l] + f], f < 4 (half records)
+ *   ms_lane_gather(b, j): b[j[l]] into lane l
  *   ms_lane_prefetch(p): a hint, nothing on the plain-C path
  * Values are moved by the loads and transposes, never computed.
  */

@@ -185,6 +185,11 @@ static inline void ms_lane_records4(const float *b, const int *restrict j, ms_la
         o3->h[k] = _mm256_shuffle_ps(t1, t3, 0xee);
     }
 }
+static inline ms_lane ms_lane_gather(const float *b, const int *restrict j)
+{
+    MS_LANE_MAP(ms_lane, _mm256_i32gather_ps(
+                             b, _mm256_loadu_si256((const __m256i *)(const void *)(j + 8 * k)), 4));
+}
 static inline void ms_lane_prefetch(const void *p)
 {
     _mm_prefetch((const char *)p, _MM_HINT_T0);

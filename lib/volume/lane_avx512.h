@@ -188,6 +188,11 @@ static inline void ms_lane_records4(const float *b, const int *restrict j, ms_la
 #undef MS_LANE_QUAD
 #undef MS_LANE_TRANSPOSE4
 
+static inline ms_lane ms_lane_gather(const float *b, const int *restrict j)
+{
+    return ms_lane_of(_mm512_i32gather_ps(_mm512_loadu_si512((const void *)j), b, 4));
+}
+
 static inline void ms_lane_prefetch(const void *p)
 {
     _mm_prefetch((const char *)p, _MM_HINT_T0);

@@ -153,6 +153,10 @@ static inline void ms_lane_records4(const float *b, const int *restrict j, ms_la
         o3->f[l] = r[3];
     }
 }
+static inline ms_lane ms_lane_gather(const float *b, const int *restrict j)
+{
+    MS_LANE_MAP(b[j[l]]);
+}
 static inline void ms_lane_prefetch(const void *p)
 {
     (void)p;

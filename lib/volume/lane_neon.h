@@ -151,6 +151,13 @@ static inline void ms_lane_records4(const float *b, const int *restrict j, ms_la
     for (int k = 0; k < 4; ++k)
         quads4(b, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
 }
+static inline ms_lane ms_lane_gather(const float *b, const int *restrict j)
+{
+    float t[16];
+    for (int l = 0; l < 16; ++l)
+        t[l] = b[j[l]];
+    return ms_lane_load(t);
+}
 static inline void ms_lane_prefetch(const void *p)
 {
     __builtin_prefetch(p);

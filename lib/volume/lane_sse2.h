@@ -150,6 +150,11 @@ static inline void ms_lane_records4(const float *b, const int *restrict j, ms_la
     for (int k = 0; k < 4; ++k)
         quads4(b, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
 }
+static inline ms_lane ms_lane_gather(const float *b, const int *restrict j)
+{
+    MS_LANE_MAP(ms_lane,
+                _mm_setr_ps(b[j[4 * k]], b[j[4 * k + 1]], b[j[4 * k + 2]], b[j[4 * k + 3]]));
+}
 static inline void ms_lane_prefetch(const void *p)
 {
     _mm_prefetch((const char *)p, _MM_HINT_T0);

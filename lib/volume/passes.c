@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdint.h>
 
+#include "volume/dfsph_pass.h"
 #include "volume/law.h"
 #include "volume/passes.h"
 
@@ -23,9 +24,15 @@
 #endif
 
 enum { LANES = MS_LANES };
-/* The pair loops prefetch their streamed per-pair data (indices, r^2:
- * 4-byte entries) this many entries ahead (dfsph.c says how it was
- * measured). Hints only: the same bits. */
+/* The pair loops prefetch their streamed per-pair data (the neighbour
+ * indices, and the pair terms or r^2) MS_PREFETCH_ENTRIES entries ahead:
+ * a sub-step's pair terms (19 MB on the peer's scene) live in the shared
+ * cache, not the core's, and the hardware prefetchers do not keep up (an
+ * error pass's pair loop took 0.84 ms without, 0.63-0.70 ms with its data
+ * in L2). Measured on the AVX-512 path, the peer's scene's 0.3 s, thread
+ * CPU of the phases, three alternated runs: the density solve 0.96-0.97x
+ * at 128, 256 and 512 entries (1024: no gain), the factors and divergence
+ * solve 0.97x with the factors loop's too. Hints only: the same bits. */
 enum { MS_PREFETCH_ENTRIES = 512 };
 
 /* The 4-byte entry MS_PREFETCH_ENTRIES after p (as an integer: that
@@ -408,9 +415,382 @@ static void forces_range(ms_volume *v, int part, int b, int e)
     }
 }
 
+/* ---- DFSPH (dfsph.c: the factors, the divergence and density solves) ---- */
+
+/* The Jacobi diagonal of particle i: how much rho*_i falls per unit of s_i
+ * when i moves by -(s_i/dt) G_i (G_i = sum_k m grad W_ik over the real
+ * neighbours and the images) and each real neighbour j answers with
+ * +(s_i/dt) m grad W_ij (Bender & Koschier 2017, eq. 9):
+ *     |G_i|^2 + sum_j |m grad W_ij|^2
+ * An image moves as the mirror M of its particle: an image of i itself
+ * adds -m (M G_i) . grad W_ii'; an image j' of a real neighbour j adds
+ * m^2 (M grad W_ij) . grad W_ij' twice (j' follows j's answer, and j
+ * answers to i's image in its own list at the same distance). Without
+ * them a particle in a corner (seven images of itself) had its diagonal
+ * underestimated several times over and a tank at rest blew up.
+ * Returns sum_k g_ik r_ik^2 over the same entries: the trace of i's
+ * gradient moment in units of 1 / (m G) (the pressure read-out's M).
+ * Also sums the warm start's sum_k (w_i + w_k) g_ik (x_i - x_k) into
+ * df_wx..z (w: df_sum, set by warm_weights; the header). */
+
+static inline MS_DFSPH_INLINE float factors_of(ms_volume *v, const ms_nlist *lst,
+                                               const ms_nlist *gst, float *restrict cgx,
+                                               float *restrict cgy, float *restrict cgz,
+                                               float *restrict img, int i)
+{
+    const float *restrict x = v->x, *restrict y = v->y, *restrict z = v->z;
+    const int *restrict idx = lst->idx + v->nl_begin[i];
+    const float *restrict r2s = lst->r2 + v->nl_begin[i];
+    const int n = ms_dfsph_padded(v->nl_count[i]);
+    const float h = v->K.h, h2 = v->K.h2, eps = sqrtf(v->eps2);
+    const float xi = x[i], yi = y[i], zi = z[i];
+    cgx += v->nl_begin[i];
+    cgy += v->nl_begin[i];
+    cgz += v->nl_begin[i];
+    const float *restrict w = v->df_sum; /* the warm start's s (warm_weights) */
+    const float wi = w[i];
+    float gx, gy, gz, q; /* in units of (m G)^2: grad W = -G g d */
+    float mom;           /* sum_j g r^2: the gradient moment's trace */
+    float ax, ay, az;    /* the warm start's sum */
+    {
+        /* the neighbours' positions as the 16-byte records x, y, z, p of
+         * v->pk (the density pass filled them from the positions the
+         * solves use); the fourth float holds the warm start's s then
+         * (warm_weights): w_j without a gather */
+        const ms_lane hv = ms_lane_set1(h), ev = ms_lane_set1(eps), zero = ms_lane_zero();
+        const ms_lane xv = ms_lane_set1(xi), yv = ms_lane_set1(yi), zv = ms_lane_set1(zi);
+        const ms_lane wv = ms_lane_set1(wi);
+        ms_lane sx = zero, sy = zero, sz = zero, sq = zero, sm = zero, wx = zero, wy = zero,
+                wz = zero;
+        for (int k = 0; k < n; k += LANES) {
+            ms_lane xj, yj, zj, pj;
+            ms_lane_prefetch(ahead(r2s + k));
+            ms_lane_prefetch(ahead(idx + k));
+            ms_lane_records4(v->pk, idx + k, &xj, &yj, &zj, &pj);
+            const ms_lane r2 = ms_lane_load(r2s + k);
+            const ms_lane g = ms_lane_grad_factor(ms_lane_sqrt(r2), hv, ev);
+            const ms_lane dx = ms_lane_mul(g, ms_lane_sub(xv, xj)),
+                          dy = ms_lane_mul(g, ms_lane_sub(yv, yj)),
+                          dz = ms_lane_mul(g, ms_lane_sub(zv, zj));
+            ms_lane_store(cgx + k, dx);
+            ms_lane_store(cgy + k, dy);
+            ms_lane_store(cgz + k, dz);
+            sx = ms_lane_add(sx, dx);
+            sy = ms_lane_add(sy, dy);
+            sz = ms_lane_add(sz, dz);
+            sq = ms_lane_add(sq, ms_lane_mul(ms_lane_mul(g, g), r2));
+            sm = ms_lane_add(sm, ms_lane_mul(g, r2));
+            const ms_lane f = ms_lane_add(wv, pj);
+            wx = ms_lane_add(wx, ms_lane_mul(f, dx));
+            wy = ms_lane_add(wy, ms_lane_mul(f, dy));
+            wz = ms_lane_add(wz, ms_lane_mul(f, dz));
+        }
+        gx = ms_lane_sum(sx);
+        gy = ms_lane_sum(sy);
+        gz = ms_lane_sum(sz);
+        q = ms_lane_sum(sq);
+        mom = ms_lane_sum(sm);
+        ax = ms_lane_sum(wx);
+        ay = ms_lane_sum(wy);
+        az = ms_lane_sum(wz);
+    }
+    if (v->coincident > 0)
+        for (int k = 0; k < v->nl_count[i]; ++k) {
+            float u[3];
+            if (coincident(v, i, idx[k], r2s[k], u)) {
+                cgx[k] = u[0]; /* the cached pair term of the solves' passes */
+                cgy[k] = u[1];
+                cgz[k] = u[2];
+                gx += u[0];
+                gy += u[1];
+                gz += u[2];
+                q += h2 * h2;
+                const float f = wi + w[idx[k]];
+                ax += f * u[0];
+                ay += f * u[1];
+                az += f * u[2];
+            }
+        }
+    float qm = 0.0f; /* the images' mirror terms */
+    const int gn = v->gl_count[i];
+    if (gn) {
+        const int *gidx = gst->idx + v->gl_begin[i];
+        const float *gr2 = gst->r2 + v->gl_begin[i];
+        float wall[3];
+        ms_volume_walls_near(v, xi, yi, zi, wall);
+        float *c = img + 4 * (size_t)v->gl_begin[i];
+        for (int k = 0; k < gn; ++k) {
+            float pj[3], uj[3];
+            image_of(v, i, gidx[k], wall, pj, uj);
+            float g = grad_factor(gr2[k], h, eps);
+            c[4 * k] = g; /* the image's terms for the solves' passes */
+            c[4 * k + 1] = xi - pj[0];
+            c[4 * k + 2] = yi - pj[1];
+            c[4 * k + 3] = zi - pj[2];
+            gx += g * (xi - pj[0]);
+            gy += g * (yi - pj[1]);
+            gz += g * (zi - pj[2]);
+            /* the warm start's term as apply_of takes an image's */
+            const float f = (wi + w[gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1)]) * g;
+            ax += f * c[4 * k + 1];
+            ay += f * c[4 * k + 2];
+            az += f * c[4 * k + 3];
+            mom += g * (c[4 * k + 1] * c[4 * k + 1] + c[4 * k + 2] * c[4 * k + 2] +
+                        c[4 * k + 3] * c[4 * k + 3]);
+        }
+        for (int k = 0; k < gn; ++k) {
+            const int j = gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
+            const unsigned f = (unsigned)gidx[k] >> MS_VOLUME_IMAGE_SHIFT;
+            /* the image's g and x_i - x_j' as the first loop stored them
+             * (the same values; image_of and grad_factor once an image) */
+            const float g = c[4 * k];
+            const float d[3] = {c[4 * k + 1], c[4 * k + 2], c[4 * k + 3]};
+            float u[3];
+            float wt;
+            if (j == i) { /* i's own image moves as M dv_i */
+                u[0] = gx;
+                u[1] = gy;
+                u[2] = gz;
+                wt = -1.0f;
+            } else { /* j answers to i, and to i's image in j's list */
+                u[0] = xi - x[j];
+                u[1] = yi - y[j];
+                u[2] = zi - z[j];
+                float r2 = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+                if (!(r2 < h2))
+                    continue;
+                wt = 2.0f * grad_factor(r2, h, eps);
+            }
+            mirror(v, i, f, u);
+            qm += wt * g * (u[0] * d[0] + u[1] * d[1] + u[2] * d[2]);
+        }
+    }
+    const float mg = v->mass * v->K.spiky_grad;
+    /* the mirror terms only ever stiffen the diagonal: a negative sum
+     * (a particle pressed onto a wall, its own image nearly on it) would
+     * shrink it towards 0 and blow the update up */
+    float den = mg * mg * (gx * gx + gy * gy + gz * gz + q + (qm > 0.0f ? qm : 0.0f));
+    v->df_inv_diag[i] = den > 0.0f ? 1.0f / den : 0.0f;
+    v->df_wx[i] = ax;
+    v->df_wy[i] = ay;
+    v->df_wz[i] = az;
+    return mom;
+}
+
+/* sum_j (v_i - v_j) . (x_i - x_j) g_ij over real neighbours and images:
+ * D rho_i/Dt = -m G times it. */
+static inline MS_DFSPH_INLINE float divergence_sum(const ms_volume *v, const ms_nlist *lst,
+                                                   const ms_nlist *gst, const float *restrict cgx,
+                                                   const float *restrict cgy,
+                                                   const float *restrict cgz,
+                                                   const float *restrict img, int i)
+{
+    const float *restrict vx = v->vx, *restrict vy = v->vy, *restrict vz = v->vz;
+    const int *restrict idx = lst->idx + v->nl_begin[i];
+    const int n = ms_dfsph_padded(v->nl_count[i]);
+    const float ui = vx[i], wi = vy[i], ti = vz[i];
+    cgx += v->nl_begin[i];
+    cgy += v->nl_begin[i];
+    cgz += v->nl_begin[i];
+    float s;
+    {
+        /* the neighbours' velocities as the 16-byte records p, vx, vy, vz
+         * of v->pk (apply_of and warm_kick keep them; the p slot is not
+         * read) */
+        const ms_lane u = ms_lane_set1(ui), w = ms_lane_set1(wi), t = ms_lane_set1(ti);
+        ms_lane a = ms_lane_zero();
+        for (int k = 0; k < n; k += LANES) {
+            ms_lane sj, uj, wj, tj;
+            ms_lane_prefetch(ahead(cgx + k));
+            ms_lane_prefetch(ahead(cgy + k));
+            ms_lane_prefetch(ahead(cgz + k));
+            ms_lane_prefetch(ahead(idx + k));
+            ms_lane_records4(v->pk + 3, idx + k, &sj, &uj, &wj, &tj);
+            (void)sj;
+            ms_lane d = ms_lane_mul(ms_lane_sub(u, uj), ms_lane_load(cgx + k));
+            d = ms_lane_add(d, ms_lane_mul(ms_lane_sub(w, wj), ms_lane_load(cgy + k)));
+            d = ms_lane_add(d, ms_lane_mul(ms_lane_sub(t, tj), ms_lane_load(cgz + k)));
+            a = ms_lane_add(a, d);
+        }
+        s = ms_lane_sum(a);
+    }
+    const int gn = v->gl_count[i];
+    if (gn) {
+        const int *gidx = gst->idx + v->gl_begin[i];
+        const float *c = img + 4 * (size_t)v->gl_begin[i];
+        for (int k = 0; k < gn; ++k) {
+            float uj[3];
+            image_velocity(v, i, gidx[k], uj);
+            s += c[4 * k] * ((ui - uj[0]) * c[4 * k + 1] + (wi - uj[1]) * c[4 * k + 2] +
+                             (ti - uj[2]) * c[4 * k + 3]);
+        }
+    }
+    return s;
+}
+
+/* v_i += scale m G sum_j (s_i + s_j) g_ij (x_i - x_j): the pressure term. */
+static inline MS_DFSPH_INLINE void apply_of(ms_volume *v, const ms_nlist *lst, const ms_nlist *gst,
+                                            const float *restrict cgx, const float *restrict cgy,
+                                            const float *restrict cgz, const float *restrict img,
+                                            int i, float scale)
+{
+    const float *restrict s = v->df_s;
+    const int *restrict idx = lst->idx + v->nl_begin[i];
+    const int n = ms_dfsph_padded(v->nl_count[i]);
+    const float si = s[i];
+    cgx += v->nl_begin[i];
+    cgy += v->nl_begin[i];
+    cgz += v->nl_begin[i];
+    float sum[3];
+    {
+        /* s_j by a gather from df_s: the update reads nothing else of a
+         * neighbour (sixteen record loads and their transpose, for one
+         * value of four, took 1/0.88 the time on fig1 under DFSPH) */
+        const ms_lane sv = ms_lane_set1(si);
+        ms_lane a = ms_lane_zero(), b = a, c = a;
+        for (int k = 0; k < n; k += LANES) {
+            ms_lane_prefetch(ahead(cgx + k));
+            ms_lane_prefetch(ahead(cgy + k));
+            ms_lane_prefetch(ahead(cgz + k));
+            ms_lane_prefetch(ahead(idx + k));
+            const ms_lane f = ms_lane_add(sv, ms_lane_gather(s, idx + k));
+            a = ms_lane_add(a, ms_lane_mul(f, ms_lane_load(cgx + k)));
+            b = ms_lane_add(b, ms_lane_mul(f, ms_lane_load(cgy + k)));
+            c = ms_lane_add(c, ms_lane_mul(f, ms_lane_load(cgz + k)));
+        }
+        sum[0] = ms_lane_sum(a);
+        sum[1] = ms_lane_sum(b);
+        sum[2] = ms_lane_sum(c);
+    }
+    float sx = sum[0], sy = sum[1], sz = sum[2];
+    const int gn = v->gl_count[i];
+    if (gn) {
+        const int *gidx = gst->idx + v->gl_begin[i];
+        const float *c = img + 4 * (size_t)v->gl_begin[i];
+        for (int k = 0; k < gn; ++k) {
+            const int j = gidx[k] & ((1 << MS_VOLUME_IMAGE_SHIFT) - 1);
+            float sb = si + s[j];
+            float f = sb * c[4 * k];
+            sx += f * c[4 * k + 1];
+            sy += f * c[4 * k + 2];
+            sz += f * c[4 * k + 3];
+        }
+    }
+    const float c = scale * v->mass * v->K.spiky_grad;
+    set_capped(v, i, v->vx[i] + c * sx, v->vy[i] + c * sy, v->vz[i] + c * sz);
+    /* the running total of s, and the new velocity into the packed copy
+     * the error loops read: no pass of an update reads pk (the
+     * update gathers s from df_s), so i's record may change under it:
+     * one per-particle pass fewer an iteration */
+    v->df_sum[i] += si;
+    pack_velocity(v, i);
+}
+
+/* The divergence error of particle i (D rho_i/Dt, 0 at the surface and
+ * where the liquid expands) into its iterate s_i; returns dt e_i / rho0
+ * quantised. */
+static inline MS_DFSPH_INLINE int64_t divergence_error_of(ms_volume *v, const ms_nlist *lst,
+                                                          const ms_nlist *gst, const float *cgx,
+                                                          const float *cgy, const float *cgz,
+                                                          const float *restrict img, int i,
+                                                          float dt)
+{
+    float ei = 0.0f;
+    if (!ms_volume_is_surface(v, i)) {
+        const float mg = v->mass * v->K.spiky_grad;
+        ei = -mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, img, i); /* D rho_i/Dt */
+        ei = ei > 0.0f ? ei : 0.0f;
+    }
+    v->df_s[i] = ei * v->df_inv_diag[i];
+    return quantise(dt * ei / v->desc.rest_density);
+}
+
+/* One DFSPH pass of ctx->kind over particles [b, e) of part `part`;
+ * its error (and moments) into ctx. */
+static void dfsph_range(ms_dfsph_ctx *ctx, int part, int b, int e)
+{
+    ms_volume *v = ctx->v;
+    const ms_nlist *lst = &v->lists[part], *gst = &v->ghosts[part];
+    float *cgx = v->df_grad[part], *cgy = cgx + v->df_grad_cap[part],
+          *cgz = cgy + v->df_grad_cap[part];
+    float *img = v->df_img[part];
+    const float rho0 = v->desc.rest_density, mg = v->mass * v->K.spiky_grad, dt = ctx->dt;
+    int64_t err = 0;
+    switch (ctx->kind) {
+    case F_FACTORS: { /* and the divergence solve's first error, while i's terms are hot */
+        /* M_i = V G sum_k g r^2 / 3, V = m / rho0: i's gradient moment
+         * (the trace's third), as volume.c's lattice M */
+        const float mvol = mg / (3.0f * rho0);
+        int64_t mom = 0;
+        int nmom = 0;
+        for (int i = b; i < e; ++i) {
+            const float mi = mvol * factors_of(v, lst, gst, cgx, cgy, cgz, img, i);
+            err += divergence_error_of(v, lst, gst, cgx, cgy, cgz, img, i, dt);
+            if (!ms_volume_is_surface(v, i)) {
+                mom += quantise(mi);
+                nmom++;
+            }
+        }
+        ctx->mom[part] = mom;
+        ctx->nmom[part] = nmom;
+        break;
+    }
+    case F_DENSITY_ERROR: {
+        /* The compression one sub-step may remove, rho0 c0 dt / h: a
+         * compressed liquid of sound speed c0 relaxes at about c0, one
+         * kernel radius in h / c0. Without it a sub-step tries to remove
+         * all of it at once, whatever dt: 300 particles at one point (179
+         * times rest density) left at 136 m/s with 3800 J; with it, at
+         * most 10 m/s and 65 J (the ideal-gas law: 39 m/s, 1278 J). It
+         * only binds when rho/rho0 - 1 > c0 dt / h, near 1 for the
+         * shipped scenes' sub-steps, so never in their flows. */
+        const float cap = rho0 * v->c0 * dt / v->K.h;
+        for (int i = b; i < e; ++i) {
+            /* rho*_i - rho0 = rho_i - rho0 + dt D rho_i/Dt */
+            float ci = v->rho[i] - rho0;
+            ci = ci < cap ? ci : cap;
+            float ei = ci - dt * mg * divergence_sum(v, lst, gst, cgx, cgy, cgz, img, i);
+            ei = ei > 0.0f ? ei : 0.0f;
+            /* the Jacobi update plus, while i is still compressed, the
+             * momentum share of its last one (df_s still holds it; both
+             * >= 0: the total only grows; the header) */
+            v->df_s[i] = ei > 0.0f ? ei * v->df_inv_diag[i] + ctx->momentum * v->df_s[i] : 0.0f;
+            err += quantise(ei / rho0); /* compression only: quantise clamps at 0 */
+        }
+        break;
+    }
+    case F_DIVERGENCE_ERROR:
+        for (int i = b; i < e; ++i)
+            err += divergence_error_of(v, lst, gst, cgx, cgy, cgz, img, i, dt);
+        break;
+    case F_APPLY:
+        for (int i = b; i < e; ++i)
+            apply_of(v, lst, gst, cgx, cgy, cgz, img, i, ctx->scale);
+        break;
+    case F_PRESSURE: {
+        /* the pressure the liquid exerts (eq. 13's convention): both
+         * solves' impulses of this sub-step as a pressure over it, its
+         * mean over the step's sub-steps so far into prs (see the header) */
+        const float inv_dt2 = 1.0f / (dt * dt), inv_dt = 1.0f / dt, w = ctx->weight;
+        for (int i = b; i < e; ++i) {
+            const float p = ctx->moment * (v->df_sum[i] * inv_dt2 + v->df_div_sum[i] * inv_dt) *
+                            v->rho[i] * v->rho[i];
+            float *mean = &v->df_pmean[v->id[i]];
+            *mean = ctx->restart ? p : *mean + w * (p - *mean);
+            v->prs[i] = *mean;
+            v->pk[8 * (size_t)i + 3] = v->prs[i];
+            v->df_warm[v->id[i]] = v->df_sum[i]; /* the next sub-step's start */
+        }
+        break;
+    }
+    }
+    ctx->err[part] = err;
+}
+
 const ms_volume_passes PASSES = {
     .density = density_range,
     .forces = forces_range,
+    .dfsph = dfsph_range,
 };
 
 #if MS_LANE_ISA == MS_LANE_ISA_C

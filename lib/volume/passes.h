@@ -18,6 +18,8 @@ typedef struct ms_density_ctx {
     double pairs[MS_VOLUME_MAX_THREADS];
 } ms_density_ctx;
 
+struct ms_dfsph_ctx;
+
 typedef struct ms_volume_passes {
     /* Particles [b, e) of part `part`: their neighbour lists, density
      * (eq. 9), 1/rho and pressure, and the part's counts in ctx. */
@@ -25,6 +27,9 @@ typedef struct ms_volume_passes {
     /* Particles [b, e) of part `part`: their accelerations (eqs. 13, 14,
      * the boundary field and gravity) and viscous rates. */
     void (*forces)(ms_volume *v, int part, int b, int e);
+    /* Particles [b, e) of part `part`: one DFSPH pass of ctx->kind
+     * (dfsph_pass.h). */
+    void (*dfsph)(struct ms_dfsph_ctx *ctx, int part, int b, int e);
 } ms_volume_passes;
 
 /* The table of instruction set isa (MS_VOLUME_ISA_*), NULL when this
