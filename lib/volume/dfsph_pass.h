@@ -114,7 +114,7 @@ static inline float grad_factor(float r2, float h, float eps)
     const float hr = ms_kernel_hr(h, r);
     return r > eps ? hr * hr / r : 0.0f;
 }
-static inline ms_lane ms_lane_grad_factor(ms_lane r, ms_lane h, ms_lane eps)
+MS_LANE_FN ms_lane ms_lane_grad_factor(ms_lane r, ms_lane h, ms_lane eps)
 {
     const ms_lane hr = ms_lane_kernel_hr(h, r);
     return ms_lane_select(ms_lane_gt(r, eps), ms_lane_div(ms_lane_mul(hr, hr), r), ms_lane_zero());

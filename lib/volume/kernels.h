@@ -48,7 +48,7 @@ static inline float ms_spiky_shape(float h, float r2)
     const float t = h - sqrtf(r2);
     return t * t * t;
 }
-static inline ms_lane ms_lane_spiky_shape(ms_lane h, ms_lane r2)
+MS_LANE_FN ms_lane ms_lane_spiky_shape(ms_lane h, ms_lane r2)
 {
     const ms_lane t = ms_lane_sub(h, ms_lane_sqrt(r2));
     return ms_lane_mul(ms_lane_mul(t, t), t);
@@ -60,7 +60,7 @@ static inline float ms_poly6_shape(float h2, float r2)
     const float t = h2 - r2;
     return t * t * t;
 }
-static inline ms_lane ms_lane_poly6_shape(ms_lane h2, ms_lane r2)
+MS_LANE_FN ms_lane ms_lane_poly6_shape(ms_lane h2, ms_lane r2)
 {
     const ms_lane t = ms_lane_sub(h2, r2);
     return ms_lane_mul(ms_lane_mul(t, t), t);
@@ -74,7 +74,7 @@ static inline float ms_kernel_hr(float h, float r)
     const float t = h - r;
     return t > 0.0f ? t : 0.0f;
 }
-static inline ms_lane ms_lane_kernel_hr(ms_lane h, ms_lane r)
+MS_LANE_FN ms_lane ms_lane_kernel_hr(ms_lane h, ms_lane r)
 {
     return ms_lane_max(ms_lane_sub(h, r), ms_lane_zero());
 }

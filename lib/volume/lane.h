@@ -47,6 +47,14 @@
 
 #define MS_LANES 16
 
+/* The lane operations are inlined wherever they are used: a call would
+ * pass the lanes through memory. */
+#if defined(__GNUC__)
+#define MS_LANE_FN static inline __attribute__((always_inline))
+#else
+#define MS_LANE_FN static inline
+#endif
+
 /* The instruction sets this target builds (passes_<isa>.c): SSE2, AVX2
  * and AVX-512 on x86-64 with any compiler, NEON on aarch64. */
 #if defined(__x86_64__)

@@ -21,91 +21,99 @@ typedef struct ms_lmask {
         r_.h[k] = (expr);       \
     return r_
 
-static inline ms_lane ms_lane_set1(float s)
+MS_LANE_FN ms_lane ms_lane_set1(float s)
 {
     MS_LANE_MAP(ms_lane, _mm256_set1_ps(s));
 }
-static inline ms_lane ms_lane_zero(void)
+MS_LANE_FN ms_lane ms_lane_zero(void)
 {
     MS_LANE_MAP(ms_lane, _mm256_setzero_ps());
 }
-static inline ms_lane ms_lane_load(const float *p)
+MS_LANE_FN ms_lane ms_lane_load(const float *p)
 {
     MS_LANE_MAP(ms_lane, _mm256_loadu_ps(p + 8 * k));
 }
-static inline void ms_lane_store(float *p, ms_lane a)
+MS_LANE_FN void ms_lane_store(float *p, ms_lane a)
 {
     for (int k = 0; k < 2; ++k)
         _mm256_storeu_ps(p + 8 * k, a.h[k]);
 }
 /* The mask of lanes 8k + l < n of half k. */
-static inline __m256i lanes_below(int n, int k)
+MS_LANE_FN __m256i lanes_below(int n, int k)
 {
     const __m256i idx = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     return _mm256_cmpgt_epi32(_mm256_set1_epi32(n - 8 * k), idx);
 }
-static inline ms_lane ms_lane_load_n(const float *p, int n)
+MS_LANE_FN ms_lane ms_lane_load_n(const float *p, int n)
 {
     MS_LANE_MAP(ms_lane, _mm256_maskload_ps(p + 8 * k, lanes_below(n, k)));
 }
-static inline void ms_lane_store_n(float *p, ms_lane a, int n)
+MS_LANE_FN void ms_lane_store_n(float *p, ms_lane a, int n)
 {
     for (int k = 0; k < 2; ++k)
         _mm256_maskstore_ps(p + 8 * k, lanes_below(n, k), a.h[k]);
 }
-static inline ms_lane ms_lane_add(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_add(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, _mm256_add_ps(a.h[k], b.h[k]));
 }
-static inline ms_lane ms_lane_sub(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_sub(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, _mm256_sub_ps(a.h[k], b.h[k]));
 }
-static inline ms_lane ms_lane_mul(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_mul(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, _mm256_mul_ps(a.h[k], b.h[k]));
 }
-static inline ms_lane ms_lane_div(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_div(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, _mm256_div_ps(a.h[k], b.h[k]));
 }
-static inline ms_lane ms_lane_sqrt(ms_lane a)
+MS_LANE_FN ms_lane ms_lane_sqrt(ms_lane a)
 {
     MS_LANE_MAP(ms_lane, _mm256_sqrt_ps(a.h[k]));
 }
-static inline ms_lane ms_lane_max(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_max(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, _mm256_max_ps(a.h[k], b.h[k])); /* a > b ? a : b */
 }
-static inline ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lmask, _mm256_cmp_ps(a.h[k], b.h[k], _CMP_LT_OQ));
 }
-static inline ms_lmask ms_lane_le(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_le(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lmask, _mm256_cmp_ps(a.h[k], b.h[k], _CMP_LE_OQ));
 }
-static inline ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lmask, _mm256_cmp_ps(a.h[k], b.h[k], _CMP_GT_OQ));
 }
-static inline ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, _mm256_blendv_ps(b.h[k], a.h[k], m.h[k]));
 }
-static inline int ms_lane_count(ms_lmask m)
+/* The set bits of a 16-bit mask (SSE2 has no popcnt instruction). */
+MS_LANE_FN int popcount16(unsigned x)
+{
+    x = x - ((x >> 1) & 0x5555u);
+    x = (x & 0x3333u) + ((x >> 2) & 0x3333u);
+    x = (x + (x >> 4)) & 0x0f0fu;
+    return (int)((x + (x >> 8)) & 0x1fu);
+}
+MS_LANE_FN int ms_lane_count(ms_lmask m)
 {
     const int bits = _mm256_movemask_ps(m.h[0]) | _mm256_movemask_ps(m.h[1]) << 8;
-    return __builtin_popcount((unsigned)bits);
+    return popcount16((unsigned)bits);
 }
-static inline float ms_lane_sum(ms_lane a)
+MS_LANE_FN float ms_lane_sum(ms_lane a)
 {
     const __m256 t8 = _mm256_add_ps(a.h[0], a.h[1]);
     const __m128 t4 = _mm_add_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
     const __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
     return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
 }
-static inline float ms_lane_max_of(ms_lane a)
+MS_LANE_FN float ms_lane_max_of(ms_lane a)
 {
     const __m256 t8 = _mm256_max_ps(a.h[0], a.h[1]);
     __m128 m = _mm_max_ps(_mm256_castps256_ps128(t8), _mm256_extractf128_ps(t8, 1));
@@ -113,11 +121,11 @@ static inline float ms_lane_max_of(ms_lane a)
     return _mm_cvtss_f32(_mm_max_ss(m, _mm_shuffle_ps(m, m, 1)));
 }
 
-static inline ms_lane ms_lane_neg(ms_lane a)
+MS_LANE_FN ms_lane ms_lane_neg(ms_lane a)
 {
     MS_LANE_MAP(ms_lane, _mm256_xor_ps(a.h[k], _mm256_set1_ps(-0.0f)));
 }
-static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
+MS_LANE_FN ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
 {
     const __m256i b = _mm256_set1_epi32(bit);
     MS_LANE_MAP(
@@ -128,7 +136,7 @@ static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
 }
 /* Eight records pk[8 j .. 8 j + 7] as eight lanes of eight: an 8 x 8
  * transpose. */
-static inline void records8x8(const float *pk, const int *restrict j, __m256 *o)
+MS_LANE_FN void records8x8(const float *pk, const int *restrict j, __m256 *o)
 {
     __m256 r[8], t[8], s[8];
     for (int q = 0; q < 8; ++q)
@@ -148,7 +156,7 @@ static inline void records8x8(const float *pk, const int *restrict j, __m256 *o)
         o[q + 4] = _mm256_permute2f128_ps(s[q], s[q + 4], 0x31);
     }
 }
-static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
+MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
                                     ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
                                     ms_lane *o6, ms_lane *o7)
 {
@@ -165,12 +173,12 @@ static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_l
         o7->h[k] = o[7];
     }
 }
-static inline __m256 quad_pair(const float *b, int lo, int hi)
+MS_LANE_FN __m256 quad_pair(const float *b, int lo, int hi)
 {
     return _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(b + 8 * (size_t)lo)),
                                 _mm_loadu_ps(b + 8 * (size_t)hi), 1);
 }
-static inline void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
+MS_LANE_FN void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
                                     ms_lane *o2, ms_lane *o3)
 {
     for (int k = 0; k < 2; ++k) {
@@ -185,12 +193,12 @@ static inline void ms_lane_records4(const float *b, const int *restrict j, ms_la
         o3->h[k] = _mm256_shuffle_ps(t1, t3, 0xee);
     }
 }
-static inline ms_lane ms_lane_gather(const float *b, const int *restrict j)
+MS_LANE_FN ms_lane ms_lane_gather(const float *b, const int *restrict j)
 {
     MS_LANE_MAP(ms_lane, _mm256_i32gather_ps(
                              b, _mm256_loadu_si256((const __m256i *)(const void *)(j + 8 * k)), 4));
 }
-static inline void ms_lane_prefetch(const void *p)
+MS_LANE_FN void ms_lane_prefetch(const void *p)
 {
     _mm_prefetch((const char *)p, _MM_HINT_T0);
 }

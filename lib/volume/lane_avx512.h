@@ -15,91 +15,91 @@ typedef struct ms_lmask {
     __mmask16 k;
 } ms_lmask;
 
-static inline ms_lane ms_lane_of(__m512 z)
+MS_LANE_FN ms_lane ms_lane_of(__m512 z)
 {
     ms_lane r;
     r.z = z;
     return r;
 }
-static inline ms_lmask ms_lmask_of(__mmask16 k)
+MS_LANE_FN ms_lmask ms_lmask_of(__mmask16 k)
 {
     ms_lmask r;
     r.k = k;
     return r;
 }
-static inline ms_lane ms_lane_set1(float s)
+MS_LANE_FN ms_lane ms_lane_set1(float s)
 {
     return ms_lane_of(_mm512_set1_ps(s));
 }
-static inline ms_lane ms_lane_zero(void)
+MS_LANE_FN ms_lane ms_lane_zero(void)
 {
     return ms_lane_of(_mm512_setzero_ps());
 }
-static inline ms_lane ms_lane_load(const float *p)
+MS_LANE_FN ms_lane ms_lane_load(const float *p)
 {
     return ms_lane_of(_mm512_loadu_ps(p));
 }
-static inline void ms_lane_store(float *p, ms_lane a)
+MS_LANE_FN void ms_lane_store(float *p, ms_lane a)
 {
     _mm512_storeu_ps(p, a.z);
 }
-static inline __mmask16 lanes_below(int n)
+MS_LANE_FN __mmask16 lanes_below(int n)
 {
     return (__mmask16)_bzhi_u32(0xffffu, (unsigned)n);
 }
-static inline ms_lane ms_lane_load_n(const float *p, int n)
+MS_LANE_FN ms_lane ms_lane_load_n(const float *p, int n)
 {
     return ms_lane_of(_mm512_maskz_loadu_ps(lanes_below(n), p));
 }
-static inline void ms_lane_store_n(float *p, ms_lane a, int n)
+MS_LANE_FN void ms_lane_store_n(float *p, ms_lane a, int n)
 {
     _mm512_mask_storeu_ps(p, lanes_below(n), a.z);
 }
-static inline ms_lane ms_lane_add(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_add(ms_lane a, ms_lane b)
 {
     return ms_lane_of(_mm512_add_ps(a.z, b.z));
 }
-static inline ms_lane ms_lane_sub(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_sub(ms_lane a, ms_lane b)
 {
     return ms_lane_of(_mm512_sub_ps(a.z, b.z));
 }
-static inline ms_lane ms_lane_mul(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_mul(ms_lane a, ms_lane b)
 {
     return ms_lane_of(_mm512_mul_ps(a.z, b.z));
 }
-static inline ms_lane ms_lane_div(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_div(ms_lane a, ms_lane b)
 {
     return ms_lane_of(_mm512_div_ps(a.z, b.z));
 }
-static inline ms_lane ms_lane_sqrt(ms_lane a)
+MS_LANE_FN ms_lane ms_lane_sqrt(ms_lane a)
 {
     return ms_lane_of(_mm512_sqrt_ps(a.z));
 }
-static inline ms_lane ms_lane_max(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_max(ms_lane a, ms_lane b)
 {
     return ms_lane_of(_mm512_max_ps(a.z, b.z)); /* a > b ? a : b */
 }
-static inline ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
 {
     return ms_lmask_of(_mm512_cmp_ps_mask(a.z, b.z, _CMP_LT_OQ));
 }
-static inline ms_lmask ms_lane_le(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_le(ms_lane a, ms_lane b)
 {
     return ms_lmask_of(_mm512_cmp_ps_mask(a.z, b.z, _CMP_LE_OQ));
 }
-static inline ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
 {
     return ms_lmask_of(_mm512_cmp_ps_mask(a.z, b.z, _CMP_GT_OQ));
 }
-static inline ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
 {
     return ms_lane_of(_mm512_mask_blend_ps(m.k, b.z, a.z));
 }
-static inline int ms_lane_count(ms_lmask m)
+MS_LANE_FN int ms_lane_count(ms_lmask m)
 {
     return __builtin_popcount((unsigned)m.k);
 }
-static inline float ms_lane_sum(ms_lane a)
+MS_LANE_FN float ms_lane_sum(ms_lane a)
 {
     const __m256 t8 =
         _mm256_add_ps(_mm512_castps512_ps256(a.z),
@@ -108,17 +108,17 @@ static inline float ms_lane_sum(ms_lane a)
     const __m128 t2 = _mm_add_ps(t4, _mm_movehl_ps(t4, t4)); /* (0+2, 1+3) */
     return _mm_cvtss_f32(_mm_add_ss(t2, _mm_shuffle_ps(t2, t2, 1)));
 }
-static inline float ms_lane_max_of(ms_lane a)
+MS_LANE_FN float ms_lane_max_of(ms_lane a)
 {
     return _mm512_reduce_max_ps(a.z);
 }
 
-static inline ms_lane ms_lane_neg(ms_lane a)
+MS_LANE_FN ms_lane ms_lane_neg(ms_lane a)
 {
     return ms_lane_of(_mm512_castsi512_ps(
         _mm512_xor_si512(_mm512_castps_si512(a.z), _mm512_set1_epi32((int)0x80000000u))));
 }
-static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
+MS_LANE_FN ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
 {
     return ms_lmask_of(
         _mm512_test_epi32_mask(_mm512_loadu_si512((const void *)p), _mm512_set1_epi32(bit)));
@@ -131,7 +131,7 @@ static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
  * temporaries GCC spilled them to the stack and there was no gain).
  * Vector a[k] holds the records of j[k] | j[k+4] (k < 4) or j[k+4] |
  * j[k+8] (k >= 4), so that the last lane shuffle puts the lanes in order. */
-static inline __m512 record_pair(const float *pk, int lo, int hi)
+MS_LANE_FN __m512 record_pair(const float *pk, int lo, int hi)
 {
     return _mm512_insertf32x8(_mm512_castps256_ps512(_mm256_loadu_ps(pk + 8 * (size_t)lo)),
                               _mm256_loadu_ps(pk + 8 * (size_t)hi), 1);
@@ -147,7 +147,7 @@ static inline __m512 record_pair(const float *pk, int lo, int hi)
         s3 = _mm512_shuffle_ps(t1_, t3_, 0xee);                                          \
     } while (0)
 
-static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
+MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
                                     ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
                                     ms_lane *o6, ms_lane *o7)
 {
@@ -178,7 +178,7 @@ static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_l
             _mm512_insertf32x4(_mm512_castps128_ps512(MS_LANE_QUAD(k)), MS_LANE_QUAD((k) + 4), 1), \
             MS_LANE_QUAD((k) + 8), 2),                                                             \
         MS_LANE_QUAD((k) + 12), 3)
-static inline void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
+MS_LANE_FN void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
                                     ms_lane *o2, ms_lane *o3)
 {
     const __m512 a0 = MS_LANE_ROW(0), a1 = MS_LANE_ROW(1), a2 = MS_LANE_ROW(2), a3 = MS_LANE_ROW(3);
@@ -188,12 +188,12 @@ static inline void ms_lane_records4(const float *b, const int *restrict j, ms_la
 #undef MS_LANE_QUAD
 #undef MS_LANE_TRANSPOSE4
 
-static inline ms_lane ms_lane_gather(const float *b, const int *restrict j)
+MS_LANE_FN ms_lane ms_lane_gather(const float *b, const int *restrict j)
 {
     return ms_lane_of(_mm512_i32gather_ps(_mm512_loadu_si512((const void *)j), b, 4));
 }
 
-static inline void ms_lane_prefetch(const void *p)
+MS_LANE_FN void ms_lane_prefetch(const void *p)
 {
     _mm_prefetch((const char *)p, _MM_HINT_T0);
 }

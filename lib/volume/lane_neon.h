@@ -22,90 +22,90 @@ typedef struct ms_lmask {
         r_.q[k] = (expr);       \
     return r_
 
-static inline ms_lane ms_lane_set1(float s)
+MS_LANE_FN ms_lane ms_lane_set1(float s)
 {
     MS_LANE_MAP(ms_lane, vdupq_n_f32(s));
 }
-static inline ms_lane ms_lane_zero(void)
+MS_LANE_FN ms_lane ms_lane_zero(void)
 {
     return ms_lane_set1(0.0f);
 }
-static inline ms_lane ms_lane_load(const float *p)
+MS_LANE_FN ms_lane ms_lane_load(const float *p)
 {
     MS_LANE_MAP(ms_lane, vld1q_f32(p + 4 * k));
 }
-static inline void ms_lane_store(float *p, ms_lane a)
+MS_LANE_FN void ms_lane_store(float *p, ms_lane a)
 {
     for (int k = 0; k < 4; ++k)
         vst1q_f32(p + 4 * k, a.q[k]);
 }
-static inline ms_lane ms_lane_load_n(const float *p, int n)
+MS_LANE_FN ms_lane ms_lane_load_n(const float *p, int n)
 {
     float t[16] = {0};
     for (int l = 0; l < n; ++l)
         t[l] = p[l];
     return ms_lane_load(t);
 }
-static inline void ms_lane_store_n(float *p, ms_lane a, int n)
+MS_LANE_FN void ms_lane_store_n(float *p, ms_lane a, int n)
 {
     float t[16];
     ms_lane_store(t, a);
     for (int l = 0; l < n; ++l)
         p[l] = t[l];
 }
-static inline ms_lane ms_lane_add(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_add(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, vaddq_f32(a.q[k], b.q[k]));
 }
-static inline ms_lane ms_lane_sub(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_sub(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, vsubq_f32(a.q[k], b.q[k]));
 }
-static inline ms_lane ms_lane_mul(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_mul(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, vmulq_f32(a.q[k], b.q[k]));
 }
-static inline ms_lane ms_lane_div(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_div(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, vdivq_f32(a.q[k], b.q[k]));
 }
-static inline ms_lane ms_lane_sqrt(ms_lane a)
+MS_LANE_FN ms_lane ms_lane_sqrt(ms_lane a)
 {
     MS_LANE_MAP(ms_lane, vsqrtq_f32(a.q[k]));
 }
-static inline ms_lane ms_lane_max(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_max(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, vbslq_f32(vcgtq_f32(a.q[k], b.q[k]), a.q[k], b.q[k]));
 }
-static inline ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_lt(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lmask, vcltq_f32(a.q[k], b.q[k]));
 }
-static inline ms_lmask ms_lane_le(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_le(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lmask, vcleq_f32(a.q[k], b.q[k]));
 }
-static inline ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
+MS_LANE_FN ms_lmask ms_lane_gt(ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lmask, vcgtq_f32(a.q[k], b.q[k]));
 }
-static inline ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
+MS_LANE_FN ms_lane ms_lane_select(ms_lmask m, ms_lane a, ms_lane b)
 {
     MS_LANE_MAP(ms_lane, vbslq_f32(m.q[k], a.q[k], b.q[k]));
 }
-static inline int ms_lane_count(ms_lmask m)
+MS_LANE_FN int ms_lane_count(ms_lmask m)
 {
     uint32x4_t c = vaddq_u32(vaddq_u32(vshrq_n_u32(m.q[0], 31), vshrq_n_u32(m.q[1], 31)),
                              vaddq_u32(vshrq_n_u32(m.q[2], 31), vshrq_n_u32(m.q[3], 31)));
     return (int)vaddvq_u32(c);
 }
-static inline float ms_lane_sum(ms_lane a)
+MS_LANE_FN float ms_lane_sum(ms_lane a)
 {
     const float32x4_t t4 = vaddq_f32(vaddq_f32(a.q[0], a.q[2]), vaddq_f32(a.q[1], a.q[3]));
     const float32x2_t t2 = vadd_f32(vget_low_f32(t4), vget_high_f32(t4)); /* (0+2, 1+3) */
     return vget_lane_f32(t2, 0) + vget_lane_f32(t2, 1);
 }
-static inline float ms_lane_max_of(ms_lane a)
+MS_LANE_FN float ms_lane_max_of(ms_lane a)
 {
     float t[16];
     ms_lane_store(t, a);
@@ -115,17 +115,17 @@ static inline float ms_lane_max_of(ms_lane a)
     return m;
 }
 
-static inline ms_lane ms_lane_neg(ms_lane a)
+MS_LANE_FN ms_lane ms_lane_neg(ms_lane a)
 {
     MS_LANE_MAP(ms_lane, vnegq_f32(a.q[k]));
 }
-static inline ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
+MS_LANE_FN ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
 {
     MS_LANE_MAP(ms_lmask,
                 vtstq_u32(vreinterpretq_u32_s32(vld1q_s32(p + 4 * k)), vdupq_n_u32((uint32_t)bit)));
 }
 /* Four records' quads b[8 j + 0..3] as four lanes of four. */
-static inline void quads4(const float *b, const int *restrict j, float32x4_t *o0, float32x4_t *o1,
+MS_LANE_FN void quads4(const float *b, const int *restrict j, float32x4_t *o0, float32x4_t *o1,
                           float32x4_t *o2, float32x4_t *o3)
 {
     const float32x4_t a0 = vld1q_f32(b + 8 * (size_t)j[0]), a1 = vld1q_f32(b + 8 * (size_t)j[1]);
@@ -136,7 +136,7 @@ static inline void quads4(const float *b, const int *restrict j, float32x4_t *o0
     *o2 = vcombine_f32(vget_high_f32(t01.val[0]), vget_high_f32(t23.val[0]));
     *o3 = vcombine_f32(vget_high_f32(t01.val[1]), vget_high_f32(t23.val[1]));
 }
-static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
+MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
                                     ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
                                     ms_lane *o6, ms_lane *o7)
 {
@@ -145,20 +145,20 @@ static inline void ms_lane_records8(const float *pk, const int *restrict j, ms_l
         quads4(pk + 4, j + 4 * k, &o4->q[k], &o5->q[k], &o6->q[k], &o7->q[k]);
     }
 }
-static inline void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
+MS_LANE_FN void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
                                     ms_lane *o2, ms_lane *o3)
 {
     for (int k = 0; k < 4; ++k)
         quads4(b, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
 }
-static inline ms_lane ms_lane_gather(const float *b, const int *restrict j)
+MS_LANE_FN ms_lane ms_lane_gather(const float *b, const int *restrict j)
 {
     float t[16];
     for (int l = 0; l < 16; ++l)
         t[l] = b[j[l]];
     return ms_lane_load(t);
 }
-static inline void ms_lane_prefetch(const void *p)
+MS_LANE_FN void ms_lane_prefetch(const void *p)
 {
     __builtin_prefetch(p);
 }

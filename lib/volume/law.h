@@ -38,7 +38,7 @@ static inline float ms_law_pressure(const ms_volume *v, float rho)
 /* ms_law_pressure lane by lane: the Tait law's two branches both
  * computed and selected (r <= 2, false for a NaN r, as the scalar's
  * test). */
-static inline ms_lane ms_lane_law_pressure(const ms_volume *v, ms_lane rho)
+MS_LANE_FN ms_lane ms_lane_law_pressure(const ms_volume *v, ms_lane rho)
 {
     const ms_lane rho0 = ms_lane_set1(v->desc.rest_density), zero = ms_lane_zero();
     if (v->desc.pressure == MS_PRESSURE_DFSPH)

@@ -24,6 +24,13 @@
 #endif
 
 enum { LANES = MS_LANES };
+/* The per-particle pieces are inlined into each pass's part loop: the
+ * loops' constants and accumulators stay in registers. */
+#if defined(__GNUC__)
+#define PASS_INLINE __attribute__((always_inline))
+#else
+#define PASS_INLINE
+#endif
 /* The pair loops prefetch their streamed per-pair data (the neighbour
  * indices, and the pair terms or r^2) MS_PREFETCH_ENTRIES entries ahead:
  * a sub-step's pair terms (19 MB on the peer's scene) live in the shared
@@ -50,7 +57,7 @@ _Static_assert(MS_LANES == MS_VOLUME_LANES, "the lists are padded to the lane wi
  * weight 0), the image run into the real run's lanes, and the count of
  * its coincident real pairs (r^2 < eps^2). The kernel is a constant at
  * each call site (inlined twice: the choice stays outside the loops). */
-static inline float weight_runs(const ms_volume *v, const float *restrict r2, int n,
+static inline PASS_INLINE float weight_runs(const ms_volume *v, const float *restrict r2, int n,
                                 const float *restrict g2, int gn, int *coincident, int poly6)
 {
     const ms_lane h = ms_lane_set1(v->K.h), h2 = ms_lane_set1(v->K.h2);
@@ -77,7 +84,7 @@ typedef struct part_counts {
 } part_counts;
 
 /* Particle i's density sum from its lists (built), rho = m W sum. */
-static inline void weigh(ms_volume *v, const ms_nlist *L, const ms_nlist *G, int i, float mw,
+static inline PASS_INLINE void weigh(ms_volume *v, const ms_nlist *L, const ms_nlist *G, int i, float mw,
                          int poly6, part_counts *c)
 {
     const int nreal = v->nl_count[i], nghost = v->gl_count[i];
@@ -191,7 +198,7 @@ static inline int padded(int n)
 
 /* An image's position p and velocity u along axis q: reflected (2 wall -
  * p, a sign flip of u) in the lanes whose image bits have bit q. */
-static inline void reflect_axis(const int32_t *gidx, int q, float wall, ms_lane *p, ms_lane *u)
+static inline PASS_INLINE void reflect_axis(const int32_t *gidx, int q, float wall, ms_lane *p, ms_lane *u)
 {
     const ms_lmask m = ms_lane_test_bit(gidx, (int32_t)1 << (MS_VOLUME_IMAGE_SHIFT + q));
     *p = ms_lane_select(m, ms_lane_sub(ms_lane_set1(2.0f * wall), *p), *p);
@@ -200,7 +207,7 @@ static inline void reflect_axis(const int32_t *gidx, int q, float wall, ms_lane 
 
 /* The wall-image terms of entries [0, 16) of gidx/gr2 (no shape images),
  * added to the lanes a (entry l to lane l). */
-static inline void image_terms(const ms_volume *v, const int *restrict gidx,
+static inline PASS_INLINE void image_terms(const ms_volume *v, const int *restrict gidx,
                                const float *restrict gr2, int i, const float wall[3], int pressure,
                                lanes7 *a)
 {
@@ -244,7 +251,7 @@ static inline void image_terms(const ms_volume *v, const int *restrict gidx,
  * +0, and +0 + -0 = +0): skipping them gives the same bits, without the
  * pass's only division, and the real neighbours' loop loads the records'
  * velocity halves alone. */
-static inline pair_sums sums_of(const ms_volume *v, const int *restrict idx,
+static inline PASS_INLINE pair_sums sums_of(const ms_volume *v, const int *restrict idx,
                                 const float *restrict r2s, int n, int i, const int *restrict gidx,
                                 const float *restrict gr2, int gn, const float wall[3],
                                 pair_lanes *out)
@@ -379,7 +386,7 @@ static pair_sums lanes_sum(const pair_lanes *a)
 
 /* Particle i's acceleration from its sums (eqs. 13, 14), the boundary
  * field and gravity; its viscous rate for the time-step bound. */
-static inline void accel_of(ms_volume *v, int i, pair_sums s, float cp, float cv)
+static inline PASS_INLINE void accel_of(ms_volume *v, int i, pair_sums s, float cp, float cv)
 {
     const float ri = v->inv_rho[i];
     s.d -= ri * v->K.h; /* the list holds the particle itself: not a neighbour */
