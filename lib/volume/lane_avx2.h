@@ -156,9 +156,9 @@ MS_LANE_FN void records8x8(const float *pk, const int *restrict j, __m256 *o)
         o[q + 4] = _mm256_permute2f128_ps(s[q], s[q + 4], 0x31);
     }
 }
-MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
-                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
-                                    ms_lane *o6, ms_lane *o7)
+MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                 ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5, ms_lane *o6,
+                                 ms_lane *o7)
 {
     for (int k = 0; k < 2; ++k) {
         __m256 o[8];
@@ -179,7 +179,7 @@ MS_LANE_FN __m256 quad_pair(const float *b, int lo, int hi)
                                 _mm_loadu_ps(b + 8 * (size_t)hi), 1);
 }
 MS_LANE_FN void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
-                                    ms_lane *o2, ms_lane *o3)
+                                 ms_lane *o2, ms_lane *o3)
 {
     for (int k = 0; k < 2; ++k) {
         const int *jj = j + 8 * k;

@@ -147,9 +147,9 @@ MS_LANE_FN __m512 record_pair(const float *pk, int lo, int hi)
         s3 = _mm512_shuffle_ps(t1_, t3_, 0xee);                                          \
     } while (0)
 
-MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
-                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
-                                    ms_lane *o6, ms_lane *o7)
+MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                 ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5, ms_lane *o6,
+                                 ms_lane *o7)
 {
     const __m512 a0 = record_pair(pk, j[0], j[4]), a1 = record_pair(pk, j[1], j[5]);
     const __m512 a2 = record_pair(pk, j[2], j[6]), a3 = record_pair(pk, j[3], j[7]);
@@ -179,7 +179,7 @@ MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane
             MS_LANE_QUAD((k) + 8), 2),                                                             \
         MS_LANE_QUAD((k) + 12), 3)
 MS_LANE_FN void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
-                                    ms_lane *o2, ms_lane *o3)
+                                 ms_lane *o2, ms_lane *o3)
 {
     const __m512 a0 = MS_LANE_ROW(0), a1 = MS_LANE_ROW(1), a2 = MS_LANE_ROW(2), a3 = MS_LANE_ROW(3);
     MS_LANE_TRANSPOSE4(a0, a1, a2, a3, o0->z, o1->z, o2->z, o3->z);

@@ -126,9 +126,9 @@ MS_LANE_FN ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
         r_.m[l] = p[l] & bit ? -1 : 0;
     return r_;
 }
-MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
-                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
-                                    ms_lane *o6, ms_lane *o7)
+MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                 ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5, ms_lane *o6,
+                                 ms_lane *o7)
 {
     for (int l = 0; l < 16; ++l) {
         const float *r = pk + 8 * (size_t)j[l];
@@ -143,7 +143,7 @@ MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane
     }
 }
 MS_LANE_FN void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
-                                    ms_lane *o2, ms_lane *o3)
+                                 ms_lane *o2, ms_lane *o3)
 {
     for (int l = 0; l < 16; ++l) {
         const float *r = b + 8 * (size_t)j[l];

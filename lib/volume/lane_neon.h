@@ -126,7 +126,7 @@ MS_LANE_FN ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
 }
 /* Four records' quads b[8 j + 0..3] as four lanes of four. */
 MS_LANE_FN void quads4(const float *b, const int *restrict j, float32x4_t *o0, float32x4_t *o1,
-                          float32x4_t *o2, float32x4_t *o3)
+                       float32x4_t *o2, float32x4_t *o3)
 {
     const float32x4_t a0 = vld1q_f32(b + 8 * (size_t)j[0]), a1 = vld1q_f32(b + 8 * (size_t)j[1]);
     const float32x4_t a2 = vld1q_f32(b + 8 * (size_t)j[2]), a3 = vld1q_f32(b + 8 * (size_t)j[3]);
@@ -136,9 +136,9 @@ MS_LANE_FN void quads4(const float *b, const int *restrict j, float32x4_t *o0, f
     *o2 = vcombine_f32(vget_high_f32(t01.val[0]), vget_high_f32(t23.val[0]));
     *o3 = vcombine_f32(vget_high_f32(t01.val[1]), vget_high_f32(t23.val[1]));
 }
-MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
-                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
-                                    ms_lane *o6, ms_lane *o7)
+MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                 ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5, ms_lane *o6,
+                                 ms_lane *o7)
 {
     for (int k = 0; k < 4; ++k) {
         quads4(pk, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
@@ -146,7 +146,7 @@ MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane
     }
 }
 MS_LANE_FN void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
-                                    ms_lane *o2, ms_lane *o3)
+                                 ms_lane *o2, ms_lane *o3)
 {
     for (int k = 0; k < 4; ++k)
         quads4(b, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);

@@ -133,7 +133,7 @@ MS_LANE_FN ms_lmask ms_lane_test_bit(const int32_t *p, int32_t bit)
 /* Four records' quads b[8 j + 0..3] as four lanes of four: a 4 x 4
  * transpose. */
 MS_LANE_FN void quads4(const float *b, const int *restrict j, __m128 *o0, __m128 *o1, __m128 *o2,
-                          __m128 *o3)
+                       __m128 *o3)
 {
     __m128 a0 = _mm_loadu_ps(b + 8 * (size_t)j[0]), a1 = _mm_loadu_ps(b + 8 * (size_t)j[1]);
     __m128 a2 = _mm_loadu_ps(b + 8 * (size_t)j[2]), a3 = _mm_loadu_ps(b + 8 * (size_t)j[3]);
@@ -143,9 +143,9 @@ MS_LANE_FN void quads4(const float *b, const int *restrict j, __m128 *o0, __m128
     *o2 = a2;
     *o3 = a3;
 }
-MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0,
-                                    ms_lane *o1, ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5,
-                                    ms_lane *o6, ms_lane *o7)
+MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane *o0, ms_lane *o1,
+                                 ms_lane *o2, ms_lane *o3, ms_lane *o4, ms_lane *o5, ms_lane *o6,
+                                 ms_lane *o7)
 {
     for (int k = 0; k < 4; ++k) {
         quads4(pk, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);
@@ -153,7 +153,7 @@ MS_LANE_FN void ms_lane_records8(const float *pk, const int *restrict j, ms_lane
     }
 }
 MS_LANE_FN void ms_lane_records4(const float *b, const int *restrict j, ms_lane *o0, ms_lane *o1,
-                                    ms_lane *o2, ms_lane *o3)
+                                 ms_lane *o2, ms_lane *o3)
 {
     for (int k = 0; k < 4; ++k)
         quads4(b, j + 4 * k, &o0->q[k], &o1->q[k], &o2->q[k], &o3->q[k]);

@@ -58,7 +58,8 @@ _Static_assert(MS_LANES == MS_VOLUME_LANES, "the lists are padded to the lane wi
  * its coincident real pairs (r^2 < eps^2). The kernel is a constant at
  * each call site (inlined twice: the choice stays outside the loops). */
 static inline PASS_INLINE float weight_runs(const ms_volume *v, const float *restrict r2, int n,
-                                const float *restrict g2, int gn, int *coincident, int poly6)
+                                            const float *restrict g2, int gn, int *coincident,
+                                            int poly6)
 {
     const ms_lane h = ms_lane_set1(v->K.h), h2 = ms_lane_set1(v->K.h2);
     const ms_lane eps2 = ms_lane_set1(v->eps2);
@@ -84,8 +85,8 @@ typedef struct part_counts {
 } part_counts;
 
 /* Particle i's density sum from its lists (built), rho = m W sum. */
-static inline PASS_INLINE void weigh(ms_volume *v, const ms_nlist *L, const ms_nlist *G, int i, float mw,
-                         int poly6, part_counts *c)
+static inline PASS_INLINE void weigh(ms_volume *v, const ms_nlist *L, const ms_nlist *G, int i,
+                                     float mw, int poly6, part_counts *c)
 {
     const int nreal = v->nl_count[i], nghost = v->gl_count[i];
     const int n = (nreal + LANES - 1) / LANES * LANES, gn = (nghost + LANES - 1) / LANES * LANES;
@@ -198,7 +199,8 @@ static inline int padded(int n)
 
 /* An image's position p and velocity u along axis q: reflected (2 wall -
  * p, a sign flip of u) in the lanes whose image bits have bit q. */
-static inline PASS_INLINE void reflect_axis(const int32_t *gidx, int q, float wall, ms_lane *p, ms_lane *u)
+static inline PASS_INLINE void reflect_axis(const int32_t *gidx, int q, float wall, ms_lane *p,
+                                            ms_lane *u)
 {
     const ms_lmask m = ms_lane_test_bit(gidx, (int32_t)1 << (MS_VOLUME_IMAGE_SHIFT + q));
     *p = ms_lane_select(m, ms_lane_sub(ms_lane_set1(2.0f * wall), *p), *p);
@@ -208,8 +210,8 @@ static inline PASS_INLINE void reflect_axis(const int32_t *gidx, int q, float wa
 /* The wall-image terms of entries [0, 16) of gidx/gr2 (no shape images),
  * added to the lanes a (entry l to lane l). */
 static inline PASS_INLINE void image_terms(const ms_volume *v, const int *restrict gidx,
-                               const float *restrict gr2, int i, const float wall[3], int pressure,
-                               lanes7 *a)
+                                           const float *restrict gr2, int i, const float wall[3],
+                                           int pressure, lanes7 *a)
 {
     const float *pi8 = v->pk + 8 * (size_t)i;
     const ms_lane h = ms_lane_set1(v->K.h), eps = ms_lane_set1(sqrtf(v->eps2));
@@ -252,9 +254,9 @@ static inline PASS_INLINE void image_terms(const ms_volume *v, const int *restri
  * pass's only division, and the real neighbours' loop loads the records'
  * velocity halves alone. */
 static inline PASS_INLINE pair_sums sums_of(const ms_volume *v, const int *restrict idx,
-                                const float *restrict r2s, int n, int i, const int *restrict gidx,
-                                const float *restrict gr2, int gn, const float wall[3],
-                                pair_lanes *out)
+                                            const float *restrict r2s, int n, int i,
+                                            const int *restrict gidx, const float *restrict gr2,
+                                            int gn, const float wall[3], pair_lanes *out)
 {
     const int pressure = v->desc.pressure != MS_PRESSURE_DFSPH;
     const float *pi8 = v->pk + 8 * (size_t)i;
