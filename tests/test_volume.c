@@ -19,6 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
 
 #include "modesplit/modesplit.h"
 #include "support.h"
@@ -1316,6 +1317,41 @@ START_TEST(modesplit_isa_forces_a_path_or_is_refused)
 }
 END_TEST
 
+/* `modesplit info --build` prints the compiler, the paths built and this
+ * CPU's, and the one chosen; a MODESPLIT_ISA this CPU lacks is refused
+ * (exit 2) with the sentence naming the paths it has. */
+START_TEST(info_build_prints_the_paths_and_the_choice)
+{
+    char dir[512], out[600], err[600];
+    ck_assert_int_eq(ms_test_tmp_dir(dir, sizeof dir, "info_build"), 0);
+    snprintf(out, sizeof out, "%s/out.txt", dir);
+    snprintf(err, sizeof err, "%s/err.txt", dir);
+    const char *const args[] = {"info", "--build", NULL};
+    ck_assert_int_eq(setenv("MODESPLIT_ISA", "c", 1), 0);
+    int st = ms_test_run_tool(args, out, err);
+    ck_assert(WIFEXITED(st) && WEXITSTATUS(st) == 0);
+    char *o = ms_test_slurp(out);
+    ck_assert_msg(strstr(o, "compiler") && strstr(o, "chosen    c (MODESPLIT_ISA)") &&
+                      strstr(o, "(this CPU)"),
+                  "%s", o);
+    free(o);
+    int lacking = -1;
+    for (int isa = MS_VOLUME_ISA_C; isa < MS_VOLUME_ISA_COUNT; ++isa)
+        if (!ms_volume_isa_runs(isa))
+            lacking = isa;
+    if (lacking >= 0) { /* NEON on x86-64, SSE2 on aarch64 */
+        ck_assert_int_eq(setenv("MODESPLIT_ISA", ms_volume_isa_name(lacking), 1), 0);
+        st = ms_test_run_tool(args, out, err);
+        ck_assert(WIFEXITED(st) && WEXITSTATUS(st) == 2);
+        char *e = ms_test_slurp(err);
+        ck_assert_msg(strstr(e, "not a path this CPU runs") && strstr(e, "it has: c"), "%s", e);
+        free(e);
+    }
+    ck_assert_int_eq(unsetenv("MODESPLIT_ISA"), 0);
+    ms_test_remove_tree(dir);
+}
+END_TEST
+
 /* ---- the passes against a double-precision reference ----
  *
  * Density (eq. 9, spiky kernel of eq. 11), the law's pressure, and the
@@ -2030,6 +2066,7 @@ static Suite *volume_suite(void)
     tcase_add_test(hard, one_and_two_threads_give_the_same_bytes);
     tcase_add_test(hard, every_instruction_set_path_gives_the_same_bytes);
     tcase_add_test(hard, modesplit_isa_forces_a_path_or_is_refused);
+    tcase_add_test(hard, info_build_prints_the_paths_and_the_choice);
     tcase_add_test(hard, every_path_matches_a_double_precision_reference);
     tcase_add_test(hard, every_instruction_set_path_gives_the_same_bytes_with_poly6_and_a_shape);
     tcase_add_test(hard, dfsph_gives_the_same_bytes_for_threads_and_instruction_sets);

@@ -2,7 +2,14 @@
  * Gross 2003). Internal, never installed.
  *
  * Files, one job each:
- *   kernels.h    the smoothing kernels of eqs. 9, 11, 12 (poly6, spiky, viscosity)
+ *   kernels.h    the smoothing kernels of eqs. 9, 11, 12 (poly6, spiky, viscosity),
+ *                scalar and over lanes: the one place that spells them
+ *   lane.h       the lane type (16 floats) and its implementations per
+ *                instruction set, lane_<isa>.h: the same bits on each
+ *   passes.c     the density, force and DFSPH passes written once over it,
+ *                compiled per instruction set (passes_<isa>.c); passes.h
+ *                their table, isa.c the choice of path (MODESPLIT_ISA)
+ *   law.h        the equations of state, scalar and over lanes
  *   desc.c       ms_volume_desc defaults and validation
  *   volume.c     the handle: create, particles in and out, info
  *   pool.c       the worker threads of a step (static split, same bytes for any count)
@@ -13,7 +20,8 @@
  *   collide.c    the collider force field (eq. 15), the domain box, no tunnelling
  *   step.c       ms_volume_step: time-step bounds, sub-steps, symplectic Euler
  *   dfsph.c      MS_PRESSURE_DFSPH: the divergence-free and constant-density
- *                solves of Bender & Koschier 2015/2017
+ *                solves of Bender & Koschier 2015/2017 (their pair loops in
+ *                passes.c, the shared pieces in dfsph_pass.h)
  *   interact.c   drag, push, remove, viscosity change, coupling from the waves
  *   extract.c    height field: eq. 16-17 iso-surface, eq. 18 adaptive smoothing
  *
