@@ -76,8 +76,17 @@ LDSAN     := -fsanitize=thread
 endif
 ALL_CFLAGS := $(BASEFLAGS) $(CFLAGS) $(PKG_CFLAGS)
 # lib/volume: the SPH pair loops need sqrtf without errno to vectorise (the
-# results are the same bytes: IEEE sqrt is exact either way).
-$(BUILD)/obj/lib/volume/%.o: ALL_CFLAGS += -fno-math-errno
+# results are the same bytes: IEEE sqrt is exact either way), and no fused
+# multiply-add anywhere (clang contracts a * b + c by default), so every
+# instruction-set path gives the same bits.
+$(BUILD)/obj/lib/volume/%.o: ALL_CFLAGS += -fno-math-errno -ffp-contract=off
+# The lane passes once per instruction set (lib/volume/passes.h), each
+# file with its own flags: every x86-64 path with gcc and clang alike.
+# No -mfma: the paths must not differ by a rounding.
+ifneq ($(filter x86_64%,$(shell $(CC) -dumpmachine)),)
+$(BUILD)/obj/lib/volume/passes_avx2.o: ALL_CFLAGS += -mavx2
+$(BUILD)/obj/lib/volume/passes_avx512.o: ALL_CFLAGS += -mavx512f -mavx512dq -mbmi -mbmi2 -mpopcnt
+endif
 SYS_LIBS   := $(PKG_LIBS) -ldl -lpthread -lm
 
 LIB_SRC := $(wildcard lib/*/*.c)

@@ -294,6 +294,22 @@ MS_API ms_status ms_volume_particle_views(const ms_volume *v, int *n, const floa
 MS_API ms_status ms_volume_particles(ms_volume *v, int *n, const float *pos[3],
                                      const float *vel[3]);
 
+/* What this build of the library is: its compiler, the instruction-set
+ * paths of the volume's passes built in and the ones this CPU runs (names
+ * from c, sse2, avx2, avx512, neon, space-separated, narrowest first;
+ * every path gives the same bytes), and the one a new volume takes: the
+ * widest, or the one the environment variable MODESPLIT_ISA names. A
+ * MODESPLIT_ISA that names no path or one this CPU lacks makes this call
+ * (and ms_volume_create) fail with a sentence naming the paths it has;
+ * path_chosen is then NULL. The strings are the library's (static). */
+typedef struct ms_build_info {
+    const char *compiler;
+    const char *paths_built;
+    const char *paths_cpu;
+    const char *path_chosen;
+} ms_build_info;
+MS_API ms_status ms_get_build_info(ms_build_info *out);
+
 #ifdef __cplusplus
 }
 #endif

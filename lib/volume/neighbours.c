@@ -355,26 +355,6 @@ static filter_fn *filter_of(int isa)
     return filter_rows_c;
 }
 
-int ms_volume_pick_isa(void)
-{
-#if MS_VOLUME_HAVE_AVX512
-    __builtin_cpu_init();
-    /* every extension the AVX-512 paths are built with (their target
-     * attributes: neighbours.c, forces.c's avx512dq, extract.c's popcnt):
-     * a CPU with AVX-512F but not DQ (Knights Landing) takes SSE2 rather
-     * than an illegal instruction */
-    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-        __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2") &&
-        __builtin_cpu_supports("popcnt"))
-        return MS_VOLUME_ISA_AVX512;
-#endif
-#if defined(__SSE2__)
-    return MS_VOLUME_ISA_SSE2;
-#else
-    return MS_VOLUME_ISA_C;
-#endif
-}
-
 /* The nine row ranges (x-1 .. x+1) of the 27 cells around cell c, and
  * how many candidates they hold. */
 

@@ -93,7 +93,11 @@ ms_status ms_volume_create(const ms_volume_desc *d, ms_volume **out)
         ms_volume_destroy(v);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "volume: out of memory for %ld grid cells", v->ncells);
     }
-    v->isa = ms_volume_pick_isa();
+    st = ms_volume_choose_isa(&v->isa);
+    if (st != MS_OK) {
+        ms_volume_destroy(v);
+        return st;
+    }
     st = ms_vpool_create(d->threads, &v->pool);
     if (st != MS_OK) {
         ms_volume_destroy(v);

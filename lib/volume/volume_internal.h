@@ -2,7 +2,14 @@
  * Gross 2003). Internal, never installed.
  *
  * Files, one job each:
- *   kernels.h    the smoothing kernels of eqs. 9, 11, 12 (poly6, spiky, viscosity)
+ *   kernels.h    the smoothing kernels of eqs. 9, 11, 12 (poly6, spiky, viscosity),
+ *                scalar and over lanes: the one place that spells them
+ *   lane.h       the lane type (16 floats) and its implementations per
+ *                instruction set, lane_<isa>.h: the same bits on each
+ *   passes.c     the density, force and DFSPH passes written once over it,
+ *                compiled per instruction set (passes_<isa>.c); passes.h
+ *                their table, isa.c the choice of path (MODESPLIT_ISA)
+ *   law.h        the equations of state, scalar and over lanes
  *   desc.c       ms_volume_desc defaults and validation
  *   volume.c     the handle: create, particles in and out, info
  *   pool.c       the worker threads of a step (static split, same bytes for any count)
@@ -13,7 +20,8 @@
  *   collide.c    the collider force field (eq. 15), the domain box, no tunnelling
  *   step.c       ms_volume_step: time-step bounds, sub-steps, symplectic Euler
  *   dfsph.c      MS_PRESSURE_DFSPH: the divergence-free and constant-density
- *                solves of Bender & Koschier 2015/2017
+ *                solves of Bender & Koschier 2015/2017 (their pair loops in
+ *                passes.c, the shared pieces in dfsph_pass.h)
  *   interact.c   drag, push, remove, viscosity change, coupling from the waves
  *   extract.c    height field: eq. 16-17 iso-surface, eq. 18 adaptive smoothing
  *
@@ -45,15 +53,24 @@
  * a block may read past the last particle (those lanes are masked). */
 #define MS_VOLUME_LANES 16
 
-/* Instruction sets of the neighbour filter (neighbours.c), picked at run time
- * (the same lists on each). The AVX-512 version needs GCC's target
- * attribute and __builtin_cpu_supports; TSan builds stay on SSE2. */
+/* The hand-written AVX-512 code still outside the lane passes (passes.c)
+ * needs GCC's target attribute; TSan builds stay on SSE2. */
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__)
 #define MS_VOLUME_HAVE_AVX512 1
 #else
 #define MS_VOLUME_HAVE_AVX512 0
 #endif
-enum { MS_VOLUME_ISA_C = 0, MS_VOLUME_ISA_SSE2 = 1, MS_VOLUME_ISA_AVX512 = 2 };
+/* The instruction-set paths (v->isa), in order of width on each target:
+ * the lane passes' tables (passes.h) and the neighbour filter. Every
+ * path gives the same bytes. */
+enum {
+    MS_VOLUME_ISA_C = 0,
+    MS_VOLUME_ISA_SSE2 = 1,
+    MS_VOLUME_ISA_AVX2 = 2,
+    MS_VOLUME_ISA_AVX512 = 3,
+    MS_VOLUME_ISA_NEON = 4,
+    MS_VOLUME_ISA_COUNT = 5
+};
 
 /* The sum of MS_VOLUME_LANES lane accumulators in one fixed tree order,
  * (l, l+8), then (l, l+4), (l, l+2), (0, 1): what the AVX-512 code does
@@ -222,7 +239,7 @@ struct ms_volume {
     size_t ex_start_cap, ex_list_cap;
     ms_extract_work ex_verify; /* its repairs' scratch (start, list, buf unused) */
 
-    int isa; /* MS_VOLUME_ISA_* of the neighbour filter */
+    int isa; /* MS_VOLUME_ISA_*: the lane passes' table, the neighbour filter */
     ms_vpool *pool;
     ms_nlist lists[MS_VOLUME_MAX_THREADS], ghosts[MS_VOLUME_MAX_THREADS];
     int list_failed[MS_VOLUME_MAX_THREADS];
@@ -375,7 +392,7 @@ static inline long ms_volume_cell_of(const ms_volume *v, float x, float y, float
  * neighbours and images appended to its part's lists (nl_*, gl_*), with
  * the rows of its cell in own (kept while the cell stays the same) and, on
  * the AVX-512 path, *ncand candidates copied; -1 if a list could not grow.
- * The best neighbour filter this CPU runs is ms_volume_pick_isa. */
+ * The path of the filter is v->isa (ms_volume_choose_isa). */
 typedef struct ms_rows {
     long cell;
     int lo[9], hi[9];
@@ -394,8 +411,16 @@ ms_status ms_volume_reserve_waves(ms_volume *v, size_t cells);
 ms_status ms_volume_density(ms_volume *v);
 /* Pressure of a density (the equation of state of desc.pressure). */
 float ms_volume_pressure(const ms_volume *v, float rho);
-/* The best neighbour filter this CPU runs (MS_VOLUME_ISA_*). */
+/* The widest path (MS_VOLUME_ISA_*) this build and CPU run (isa.c). */
 int ms_volume_pick_isa(void);
+/* Whether this build has path isa and this CPU runs it. */
+int ms_volume_isa_runs(int isa);
+/* "c", "sse2", "avx2", "avx512", "neon". */
+const char *ms_volume_isa_name(int isa);
+/* The path a new volume takes: MODESPLIT_ISA's, else the widest; fails
+ * with a sentence naming this CPU's paths when the variable names none
+ * of them. */
+ms_status ms_volume_choose_isa(int *out);
 /* The boundary terms and a density pass at the current positions
  * (extraction and coupling between steps); marks the pass ready for the
  * next step (pass_ready). */

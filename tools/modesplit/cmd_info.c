@@ -1,4 +1,5 @@
-/* modesplit info [--scene] RUN.h5: what a run file holds. */
+/* modesplit info [--scene] RUN.h5: what a run file holds.
+ * modesplit info --build: what this build of the library is. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,6 +51,25 @@ static void field_line(ms_reader *r, unsigned bit, const char *name, long frames
     printf("\n");
 }
 
+/* The compiler, the volume's instruction-set paths built and run here,
+ * and the one a volume takes (ms_get_build_info). */
+static int build_info(void)
+{
+    ms_build_info b;
+    ms_status st = ms_get_build_info(&b);
+    printf("library   %s\n", ms_version());
+    printf("compiler  %s\n", b.compiler);
+    printf("paths     %s (built)\n", b.paths_built);
+    printf("          %s (this CPU)\n", b.paths_cpu);
+    if (st != MS_OK) {
+        tool_error("%s", ms_last_error());
+        return EXIT_USAGE;
+    }
+    printf("chosen    %s%s\n", b.path_chosen,
+           getenv("MODESPLIT_ISA") && *getenv("MODESPLIT_ISA") ? " (MODESPLIT_ISA)" : " (widest)");
+    return EXIT_OK;
+}
+
 int cmd_info(int argc, char **argv)
 {
     const char *path = NULL;
@@ -59,7 +79,9 @@ int cmd_info(int argc, char **argv)
             tool_command_usage(stdout, "info");
             return EXIT_OK;
         }
-        if (!strcmp(argv[i], "--scene")) {
+        if (!strcmp(argv[i], "--build")) {
+            return build_info();
+        } else if (!strcmp(argv[i], "--scene")) {
             scene_only = 1;
         } else if (argv[i][0] == '-' && argv[i][1]) {
             tool_unknown_option("info", argv[i]);

@@ -48,6 +48,8 @@ static const char usage_text[] =
     "                             (checked as the file is; listed in the stored scene)\n"
     "  info [--scene] RUN.h5      what a run file holds: scene, frames, fields, sizes;\n"
     "                             --scene prints the scene JSON stored in it instead\n"
+    "  info --build               the compiler, the SIMD paths built and this CPU's, the\n"
+    "                             one chosen (MODESPLIT_ISA=c|sse2|avx2|avx512|neon)\n"
     "  check SCENE.json... [--set KEY=VALUE]...\n"
     "                             validate scene files without running them\n"
     "  plugins                    the shape and shader plugins found, and where from\n"
