@@ -545,7 +545,6 @@ START_TEST(scene_gives_the_parts_descs)
     ck_assert_float_eq(in.spacing, 0.05f);
     ck_assert_int_eq(in.surface_nx, 200);
     ms_sim_destroy(sim);
-    ms_scene_destroy(sc);
     /* the renderer's: its pool is the domain, the still water the level */
     ms_renderer_desc rd = ms_renderer_desc_default();
     ck_assert_int_eq(ms_scene_renderer_desc(sc, &rd), MS_OK);
@@ -553,6 +552,7 @@ START_TEST(scene_gives_the_parts_descs)
     ck_assert_float_eq_tol(rd.water_level, sc->level, 1e-7f);
     ck_assert_int_eq(rd.caustics, 0); /* no render section: no caustics */
     ck_assert_int_eq(ms_renderer_desc_check(&rd), MS_OK);
+    ms_scene_destroy(sc);
     /* a section the scene lacks */
     sc = parse_ok("{\"surface\": {}}");
     MS_ASSERT_REFUSED(ms_scene_volume_desc(sc, &v), MS_ERR_STATE, "has no \"volume\" section");
