@@ -1013,9 +1013,13 @@ static void quiet_waves(const char *path, double seconds, double *rms_w, double 
 START_TEST(a_moving_edge_of_the_liquid_makes_no_speckle)
 {
     double w, lap;
-    quiet_waves("data/scenes/glass.json", 20.0, &w, &lap);
+    /* one thread: under a sanitizer (10-40x slower) the first seconds, in
+     * which the glass has moved and the paddle turned */
+    const char *san = getenv("MS_TEST_SAN");
+    const double scale = san && san[0] ? 0.2 : 1.0;
+    quiet_waves("data/scenes/glass.json", 20.0 * scale, &w, &lap);
     ck_assert_msg(w < 1e-3 && lap < 1.7e-3, "glass: W rms %.3g m, Laplacian rms %.3g m", w, lap);
-    quiet_waves("data/scenes/stir.json", 10.0, &w, &lap);
+    quiet_waves("data/scenes/stir.json", 10.0 * scale, &w, &lap);
     ck_assert_msg(w < 1.3e-3 && lap < 6e-4, "stir: W rms %.3g m, Laplacian rms %.3g m", w, lap);
 }
 END_TEST
