@@ -46,12 +46,22 @@ def fail(code, msg):
     sys.exit(code)
 
 
-try:
-    import h5py
-    import numpy as np
-except ImportError as e:  # the tool's sentence, not a traceback
-    fail(1, f"this Python ({sys.executable}) lacks {e.name or 'numpy or h5py'}, which the "
-            f"export needs: {INSTALL} (or set MODESPLIT_PYTHON to a Python that has them)")
+def _needed():
+    """numpy and h5py, or the tool's sentence instead of a traceback (a
+    function: a module-level `except ... as e` leaves a name that Python
+    deletes, and stubtest then finds in the module's types but not at run
+    time)."""
+    try:
+        import h5py
+        import numpy
+    except ImportError as missing:
+        fail(1, f"this Python ({sys.executable}) lacks {missing.name or 'numpy or h5py'}, "
+                f"which the export needs: {INSTALL} (or set MODESPLIT_PYTHON to a Python "
+                f"that has them)")
+    return h5py, numpy
+
+
+h5py, np = _needed()
 
 
 def text(v):
