@@ -2,7 +2,9 @@
  * current U travels at c + U, a fixed-frequency source's wavelength is
  * Doppler-shifted to 2 pi (c +- U) / omega down- and upstream, a current
  * of zero changes no byte, shear damps at kappa |S|, and bad values are
- * refused with the value and the bound. */
+ * refused with the value and the bound. In a sim (surface.advect): a
+ * scene that does not ask pays no byte and no step and keeps its bytes,
+ * and a pool at rest with the effect on stays at rest. */
 #include <check.h>
 #include <math.h>
 #include <stdio.h>
@@ -11,6 +13,7 @@
 
 #include "modesplit/modesplit.h"
 #include "support.h"
+#include "surface/surface_internal.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -326,6 +329,143 @@ START_TEST(bad_currents_and_descs_are_refused)
 }
 END_TEST
 
+/* ---- in a sim: surface.advect ------------------------------------------------ */
+
+static ms_scene *scene(const char *text)
+{
+    ms_scene *sc = NULL;
+    ms_status st = ms_scene_parse(text, strlen(text), &sc);
+    ck_assert_msg(st == MS_OK, "%s", ms_last_error());
+    return sc;
+}
+
+static ms_sim *sim_of(const ms_scene *sc, int threads)
+{
+    ms_sim *sim = NULL;
+    ck_assert_msg(ms_sim_create_from_scene(sc, threads, &sim) == MS_OK, "%s", ms_last_error());
+    return sim;
+}
+
+static void steps(ms_sim *sim, int n)
+{
+    for (int i = 0; i < n; ++i)
+        ck_assert_msg(ms_sim_step(sim, 1.0f / 60) == MS_OK, "frame %d: %s", i, ms_last_error());
+}
+
+#define POOL                                                                                \
+    "{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.3]},"                          \
+    " \"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.2, 0.4, " \
+    "0.12]}], \"field\": [16, 16]},"                                                        \
+    " \"coupling\": {\"surface_from_volume\": 0.05, \"volume_from_surface\": 0.3},"         \
+    " \"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.9%s}}"
+
+/* A scene that does not name surface.advect, or sets it false, pays no
+ * byte and no step and gives the same bytes; with it the sim holds exactly
+ * the flow, its averaging, the current on the wave grid and the surface's
+ * five planes, takes the same wave steps, and the dam break's flow moves
+ * the waves. */
+START_TEST(absent_advect_costs_nothing)
+{
+    char text[1024];
+    ms_scene *sc[3];
+    static const char *const extra[] = {"", ", \"advect\": false", ", \"advect\": true"};
+    ms_sim *sim[3];
+    ms_stats st[3];
+    for (int k = 0; k < 3; ++k) {
+        snprintf(text, sizeof text, POOL, extra[k]);
+        sc[k] = scene(text);
+        sim[k] = sim_of(sc[k], 1);
+        steps(sim[k], 30);
+        st[k] = ms_stats_init();
+        ms_sim_get_stats(sim[k], &st[k]);
+    }
+    int nx, ny;
+    const size_t ns = 64 * 64, nf = 16 * 16;
+    const float *h0 = ms_sim_height(sim[0], &nx, &ny);
+    ck_assert(memcmp(h0, ms_sim_height(sim[1], NULL, NULL), ns * sizeof(float)) == 0);
+    ck_assert(memcmp(h0, ms_sim_height(sim[2], NULL, NULL), ns * sizeof(float)) != 0);
+    ck_assert_uint_eq(st[0].bytes, st[1].bytes);
+    ck_assert_uint_eq(st[0].effects_bytes, 0);
+    ck_assert_uint_eq(st[1].effects_bytes, 0);
+    ck_assert_int_eq(st[0].surface_steps, st[1].surface_steps);
+    ck_assert_int_eq(st[0].surface_steps, st[2].surface_steps);
+    /* the flow (2 slots of vx, vy per field cell, a count per cell), its
+     * averaging (4 per cell) and ux, uy per wave cell */
+    ck_assert_uint_eq(st[2].effects_bytes, (9 * nf + 2 * ns) * sizeof(float));
+    const ms_surface *s = ms_sim_surface(sim[2]);
+    ck_assert_uint_eq(st[2].surface_bytes - st[0].surface_bytes, 5 * s->plane * sizeof(float));
+    for (int k = 0; k < 3; ++k) {
+        ms_sim_destroy(sim[k]);
+        ms_scene_destroy(sc[k]);
+    }
+    /* without a volume there is no flow to carry the waves */
+    const char *dry = "{\"surface\": {\"cells\": [8, 8], \"advect\": true}}";
+    ms_scene *bad = NULL;
+    ck_assert_int_eq(ms_scene_parse(dry, strlen(dry), &bad), MS_ERR_INVALID_ARGUMENT);
+    ck_assert_msg(strstr(ms_last_error(), "surface.advect") && strstr(ms_last_error(), "volume"),
+                  "%s", ms_last_error());
+}
+END_TEST
+
+/* A pool at rest with surface.advect stays at rest: the still pool of the
+ * stability suite (2000 particles, 50 x 50 field, 200 x 200 waves, both
+ * couplings) for 30 s, with the bounds of its 10-minute run checked each
+ * second after the lattice settles (3 s): no cell under 0.9 of the
+ * settled level, the mean within 1 %, spread under 10 mm; and the waves
+ * no rougher than without the effect (their rms within 20 % of it, or
+ * under 0.1 mm). */
+START_TEST(pool_at_rest_with_advect_stays_at_rest)
+{
+    static const char pool[] =
+        "{\"frame_dt\": 0.016667,"
+        " \"domain\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0.5]},"
+        " \"volume\": {\"spacing\": 0.05, \"gas_constant\": 100, \"viscosity\": 0.5,"
+        "   \"fill\": [{\"min\": [0, 0, 0], \"max\": [1, 1, 0.25]}], \"field\": [50, 50]},"
+        " \"surface\": {\"cells\": [200, 200], \"wave_speed\": 0.2, \"damping\": 0.8%s},"
+        " \"coupling\": {\"n_time\": 0, \"surface_from_volume\": 0.05,"
+        "   \"volume_from_surface\": 0.3}}";
+    char text[1024];
+    double rms[2] = {0, 0};
+    for (int k = 0; k < 2; ++k) {
+        snprintf(text, sizeof text, pool, k ? ", \"advect\": true" : "");
+        ms_scene *sc = scene(text);
+        ms_sim *sim = sim_of(sc, 1);
+        double level = 0;
+        for (int sec = 1; sec <= 30; ++sec) {
+            steps(sim, 60);
+            int nx, ny;
+            const float *h = ms_sim_height(sim, &nx, &ny);
+            double lo = 1e9, hi = -1e9, mean = 0;
+            for (int i = 0; i < nx * ny; ++i) {
+                lo = fmin(lo, h[i]);
+                hi = fmax(hi, h[i]);
+                mean += h[i] / (double)(nx * ny);
+            }
+            if (sec < 3)
+                continue;
+            if (sec == 3)
+                level = mean;
+            ck_assert_msg(lo >= 0.9 * level && fabs(mean - level) <= 0.01 * level &&
+                              hi - lo <= 0.010,
+                          "advect %d, t = %d s: lowest %.4f m, mean %.4f m, spread %.4f m "
+                          "(settled level %.4f m)",
+                          k, sec, lo, mean, hi - lo, level);
+            const float *w = ms_sim_surface_height(sim, &nx, &ny);
+            double r = 0;
+            for (int i = 0; i < nx * ny; ++i)
+                r += (double)w[i] * w[i] / (double)(nx * ny);
+            rms[k] = fmax(rms[k], sqrt(r));
+        }
+        ms_sim_destroy(sim);
+        ms_scene_destroy(sc);
+    }
+    printf("still pool, 30 s: the waves' highest rms %.3g m with advect, %.3g m without\n", rms[1],
+           rms[0]);
+    ck_assert_msg(rms[1] <= fmax(1.2 * rms[0], 1e-4),
+                  "the waves' highest rms: %.3g m with advect, %.3g m without", rms[1], rms[0]);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("current");
@@ -341,5 +481,10 @@ int main(void)
     tcase_add_test(still, still_water_on_a_current_stays_still);
     tcase_add_test(still, bad_currents_and_descs_are_refused);
     suite_add_tcase(s, still);
+    TCase *sim = tcase_create("sim");
+    tcase_set_timeout(sim, 300);
+    tcase_add_test(sim, absent_advect_costs_nothing);
+    tcase_add_test(sim, pool_at_rest_with_advect_stays_at_rest);
+    suite_add_tcase(s, sim);
     return ms_test_run(s);
 }
