@@ -466,6 +466,39 @@ START_TEST(pool_at_rest_with_advect_stays_at_rest)
 }
 END_TEST
 
+/* The river (surface.advect) gives the same bytes with 1 and 2 threads,
+ * and a sim restored from a snapshot taken at frame 20 continues to the
+ * same bytes as one never stopped (the flow the current comes from is in
+ * the snapshot). */
+START_TEST(river_same_bytes_threads_and_resume)
+{
+    ms_scene *sc = NULL;
+    ck_assert_msg(ms_scene_load("data/scenes/river.json", &sc) == MS_OK, "%s", ms_last_error());
+    ms_sim *one = sim_of(sc, 1), *two = sim_of(sc, 2), *back = sim_of(sc, 1);
+    steps(one, 20);
+    steps(two, 20);
+    size_t size = 0, wrote = 0;
+    ck_assert(ms_sim_snapshot_size(one, &size) == MS_OK);
+    void *buf = malloc(size);
+    ck_assert(ms_sim_snapshot(one, buf, size, &wrote) == MS_OK);
+    ck_assert_msg(ms_sim_restore(back, buf, wrote) == MS_OK, "%s", ms_last_error());
+    steps(one, 40);
+    steps(two, 40);
+    steps(back, 40);
+    int nx, ny;
+    const float *h = ms_sim_height(one, &nx, &ny);
+    const size_t bytes = (size_t)nx * ny * sizeof(float);
+    ck_assert_msg(memcmp(h, ms_sim_height(two, NULL, NULL), bytes) == 0, "1 and 2 threads differ");
+    ck_assert_msg(memcmp(h, ms_sim_height(back, NULL, NULL), bytes) == 0,
+                  "the restored sim differs");
+    free(buf);
+    ms_sim_destroy(one);
+    ms_sim_destroy(two);
+    ms_sim_destroy(back);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("current");
@@ -482,9 +515,10 @@ int main(void)
     tcase_add_test(still, bad_currents_and_descs_are_refused);
     suite_add_tcase(s, still);
     TCase *sim = tcase_create("sim");
-    tcase_set_timeout(sim, 300);
+    tcase_set_timeout(sim, 600);
     tcase_add_test(sim, absent_advect_costs_nothing);
     tcase_add_test(sim, pool_at_rest_with_advect_stays_at_rest);
+    tcase_add_test(sim, river_same_bytes_threads_and_resume);
     suite_add_tcase(s, sim);
     return ms_test_run(s);
 }
