@@ -1,4 +1,4 @@
-# gnuplot script written by modesplit accuracy (commit 2ebd66d); run it in this
+# gnuplot script written by modesplit accuracy (commit several ?see the notes?); run it in this
 # directory: gnuplot accuracy.gp. Restyle freely.
 set terminal pngcairo noenhanced size 1100,700 font 'sans,11'
 set format xy '%g'
@@ -22,6 +22,22 @@ set xlabel 'cost: CPU time per simulated second (ms, 1 thread)'
 set ylabel 'ring front speed rel. error (relative, 0.01 = 1 %)'
 plot 'waves_ring_front_speed_rel_error.dat' index 0 using 1:2 with linespoints pt 7 lc 1 title 'cells per drop radius', \
      'waves_ring_front_speed_rel_error.dat' index 0 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 1 notitle
+set output 'waves_cost_packet_speed_rel_error_vs_c_u.png'
+unset logscale x
+unset logscale y
+set title 'waves: packet speed rel. error vs c + U against cost, one curve per knob' . "\n" . 'labels: the knob''s value, or the particle or cell count where the curve runs over it'
+set xlabel 'cost: CPU time per simulated second (ms, 1 thread)'
+set ylabel 'packet speed rel. error vs c + U (relative, 0.01 = 1 %)'
+plot 'waves_packet_speed_rel_error_vs_c_u.dat' index 0 using 1:2 with linespoints pt 7 lc 1 title 'current u over c', \
+     'waves_packet_speed_rel_error_vs_c_u.dat' index 0 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 1 notitle
+set output 'waves_cost_speed_added_by_the_current_vs_u.png'
+unset logscale x
+unset logscale y
+set title 'waves: speed added by the current vs U against cost, one curve per knob' . "\n" . 'labels: the knob''s value, or the particle or cell count where the curve runs over it'
+set xlabel 'cost: CPU time per simulated second (ms, 1 thread)'
+set ylabel 'speed added by the current vs U (relative, 0.01 = 1 %)'
+plot 'waves_speed_added_by_the_current_vs_u.dat' index 0 using 1:2 with linespoints pt 7 lc 1 title 'current u over c', \
+     'waves_speed_added_by_the_current_vs_u.dat' index 0 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 1 notitle
 set output 'waves_pareto.png'
 set logscale x
 set logscale y

@@ -59,18 +59,27 @@ typedef struct ms_surface_desc {
                             how many sub-steps are taken.                  */
     ms_boundary boundary;
     /* --- grown at the end (ABI: descs only grow) --- */
-    uint64_t seed;          /* seeds the rain RNG held in the handle          */
-    int max_substeps;       /* refuse a step needing more sub-steps (MS_ERR_UNSTABLE); >= 1 */
-    ms_surface_model model; /* MS_SURFACE_MODEL_WAVE or _DISPERSIVE */
-    float gravity;          /* m/s^2, g of the dispersive model; (0, 1000] */
-    float surface_tension;  /* m^3/s^2, T = sigma / rho of the dispersive
+    uint64_t seed;            /* seeds the rain RNG held in the handle          */
+    int max_substeps;         /* refuse a step needing more sub-steps (MS_ERR_UNSTABLE); >= 1 */
+    ms_surface_model model;   /* MS_SURFACE_MODEL_WAVE or _DISPERSIVE */
+    float gravity;            /* m/s^2, g of the dispersive model; (0, 1000] */
+    float surface_tension;    /* m^3/s^2, T = sigma / rho of the dispersive
                                model (capillarity); [0, 1] */
+    int advect;               /* 1: in a sim, the waves are carried by the
+                                 volume's surface velocity (ms_surface_set_current
+                                 each frame); 0: not. A surface alone takes the
+                                 current it is given either way. 0 or 1 */
+    float turbulence_damping; /* kappa: the current damps the waves at
+                                 gamma = kappa |S| (1/s), |S| its strain rate
+                                 (docs/surface.md); [0, 100] */
 } ms_surface_desc;
 
 /* nx = ny = 256, dx = 0.01 m, wave_speed = 0.5 m/s, damping = 0.9,
  * reflecting walls, seed = 1, max_substeps = 100000, model wave,
  * gravity 9.81 m/s^2, surface_tension 7.28e-5 m^3/s^2 (clean water at
- * 20 C: 0.0728 N/m over 1000 kg/m^3). With the dispersive model,
+ * 20 C: 0.0728 N/m over 1000 kg/m^3), advect 0, turbulence_damping
+ * 4 pi^2 0.17^2 = 1.14 (Smagorinsky's eddy viscosity at the flow's
+ * resolution, docs/surface.md). With the dispersive model,
  * wave_speed (and the speed map) is the long-wave speed sqrt(g d) of the
  * depth d: ms_surface_speed_from_depth gives it. */
 MS_API ms_surface_desc ms_surface_desc_default(void);
@@ -117,6 +126,13 @@ MS_API ms_status ms_surface_set_damping_map(ms_surface *s, const float *d);
 /* 1 = solid cell: its height stays 0 and waves reflect from it. NULL = no
  * obstacles. */
 MS_API ms_status ms_surface_set_obstacle_mask(ms_surface *s, const unsigned char *mask);
+
+/* A horizontal current under the surface, (ux, uy) in m/s per cell (nx*ny
+ * values each, |U| <= 100 m/s): each step first carries the waves along it
+ * (a packet on a uniform current U travels at c + U) and damps them where
+ * it shears, at kappa |S| (desc.turbulence_damping). Both NULL: no current
+ * (nothing is allocated, the steps are as without). Either model. */
+MS_API ms_status ms_surface_set_current(ms_surface *s, const float *ux, const float *uy);
 
 /* Shallow-water speeds c = sqrt(gravity * depth) for n depths in metres
  * (depth <= 0 gives 0, a dry cell). gravity in m/s^2, > 0. */

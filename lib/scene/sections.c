@@ -448,8 +448,9 @@ static ms_status check_surface(ms_scene_ctx *c, const ms_surface_desc *s)
  * x extent over cells[0] (square cells), the seed the scene's. */
 static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
-    static const char *const keys[] = {"cells",        "wave_speed", "damping", "boundary",
-                                       "max_substeps", "level",      "model",   NULL};
+    static const char *const keys[] = {
+        "cells", "wave_speed", "damping", "boundary",           "max_substeps",
+        "level", "model",      "advect",  "turbulence_damping", NULL};
     static const char *const boundaries[] = {"reflect", "absorb", "periodic", NULL};
     /* in the order of ms_surface_model; the default is the desc's */
     static const char *const models[] = {"wave", "dispersive", NULL};
@@ -484,6 +485,13 @@ static ms_status read_surface(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     MS_TRY(ms_scene_get_float(c, o, "level", level, 0, height, 0, "m", &sc->level));
     MS_TRY(ms_scene_get_enum(c, o, "model", models, (int)s->model, &model));
     s->model = (ms_surface_model)model;
+    MS_TRY(ms_scene_get_bool(c, o, "advect", s->advect, &s->advect));
+    MS_TRY(get_field(c, o, "turbulence_damping", "", &s->turbulence_damping));
+    if (s->advect && !sc->has_volume) {
+        ms_scene_push_key(c, "advect");
+        return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                             "true needs a volume section: its flow carries the waves");
+    }
     s->nx = cells[0];
     s->ny = cells[1];
     s->boundary = (ms_boundary)boundary;

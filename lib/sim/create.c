@@ -129,8 +129,15 @@ static ms_status check_all(const ms_sim_desc *d)
         MS_TRY(ms_volume_desc_check(d->volume));
         MS_TRY(check_field_resolution(d));
     }
-    if (d->surface)
+    if (d->surface) {
         MS_TRY(ms_surface_desc_check(d->surface));
+        ms_surface_desc sd = ms_surface_desc_default();
+        MS_TRY(ms_struct_in(d->surface, &sd, MS_SIZES_SURFACE_DESC, "surface"));
+        if (sd.advect && !d->volume)
+            return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "advect",
+                               "surface: advect 1 needs a volume, whose flow carries the waves "
+                               "(a surface alone: ms_surface_set_current)");
+    }
     return check_extent(d);
 }
 
@@ -138,22 +145,35 @@ static ms_status alloc_buffers(ms_sim *sim, int floaters)
 {
     size_t nf = (size_t)sim->fnx * (size_t)sim->fny;
     size_t ns = (size_t)sim->snx * (size_t)sim->sny;
+    /* the surface flow is the floaters' and, with surface.advect, the
+     * current that carries the waves (surface_task.c): one extraction
+     * for both */
+    const int advect = sim->volume && sim->surface && ms_surface_get_desc(sim->surface).advect;
+    const int flow = floaters || advect;
     if (sim->volume) {
         for (int k = 0; k < 2; ++k) {
             sim->hfield[k] = sim_alloc(&sim->own_volume_bytes, nf, sizeof(float));
             if (!sim->hfield[k])
                 return oom("the SPH height field");
-            if (floaters) {
+            if (flow) {
                 sim->flow[k] = sim_alloc(&sim->own_effects_bytes, 2 * nf, sizeof(float));
                 if (!sim->flow[k])
-                    return oom("the surface flow of the floaters");
+                    return oom("the surface flow");
             }
         }
-        if (floaters) {
+        if (flow) {
             sim->flow_count = sim_alloc(&sim->own_effects_bytes, nf, sizeof(float));
             if (!sim->flow_count)
-                return oom("the surface flow of the floaters");
+                return oom("the surface flow");
         }
+    }
+    if (advect) {
+        /* the flow's averaging (surface_task.c) and the current on the wave grid */
+        sim->flow_comp = sim_alloc(&sim->own_effects_bytes, 4 * nf, sizeof(float));
+        for (int k = 0; k < 2; ++k)
+            sim->current[k] = sim_alloc(&sim->own_effects_bytes, ns, sizeof(float));
+        if (!sim->flow_comp || !sim->current[0] || !sim->current[1])
+            return oom("the current that carries the waves");
     }
     if (sim->surface) {
         sim->combined = sim_alloc(&sim->own_surface_bytes, ns, sizeof(float));
@@ -429,6 +449,9 @@ void ms_sim_destroy(ms_sim *sim)
     ms_free(sim->wave_colmap);
     ms_free(sim->wave_rowsum);
     ms_free(sim->flow_count);
+    ms_free(sim->flow_comp);
+    ms_free(sim->current[0]);
+    ms_free(sim->current[1]);
     ms_extract_work_free(&sim->work_v);
     ms_extract_work_free(&sim->work_s);
     ms_free(sim->hprev);

@@ -120,8 +120,11 @@ struct ms_sim {
     ms_extract_snap snap[2];        /* phase A of the extraction, from V */
     ms_extract_work work_v, work_s; /* phase B's scratch of V (drag) and S */
     float *hfield[2];               /* fnx * fny: H, phase B in S */
-    float *flow[2];                 /* 2 * fnx * fny: surface flow (vx, vy) from V, floaters only */
+    float *flow[2];                 /* 2 * fnx * fny: surface flow (vx, vy) from V, for floaters and
+                          surface.advect */
     float *flow_count;              /* fnx * fny: S's scratch for the flow */
+    float *flow_comp;               /* fnx * fny: one component of the flow (surface.advect) */
+    float *current[2];              /* snx * sny: the flow up-sampled, ux and uy (surface.advect) */
     float *ppos[2][3], *pvel[2][3]; /* particle copies, SoA */
     int pcount[2], pcap[2];
     float *wave_snap[2]; /* fnx * fny: W averaged per SPH cell, from S (gain_vs > 0) */

@@ -154,6 +154,60 @@ static ms_status couple_from_volume(ms_sim *sim, const float *h, float dt_frame,
     return ms_sim_upsample_excite(sim, e, sim->surface);
 }
 
+/* Sum the nx x ny field `in` over the square of radius r cells round each
+ * cell (edges: the part inside), row pass into tmp then column pass. */
+static void box_sum(const float *restrict in, float *restrict tmp, float *restrict out, int nx,
+                    int ny, int r)
+{
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            float s = 0.0f;
+            for (int a = MS_MAX(i - r, 0); a <= MS_MIN(i + r, nx - 1); ++a)
+                s += in[(size_t)j * nx + a];
+            tmp[(size_t)j * nx + i] = s;
+        }
+    for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+            float s = 0.0f;
+            for (int b = MS_MAX(j - r, 0); b <= MS_MIN(j + r, ny - 1); ++b)
+                s += tmp[(size_t)b * nx + i];
+            out[(size_t)j * nx + i] = s;
+        }
+}
+
+/* surface.advect: the current that carries the waves during frame m
+ * (lib/surface/current.c) is the volume's surface flow of the frame (the
+ * particles near the surface, ms_sim_volume_field) averaged over the
+ * particles within the smoothing length h of each SPH cell (a square of
+ * ceil(h / cell) cells, as rim_mask), and up-sampled onto the wave grid
+ * as eq. 20 up-samples the height. SPH resolves velocity at h, not at the
+ * field's cell: a cell holds one or two particles near the surface, and
+ * their mean alone made a current whose strain rate was particle noise
+ * (river.json: |S| of several 1/s in a steady reach, so the turbulence
+ * damping took a boat's wake within a fraction of a second). */
+static ms_status carry_waves(ms_sim *sim, const float *flow)
+{
+    const int nx = sim->fnx, ny = sim->fny;
+    const size_t nf = (size_t)nx * ny;
+    const float cell = fminf((sim->domain_max[0] - sim->domain_min[0]) / (float)nx,
+                             (sim->domain_max[1] - sim->domain_min[1]) / (float)ny);
+    const ms_volume_desc vd = ms_volume_get_desc(sim->volume);
+    const int r = (int)ceilf(vd.smoothing_length / cell);
+    /* flow_comp: the component's sum per cell, the box sums of the counts
+     * and of the component, and the row pass's scratch */
+    float *sum = sim->flow_comp, *count = sum + nf, *out = sum + 2 * nf, *tmp = sum + 3 * nf;
+    box_sum(sim->flow_count, tmp, count, nx, ny, r);
+    for (int k = 0; k < 2; ++k) {
+        for (size_t i = 0; i < nf; ++i)
+            sum[i] = flow[2 * i + (size_t)k] * sim->flow_count[i];
+        box_sum(sum, tmp, out, nx, ny, r);
+        for (size_t i = 0; i < nf; ++i)
+            out[i] = count[i] > 0 ? out[i] / count[i] : 0.0f;
+        ms_sim_upsample(sim, out, sim->rowtmp, sim->current[k]);
+    }
+    return ms_surface_set_current(sim->surface, sim->current[0], sim->current[1]);
+}
+
 void ms_sim_surface_task(void *arg)
 {
     ms_sim_task *task = arg;
@@ -188,6 +242,8 @@ void ms_sim_surface_task(void *arg)
         st = scripted_effects(sim, sim->t_fields, t1);
         if (st == MS_OK && h && sim->hprev)
             st = couple_from_volume(sim, h, dt, dt_step);
+        if (st == MS_OK && sim->current[0])
+            st = carry_waves(sim, sim->flow[slot]);
         if (st == MS_OK) /* N_time steps, in fused sweeps (the same bytes) */
             st = ms_surface_step_calls(sim->surface, dt_step, n_time);
         if (st == MS_OK && h)

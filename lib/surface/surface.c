@@ -26,6 +26,9 @@ ms_surface_desc ms_surface_desc_default(void)
     d.model = MS_SURFACE_MODEL_WAVE;
     d.gravity = 9.81f;            /* m/s^2 */
     d.surface_tension = 7.28e-5f; /* m^3/s^2: 0.0728 N/m / 1000 kg/m^3 */
+    d.advect = 0;
+    /* kappa = 4 pi^2 C_s^2, C_s = 0.17 (current.c) */
+    d.turbulence_damping = 4.0f * 3.14159265f * 3.14159265f * 0.17f * 0.17f;
     return d;
 }
 
@@ -65,7 +68,9 @@ static ms_status validate(const ms_surface_desc *d)
                            "surface: model %d is not one of wave (0), dispersive (1)",
                            (int)d->model);
     if ((st = ms_check_range(PART, "gravity", d->gravity, 1e-9, 1000, "m/s^2")) ||
-        (st = ms_check_range(PART, "surface_tension", d->surface_tension, 0, 1, "m^3/s^2")))
+        (st = ms_check_range(PART, "surface_tension", d->surface_tension, 0, 1, "m^3/s^2")) ||
+        (st = ms_check_int_range(PART, "advect", d->advect, 0, 1)) ||
+        (st = ms_check_range(PART, "turbulence_damping", d->turbulence_damping, 0, 100, "")))
         return st;
     return MS_OK;
 }
@@ -138,6 +143,8 @@ void ms_surface_destroy(ms_surface *s)
     ms_free(s->dist);
     ms_free(s->level_xy);
     ms_surface_dispersive_destroy(s);
+    ms_free(s->cur_u);
+    ms_free(s->cur_tmp);
     ms_free(s);
 }
 
@@ -238,7 +245,7 @@ void ms_surface_get_info(const ms_surface *s, ms_surface_info *user)
                  (size_t)s->nx * s->ny * sizeof(float) + (size_t)s->cap_dist * sizeof(disturber);
     for (int i = 0; i < s->ndist; ++i)
         out->bytes += (size_t)s->dist[i].npath * 2 * sizeof(float);
-    out->bytes += ms_surface_dispersive_bytes(s);
+    out->bytes += ms_surface_dispersive_bytes(s) + ms_surface_current_bytes(s);
     ms_struct_write(user, &info, size);
 }
 

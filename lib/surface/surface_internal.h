@@ -77,6 +77,12 @@ struct ms_surface {
     int level_cap;              /* disturbers level_xy has room for */
     _Atomic int cancel;         /* ms_surface_cancel: stop before the next block */
     struct ms_dispersion *disp; /* the dispersive model's state, or NULL (eq. 2) */
+    /* the current (current.c), padded, or all NULL: none */
+    float *cur_u, *cur_v; /* m/s; one block with cur_gamma */
+    float *cur_gamma;     /* 1/s, turbulence damping rate */
+    float *cur_tmp;       /* two planes: the advection's copies of h, v */
+    float cur_max;        /* m/s, fastest cell of the current */
+    float cur_gamma_max;  /* 1/s */
 };
 
 #define MS_SURFACE_ORIGIN 15
@@ -132,6 +138,10 @@ ms_status ms_surface_dispersive_advance(ms_surface *s, float dt, int n);
 double ms_surface_dispersive_energy(const ms_surface *s);
 /* energy.c: the energy of the cells in [x0, x1) x [y0, y1) */
 double ms_surface_energy_region(const ms_surface *s, int x0, int x1, int y0, int y1);
+/* current.c: carry the waves along the current for dt and damp them
+ * where it shears (no current: nothing) */
+ms_status ms_surface_current_advance(ms_surface *s, float dt);
+size_t ms_surface_current_bytes(const ms_surface *s);
 /* surface.c */
 void ms_surface_zero_solid(ms_surface *s, float *field);
 

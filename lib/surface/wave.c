@@ -299,6 +299,10 @@ static ms_status step_calls(ms_surface *s, float dt, int calls)
             ms_surface_rain(s, dt);
         ms_surface_refresh_coefficients(s, sub);
         rescale_velocity(s, sub);
+        /* the current first, over the time this pass of the loop steps
+         * (current.c: Lie splitting) */
+        if (s->cur_u && (st = ms_surface_current_advance(s, fuse ? dt * (float)calls : dt)))
+            break;
         if (s->disp)
             st = ms_surface_dispersive_advance(s, sub, fuse ? calls : nsub);
         else

@@ -80,6 +80,7 @@ typedef int acc_case_fn(acc_ctx *c);
 int study_waves_cells(acc_ctx *c);
 int study_waves_courant(acc_ctx *c);
 int study_waves_ring(acc_ctx *c);
+int study_waves_current(acc_ctx *c);
 int study_water_dispersion(acc_ctx *c);
 int study_sph_particles(acc_ctx *c);
 int study_sph_particles_51k(acc_ctx *c);

@@ -414,6 +414,8 @@ static const struct quote {
      "waves, standing-mode frequency error", "cells per wavelength", 0, 0, "", NULL},
     {"waves", "ring_cells_per_drop_radius", "ring front speed rel. error",
      "waves, ring front speed error", "cells per drop radius", 0, 1, "", NULL},
+    {"waves", "current_u_over_c", "packet speed rel. error vs c + U",
+     "waves on a uniform current U, packet speed error against c + U", "U / c", 0, 1, "", NULL},
     {"sph", "particles", "dam-break front Z rel. RMS error",
      "SPH dam break (Tait, c = 20 m/s), front Z(T) RMS error against Martin & Moyce", "particles",
      1, 1, "", NULL},

@@ -26,6 +26,7 @@ static const struct {
     {"waves-cells", study_waves_cells},
     {"waves-courant", study_waves_courant},
     {"waves-ring", study_waves_ring},
+    {"waves-current", study_waves_current},
     {"water-dispersion", study_water_dispersion},
     {"sph-particles", study_sph_particles},
     {"sph-particles-51k", study_sph_particles_51k},

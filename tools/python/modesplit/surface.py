@@ -92,6 +92,22 @@ class Surface(Handle):
         """Per-cell damping factor ((ny, nx) float32); None = uniform."""
         self._map(L().ms_surface_set_damping_map, d, np.float32, "surface: set_damping_map")
 
+    def set_current(self, ux, uy=None):
+        """A horizontal current under the waves (m/s, (ny, nx) float32 each,
+        or scalars for a uniform one): they are carried along it (a packet
+        travels at c + U) and damped where it shears (desc
+        turbulence_damping). ux None: no current."""
+        ptr = self._ptr
+        if ux is None:
+            check(L().ms_surface_set_current(ptr, None, None))
+            return
+        comps = []
+        for x, what in ((ux, "surface: set_current ux"), (uy, "surface: set_current uy")):
+            if x is None or np.ndim(x) == 0:
+                x = np.full(self.shape, 0.0 if x is None else float(x), np.float32)
+            comps.append(as_input(x, self.shape, np.float32, what))
+        check(L().ms_surface_set_current(ptr, comps[0].ctypes.data, comps[1].ctypes.data))
+
     def set_obstacle_mask(self, mask):
         """1 = solid cell ((ny, nx) uint8); None = no obstacles."""
         self._map(L().ms_surface_set_obstacle_mask, mask, np.uint8,

@@ -41,6 +41,28 @@ def test_dispersive_surface_ring_travels_at_its_group_speed():
         ms.Surface(nx=8, ny=8, model="airy")
 
 
+def test_current_carries_a_packet_at_c_plus_u():
+    """set_current: a packet on a uniform 0.2 m/s current runs at c + U
+    (its still-water speed plus U); None takes the current away."""
+    speed = {}
+    for U in (0.0, 0.2):
+        s = ms.Surface(nx=512, ny=4, dx=0.01, wave_speed=0.5, damping=1.0, boundary="periodic")
+        x = (np.arange(512) + 0.5) * 0.01 - 1.5
+        h = 0.01 * np.exp(-x * x / 0.045) * np.cos(2 * np.pi * x / 0.16)
+        s.set_height(np.tile(h, (4, 1)).astype(np.float32))
+        if U:
+            s.set_current(U, 0.0)
+        s.step(2.0)
+        f = s.height[0] ** 2
+        mid = int((1.5 + 2.0 * U) / 0.01)
+        speed[U] = (np.sum(f[mid:] * x[mid:]) / np.sum(f[mid:])) / 2.0
+        s.set_current(None)
+    assert abs(speed[0.2] - speed[0.0] - 0.2) < 0.005
+    assert s.desc()["turbulence_damping"] > 1.0
+    with pytest.raises(ms.InvalidArgument, match="100 m/s"):
+        s.set_current(np.full((4, 512), 200.0, np.float32), 0.0)
+
+
 def test_speed_map_zero_is_dry_and_mask_is_solid():
     s = ms.Surface(nx=32, ny=32, dx=0.01, damping=1.0)
     mask = np.zeros((32, 32), np.uint8)
