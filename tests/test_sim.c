@@ -1293,14 +1293,10 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, excite_in_one_pass_is_surface_excite);
     tcase_add_test(tc, fields_lag_one_frame);
     tcase_add_test(tc, split_extraction_is_the_volumes_bytes);
-    tcase_add_test(tc, volume_makes_waves_without_adding_water);
     tcase_add_test(tc, two_way_coupling_stays_bounded);
-    tcase_add_test(tc, dragging_moves_the_water);
     tcase_add_test(tc, moving_obstacle_stirs_water_and_blocks_waves);
     tcase_add_test(tc, moved_glass_carries_its_water);
     tcase_add_test(tc, turned_glass_pours_its_water);
-    tcase_add_test(tc, a_spinning_scene_paddle_turns_and_stirs);
-    tcase_add_test(tc, a_moving_edge_of_the_liquid_makes_no_speckle);
     tcase_add_test(tc, floaters_follow_flow_and_slopes);
     tcase_add_test(tc, scripted_drops_land_on_time);
     tcase_add_test(tc, effects_land_at_world_coordinates);
@@ -1309,6 +1305,15 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, failed_step_leaves_the_sim_refusing);
     tcase_add_test(tc, particle_arrays_are_one_block);
     suite_add_tcase(s, tc);
+    /* The long scene runs on one thread (a case of its own: a sanitizer
+     * for threads leaves it out, the Makefile's TSAN_LEAVE_OUT) */
+    TCase *one = tcase_create("one_thread_scenes");
+    tcase_set_timeout(one, 300);
+    tcase_add_test(one, volume_makes_waves_without_adding_water);
+    tcase_add_test(one, dragging_moves_the_water);
+    tcase_add_test(one, a_spinning_scene_paddle_turns_and_stirs);
+    tcase_add_test(one, a_moving_edge_of_the_liquid_makes_no_speckle);
+    suite_add_tcase(s, one);
     return s;
 }
 
