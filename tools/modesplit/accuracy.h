@@ -102,6 +102,7 @@ int study_waves_courant(acc_ctx *c);
 int study_waves_ring(acc_ctx *c);
 int study_water_dispersion(acc_ctx *c);
 int study_sph_particles(acc_ctx *c);
+int study_sph_particles_25k(acc_ctx *c);
 int study_sph_particles_51k(acc_ctx *c);
 int study_sph_particles_64k(acc_ctx *c);
 int study_sph_laws(acc_ctx *c);

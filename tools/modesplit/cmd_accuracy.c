@@ -29,6 +29,7 @@ static const struct {
     {"water-dispersion", study_water_dispersion},
     {"water-models", study_water_models},
     {"sph-particles", study_sph_particles},
+    {"sph-particles-25k", study_sph_particles_25k},
     {"sph-particles-51k", study_sph_particles_51k},
     {"sph-particles-64k", study_sph_particles_64k},
     {"sph-laws", study_sph_laws},
