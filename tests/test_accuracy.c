@@ -409,7 +409,7 @@ START_TEST(jobs_case_and_merge_give_the_same_rows)
     size_t len = fread(text, 1, sizeof text - 1, f);
     text[len] = '\0';
     fclose(f);
-    ck_assert_ptr_nonnull(strstr(text, "2 of 16 cases"));
+    ck_assert_ptr_nonnull(strstr(text, "2 of 21 cases"));
     remove_dir();
 }
 END_TEST

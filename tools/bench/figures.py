@@ -383,7 +383,8 @@ def table_accuracy_rerun():
             o = first.get((r["study"], r["knob"], r["value"], r["config"], r["metric"]))
             if o is None:
                 raise Mismatch(f"{RERUN}: {r['study']} {r['knob']} {r['config']} "
-                               f"{r['metric']}: not in {ACCURACY}")
+                               f"{r['metric']}: not in {ACCURACY} (a rerun of an older "
+                               "study: `make accuracy-rerun`)")
             rows += 1
             same += o["error"] == r["error"]
             cfg = (r["knob"], r["value"], r["config"])
