@@ -52,7 +52,8 @@ def main(a_dir, b_dir):
                 bad += 1
                 continue
             # one ratio a configuration (its metrics share the run's cost)
-            cfg = (r["knob"], r["value"], r["config"])
+            # (the water models' cost is one grid's for every wavelength)
+            cfg = (r["knob"], r["config"]) + ((r["value"],) if r["study"] != "water" else ())
             ca, cb = cost(r), cost(o)
             if cfg in seen or ca is None or cb is None:
                 continue
