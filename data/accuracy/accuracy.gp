@@ -56,6 +56,30 @@ set ylabel 'phase speed rel. error vs real water (relative, 0.01 = 1 %)'
 plot 'water.dat' index 0 using 1:2 with linespoints pt 7 lc 1 title 'lambda m depth 0.02m', \
      'water.dat' index 1 using 1:2 with linespoints pt 7 lc 2 title 'lambda m depth 0.1m', \
      'water.dat' index 2 using 1:2 with linespoints pt 7 lc 3 title 'lambda m depth 1m'
+set output 'water_error_simulated_phase_speed_rel_error_depth_0_02_m.png'
+set logscale x
+set logscale y
+set title 'water at depth 0.02 m: each surface model''s phase speed (simulated) against real water' . "\n" . '32 cells per wavelength; legend: CPU time per cell per sub-step (256x256, 1 thread)'
+set xlabel 'wavelength (m)'
+set ylabel 'simulated phase speed rel. error, depth 0.02 m (relative, 0.01 = 1 %)'
+plot 'water_simulated_phase_speed_rel_error_depth_0_02_m.dat' index 0 using 1:2 with linespoints pt 7 lc 1 title 'eq. 2 (surface.model wave): 0.478 ns per cell per step', \
+     'water_simulated_phase_speed_rel_error_depth_0_02_m.dat' index 1 using 1:2 with linespoints pt 7 lc 2 title 'dispersive (surface.model dispersive): 32.1 ns per cell per step'
+set output 'water_error_simulated_phase_speed_rel_error_depth_0_1_m.png'
+set logscale x
+set logscale y
+set title 'water at depth 0.1 m: each surface model''s phase speed (simulated) against real water' . "\n" . '32 cells per wavelength; legend: CPU time per cell per sub-step (256x256, 1 thread)'
+set xlabel 'wavelength (m)'
+set ylabel 'simulated phase speed rel. error, depth 0.1 m (relative, 0.01 = 1 %)'
+plot 'water_simulated_phase_speed_rel_error_depth_0_1_m.dat' index 0 using 1:2 with linespoints pt 7 lc 1 title 'eq. 2 (surface.model wave): 0.443 ns per cell per step', \
+     'water_simulated_phase_speed_rel_error_depth_0_1_m.dat' index 1 using 1:2 with linespoints pt 7 lc 2 title 'dispersive (surface.model dispersive): 48.8 ns per cell per step'
+set output 'water_error_simulated_phase_speed_rel_error_depth_1_m.png'
+set logscale x
+set logscale y
+set title 'water at depth 1 m: each surface model''s phase speed (simulated) against real water' . "\n" . '32 cells per wavelength; legend: CPU time per cell per sub-step (256x256, 1 thread)'
+set xlabel 'wavelength (m)'
+set ylabel 'simulated phase speed rel. error, depth 1 m (relative, 0.01 = 1 %)'
+plot 'water_simulated_phase_speed_rel_error_depth_1_m.dat' index 0 using 1:2 with linespoints pt 7 lc 1 title 'eq. 2 (surface.model wave): 0.353 ns per cell per step', \
+     'water_simulated_phase_speed_rel_error_depth_1_m.dat' index 1 using 1:2 with linespoints pt 7 lc 2 title 'dispersive (surface.model dispersive): 40.5 ns per cell per step'
 set output 'sph_cost.png'
 set logscale x
 unset logscale y
@@ -373,10 +397,34 @@ set ylabel 'hydrostatic pressure RMS / (rho0 g H) (fraction of rho0 g H)'
 plot 'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 0 using 1:2 with linespoints pt 7 lc 1 title 'ideal gas at rest, by particle count', \
      'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 0 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 1 notitle, \
      'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 1 using 1:2 with linespoints pt 7 lc 2 title 'Tait at rest, by particle count', \
-     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 1 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 2 notitle
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 1 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 2 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 2 using 1:2 with linespoints pt 7 lc 3 title 'ideal gas at rest: sqrt(k) (m/s), 175 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 2 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 3 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 3 using 1:2 with linespoints pt 7 lc 4 title 'ideal gas at rest: sqrt(k) (m/s), 704 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 3 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 4 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 4 using 1:2 with linespoints pt 7 lc 5 title 'ideal gas at rest: sqrt(k) (m/s), 1400 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 4 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 5 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 5 using 1:2 with linespoints pt 7 lc 6 title 'Tait at rest: sound speed c0 (m/s), 175 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 5 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 6 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 6 using 1:2 with linespoints pt 7 lc 7 title 'Tait at rest: sound speed c0 (m/s), 704 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 6 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 7 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 7 using 1:2 with linespoints pt 7 lc 8 title 'Tait at rest: sound speed c0 (m/s), 1400 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 7 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 8 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 8 using 1:2 with linespoints pt 7 lc 9 title 'ideal gas at rest: Courant factor, 175 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 8 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 9 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 9 using 1:2 with linespoints pt 7 lc 10 title 'ideal gas at rest: Courant factor, 704 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 9 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 10 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 10 using 1:2 with linespoints pt 7 lc 11 title 'ideal gas at rest: Courant factor, 1400 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 10 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 11 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 11 using 1:2 with linespoints pt 7 lc 12 title 'Tait at rest: Courant factor, 175 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 11 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 12 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 12 using 1:2 with linespoints pt 7 lc 13 title 'Tait at rest: Courant factor, 704 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 12 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 13 notitle, \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 13 using 1:2 with linespoints pt 7 lc 14 title 'Tait at rest: Courant factor, 1400 particles', \
+     'sph_hydrostatic_pressure_rms_rho0_g_h.dat' index 13 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 14 notitle
 set output 'sph_cost_max_compression_at_rest_all_particles.png'
 set logscale x
-unset logscale y
+set logscale y
 set title 'sph: max compression at rest (all particles) against cost, one curve per knob' . "\n" . 'labels: the knob''s value, or the particle or cell count where the curve runs over it'
 set xlabel 'cost: CPU time per simulated second (ms, 1 thread)'
 set ylabel 'max compression at rest (all particles) (relative, 0.01 = 1 %)'
@@ -385,10 +433,46 @@ plot 'sph_max_compression_at_rest_all_particles.dat' index 0 using 1:2 with line
      'sph_max_compression_at_rest_all_particles.dat' index 1 using 1:2 with linespoints pt 7 lc 2 title 'Tait at rest, by particle count', \
      'sph_max_compression_at_rest_all_particles.dat' index 1 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 2 notitle, \
      'sph_max_compression_at_rest_all_particles.dat' index 2 using 1:2 with linespoints pt 7 lc 3 title 'DFSPH at rest, by particle count', \
-     'sph_max_compression_at_rest_all_particles.dat' index 2 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 3 notitle
+     'sph_max_compression_at_rest_all_particles.dat' index 2 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 3 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 3 using 1:2 with linespoints pt 7 lc 4 title 'ideal gas at rest: sqrt(k) (m/s), 175 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 3 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 4 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 4 using 1:2 with linespoints pt 7 lc 5 title 'ideal gas at rest: sqrt(k) (m/s), 704 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 4 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 5 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 5 using 1:2 with linespoints pt 7 lc 6 title 'ideal gas at rest: sqrt(k) (m/s), 1400 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 5 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 6 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 6 using 1:2 with linespoints pt 7 lc 7 title 'Tait at rest: sound speed c0 (m/s), 175 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 6 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 7 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 7 using 1:2 with linespoints pt 7 lc 8 title 'Tait at rest: sound speed c0 (m/s), 704 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 7 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 8 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 8 using 1:2 with linespoints pt 7 lc 9 title 'Tait at rest: sound speed c0 (m/s), 1400 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 8 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 9 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 9 using 1:2 with linespoints pt 7 lc 10 title 'DFSPH at rest: max density error, 175 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 9 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 10 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 10 using 1:2 with linespoints pt 7 lc 11 title 'DFSPH at rest: max density error, 704 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 10 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 11 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 11 using 1:2 with linespoints pt 7 lc 12 title 'DFSPH at rest: max density error, 1400 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 11 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 12 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 12 using 1:2 with linespoints pt 7 lc 13 title 'ideal gas at rest: Courant factor, 175 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 12 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 13 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 13 using 1:2 with linespoints pt 7 lc 14 title 'ideal gas at rest: Courant factor, 704 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 13 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 14 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 14 using 1:2 with linespoints pt 7 lc 15 title 'ideal gas at rest: Courant factor, 1400 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 14 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 15 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 15 using 1:2 with linespoints pt 7 lc 16 title 'Tait at rest: Courant factor, 175 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 15 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 16 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 16 using 1:2 with linespoints pt 7 lc 17 title 'Tait at rest: Courant factor, 704 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 16 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 17 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 17 using 1:2 with linespoints pt 7 lc 18 title 'Tait at rest: Courant factor, 1400 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 17 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 18 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 18 using 1:2 with linespoints pt 7 lc 19 title 'DFSPH at rest: Courant factor, 175 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 18 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 19 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 19 using 1:2 with linespoints pt 7 lc 20 title 'DFSPH at rest: Courant factor, 704 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 19 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 20 notitle, \
+     'sph_max_compression_at_rest_all_particles.dat' index 20 using 1:2 with linespoints pt 7 lc 21 title 'DFSPH at rest: Courant factor, 1400 particles', \
+     'sph_max_compression_at_rest_all_particles.dat' index 20 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 21 notitle
 set output 'sph_cost_mean_compression_at_rest_interior.png'
 set logscale x
-unset logscale y
+set logscale y
 set title 'sph: mean compression at rest (interior) against cost, one curve per knob' . "\n" . 'labels: the knob''s value, or the particle or cell count where the curve runs over it'
 set xlabel 'cost: CPU time per simulated second (ms, 1 thread)'
 set ylabel 'mean compression at rest (interior) (relative, 0.01 = 1 %)'
@@ -397,7 +481,43 @@ plot 'sph_mean_compression_at_rest_interior.dat' index 0 using 1:2 with linespoi
      'sph_mean_compression_at_rest_interior.dat' index 1 using 1:2 with linespoints pt 7 lc 2 title 'Tait at rest, by particle count', \
      'sph_mean_compression_at_rest_interior.dat' index 1 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 2 notitle, \
      'sph_mean_compression_at_rest_interior.dat' index 2 using 1:2 with linespoints pt 7 lc 3 title 'DFSPH at rest, by particle count', \
-     'sph_mean_compression_at_rest_interior.dat' index 2 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 3 notitle
+     'sph_mean_compression_at_rest_interior.dat' index 2 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 3 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 3 using 1:2 with linespoints pt 7 lc 4 title 'ideal gas at rest: sqrt(k) (m/s), 175 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 3 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 4 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 4 using 1:2 with linespoints pt 7 lc 5 title 'ideal gas at rest: sqrt(k) (m/s), 704 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 4 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 5 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 5 using 1:2 with linespoints pt 7 lc 6 title 'ideal gas at rest: sqrt(k) (m/s), 1400 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 5 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 6 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 6 using 1:2 with linespoints pt 7 lc 7 title 'Tait at rest: sound speed c0 (m/s), 175 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 6 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 7 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 7 using 1:2 with linespoints pt 7 lc 8 title 'Tait at rest: sound speed c0 (m/s), 704 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 7 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 8 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 8 using 1:2 with linespoints pt 7 lc 9 title 'Tait at rest: sound speed c0 (m/s), 1400 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 8 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 9 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 9 using 1:2 with linespoints pt 7 lc 10 title 'DFSPH at rest: max density error, 175 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 9 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 10 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 10 using 1:2 with linespoints pt 7 lc 11 title 'DFSPH at rest: max density error, 704 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 10 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 11 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 11 using 1:2 with linespoints pt 7 lc 12 title 'DFSPH at rest: max density error, 1400 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 11 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 12 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 12 using 1:2 with linespoints pt 7 lc 13 title 'ideal gas at rest: Courant factor, 175 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 12 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 13 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 13 using 1:2 with linespoints pt 7 lc 14 title 'ideal gas at rest: Courant factor, 704 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 13 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 14 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 14 using 1:2 with linespoints pt 7 lc 15 title 'ideal gas at rest: Courant factor, 1400 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 14 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 15 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 15 using 1:2 with linespoints pt 7 lc 16 title 'Tait at rest: Courant factor, 175 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 15 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 16 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 16 using 1:2 with linespoints pt 7 lc 17 title 'Tait at rest: Courant factor, 704 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 16 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 17 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 17 using 1:2 with linespoints pt 7 lc 18 title 'Tait at rest: Courant factor, 1400 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 17 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 18 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 18 using 1:2 with linespoints pt 7 lc 19 title 'DFSPH at rest: Courant factor, 175 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 18 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 19 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 19 using 1:2 with linespoints pt 7 lc 20 title 'DFSPH at rest: Courant factor, 704 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 19 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 20 notitle, \
+     'sph_mean_compression_at_rest_interior.dat' index 20 using 1:2 with linespoints pt 7 lc 21 title 'DFSPH at rest: Courant factor, 1400 particles', \
+     'sph_mean_compression_at_rest_interior.dat' index 20 using 1:2:4 with labels offset 0.6,0.5 left font ',7' tc lt 21 notitle
 set output 'sph_pareto.png'
 set logscale x
 unset logscale y
@@ -446,6 +566,21 @@ plot 'sph_solvers_column.dat' index 0 using 1:2 with points pt 6 lc 1 title 'ide
      'sph_solvers_column.dat' index 4 using 1:2 with points pt 6 lc 3 title 'DFSPH, every configuration', \
      'sph_solvers_column.dat' index 5 using 1:2 with linespoints lw 2 pt 7 lc 3 title 'DFSPH, front', \
      'sph_solvers_column.dat' index 5 using 1:2:3 with labels offset 0.8,0.6 left font ',7' tc lt 3 notitle
+set output 'sph_solvers_rest_compression.png'
+set logscale x
+set logscale y
+set title 'column at rest: max compression at rest (all particles) against cost, every configuration per solver;' . "\n" . 'lines: each solver''s front; c sound speed, e max density error, C Courant factor, p particles'
+set xlabel 'cost: CPU time per simulated second (ms, 1 thread)'
+set ylabel 'max compression at rest (all particles) (relative, 0.01 = 1 %)'
+plot 'sph_solvers_rest_compression.dat' index 0 using 1:2 with points pt 6 lc 1 title 'ideal gas, every configuration', \
+     'sph_solvers_rest_compression.dat' index 1 using 1:2 with linespoints lw 2 pt 7 lc 1 title 'ideal gas, front', \
+     'sph_solvers_rest_compression.dat' index 1 using 1:2:3 with labels offset 0.8,0.6 left font ',7' tc lt 1 notitle, \
+     'sph_solvers_rest_compression.dat' index 2 using 1:2 with points pt 6 lc 2 title 'Tait, every configuration', \
+     'sph_solvers_rest_compression.dat' index 3 using 1:2 with linespoints lw 2 pt 7 lc 2 title 'Tait, front', \
+     'sph_solvers_rest_compression.dat' index 3 using 1:2:3 with labels offset 0.8,0.6 left font ',7' tc lt 2 notitle, \
+     'sph_solvers_rest_compression.dat' index 4 using 1:2 with points pt 6 lc 3 title 'DFSPH, every configuration', \
+     'sph_solvers_rest_compression.dat' index 5 using 1:2 with linespoints lw 2 pt 7 lc 3 title 'DFSPH, front', \
+     'sph_solvers_rest_compression.dat' index 5 using 1:2:3 with labels offset 0.8,0.6 left font ',7' tc lt 3 notitle
 set output 'extract_cost.png'
 set logscale x
 set logscale y

@@ -32,10 +32,12 @@ their sentence. Each page named must link or generate at least one figure.
 import csv
 import datetime
 import glob
+import math
 import os
 import re
 import shlex
 import shutil
+import statistics
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -238,11 +240,61 @@ def table_accuracy_choose():
     return out
 
 
+REST_MAX = "max compression at rest (all particles)"
+REST_MEAN = "mean compression at rest (interior)"
+
+
+def table_accuracy_choose_rest():
+    """The column at rest: per solver the cheapest configuration (CPU time
+    per simulated second at rest) whose largest compression reaches 1 %
+    and 0.1 %, and the least compression of the study."""
+    out_rows = {}
+    for r in load(ACCURACY):
+        if r["study"] != "sph" or not r["knob"].startswith("rest_") or \
+                r["metric"] not in (REST_MAX, REST_MEAN):
+            continue
+        solver = next((name for prefix, name in
+                       [("ideal_gas ", "ideal gas"), ("tait ", "Tait"), ("dfsph ", "DFSPH")]
+                       if r["config"].startswith(prefix)), None)
+        if solver is None:
+            continue
+        c = out_rows.setdefault(r["config"], {"solver": solver, "config": r["config"],
+                                              "particles": int(float(r["cells_or_particles"])),
+                                              "cpu": float(r["cpu_ms_per_simulated_s"])})
+        c["max" if r["metric"] == REST_MAX else "mean"] = float(r["error"])
+    configs = [c for c in out_rows.values() if "max" in c and "mean" in c]
+    if not configs:
+        raise Mismatch(f"{ACCURACY} has no rows of the column at rest")
+
+    def words(c):
+        return c["config"].split(" at rest, ")[1].replace("_", " ")
+
+    out = ["| solver | goal | cheapest configuration | particles | CPU s per simulated s | "
+           "max compression | mean compression |", "|---|---|---|---|---|---|---|"]
+    for solver in ("ideal gas", "Tait", "DFSPH"):
+        mine = [c for c in configs if c["solver"] == solver]
+        for goal, lim in (("max compression ≤ 1 %", 0.01), ("max compression ≤ 0.1 %", 0.001)):
+            ok = [c for c in mine if c["max"] <= lim]
+            if not ok:
+                out.append(f"| {solver} | {goal} | none of the {len(mine)} run | | | | |")
+                continue
+            c = min(ok, key=lambda c: c["cpu"])
+            out.append(f"| {solver} | {goal} | {words(c)} | {c['particles']} | "
+                       f"{c['cpu'] / 1000:.2f} | {100 * c['max']:.3f} % | "
+                       f"{100 * c['mean']:.3f} % |")
+        if mine:
+            c = min(mine, key=lambda c: (c["max"], c["cpu"]))
+            out.append(f"| {solver} | the least compression of the study | {words(c)} | "
+                       f"{c['particles']} | {c['cpu'] / 1000:.2f} | {100 * c['max']:.3f} % | "
+                       f"{100 * c['mean']:.3f} % |")
+    return out
+
+
 def table_accuracy_water():
     """Where eq. 2 (c = sqrt(g d)) holds against real water: per depth the
     shortest wavelength from which on every longer one is within 1 %, and
     the error there."""
-    rows = [r for r in load(ACCURACY) if r["study"] == "water"]
+    rows = [r for r in load(ACCURACY) if r["study"] == "water" and "depth_" in r["knob"]]
     if not rows:
         raise Mismatch(f"{ACCURACY} has no water rows")
     out = []
@@ -262,6 +314,92 @@ def table_accuracy_water():
         else:
             out.append(f"- depth {depth}: within 1 % from {start[0]:.3g} m on ({100 * start[1]:.2f} % "
                        f"there); at 1 mm to 10 cm off by up to {100 * worst:.0f} %.")
+    return out
+
+
+def table_accuracy_models():
+    """Every surface model against real water, simulated: per depth and
+    model where it is within 1 %, its worst error on ripples (1 mm to
+    10 cm) and on longer waves, and what it costs per cell and sub-step."""
+    rows = [r for r in load(ACCURACY) if r["study"] == "water" and
+            r["knob"].startswith("lambda_m_model_")]
+    if not rows:
+        raise Mismatch(f"{ACCURACY} has no simulated surface-model rows (water-models)")
+    names = {"lambda_m_model_wave": "eq. 2 (`wave`)",
+             "lambda_m_model_dispersive": "dispersive"}
+    out = ["| depth | model | within 1 % of real water | worst, 1 mm to 10 cm | "
+           "worst, 10 cm to 10 m | CPU ns per cell per sub-step | "
+           "CPU ms per simulated s (256², 1 cm cells) |",
+           "|---|---|---|---|---|---|---|"]
+    for metric in dict.fromkeys(r["metric"] for r in rows):
+        depth = metric.split("depth ")[1]
+        for knob in dict.fromkeys(r["knob"] for r in rows if r["metric"] == metric):
+            sel = [r for r in rows if r["metric"] == metric and r["knob"] == knob]
+            pts = sorted((float(r["value"]), float(r["error"])) for r in sel)
+            start = None
+            for lam, err in reversed(pts):
+                if err > 0.01:
+                    break
+                start = lam
+            where = ("every wavelength (1 mm to 10 m)" if start == pts[0][0] else
+                     f"from {start:.3g} m on" if start is not None else "at no wavelength")
+            short = max(err for lam, err in pts if lam <= 0.1)
+            long_ = max(err for lam, err in pts if lam >= 0.1)
+            r0 = sel[0]
+            ns = 1e6 * float(r0["cpu_ms_per_step"]) / float(r0["cells_or_particles"])
+            out.append(f"| {depth} | {names.get(knob, knob)} | {where} | {100 * short:.3g} % | "
+                       f"{100 * long_:.3g} % | {ns:.3g} | {float(r0['cpu_ms_per_simulated_s']):.3g} |")
+    return out
+
+
+RERUN = "data/accuracy/rerun.csv"
+
+
+def table_accuracy_rerun():
+    """A second run of the study's cases (data/accuracy/rerun.csv, the same
+    commit and machine) against the committed one: per study how many
+    configurations both have, the spread of their CPU costs (rerun over
+    committed; per simulated second, else per step) and whether every
+    error is the same."""
+    def cost(r):
+        for col in ("cpu_ms_per_simulated_s", "cpu_ms_per_step"):
+            v = float(r[col])
+            if math.isfinite(v) and v > 0:
+                return v
+        return None
+
+    first = {(r["study"], r["knob"], r["value"], r["config"], r["metric"]): r
+             for r in load(ACCURACY)}
+    again = load(RERUN)
+    if not again:
+        raise Mismatch(f"{RERUN} has no rows")
+    out = ["| study | configurations in both runs | cost, rerun / committed: least | median | "
+           "largest | within 10 % | errors the same |", "|---|---|---|---|---|---|---|"]
+    for study in dict.fromkeys(r["study"] for r in again):
+        ratios, seen, same, rows = [], set(), 0, 0
+        for r in again:
+            if r["study"] != study:
+                continue
+            o = first.get((r["study"], r["knob"], r["value"], r["config"], r["metric"]))
+            if o is None:
+                raise Mismatch(f"{RERUN}: {r['study']} {r['knob']} {r['config']} "
+                               f"{r['metric']}: not in {ACCURACY} (a rerun of an older "
+                               "study: `make accuracy-rerun`)")
+            rows += 1
+            same += o["error"] == r["error"]
+            # (the water models' cost is one grid's for every wavelength)
+            cfg = (r["knob"], r["config"]) + ((r["value"],) if study != "water" else ())
+            a, b = cost(o), cost(r)
+            if cfg in seen or a is None or b is None:
+                continue
+            seen.add(cfg)
+            ratios.append(b / a)
+        if not ratios:
+            continue
+        within = sum(1 for x in ratios if abs(x - 1) <= 0.1)
+        out.append(f"| {study} | {len(ratios)} | {min(ratios):.3f} | "
+                   f"{statistics.median(ratios):.3f} | {max(ratios):.3f} | "
+                   f"{within} of {len(ratios)} | {same} of {rows} rows |")
     return out
 
 
@@ -289,7 +427,9 @@ def table_accuracy_nsurf():
 
 TABLES = {"scenes": table_scenes, "parts": table_parts, "laws": table_laws,
           "accuracy_choose": table_accuracy_choose, "accuracy_water": table_accuracy_water,
-          "accuracy_nsurf": table_accuracy_nsurf}
+          "accuracy_nsurf": table_accuracy_nsurf, "accuracy_models": table_accuracy_models,
+          "accuracy_rerun": table_accuracy_rerun,
+          "accuracy_choose_rest": table_accuracy_choose_rest}
 
 
 def process(text, write, page="README.md"):

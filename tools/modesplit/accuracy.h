@@ -31,12 +31,14 @@ typedef struct acc_row {
     double cpu_ms_per_step; /* the same per step: the costs the report plots */
     double size;            /* cells or particles */
     int threads;
-    char machine[256]; /* as read from a part ("": this run's) */
-    char commit[128];  /* as read from a part ("": this run's) */
+    char cost_method[64]; /* how the cpu_ms_* were measured (acc_ctx's when "") */
+    char machine[256];    /* as read from a part ("": this run's) */
+    char commit[128];     /* as read from a part ("": this run's) */
 } acc_row;
 
 typedef struct acc_ctx {
     int quick;
+    const char *cost_method; /* the case's, into each row acc_add takes (accuracy.h) */
     acc_row *rows;
     int nrows, cap;
     char note[16384]; /* notes for accuracy.md: solvers not in this build, ... */
@@ -49,18 +51,36 @@ typedef struct acc_ctx {
  * merged into DIR/STUDY_trace.dat by --merge. */
 void acc_trace(acc_ctx *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
-/* The cost of a piece of work, wall clock and CPU time: the CPU time is
- * the process's (CLOCK_PROCESS_CPUTIME_ID, every thread summed), read
- * only around the library calls a case times. Each case of `make
- * accuracy` runs in its own process and nothing else runs in it while a
- * timer is open, so the sum is the work's own: unlike the wall clock, other
- * work on a loaded machine does not inflate it. */
+/* The cost of a piece of work, wall clock and CPU time. The CPU time is
+ * the calling thread's (CLOCK_THREAD_CPUTIME_ID): every case runs its sim
+ * with one thread, which the library runs on the caller, so that is all
+ * the work's time and nothing else's. acc_tic / acc_toc add one timing of
+ * the work; acc_step and acc_repeat time a piece of work ACC_REPEATS
+ * times and add the cheapest (acc_step from a snapshot of the sim, so the
+ * sim ends as one step would leave it). Other work on a loaded machine
+ * still inflates a thread's CPU time (its caches flushed, a busy
+ * sibling hyperthread); the least of a few repeats close in time is what
+ * the work costs when that interference is least, and a first run's
+ * warm-up (cold caches, first-touch allocations) is not counted. */
+#define ACC_REPEATS 3
+/* The cost_method column of the rows, as each case's study sets it. */
+#define ACC_BY_FRAME "thread CPU time; each frame the least of 3 repeats"
+#define ACC_BY_RUN "thread CPU time; the least of 3 repeats of the run"
+#define ACC_BY_BLOCK "thread CPU time; each 16 steps the least of 3 repeats"
+#define ACC_BY_CALL "thread CPU time; the median of 5 calls"
 typedef struct acc_timer {
-    double wall, cpu;   /* s, summed over the tic/toc pairs */
-    double wall0, cpu0; /* the open pair's start */
+    double wall, cpu;   /* s, summed over the timings */
+    double wall0, cpu0; /* the open timing's start */
 } acc_timer;
 void acc_tic(acc_timer *t);
 void acc_toc(acc_timer *t);
+/* ms_sim_step(sim, dt) timed as above; the snapshot and the restores are
+ * not timed. */
+ms_status acc_step(acc_timer *t, ms_sim *sim, float dt);
+/* The least of ACC_REPEATS timings of work(arg) added to t: work whose
+ * cost does not depend on the state it leaves (a block of wave steps); the
+ * first failure's status, or MS_OK. */
+ms_status acc_repeat(acc_timer *t, ms_status (*work)(void *), void *arg);
 
 /* Append a row; 0 on success. */
 int acc_add(acc_ctx *c, const acc_row *r);
@@ -83,6 +103,7 @@ int study_waves_ring(acc_ctx *c);
 int study_waves_current(acc_ctx *c);
 int study_water_dispersion(acc_ctx *c);
 int study_sph_particles(acc_ctx *c);
+int study_sph_particles_25k(acc_ctx *c);
 int study_sph_particles_51k(acc_ctx *c);
 int study_sph_particles_64k(acc_ctx *c);
 int study_sph_laws(acc_ctx *c);
@@ -90,6 +111,10 @@ int study_sph_sound(acc_ctx *c);
 int study_sph_dfsph(acc_ctx *c);
 int study_sph_courant(acc_ctx *c);
 int study_sph_rest(acc_ctx *c);
+int study_sph_rest_sound(acc_ctx *c);
+int study_sph_rest_dfsph(acc_ctx *c);
+int study_sph_rest_courant(acc_ctx *c);
+int study_water_models(acc_ctx *c);
 int study_extract_flat(acc_ctx *c);
 int study_extract_tilted(acc_ctx *c);
 int study_extract_column(acc_ctx *c);

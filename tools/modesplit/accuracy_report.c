@@ -285,6 +285,14 @@ static void knob_label(char *buf, size_t size, const char *knob)
         {"rest_particles_ideal_gas", "ideal gas at rest, by particle count"},
         {"rest_particles_tait", "Tait at rest, by particle count"},
         {"rest_particles_dfsph", "DFSPH at rest, by particle count"},
+        {"rest_sound_speed_ideal_gas", "ideal gas at rest: sqrt(k) (m/s)"},
+        {"rest_sound_speed_tait", "Tait at rest: sound speed c0 (m/s)"},
+        {"rest_max_density_error_dfsph", "DFSPH at rest: max density error"},
+        {"rest_courant_ideal_gas", "ideal gas at rest: Courant factor"},
+        {"rest_courant_tait", "Tait at rest: Courant factor"},
+        {"rest_courant_dfsph", "DFSPH at rest: Courant factor"},
+        {"lambda_m_model_wave", "eq. 2 (surface.model wave)"},
+        {"lambda_m_model_dispersive", "dispersive (surface.model dispersive)"},
         {"n_surf", "N_surf (wave cells per SPH cell)"},
         {"n_time", "N_time (wave steps per SPH step)"},
         {"two_way_gain", "two-way coupling gain"},
@@ -537,13 +545,19 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
     fprintf(f,
             "# modesplit accuracy\n\nMachine: %s (the load of the last case merged; "
             "every case's is in the notes and in the CSV's machine column). Commit: %s.\n\n"
-            "Costs are CPU time: the CPU time of the process that ran the case "
-            "(CLOCK_PROCESS_CPUTIME_ID, every thread summed), read around the library calls "
-            "the case times; one thread did the work (the CSV's cpu_ms_* columns). Other "
-            "work on a loaded machine inflates the wall clock (the CSV's wall_ms_* columns) "
-            "but hardly the CPU time, so the tables and plots use CPU time. The errors do "
-            "not depend on the load: `make check` compares the quick study's rows with "
-            "these.\n\n"
+            "Costs are CPU time: the CPU time of the thread that did the work "
+            "(CLOCK_THREAD_CPUTIME_ID; every case runs its sim with one thread, on the "
+            "caller), read around the library calls the case times (the CSV's cpu_ms_* "
+            "columns; its cost_method column says how each row's was taken). A loaded "
+            "machine inflates the wall clock (the wall_ms_* columns) most, but a thread's "
+            "CPU time too (caches flushed by other work, a busy sibling hyperthread), so "
+            "each piece of work is timed 3 times close together and the least counts: every "
+            "SPH frame (dam break, column at rest, coupler) is run 3 times from a snapshot "
+            "of the sim (ms_sim_restore: the same bytes, so the errors are those of one "
+            "run); a wave run 3 times whole; a surface model's cost per cell 3 times per 16 "
+            "steps; an extraction call is the median of 5. The first, cold run of each is "
+            "thus not counted. The errors do not depend on the load: `make check` compares "
+            "the quick study's rows with these.\n\n"
             "Orders of convergence are given only where theory gives one (the waves' "
             "standing-mode frequency against cells per wavelength), fitted per knob and "
             "metric over the range stated. The Pareto column marks the rows no other "
@@ -585,12 +599,21 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
                        "vertical breathing mode (period 4 H / c); the notes give one sample's "
                        "range of slopes and the height the column lost against what its law's "
                        "compression asks.\n\n");
-        if (plots && water)
+        if (plots && water) {
             fprintf(f,
                     "![%s](%s_error.png)\n\n- `%s_error.png`: %s against wavelength, one "
-                    "curve per depth.\n\n",
+                    "curve per depth.\n",
                     st[s], st[s], st[s], ms[0]);
-        else if (plots) {
+            for (int m = 1; m < nm; ++m) {
+                char stem[256];
+                metric_stem(stem, sizeof stem, st[s], m, ms[m], "_error");
+                fprintf(f,
+                        "- `%s.png`: %s against wavelength, one curve per surface model, its "
+                        "CPU time per cell per step in the legend.\n",
+                        stem, ms[m]);
+            }
+            fputs("\n", f);
+        } else if (plots) {
             char stem[256];
             for (int m = 0; m < nm; ++m) {
                 metric_stem(stem, sizeof stem, st[s], m, ms[m], "_cost");
@@ -603,7 +626,9 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
                 fprintf(f, "![%s: %s](%s.png) ", st[s], sp[k]->metric, sp[k]->stem);
             if (!strcmp(st[s], "sph"))
                 fprintf(f, "![sph: compression by solver](sph_solvers_compression.png) "
-                           "![sph: column by solver](sph_solvers_column.png)");
+                           "![sph: column by solver](sph_solvers_column.png) "
+                           "![sph: compression at rest by solver]"
+                           "(sph_solvers_rest_compression.png)");
             fprintf(f, "\n\n");
             for (int m = 0; m < nm; ++m) {
                 metric_stem(stem, sizeof stem, st[s], m, ms[m], "_cost");
@@ -638,7 +663,9 @@ static int write_md(const char *dir, const acc_row *rows, int n, const char *not
             if (!strcmp(st[s], "sph"))
                 fprintf(f, "- `sph_solvers_compression.png`, `sph_solvers_column.png`: the dam "
                            "break's max compression and residual-column error against cost, "
-                           "every configuration of each solver and its front.\n");
+                           "every configuration of each solver and its front; "
+                           "`sph_solvers_rest_compression.png` the same for the column at "
+                           "rest's max compression.\n");
             fprintf(f, "\n");
         }
         fprintf(f,
@@ -806,7 +833,7 @@ static int write_pareto(FILE *gp, const char *dir, const acc_row *rows, int n, i
  * labelled; the plot a user reads "for 0.1 % compression DFSPH costs X,
  * Tait Y" from. */
 static int write_solvers(FILE *gp, const char *dir, const acc_row *rows, int n, const char *metric,
-                         const char *stem)
+                         const char *stem, const char *what)
 {
     static const char *const solver[] = {"ideal_gas", "tait", "dfsph"};
     static const char *const names[] = {"ideal gas", "Tait", "DFSPH"};
@@ -863,7 +890,7 @@ static int write_solvers(FILE *gp, const char *dir, const acc_row *rows, int n, 
     }
     fclose(d);
     char title[256];
-    snprintf(title, sizeof title, "dam break: %s against cost, every configuration per solver;",
+    snprintf(title, sizeof title, "%s: %s against cost, every configuration per solver;", what,
              metric);
     fputs("set output ", gp);
     gp_string(gp, out);
@@ -1024,7 +1051,7 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
             char ylabel[160];
             metric_label(ylabel, sizeof ylabel, ms[m]);
             /* names from the parts only as gp_string writes them */
-            if (water) {
+            if (water && m == 0) {
                 snprintf(png, sizeof png, "%s_error.png", st[s]);
                 fputs("set output ", gp);
                 gp_string(gp, png);
@@ -1032,6 +1059,26 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
                 fputs("set title 'water: the paper''s non-dispersive eq. 2 against real "
                       "capillary-gravity waves, one curve per depth'\n"
                       "set xlabel 'wavelength (m)'\nset ylabel ",
+                      gp);
+                gp_string(gp, ylabel);
+            } else if (water) {
+                /* the simulated models at one depth (the metric names it) */
+                char title[256];
+                const char *dep = strstr(ms[m], "depth ");
+                metric_stem(png, sizeof png, st[s], m, ms[m], "_error");
+                strncat(png, ".png", sizeof png - strlen(png) - 1);
+                snprintf(title, sizeof title,
+                         "water at %s: each surface model's phase speed (simulated) against "
+                         "real water",
+                         dep ? dep : ms[m]);
+                fputs("set output ", gp);
+                gp_string(gp, png);
+                gp_axes(gp, xlo, xhi, ylo, yhi);
+                fputs("set title ", gp);
+                gp_string(gp, title);
+                fputs(" . \"\\n\" . '32 cells per wavelength; legend: CPU time per cell "
+                      "per sub-step (256x256, 1 thread)'\nset xlabel 'wavelength (m)'\nset "
+                      "ylabel ",
                       gp);
                 gp_string(gp, ylabel);
             } else {
@@ -1057,7 +1104,13 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
                 char dat[300], name[160], kl[120];
                 snprintf(dat, sizeof dat, "%s.dat", stem);
                 knob_label(kl, sizeof kl, cv[k].knob);
-                if (isnan(cv[k].size))
+                double per_cell = NAN; /* water: the model's ns per cell per step */
+                for (int i = 0; water && i < n && isnan(per_cell); ++i)
+                    if (in_curve(&rows[i], st[s], ms[m], &cv[k]) && rows[i].size > 0)
+                        per_cell = 1e6 * rows[i].cpu_ms_per_step / rows[i].size;
+                if (water && isfinite(per_cell))
+                    snprintf(name, sizeof name, "%s: %.3g ns per cell per step", kl, per_cell);
+                else if (isnan(cv[k].size) || water)
                     snprintf(name, sizeof name, "%s", kl);
                 else
                     snprintf(name, sizeof name, "%s, %.0f %s", kl, cv[k].size,
@@ -1088,10 +1141,12 @@ static int write_plots(const char *dir, const acc_row *rows, int n, const char *
                 return -1;
             }
         if (!strcmp(st[s], "sph") &&
-            (write_solvers(gp, dir, rows, n, "dam-break max compression",
-                           "sph_solvers_compression") != 0 ||
+            (write_solvers(gp, dir, rows, n, "dam-break max compression", "sph_solvers_compression",
+                           "dam break") != 0 ||
              write_solvers(gp, dir, rows, n, "dam-break column H rel. RMS error",
-                           "sph_solvers_column") != 0)) {
+                           "sph_solvers_column", "dam break") != 0 ||
+             write_solvers(gp, dir, rows, n, "max compression at rest (all particles)",
+                           "sph_solvers_rest_compression", "column at rest") != 0)) {
             fclose(gp);
             return -1;
         }

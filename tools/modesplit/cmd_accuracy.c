@@ -28,7 +28,9 @@ static const struct {
     {"waves-ring", study_waves_ring},
     {"waves-current", study_waves_current},
     {"water-dispersion", study_water_dispersion},
+    {"water-models", study_water_models},
     {"sph-particles", study_sph_particles},
+    {"sph-particles-25k", study_sph_particles_25k},
     {"sph-particles-51k", study_sph_particles_51k},
     {"sph-particles-64k", study_sph_particles_64k},
     {"sph-laws", study_sph_laws},
@@ -36,6 +38,9 @@ static const struct {
     {"sph-dfsph", study_sph_dfsph},
     {"sph-courant", study_sph_courant},
     {"sph-rest", study_sph_rest},
+    {"sph-rest-sound", study_sph_rest_sound},
+    {"sph-rest-dfsph", study_sph_rest_dfsph},
+    {"sph-rest-courant", study_sph_rest_courant},
     {"extract-flat", study_extract_flat},
     {"extract-tilted", study_extract_tilted},
     {"extract-column", study_extract_column},
@@ -47,13 +52,14 @@ static const struct {
  * acc_timer); wall_ms_*: wall clock of the same work. */
 static const char csv_header[] =
     "study,knob,value,config,metric,error,reference,cpu_ms_per_simulated_s,cpu_ms_per_step,"
-    "wall_ms_per_simulated_s,wall_ms_per_step,cells_or_particles,threads,machine,commit\n";
-#define NFIELDS 15
+    "wall_ms_per_simulated_s,wall_ms_per_step,cells_or_particles,threads,cost_method,machine,"
+    "commit\n";
+#define NFIELDS 16
 
 static double cpu_now(void)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
@@ -69,6 +75,64 @@ void acc_toc(acc_timer *t)
     t->wall += tool_now() - t->wall0;
 }
 
+ms_status acc_repeat(acc_timer *t, ms_status (*work)(void *), void *arg)
+{
+    double cpu = INFINITY, wall = INFINITY;
+    for (int k = 0; k < ACC_REPEATS; ++k) {
+        acc_timer one = {0};
+        acc_tic(&one);
+        ms_status st = work(arg);
+        acc_toc(&one);
+        if (st != MS_OK)
+            return st;
+        cpu = fmin(cpu, one.cpu);
+        wall = fmin(wall, one.wall);
+    }
+    t->cpu += cpu;
+    t->wall += wall;
+    return MS_OK;
+}
+
+/* The snapshot acc_step restores from: one case a process and one thread,
+ * so one buffer, grown as the sim's blob grows (particles added). */
+static unsigned char *snap;
+static size_t snap_cap;
+
+ms_status acc_step(acc_timer *t, ms_sim *sim, float dt)
+{
+    size_t need = 0, got = 0;
+    ms_status st = ms_sim_snapshot_size(sim, &need);
+    if (st != MS_OK)
+        return st;
+    if (need > snap_cap) {
+        unsigned char *b = realloc(snap, need);
+        if (!b)
+            return MS_ERR_OUT_OF_MEMORY;
+        snap = b;
+        snap_cap = need;
+    }
+    if ((st = ms_sim_snapshot(sim, snap, snap_cap, &got)) != MS_OK)
+        return st;
+    double cpu = INFINITY, wall = INFINITY;
+    for (int k = 0; k < ACC_REPEATS; ++k) {
+        /* every repeat from the same state: the last leaves the sim as
+         * one step would (ms_sim_restore: the same bytes) */
+        if (k > 0 && (st = ms_sim_restore(sim, snap, got)) != MS_OK)
+            return st;
+        acc_timer one = {0};
+        acc_tic(&one);
+        st = ms_sim_step(sim, dt);
+        acc_toc(&one);
+        if (st != MS_OK)
+            return st;
+        cpu = fmin(cpu, one.cpu);
+        wall = fmin(wall, one.wall);
+    }
+    t->cpu += cpu;
+    t->wall += wall;
+    return MS_OK;
+}
+
 int acc_add(acc_ctx *c, const acc_row *r)
 {
     if (c->nrows == c->cap) {
@@ -81,7 +145,13 @@ int acc_add(acc_ctx *c, const acc_row *r)
         c->rows = nr;
         c->cap = ncap;
     }
-    c->rows[c->nrows++] = *r;
+    acc_row *d = &c->rows[c->nrows++];
+    *d = *r;
+    if (!d->cost_method[0])
+        snprintf(d->cost_method, sizeof d->cost_method, "%s",
+                 isfinite(r->cpu_ms_per_s) || isfinite(r->cpu_ms_per_step)
+                     ? (c->cost_method ? c->cost_method : "thread CPU time")
+                     : "no cost: computed, not simulated");
     return 0;
 }
 
@@ -242,6 +312,8 @@ static int write_rows(const char *path, const acc_row *rows, int n, const char *
         fprintf(f, ",%.6g,%.9g,%.6g,%.6g,%.6g,%.6g,%.9g,%d,", r->error, r->reference,
                 r->cpu_ms_per_s, r->cpu_ms_per_step, r->ms_per_s, r->ms_per_step, r->size,
                 r->threads);
+        csv_text(f, r->cost_method);
+        fputc(',', f);
         csv_text(f, r->machine[0] ? r->machine : machine);
         fputc(',', f);
         csv_text(f, r->commit[0] ? r->commit : commit);
@@ -322,8 +394,9 @@ static int refuse_fields(const char *path, int lineno, char *const *fl)
         {1, 1, sizeof((acc_row *)0)->knob, "knob"},
         {3, 0, sizeof((acc_row *)0)->config, "config"},
         {4, 0, sizeof((acc_row *)0)->metric, "metric"},
-        {13, 0, sizeof((acc_row *)0)->machine, "machine"},
-        {14, 0, sizeof((acc_row *)0)->commit, "commit"},
+        {13, 0, sizeof((acc_row *)0)->cost_method, "cost_method"},
+        {14, 0, sizeof((acc_row *)0)->machine, "machine"},
+        {15, 0, sizeof((acc_row *)0)->commit, "commit"},
     };
     for (size_t i = 0; i < sizeof rule / sizeof rule[0]; ++i) {
         const char *v = fl[rule[i].field];
@@ -391,10 +464,11 @@ static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, 
         r.ms_per_step = strtod(fl[10], NULL);
         r.size = strtod(fl[11], NULL);
         r.threads = atoi(fl[12]);
-        snprintf(machine, size, "%s", fl[13]);
-        snprintf(commit, size, "%s", fl[14]);
-        snprintf(r.machine, sizeof r.machine, "%s", fl[13]);
-        snprintf(r.commit, sizeof r.commit, "%s", fl[14]);
+        snprintf(r.cost_method, sizeof r.cost_method, "%s", fl[13]);
+        snprintf(machine, size, "%s", fl[14]);
+        snprintf(commit, size, "%s", fl[15]);
+        snprintf(r.machine, sizeof r.machine, "%s", fl[14]);
+        snprintf(r.commit, sizeof r.commit, "%s", fl[15]);
         if (acc_add(c, &r) != 0) {
             rc = -1;
             break;

@@ -78,9 +78,7 @@ static int run_pool(const acc_ctx *c, const char *const *sets, pool_run *out)
     acc_timer tm = {0};
     int samples = 0;
     for (int f = 0; st == MS_OK && f < FRAMES; ++f) {
-        acc_tic(&tm);
-        st = ms_sim_step(sim, 0.016667f);
-        acc_toc(&tm);
+        st = acc_step(&tm, sim, 0.016667f);
         if (st != MS_OK || f + 1 < SAMPLE_FROM || (f + 1 - SAMPLE_FROM) % SAMPLE_EVERY)
             continue;
         int nx, ny;
@@ -177,6 +175,7 @@ static int add(acc_ctx *c, const char *knob, double value, const char *config, c
 
 int study_coupler(acc_ctx *c)
 {
+    c->cost_method = ACC_BY_FRAME;
     const int ref_cells = FIELD << BANDS; /* N_surf 16 */
     char cells[64], cfg[96];
     snprintf(cells, sizeof cells, "surface.cells=[%d,%d]", ref_cells, ref_cells);

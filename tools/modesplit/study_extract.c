@@ -308,12 +308,14 @@ static int study(acc_ctx *c, const ext_shape *sh)
 
 int study_extract_flat(acc_ctx *c)
 {
+    c->cost_method = ACC_BY_CALL;
     const ext_shape sh = {"flat", 0.5, 0.12, 0.3, 0, 0.0125, 0.025};
     return study(c, &sh);
 }
 
 int study_extract_tilted(acc_ctx *c)
 {
+    c->cost_method = ACC_BY_CALL;
     /* a = 0.2 g: the surface rises 0.1 m across the 0.5 m box */
     const ext_shape sh = {"tilted", 0.5, 0.12, 0.3, 0.2 * 9.81, 0.0125, 0.025};
     return study(c, &sh);
@@ -321,6 +323,7 @@ int study_extract_tilted(acc_ctx *c)
 
 int study_extract_column(acc_ctx *c)
 {
+    c->cost_method = ACC_BY_CALL;
     /* the settled column of the SPH rest study: 0.2 m square, 0.28 m high,
      * where weakly compressible SPH's hydrostatic compression (g H / c^2,
      * 0.7 % at 20 m/s) lowers the surface below volume / area */
