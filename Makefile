@@ -410,12 +410,15 @@ check-layers:
 # compared with a tolerance by test_render; written afresh only here, on
 # purpose, so a change of the look is a visible diff in review.
 # And the golden hash of a fixed scene's fields (tests/data/golden_hash.txt,
-# test_determinism), refreshed when a change is meant to change results.
-golden: $(BUILD)/tests/test_render $(BUILD)/tests/test_determinism plugins
+# test_determinism) and of the volume's dam break (golden_volume_hash.txt,
+# test_volume), refreshed when a change is meant to change results.
+golden: $(BUILD)/tests/test_render $(BUILD)/tests/test_determinism $(BUILD)/tests/test_volume plugins
 	MS_GOLDEN_WRITE=1 CK_RUN_CASE=render $(BUILD)/tests/test_render
 	@echo "golden: wrote tests/data/golden/*.png; look at them before committing"
 	@CK_RUN_CASE=golden MS_GOLDEN_WRITE=1 MS_TEST_BUILD=$(BUILD) $(BUILD)/tests/test_determinism
 	@echo "golden: wrote tests/data/golden_hash.txt"
+	@CK_RUN_CASE=golden MS_GOLDEN_WRITE=1 MS_TEST_BUILD=$(BUILD) $(BUILD)/tests/test_volume
+	@echo "golden: wrote tests/data/golden_volume_hash.txt"
 
 
 # ---- the ABI listing and the Python package ----------------------------------
