@@ -645,7 +645,8 @@ A64_TEST_SUPPORT := $(patsubst %.c,$(A64)/obj/%.o,$(wildcard tests/support_*.c))
 $(A64_STAMP):
 	@command -v $(A64_CC) > /dev/null || { echo "aarch64: $(A64_CC) not found (tools/deps.sh --aarch64)"; exit 1; }
 	@rm -rf $(@D) && mkdir -p $(@D)/debs
-	$(Q)cd $(@D)/debs && apt-get download -q -o APT::Sandbox::User="$$(id -un)" $(A64_DEBS:%=%:arm64) > /dev/null
+	$(Q)cd $(@D)/debs && apt-get download -q -o APT::Sandbox::User="$$(id -un)" $(A64_DEBS:%=%:arm64) > /dev/null || \
+	    { echo "aarch64: apt-get download failed (tools/deps.sh --aarch64 adds the arm64 package lists)"; exit 1; }
 	$(Q)for d in $(@D)/debs/*.deb; do dpkg-deb -x $$d $(@D) || exit 1; done
 	@touch $@
 $(A64)/obj/lib/volume/%.o: A64_CFLAGS += -fno-math-errno -ffp-contract=off
@@ -665,6 +666,10 @@ $(A64)/tests/test_%: $(A64)/obj/tests/test_%.o $(A64_TEST_SUPPORT) $(A64_LIB)
 	@echo "  LD64    $@"
 	$(Q)$(A64_CC) -o $@ $< $(A64_TEST_SUPPORT) $(A64_LIB) $(A64_LIBS)
 aarch64: $(A64_SUITES:%=$(A64)/tests/test_%) $(A64_PLUGINS)
+.PHONY: clean-aarch64
+clean: clean-aarch64
+clean-aarch64:
+	rm -rf $(A64)
 -include $(shell find $(A64)/obj -name '*.d' 2>/dev/null)
 # Each suite's cases as jobs (split_cases, as CHECK_SPLIT); a job's
 # result, log and records as in $(CHECK_DIR) (run_job, below).
