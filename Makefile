@@ -415,12 +415,15 @@ check-layers:
 # compared with a tolerance by test_render; written afresh only here, on
 # purpose, so a change of the look is a visible diff in review.
 # And the golden hash of a fixed scene's fields (tests/data/golden_hash.txt,
-# test_determinism), refreshed when a change is meant to change results.
-golden: $(BUILD)/tests/test_render $(BUILD)/tests/test_determinism plugins
+# test_determinism) and of the volume's dam break (golden_volume_hash.txt,
+# test_volume), refreshed when a change is meant to change results.
+golden: $(BUILD)/tests/test_render $(BUILD)/tests/test_determinism $(BUILD)/tests/test_volume plugins
 	MS_GOLDEN_WRITE=1 CK_RUN_CASE=render $(BUILD)/tests/test_render
 	@echo "golden: wrote tests/data/golden/*.png; look at them before committing"
 	@CK_RUN_CASE=golden MS_GOLDEN_WRITE=1 MS_TEST_BUILD=$(BUILD) $(BUILD)/tests/test_determinism
 	@echo "golden: wrote tests/data/golden_hash.txt"
+	@CK_RUN_CASE=golden MS_GOLDEN_WRITE=1 MS_TEST_BUILD=$(BUILD) $(BUILD)/tests/test_volume
+	@echo "golden: wrote tests/data/golden_volume_hash.txt"
 
 
 # ---- the ABI listing and the Python package ----------------------------------
@@ -621,3 +624,154 @@ $(BUILD)/bin/volume_ab: tools/ab/volume_ab.c include/modesplit/volume.h
 	@mkdir -p $(@D)
 	@echo "  CC      $@"
 	$(Q)$(CC) -Iinclude $(BASEFLAGS) -D_GNU_SOURCE $(CFLAGS) -o $@ $< $(LDSAN) $(SYS_LIBS)
+
+# ---- aarch64: the NEON path, cross-built and run under qemu-user ----
+# check-aarch64: Debian's cross gcc builds the library (all but lib/io,
+# whose HDF5 has no arm64 build here, and the GL files), the shape plugins
+# and the volume and determinism suites into build-aarch64/; qemu-user runs
+# the suites, each case a job as in `make check`. They hold the every-path
+# same-bytes cases (on aarch64: C and NEON) and the golden hash, so a pass
+# is the same bytes as x86. The cross compiler and qemu-user come from
+# tools/deps.sh --aarch64; the arm64 libraries linked (jansson, Check,
+# libpng, zlib) are Debian's arm64 packages, unpacked into
+# build-aarch64/sysroot/ (apt-get download): installing them through
+# multiarch would upgrade the amd64 ones of the same names.
+A64        := build-aarch64
+A64_CC     ?= aarch64-linux-gnu-gcc
+A64_AR     ?= aarch64-linux-gnu-ar
+A64_RUN    ?= qemu-aarch64 -L /usr/aarch64-linux-gnu
+A64_ROOT   := $(abspath $(A64))/sysroot
+A64_DEBS   := libjansson4 libjansson-dev check libsubunit0 libsubunit-dev libpng16-16 libpng-dev \
+              zlib1g zlib1g-dev
+A64_STAMP  := $(A64)/sysroot/.unpacked
+A64_PKG    := PKG_CONFIG_SYSROOT_DIR=$(A64_ROOT) \
+              PKG_CONFIG_LIBDIR=$(A64_ROOT)/usr/lib/aarch64-linux-gnu/pkgconfig $(PKG_CONFIG)
+A64_LIB_SRC := $(filter-out lib/io/% lib/render/gl_%,$(wildcard lib/*/*.c))
+A64_OBJ    := $(A64_LIB_SRC:%.c=$(A64)/obj/%.o)
+A64_LIB    := $(A64)/lib/libmodesplit.a
+A64_SUITES ?= volume determinism
+A64_PLUGINS := $(SHAPE_SRC:plugins/shapes/%.c=$(A64)/plugins/shape_%.so)
+A64_CPPFLAGS := -Iinclude -Ilib -Itests -MMD -MP -DMS_HAVE_OSMESA=0 -DMS_HAVE_EGL=0 -DMS_HAVE_GL=0 \
+                -DMS_BUILD_PLUGIN_DIR='"$(abspath $(A64))/plugins"'
+# (=, not :=: pkg-config reads the sysroot once it is unpacked)
+A64_CFLAGS  = $(BASEFLAGS) $(CFLAGS) $(shell $(A64_PKG) --cflags jansson libpng check)
+A64_LIBS    = $(shell $(A64_PKG) --libs jansson libpng check) -ldl -lpthread -lm \
+              -Wl,--disable-new-dtags \
+              -Wl,-rpath,$(A64_ROOT)/usr/lib/aarch64-linux-gnu -Wl,-rpath,$(A64_ROOT)/lib/aarch64-linux-gnu
+A64_TEST_SUPPORT := $(patsubst %.c,$(A64)/obj/%.o,$(wildcard tests/support_*.c))
+.PHONY: aarch64 check-aarch64
+$(A64_STAMP):
+	@command -v $(A64_CC) > /dev/null || { echo "aarch64: $(A64_CC) not found (tools/deps.sh --aarch64)"; exit 1; }
+	@rm -rf $(@D) && mkdir -p $(@D)/debs
+	$(Q)cd $(@D)/debs && apt-get download -q -o APT::Sandbox::User="$$(id -un)" $(A64_DEBS:%=%:arm64) > /dev/null || \
+	    { echo "aarch64: apt-get download failed (tools/deps.sh --aarch64 adds the arm64 package lists)"; exit 1; }
+	$(Q)for d in $(@D)/debs/*.deb; do dpkg-deb -x $$d $(@D) || exit 1; done
+	@touch $@
+$(A64)/obj/lib/volume/%.o: A64_CFLAGS += -fno-math-errno -ffp-contract=off
+$(A64)/obj/%.o: %.c | $(A64_STAMP)
+	@mkdir -p $(@D)
+	@echo "  CC64    $<"
+	$(Q)$(A64_CC) $(A64_CPPFLAGS) $(A64_CFLAGS) -c $< -o $@
+$(A64_LIB): $(A64_OBJ)
+	@mkdir -p $(@D)
+	$(Q)rm -f $@ && $(A64_AR) rcs $@ $^
+$(A64)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h | $(A64_STAMP)
+	@mkdir -p $(@D)
+	@echo "  PLUG64  $@"
+	$(Q)$(A64_CC) $(A64_CPPFLAGS) $(A64_CFLAGS) -shared -Wl,--no-undefined -o $@ $< $(A64_LIBS)
+$(A64)/tests/test_%: $(A64)/obj/tests/test_%.o $(A64_TEST_SUPPORT) $(A64_LIB)
+	@mkdir -p $(@D)
+	@echo "  LD64    $@"
+	$(Q)$(A64_CC) -o $@ $< $(A64_TEST_SUPPORT) $(A64_LIB) $(A64_LIBS)
+aarch64: $(A64_SUITES:%=$(A64)/tests/test_%) $(A64_PLUGINS)
+.PHONY: clean-aarch64
+clean: clean-aarch64
+clean-aarch64:
+	rm -rf $(A64)
+-include $(shell find $(A64)/obj -name '*.d' 2>/dev/null)
+# Each suite's cases as jobs (split_cases, as CHECK_SPLIT); a job's
+# result, log and records as in $(CHECK_DIR) (run_job, below).
+A64_CHECK  := $(A64)/check
+A64_JOBS   := $(foreach n,$(A64_SUITES),$(or $(addprefix $(n).,$(call split_cases,$(n))),$(n)))
+# A64_LEAVE_OUT: the jobs not run here, each with its reason:
+#   volume.tool: runs the `modesplit` tool, which links lib/io (HDF5):
+#   not built for aarch64 (above). The in-process ms_get_build_info it
+#   prints is checked by volume.hard (modesplit_isa_forces_a_path...).
+A64_LEAVE_OUT ?= volume.tool
+# CK_TIMEOUT_MULTIPLIER under qemu-user: each case's time limit
+# (tcase_set_timeout, set for the host's widest path) is scaled by it, as
+# the cases do the same work, emulated. qemu-user runs the NEON path ~20x
+# slower than the host runs SSE2 and ~80x slower than AVX-512 (CPU time of
+# volume.golden: 19 s, 0.93 s, 0.24 s).
+A64_SLOWER ?= 80
+A64_JOBS   := $(filter-out $(A64_LEAVE_OUT),$(A64_JOBS))
+# A64_ONLY: run these jobs alone (.ci/run: the golden hashes, below)
+A64_JOBS   := $(or $(A64_ONLY),$(A64_JOBS))
+# check-aarch64-golden (.ci/run): the golden hashes alone, on NEON: the
+# volume's dam break under both pressure laws and the every-effect scene
+# give the bytes committed from x86-64. The whole check-aarch64 is ~50x
+# the CPU time of `make check`'s volume and determinism suites (qemu-user),
+# too long for CI's budget.
+A64_GOLDEN := volume.golden determinism.golden
+.PHONY: check-aarch64-golden
+check-aarch64-golden:
+	@$(MAKE) --no-print-directory check-aarch64 A64_ONLY="$(A64_GOLDEN)"
+$(A64_CHECK)/%.result: FORCE aarch64
+	$(call run_job,$(A64),$(A64_RUN),CK_TIMEOUT_MULTIPLIER=$(A64_SLOWER))
+check-aarch64: $(A64_JOBS:%=$(A64_CHECK)/%.result)
+	$(call sum_jobs,$(A64_CHECK),$(A64_JOBS),check-aarch64)
+	@echo "make check-aarch64: passed on aarch64 (NEON, under qemu-user; left out: $(A64_LEAVE_OUT))"
+
+# run_job: the recipe of one job, $@ = <dir>/<suite>[.<case>].result, in
+# $(1)'s build; $(2) a command before the suite (an emulator), $(3) more
+# environment. Its output in .log, its skips in .skipped, its paths not
+# applicable in .na, "passed SECONDS" or "failed SECONDS" in .result; the
+# recipe succeeds either way, so the other jobs still run.
+define run_job
+	@mkdir -p $(@D); rm -f $@ $(@:.result=.skipped) $(@:.result=.na)
+	@j=$(basename $(notdir $@)); suite=$${j%%.*}; case_=$$(case $$j in *.*) echo "$${j#*.}";; esac); \
+	t0=$$(date +%s); \
+	if env $${case_:+CK_RUN_CASE=$$case_} MS_TEST_BUILD=$(1) $(3) \
+	    MS_TEST_SKIP_FILE=$(abspath $(@:.result=.skipped)) MS_TEST_NA_FILE=$(abspath $(@:.result=.na)) \
+	    $(2) $(1)/tests/test_$$suite > $(@:.result=.log) 2>&1; then r=passed; else r=failed; fi; \
+	s=$$(($$(date +%s) - t0)); echo "$$r $$s" > $@; \
+	echo "== $(@:.result=): $$r in $$s s; $$(grep '^[0-9]*%: Checks' $(@:.result=.log) | tail -n 1)"
+endef
+# sum_jobs: $(2), the jobs run under $(1), as `make check` sums its suites:
+# each failed job's log, the paths not applicable, the skips; fails when a
+# job did. $(3) names the target.
+define sum_jobs
+	@failed=0; for j in $(2); do r=$(1)/$$j.result; res=failed; \
+	    [ -f $$r ] && read -r res sec < $$r; [ "$$res" = passed ] && continue; failed=$$((failed + 1)); \
+	    echo "== $(1)/$$j: FAILED; its log:"; cat $(1)/$$j.log; \
+	done; \
+	for j in $(2); do \
+	    if [ -f $(1)/$$j.na ]; then sed "s|^|  $$j: not applicable here: |" $(1)/$$j.na; fi; \
+	    if [ -f $(1)/$$j.skipped ]; then sed "s|^|  $$j: skipped: |" $(1)/$$j.skipped; fi; \
+	done; \
+	echo "$(3): $(words $(2)) jobs, $$failed failed, $$(cat $(addprefix $(1)/,$(addsuffix .skipped,$(2))) 2>/dev/null | wc -l) skipped"; \
+	[ $$failed -eq 0 ] || { echo "make $(3): FAILED"; exit 1; }
+endef
+
+# ---- the portable paths, forced ----
+# check-paths: the suites that drive the volume (volume, each case a job,
+# and determinism) again with MODESPLIT_ISA forcing each path of
+# PATHS_ISAS (c and sse2: the plain C every target has, and the path of
+# every x86-64 CPU), so the paths a CPU without AVX-512 takes pass the same
+# physics, golden hashes and same-bytes cases as the picked one, which
+# `make check` ran. The cases' time limits scale with the path's measured
+# speed (tests/support_run.c). .ci/run runs it.
+PATHS_ISAS   ?= c sse2
+PATHS_SUITES ?= volume determinism
+PATHS_CHECK  := $(BUILD)/check-paths
+PATHS_JOBS   := $(foreach n,$(PATHS_SUITES),$(or $(addprefix $(n).,$(call split_cases,$(n))),$(n)))
+# the longest first (as CHECK_FIRST), so that none of them starts last
+PATHS_FIRST  ?= volume.hard volume.model determinism.determinism
+PATHS_JOBS   := $(filter $(PATHS_FIRST),$(PATHS_JOBS)) $(filter-out $(PATHS_FIRST),$(PATHS_JOBS))
+PATHS_JOBS   := $(foreach i,$(PATHS_ISAS),$(addprefix $(i)/,$(PATHS_JOBS)))
+.PHONY: check-paths
+$(PATHS_CHECK)/%.result: FORCE $(PATHS_SUITES:%=$(BUILD)/tests/test_%)
+	$(call run_job,$(BUILD),,MODESPLIT_ISA=$(patsubst %/,%,$(dir $*)))
+check-paths: $(PATHS_JOBS:%=$(PATHS_CHECK)/%.result)
+	$(call sum_jobs,$(PATHS_CHECK),$(PATHS_JOBS),check-paths)
+	@echo "make check-paths: $(PATHS_SUITES) passed on the paths $(PATHS_ISAS) ($(BUILD))"

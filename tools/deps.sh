@@ -5,6 +5,8 @@
 #   tools/deps.sh --ci     the same, plus the real clients the CI-only
 #                          checks drive (ParaView's pvpython, h5py, valgrind,
 #                          clang, clang-format)
+#   tools/deps.sh --aarch64  the same, plus the aarch64 cross check's tools
+#                          (`make check-aarch64`; --ci includes them)
 #   tools/deps.sh --list   print the package list (with --ci: both lists)
 set -eu
 
@@ -38,9 +40,26 @@ CI_PACKAGES="$CI_PACKAGES valgrind clang libclang-rt-14-dev"
 # `make format-check` (CI only: .clang-format)
 CI_PACKAGES="$CI_PACKAGES clang-format"
 
+# `make check-aarch64` (CI): Debian's cross gcc and C library for aarch64,
+# and qemu-user to run what it builds. The arm64 libraries the suites link
+# (jansson, Check, libpng) are unpacked by the Makefile into
+# build-aarch64/sysroot/ with apt-get download, which needs the arm64
+# package lists: the arm64 architecture is added to dpkg for that (no arm64
+# package is installed, so nothing of the amd64 system changes).
+AARCH64_PACKAGES="gcc-aarch64-linux-gnu libc6-dev-arm64-cross qemu-user"
+AARCH64=0
+
 if [ "${1:-}" = "--ci" ]; then
     PACKAGES="$PACKAGES $CI_PACKAGES"
+    AARCH64=1
     shift
+fi
+if [ "${1:-}" = "--aarch64" ]; then
+    AARCH64=1
+    shift
+fi
+if [ $AARCH64 -eq 1 ]; then
+    PACKAGES="$PACKAGES $AARCH64_PACKAGES"
 fi
 
 if [ "${1:-}" = "--list" ]; then
@@ -55,20 +74,33 @@ for p in $PACKAGES; do
     fi
 done
 
-if [ -z "$missing" ]; then
+# the arm64 package lists (--aarch64), read by apt-get download
+need_arm64=0
+if [ $AARCH64 -eq 1 ] && ! dpkg --print-foreign-architectures | grep -qx arm64; then
+    need_arm64=1
+fi
+
+if [ -z "$missing" ] && [ $need_arm64 -eq 0 ]; then
     exit 0
 fi
 
 if [ "$(id -u)" -eq 0 ]; then
-    echo "deps: installing$missing"
+    [ -z "$missing" ] || echo "deps: installing$missing"
     export DEBIAN_FRONTEND=noninteractive
+    if [ $need_arm64 -eq 1 ]; then
+        echo "deps: adding the arm64 architecture (its package lists, for make check-aarch64)"
+        dpkg --add-architecture arm64
+    fi
     # wait for another apt (a second session, unattended upgrades) instead
     # of failing on its lock
     apt-get -o DPkg::Lock::Timeout=600 update -qq
     # shellcheck disable=SC2086
-    apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends $missing
+    [ -z "$missing" ] || apt-get -o DPkg::Lock::Timeout=600 install -y -qq --no-install-recommends $missing
 else
-    echo "deps: missing Debian packages:$missing" >&2
-    echo "deps: run:  sudo apt-get install -y$missing" >&2
+    [ $need_arm64 -eq 0 ] || echo "deps: run:  sudo dpkg --add-architecture arm64 && sudo apt-get update" >&2
+    [ -z "$missing" ] || {
+        echo "deps: missing Debian packages:$missing" >&2
+        echo "deps: run:  sudo apt-get install -y$missing" >&2
+    }
     exit 1
 fi

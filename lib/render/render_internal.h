@@ -275,6 +275,10 @@ ms_status ms_render_cavity_fill(ms_renderer *r, const float *h, const ms_grid *g
 ms_status ms_render_cavity_cut(ms_renderer *r, float *vertices, int nx, int ny);
 void ms_render_cavity_free(ms_renderer *r);
 
+/* render.c: *buf holds at least need floats (grown, old contents dropped,
+ * never shrunk; *cap counts them); MS_ERR_OUT_OF_MEMORY naming `what`. */
+ms_status ms_render_reserve(float **buf, size_t *cap, size_t need, const char *what);
+
 #if MS_HAVE_GL
 /* gl_renderer.c: make the GL side for r (desc checked, shader and passes
  * set); on failure r->gl stays NULL and the error is set. */
@@ -282,9 +286,6 @@ ms_status ms_gl_create(ms_renderer *r, const ms_cubemap *sky);
 void ms_gl_destroy(ms_gl *gl);
 /* gl_renderer.c: the environment drawn again for r->desc's new camera. */
 ms_status ms_gl_camera_moved(ms_renderer *r);
-/* render.c: *buf holds at least need floats (grown, old contents dropped,
- * never shrunk; *cap counts them); MS_ERR_OUT_OF_MEMORY naming `what`. */
-ms_status ms_render_reserve(float **buf, size_t *cap, size_t need, const char *what);
 /* gl_frame.c: one frame of h over g into r->pixels. */
 ms_status ms_gl_draw(ms_renderer *r, const float *h, const ms_grid *g, double time);
 #endif
