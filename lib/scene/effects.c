@@ -227,7 +227,7 @@ static ms_status read_spray(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
     MS_TRY(get_ramp(c, o, "wave_crest", 0.15f, 0.8f, 1e3, "m/s", sc->spray_wave_crest));
     MS_TRY(ms_scene_get_vec(c, o, "rate", 2, rate, 0, 1e4, "1/s", sc->spray_rate));
     MS_TRY(ms_scene_get_float(c, o, "lifetime", 3, 0, 600, 1, "s", &sc->foam_lifetime));
-    MS_TRY(ms_scene_get_float(c, o, "foam", 0.1, 0, 1, 0, "", &sc->foam_deposit));
+    MS_TRY(ms_scene_get_float(c, o, "foam", 0.04, 0, 1, 0, "", &sc->foam_deposit));
     ms_scene_pop(c);
     return MS_OK;
 }

@@ -75,6 +75,8 @@ typedef struct ms_sim_spray_state {
     float gdx, gdy;         /* m */
     float *foam, *foam_tmp; /* gnx * gny: cover in [0, 1], and the advection's scratch */
     int foam_on;            /* some cell holds foam (else decay and advection are skipped) */
+    int box[4];             /* with foam_on: the cells holding foam lie in [box[0], box[1]] x
+                             * [box[2], box[3]] */
     ms_rng rng;             /* seeded from the scene's seed */
     long emitted, landed;   /* since creation (not state: statistics) */
     double ms;              /* ms spent, statistics */

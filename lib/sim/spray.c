@@ -21,7 +21,8 @@
  * The fraction of n is drawn from the sim's own generator (seeded from the
  * scene), so a still pool, whose particles move by mm/s, draws nothing and
  * emits nothing. A spray particle starts at its emitter (jittered within
- * half a spacing, its velocity spread by 10 %): no liquid mass is taken,
+ * half a spacing, each velocity component spread by up to 30 % of its
+ * speed, so the droplets of one emitter fan out as a sheet): no liquid mass is taken,
  * the SPH particle is untouched. At most `budget` fly at once; above it
  * the emission waits.
  *
@@ -34,7 +35,7 @@
  *
  * Foam: a cover in [0, 1] on the wave grid (the SPH field's grid without
  * waves). Each landing and each emission (the surface breaking) adds the
- * scene's `foam` to its cell; the cover fades as exp(-dt / lifetime),
+ * scene's `foam` to the cells within a particle spacing; the cover fades as exp(-dt / lifetime),
  * exact, and is carried semi-Lagrangian by the surface flow, the band's
  * mean horizontal velocity per field cell (the floaters' flow). */
 #include <math.h>
@@ -102,19 +103,40 @@ float ms_sim_surface_z(const ms_sim *sim, int slot, float x, float y)
            ms_sim_sample(sim->hfield[slot], sim->fnx, sim->fny, 1, 0, lo[0], lo[1], fdx, fdy, x, y);
 }
 
-/* The foam cell of world (x, y), clamped to the grid. */
-static size_t foam_cell(const ms_sim_spray_state *s, const float *lo, float x, float y)
+/* Foam where a droplet lands or the surface breaks at world (x, y): the
+ * cover of every cell whose centre lies within `radius` m (one particle
+ * spacing: the patch of surface one SPH particle stands for) raised by
+ * `amount`, at most to 1; the nearest cell at least. */
+static void deposit(ms_sim_spray_state *s, const float *lo, float radius, float x, float y,
+                    float amount)
 {
-    int i = (int)MS_CLAMP((x - lo[0]) / s->gdx, 0.0f, (float)(s->gnx - 1));
-    int j = (int)MS_CLAMP((y - lo[1]) / s->gdy, 0.0f, (float)(s->gny - 1));
-    return (size_t)j * s->gnx + i;
-}
-
-static void deposit(ms_sim_spray_state *s, const float *lo, float x, float y, float amount)
-{
-    float *f = &s->foam[foam_cell(s, lo, x, y)];
-    *f = fminf(1.0f, *f + amount);
-    s->foam_on |= amount > 0;
+    if (!(amount > 0))
+        return;
+    if (!s->foam_on) {
+        s->box[0] = s->gnx, s->box[1] = -1, s->box[2] = s->gny, s->box[3] = -1;
+        s->foam_on = 1;
+    }
+    const float u = (x - lo[0]) / s->gdx - 0.5f, v = (y - lo[1]) / s->gdy - 0.5f;
+    const float ru = radius / s->gdx, rv = radius / s->gdy;
+    const int i0 = (int)MS_CLAMP(ceilf(u - ru), 0.0f, (float)(s->gnx - 1));
+    const int i1 = (int)MS_CLAMP(floorf(u + ru), 0.0f, (float)(s->gnx - 1));
+    const int j0 = (int)MS_CLAMP(ceilf(v - rv), 0.0f, (float)(s->gny - 1));
+    const int j1 = (int)MS_CLAMP(floorf(v + rv), 0.0f, (float)(s->gny - 1));
+    for (int j = j0; j <= j1 && radius > 0; ++j)
+        for (int i = i0; i <= i1; ++i) {
+            const float a = ((float)i - u) / ru, b = ((float)j - v) / rv;
+            if (a * a + b * b > 1.0f)
+                continue;
+            float *f = &s->foam[(size_t)j * s->gnx + i];
+            *f = fminf(1.0f, *f + amount);
+        }
+    const int ic = (int)MS_CLAMP(floorf(u + 0.5f), 0.0f, (float)(s->gnx - 1));
+    const int jc = (int)MS_CLAMP(floorf(v + 0.5f), 0.0f, (float)(s->gny - 1));
+    s->box[0] = MS_MIN(s->box[0], MS_MIN(i0, ic)), s->box[1] = MS_MAX(s->box[1], MS_MAX(i1, ic));
+    s->box[2] = MS_MIN(s->box[2], MS_MIN(j0, jc)), s->box[3] = MS_MAX(s->box[3], MS_MAX(j1, jc));
+    float *f = &s->foam[(size_t)jc * s->gnx + ic];
+    if (*f < amount)
+        *f = fminf(1.0f, amount);
 }
 
 /* Ballistic flight over dt; landed and departed particles leave (stable
@@ -139,7 +161,7 @@ void ms_sim_spray_fly(ms_sim *sim, int slot, float dt, float foam)
             if (p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] || p[2] < lo[2])
                 gone = 1;
             else if (v[2] < 0 && p[2] <= ms_sim_surface_z(sim, slot, p[0], p[1])) {
-                deposit(s, lo, p[0], p[1], foam);
+                deposit(s, lo, sim->spacing, p[0], p[1], foam);
                 s->landed++;
                 gone = 2;
             }
@@ -162,22 +184,50 @@ void ms_sim_foam_step(ms_sim *sim, const float *flow, float dt, float lifetime)
     const float keep = expf(-dt / lifetime);
     const float *lo = sim->domain_min;
     size_t ng = (size_t)s->gnx * s->gny;
-    float most = 0.0f;
     if (flow) {
-        float fdx = (sim->domain_max[0] - lo[0]) / (float)sim->fnx;
-        float fdy = (sim->domain_max[1] - lo[1]) / (float)sim->fny;
-        for (int j = 0; j < s->gny; ++j)
-            for (int i = 0; i < s->gnx; ++i) {
-                float x = lo[0] + ((float)i + 0.5f) * s->gdx,
-                      y = lo[1] + ((float)j + 0.5f) * s->gdy;
-                float ux =
-                    ms_sim_sample(flow, sim->fnx, sim->fny, 2, 0, lo[0], lo[1], fdx, fdy, x, y);
-                float uy =
-                    ms_sim_sample(flow, sim->fnx, sim->fny, 2, 1, lo[0], lo[1], fdx, fdy, x, y);
-                s->foam_tmp[(size_t)j * s->gnx + i] =
-                    keep * ms_sim_sample(s->foam, s->gnx, s->gny, 1, 0, lo[0], lo[1], s->gdx,
-                                         s->gdy, x - ux * dt, y - uy * dt);
+        /* the flow at each foam cell's centre, bilinear on the field grid
+         * (cell-centred, edges held), and the cover at the point it came
+         * from, bilinear on the foam grid: the same sampling as
+         * ms_sim_sample, written out (3x faster on the boat's 300 x 200) */
+        const int fnx = sim->fnx, fny = sim->fny, gnx = s->gnx, gny = s->gny;
+        const float rx = s->gdx * (float)fnx / (sim->domain_max[0] - lo[0]);
+        const float ry = s->gdy * (float)fny / (sim->domain_max[1] - lo[1]);
+        const float sx = dt / s->gdx, sy = dt / s->gdy;
+        const float *restrict f = s->foam;
+        float *restrict out = s->foam_tmp;
+        /* only the cells the foam can reach: its box (foam_step's last
+         * pass) grown by the farthest the flow carries it, plus a cell */
+        float umax = 0.0f;
+        for (size_t c = 0; c < 2 * (size_t)fnx * fny; ++c)
+            umax = fmaxf(umax, fabsf(flow[c]));
+        const int mi = (int)MS_MIN(ceilf(umax * sx) + 1.0f, (float)gnx);
+        const int mj = (int)MS_MIN(ceilf(umax * sy) + 1.0f, (float)gny);
+        const int ilo = MS_MAX(s->box[0] - mi, 0), ihi = MS_MIN(s->box[1] + mi, gnx - 1);
+        const int jlo = MS_MAX(s->box[2] - mj, 0), jhi = MS_MIN(s->box[3] + mj, gny - 1);
+        memset(out, 0, ng * sizeof *out);
+        for (int j = jlo; j <= jhi; ++j) {
+            float v = MS_CLAMP(((float)j + 0.5f) * ry - 0.5f, 0.0f, (float)(fny - 1));
+            int b0 = MS_MIN((int)v, MS_MAX(fny - 2, 0)), b1 = MS_MIN(b0 + 1, fny - 1);
+            float wb = v - (float)b0;
+            const float *r0 = flow + 2 * (size_t)b0 * fnx, *r1 = flow + 2 * (size_t)b1 * fnx;
+            for (int i = ilo; i <= ihi; ++i) {
+                float u = MS_CLAMP(((float)i + 0.5f) * rx - 0.5f, 0.0f, (float)(fnx - 1));
+                int a0 = MS_MIN((int)u, MS_MAX(fnx - 2, 0)), a1 = MS_MIN(a0 + 1, fnx - 1);
+                float wa = u - (float)a0;
+                float ux = (1 - wb) * ((1 - wa) * r0[2 * a0] + wa * r0[2 * a1]) +
+                           wb * ((1 - wa) * r1[2 * a0] + wa * r1[2 * a1]);
+                float uy = (1 - wb) * ((1 - wa) * r0[2 * a0 + 1] + wa * r0[2 * a1 + 1]) +
+                           wb * ((1 - wa) * r1[2 * a0 + 1] + wa * r1[2 * a1 + 1]);
+                float p = MS_CLAMP((float)i - ux * sx, 0.0f, (float)(gnx - 1));
+                float q = MS_CLAMP((float)j - uy * sy, 0.0f, (float)(gny - 1));
+                int i0 = MS_MIN((int)p, MS_MAX(gnx - 2, 0)), i1 = MS_MIN(i0 + 1, gnx - 1);
+                int j0 = MS_MIN((int)q, MS_MAX(gny - 2, 0)), j1 = MS_MIN(j0 + 1, gny - 1);
+                float c = p - (float)i0, d = q - (float)j0;
+                const float *g0 = f + (size_t)j0 * gnx, *g1 = f + (size_t)j1 * gnx;
+                out[(size_t)j * gnx + i] = keep * ((1 - d) * ((1 - c) * g0[i0] + c * g0[i1]) +
+                                                   d * ((1 - c) * g1[i0] + c * g1[i1]));
             }
+        }
         float *t = s->foam;
         s->foam = s->foam_tmp;
         s->foam_tmp = t;
@@ -185,14 +235,21 @@ void ms_sim_foam_step(ms_sim *sim, const float *flow, float dt, float lifetime)
         for (size_t c = 0; c < ng; ++c)
             s->foam[c] *= keep;
     }
-    for (size_t c = 0; c < ng; ++c) {
-        /* below 1e-4 the cover is invisible: cleared, so a calm scene
-         * stops paying for its foam */
-        if (s->foam[c] < 1e-4f)
-            s->foam[c] = 0.0f;
-        most = fmaxf(most, s->foam[c]);
-    }
-    s->foam_on = most > 0.0f;
+    /* below 1e-4 the cover is invisible: cleared, so a calm scene stops
+     * paying for its foam; the box of what is left */
+    int box[4] = {s->gnx, -1, s->gny, -1};
+    for (int j = 0; j < s->gny; ++j)
+        for (int i = 0; i < s->gnx; ++i) {
+            float *c = &s->foam[(size_t)j * s->gnx + i];
+            if (*c < 1e-4f) {
+                *c = 0.0f;
+                continue;
+            }
+            box[0] = MS_MIN(box[0], i), box[1] = MS_MAX(box[1], i);
+            box[2] = MS_MIN(box[2], j), box[3] = MS_MAX(box[3], j);
+        }
+    memcpy(s->box, box, sizeof box);
+    s->foam_on = box[1] >= 0;
 }
 
 /* Ihmsen's potentials over the particles of slot (the header's rule). */
@@ -255,13 +312,13 @@ static void emit(ms_sim *sim, int slot, float dt)
             float *p = s->pos + 3 * s->n, *w = s->vel + 3 * s->n;
             for (int a = 0; a < 3; ++a) {
                 p[a] = pp[a][i] + (ms_rng_uniform(&s->rng) - 0.5f) * sim->spacing;
-                w[a] = v[a] + (ms_rng_uniform(&s->rng) - 0.5f) * 0.2f * speed;
+                w[a] = v[a] + (ms_rng_uniform(&s->rng) - 0.5f) * 0.6f * speed;
             }
             s->n++;
             s->emitted++;
         }
         if (count > 0) /* the surface breaks here */
-            deposit(s, lo, pp[0][i], pp[1][i], sc->foam_deposit);
+            deposit(s, lo, sim->spacing, pp[0][i], pp[1][i], sc->foam_deposit);
     }
 }
 
