@@ -161,7 +161,8 @@ typedef struct ms_sim_info {
     int floaters;               /* floating objects */
     int obstacles;              /* obstacles + container */
     /* --- grown at the end --- */
-    float spacing; /* m, the volume's particle spacing (0 without a volume) */
+    float spacing;    /* m, the volume's particle spacing (0 without a volume) */
+    int spray_budget; /* spray particles in flight at most (scene effects.spray; 0 = none) */
 } ms_sim_info;
 static inline ms_sim_info ms_sim_info_init(void)
 {

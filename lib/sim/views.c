@@ -223,6 +223,7 @@ void ms_sim_get_info(const ms_sim *sim, ms_sim_info *user)
         out->field_ny = sim->fny;
         out->particles = ms_volume_count(sim->volume);
         out->spacing = sim->spacing;
+        out->spray_budget = sim->spray.cap;
     }
     if (sim->surface) {
         out->surface_nx = sim->snx;
