@@ -248,6 +248,11 @@ START_TEST(absent_effects_cost_nothing)
     ck_assert_int_gt(sb.drops, 0);
     ck_assert_uint_eq(sa.effects_bytes, 0);
     ck_assert_ptr_null(ms_sim_floaters(a, NULL));
+    /* no spray: no droplets, no foam, no time (spray_costs_its_buffers: its bytes) */
+    ck_assert_ptr_null(ms_sim_spray(a, NULL));
+    ck_assert_ptr_null(ms_sim_foam(b, NULL, NULL));
+    ck_assert(sa.spray_emitted == 0 && sb.spray_emitted == 0 && sa.spray_ms == 0.0 &&
+              sb.spray_ms == 0.0);
     /* floaters: 7 x (x, y, z, vx, vy) and the surface flow (2 slots of 2
      * floats per field cell, one count per cell) */
     ck_assert_uint_eq(sb.effects_bytes, 7 * 5 * sizeof(float) + 5 * 16 * 16 * sizeof(float));
