@@ -5,8 +5,9 @@
  * and the SPH field of t_m, so 1 and 2 threads give the same bytes.
  *
  * Emission, after Ihmsen et al. 2012 ("Unified spray, foam and bubbles for
- * particle-based fluids", eq. 6-9) with their neighbour sums replaced by
- * what the extraction already has per field cell (no neighbour pass):
+ * particle-based fluids": its potentials and emission count) with their
+ * neighbour sums replaced by what the extraction already has per field
+ * cell (no neighbour pass):
  * each particle within two spacings of its cell's surface H_m emits
  *     n = phi_k (k_ta phi_ta + k_wc phi_wc) dt
  * spray particles, every phi a ramp clamped to [0, 1] over the scene's
@@ -22,9 +23,9 @@
  * scene), so a still pool, whose particles move by mm/s, draws nothing and
  * emits nothing. A spray particle starts at its emitter (jittered within
  * half a spacing, each velocity component spread by up to 30 % of its
- * speed, so the droplets of one emitter fan out as a sheet): no liquid mass is taken,
- * the SPH particle is untouched. At most `budget` fly at once; above it
- * the emission waits.
+ * speed, so the droplets of one emitter fan out as a sheet): no liquid
+ * mass is taken, the SPH particle is untouched. At most `budget` fly at
+ * once; above it the emission waits.
  *
  * Flight: ballistic under the volume's gravity, exact for constant
  * acceleration (x += v h + g h^2 / 2, v += g h) at any step, in sub-steps
@@ -35,9 +36,10 @@
  *
  * Foam: a cover in [0, 1] on the wave grid (the SPH field's grid without
  * waves). Each landing and each emission (the surface breaking) adds the
- * scene's `foam` to the cells within a particle spacing; the cover fades as exp(-dt / lifetime),
- * exact, and is carried semi-Lagrangian by the surface flow, the band's
- * mean horizontal velocity per field cell (the floaters' flow). */
+ * scene's `foam` to the cells within a particle spacing; the cover fades
+ * as exp(-dt / lifetime), exact, and is carried semi-Lagrangian by the
+ * surface flow, the band's mean horizontal velocity per field cell (the
+ * floaters' flow). */
 #include <math.h>
 #include <string.h>
 
@@ -314,6 +316,10 @@ static void emit(ms_sim *sim, int slot, float dt)
                 p[a] = pp[a][i] + (ms_rng_uniform(&s->rng) - 0.5f) * sim->spacing;
                 w[a] = v[a] + (ms_rng_uniform(&s->rng) - 0.5f) * 0.6f * speed;
             }
+            /* the jitter keeps it in the domain (an emitter at a wall) */
+            for (int a = 0; a < 2; ++a)
+                p[a] = MS_CLAMP(p[a], lo[a], sim->domain_max[a]);
+            p[2] = MS_MAX(p[2], lo[2]);
             s->n++;
             s->emitted++;
         }
