@@ -554,7 +554,8 @@ CHECK_PRE += $(if $(SAN),,check-accuracy)
 # minutes of wall clock, paced in real time, which uses under a core).
 # check-long runs them all; .ci/run runs check-long-physics as a stage and
 # check-long-view beside the stages after it, which leave a core to it.
-LONG_PHYSICS := stability:coupled_top_gains stability:coupled_every_scene stability:still_pool
+LONG_PHYSICS := stability:coupled_top_gains stability:coupled_every_scene stability:still_pool \
+                stability:spray_stir
 LONG_VIEW    := view:view_long
 .PHONY: check-long-physics check-long-view
 # $(1): the jobs, $(2): the target's name

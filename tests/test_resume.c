@@ -1272,6 +1272,106 @@ START_TEST(a_second_writer_of_a_run_file_is_refused)
 }
 END_TEST
 
+/* Spray and foam in the run file: each frame's droplets and cover as the
+ * sim showed them, listed in run.xmf; the checkpoint holds them, so a sim
+ * restored from it throws the same spray as the one never stopped. */
+START_TEST(spray_is_written_read_back_and_restored)
+{
+    make_tmp_dir();
+    static const char text[] =
+        "{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.5]}, \"frame_dt\": 0.016667,"
+        " \"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.4, "
+        "0.12]}, {\"min\": [0.12, 0.12, 0.3], \"max\": [0.28, 0.28, 0.45]}], \"field\": [16, 16]},"
+        " \"surface\": {\"cells\": [64, 64], \"wave_speed\": 0.3, \"damping\": 0.9},"
+        " \"effects\": {\"spray\": {\"budget\": 300}}}";
+    ms_scene *sc;
+    ck_assert_msg(ms_scene_parse(text, strlen(text), &sc) == MS_OK, "%s", ms_last_error());
+    ms_sim *sim;
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 1, &sim), MS_OK);
+    ms_writer *w;
+    ck_assert_msg(ms_writer_open(tmp_path("s.h5"), sim, MS_FIELD_COMBINED, &w) == MS_OK, "%s",
+                  ms_last_error());
+    enum { F = 30 };
+    static float drops[F][300 * 3], foam[F][64 * 64];
+    int count[F], most = 0;
+    for (int i = 0; i < F; ++i) {
+        ck_assert_int_eq(ms_sim_step(sim, 1.0f / 60), MS_OK);
+        ck_assert_int_eq(ms_writer_frame(w, sim), MS_OK);
+        const float *xyz = ms_sim_spray(sim, &count[i]);
+        memcpy(drops[i], xyz, (size_t)count[i] * 3 * sizeof(float));
+        memcpy(foam[i], ms_sim_foam(sim, NULL, NULL), sizeof foam[i]);
+        most = count[i] > most ? count[i] : most;
+    }
+    ck_assert_int_gt(most, 10);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(tmp_path("s.h5"), &r), MS_OK);
+    ck_assert_int_eq(ms_reader_spray_budget(r), 300);
+    ms_grid g;
+    ck_assert_int_eq(ms_reader_foam_grid(r, &g), MS_OK);
+    ck_assert_int_eq(g.nx, 64);
+    ck_assert_float_eq(g.dx, 0.4f / 64);
+    static float got[300 * 3], cover[64 * 64];
+    for (int i = 0; i < F; ++i) {
+        int n = -1;
+        ck_assert_int_eq(ms_reader_read_spray(r, i, got, 300, &n), MS_OK);
+        ck_assert_int_eq(n, count[i]);
+        ck_assert(memcmp(got, drops[i], (size_t)n * 3 * sizeof(float)) == 0);
+        ck_assert_int_eq(ms_reader_read_foam(r, i, cover, 64 * 64), MS_OK);
+        ck_assert(memcmp(cover, foam[i], sizeof cover) == 0);
+    }
+    int n;
+    MS_ASSERT_REFUSED(ms_reader_read_spray(r, F, got, 300, &n), MS_ERR_INVALID_ARGUMENT, "outside");
+    MS_ASSERT_REFUSED(ms_reader_read_foam(r, 0, cover, 10), MS_ERR_INVALID_ARGUMENT, "4096");
+    /* the checkpoint of the last frame continues the spray bit for bit */
+    size_t bytes = 0;
+    ck_assert_int_eq(ms_reader_checkpoint_size(r, 0, &bytes), MS_OK);
+    void *blob = malloc(bytes);
+    ck_assert_int_eq(ms_reader_read_checkpoint(r, 0, blob, bytes), MS_OK);
+    ms_sim *b;
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 2, &b), MS_OK);
+    ck_assert_msg(ms_sim_restore(b, blob, bytes) == MS_OK, "%s", ms_last_error());
+    for (int i = 0; i < 20; ++i) {
+        ck_assert_int_eq(ms_sim_step(sim, 1.0f / 60), MS_OK);
+        ck_assert_int_eq(ms_sim_step(b, 1.0f / 60), MS_OK);
+        int na, nb;
+        const float *pa = ms_sim_spray(sim, &na), *pb = ms_sim_spray(b, &nb);
+        ck_assert_int_eq(na, nb);
+        ck_assert(memcmp(pa, pb, (size_t)na * 3 * sizeof(float)) == 0);
+        ck_assert(memcmp(ms_sim_foam(sim, NULL, NULL), ms_sim_foam(b, NULL, NULL),
+                         64 * 64 * sizeof(float)) == 0);
+    }
+    free(blob);
+    ms_reader_close(r);
+    /* ParaView's sidecar lists the droplets and the foam */
+    size_t len = 0;
+    char *xmf = slurp(tmp_path("s.xmf"), &len);
+    ck_assert_ptr_nonnull(xmf);
+    ck_assert_ptr_nonnull(strstr(xmf, "<Grid Name=\"spray\""));
+    ck_assert_ptr_nonnull(strstr(xmf, ":/foam|29 0 0:1 1 1:1 64 64:30 64 64"));
+    free(xmf);
+    /* a file without spray has none */
+    ms_sim_destroy(b);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    ck_assert_int_eq(ms_scene_load("data/scenes/fig3.json", &sc), MS_OK);
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 1, &sim), MS_OK);
+    ck_assert_int_eq(ms_writer_open(tmp_path("n.h5"), sim, 0, &w), MS_OK);
+    ck_assert_int_eq(ms_sim_step(sim, 1.0f / 60), MS_OK);
+    ck_assert_int_eq(ms_writer_frame(w, sim), MS_OK);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    ck_assert_int_eq(ms_reader_open(tmp_path("n.h5"), &r), MS_OK);
+    ck_assert_int_eq(ms_reader_spray_budget(r), 0);
+    MS_ASSERT_REFUSED(ms_reader_read_spray(r, 0, got, 300, &n), MS_ERR_INVALID_ARGUMENT,
+                      "no spray");
+    MS_ASSERT_REFUSED(ms_reader_foam_grid(r, &g), MS_ERR_INVALID_ARGUMENT, "no foam");
+    ms_reader_close(r);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    ms_test_remove_tree(tmp_dir);
+}
+END_TEST
+
 static Suite *resume_suite(void)
 {
     Suite *s = suite_create("resume");
@@ -1289,6 +1389,7 @@ static Suite *resume_suite(void)
     tcase_add_test(tc, checkpoint_every_out_of_range_is_refused);
     tcase_add_test(tc, resume_refuses_a_forged_checkpoint_and_keeps_the_file);
     tcase_add_test(tc, a_second_writer_of_a_run_file_is_refused);
+    tcase_add_test(tc, spray_is_written_read_back_and_restored);
     suite_add_tcase(s, tc);
     TCase *api = tcase_create("snapshot");
     tcase_set_timeout(api, 120);

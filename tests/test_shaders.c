@@ -48,6 +48,9 @@ static const char *const contract[] = {"ms_eye",
                                        "ms_normal_map",
                                        "ms_field",
                                        "ms_caustics_walls",
+                                       "ms_foam",
+                                       "ms_foam_field",
+                                       "ms_foam_on",
                                        "ms_pool_depth",
                                        "ms_caustics_wall_rows",
                                        "ms_side",
@@ -312,6 +315,9 @@ static void draw(const char *name, float rgb[3])
     u.set_vec3(&g, "ms_env_refracted_eye", 0, 0, 2.5f);
     u.set_int(&g, "ms_caustics", 1);
     u.set_int(&g, "ms_caustics_walls", 1); /* not read: the walls not traced */
+    u.set_int(&g, "ms_foam", 1);           /* a 2D texture; no foam */
+    u.set_float(&g, "ms_foam_on", 0);
+    u.set_vec4(&g, "ms_foam_field", -1, -1, 0.5f, 0.5f);
     u.set_float(&g, "ms_pool_depth", 0);
     u.set_float(&g, "ms_caustics_wall_rows", 0);
     u.set_float(&g, "ms_floor_z", -0.5f);

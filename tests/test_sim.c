@@ -248,6 +248,11 @@ START_TEST(absent_effects_cost_nothing)
     ck_assert_int_gt(sb.drops, 0);
     ck_assert_uint_eq(sa.effects_bytes, 0);
     ck_assert_ptr_null(ms_sim_floaters(a, NULL));
+    /* no spray: no droplets, no foam, no time (spray_costs_its_buffers: its bytes) */
+    ck_assert_ptr_null(ms_sim_spray(a, NULL));
+    ck_assert_ptr_null(ms_sim_foam(b, NULL, NULL));
+    ck_assert(sa.spray_emitted == 0 && sb.spray_emitted == 0 && sa.spray_ms == 0.0 &&
+              sb.spray_ms == 0.0);
     /* floaters: 7 x (x, y, z, vx, vy) and the surface flow (2 slots of 2
      * floats per field cell, one count per cell) */
     ck_assert_uint_eq(sb.effects_bytes, 7 * 5 * sizeof(float) + 5 * 16 * 16 * sizeof(float));
@@ -1272,6 +1277,267 @@ START_TEST(particle_arrays_are_one_block)
 }
 END_TEST
 
+/* ---- spray and foam --------------------------------------------------------- */
+
+/* A column of water falling 0.2 m into the small pool. */
+#define SPLASH(spray)                                                                              \
+    "{\"domain\": {\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.5]},"                                 \
+    " \"volume\": {\"spacing\": 0.04, \"fill\": [{\"min\": [0, 0, 0], \"max\": [0.4, 0.4, 0.12]}," \
+    " {\"min\": [0.12, 0.12, 0.3], \"max\": [0.28, 0.28, 0.45]}], \"field\": [16, "                \
+    "16]}, " POOL_SURFACE ", \"effects\": {\"spray\": " spray "}}"
+
+/* Still water throws no spray and lays no foam, for a simulated minute:
+ * its particles keep below the kinetic ramp, no random number is drawn. */
+START_TEST(still_water_throws_no_spray)
+{
+    ms_scene *sc =
+        scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE ", \"effects\": {\"spray\": {}}}");
+    ms_sim *sim = sim_of(sc, 1);
+    steps(sim, 1800, 1.0f / 30);
+    ms_stats st = ms_stats_init();
+    ms_sim_get_stats(sim, &st);
+    ck_assert_int_eq(st.spray_emitted, 0);
+    ck_assert_int_eq(st.spray, 0);
+    int nx, ny;
+    const float *foam = ms_sim_foam(sim, &nx, &ny);
+    ck_assert_ptr_nonnull(foam);
+    ck_assert_int_eq(nx, 64);
+    ck_assert_int_eq(ny, 64);
+    for (int i = 0; i < nx * ny; ++i)
+        ck_assert_float_eq(foam[i], 0.0f);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
+/* A splash throws spray, never more than the budget, that flies above the
+ * water and falls back: once the water calms none is left, and foam lies
+ * where it fell. The SPH particles are not touched: the same scene
+ * without spray gives the same particles, bit for bit. */
+START_TEST(a_splash_throws_spray_that_falls_back)
+{
+    ms_scene *sc = scene(SPLASH("{\"budget\": 200}"));
+    ms_scene *plain = scene(SPLASH("{\"budget\": 1, \"kinetic\": [999, 1000]}"));
+    ms_sim *sim = sim_of(sc, 1), *ref = sim_of(plain, 1);
+    int most = 0, above = 0;
+    for (int f = 0; f < 240; ++f) {
+        steps(sim, 1, 1.0f / 60);
+        steps(ref, 1, 1.0f / 60);
+        int n;
+        const float *p = ms_sim_spray(sim, &n);
+        ck_assert_int_le(n, 200);
+        most = n > most ? n : most;
+        for (int i = 0; i < n; ++i) {
+            ck_assert(isfinite(p[3 * i]) && isfinite(p[3 * i + 2]));
+            above += p[3 * i + 2] > 0.14f; /* above the pool's level */
+        }
+    }
+    ms_stats st = ms_stats_init(), sr = ms_stats_init();
+    ms_sim_get_stats(sim, &st);
+    ms_sim_get_stats(ref, &sr);
+    ck_assert_int_gt(st.spray_emitted, 200); /* the budget was reached and reused */
+    ck_assert_int_eq(most, 200);
+    ck_assert_int_gt(above, 100);
+    ck_assert_int_eq(sr.spray_emitted, 0);
+    ck_assert_int_le(st.spray, 5); /* fallen back */
+    int nx, ny;
+    const float *foam = ms_sim_foam(sim, &nx, &ny);
+    double cover = 0;
+    for (int i = 0; i < nx * ny; ++i) {
+        ck_assert(foam[i] >= 0.0f && foam[i] <= 1.0f);
+        cover += foam[i];
+    }
+    ck_assert_double_gt(cover, 1.0);
+    /* no liquid taken: the particles are the scene's without spray */
+    int n1, n2;
+    const float *p1[3], *v1[3], *p2[3], *v2[3];
+    ms_sim_particles(sim, &n1, p1, v1);
+    ms_sim_particles(ref, &n2, p2, v2);
+    ck_assert_int_eq(n1, n2);
+    for (int a = 0; a < 3; ++a)
+        ck_assert_int_eq(memcmp(p1[a], p2[a], (size_t)n1 * sizeof(float)), 0);
+    ms_sim_destroy(sim);
+    ms_sim_destroy(ref);
+    ms_scene_destroy(sc);
+    ms_scene_destroy(plain);
+}
+END_TEST
+
+/* The flight is the exact parabola of constant gravity, whatever the
+ * frame, and a particle that falls through the surface lands there,
+ * adding foam to that cell. */
+START_TEST(spray_flies_the_exact_parabola_and_lands)
+{
+    float pos[3] = {0.3f, 0.5f, 1.0f}, vel[3] = {0.2f, -0.1f, 2.0f};
+    float foam[4 * 4] = {0}, tmp[4 * 4], h[2] = {0.5f, 0.5f};
+    ms_sim sim = {0};
+    sim.domain_min[2] = 0;
+    sim.domain_max[0] = sim.domain_max[1] = 1;
+    sim.domain_max[2] = 2;
+    sim.fnx = 1;
+    sim.fny = 1;
+    sim.hfield[0] = h; /* still water 0.5 m deep, no waves */
+    sim.spray = (ms_sim_spray_state){.cap = 1,
+                                     .n = 1,
+                                     .pos = pos,
+                                     .vel = vel,
+                                     .g = {0, 0, -9.81f},
+                                     .gnx = 4,
+                                     .gny = 4,
+                                     .gdx = 0.25f,
+                                     .gdy = 0.25f,
+                                     .foam = foam,
+                                     .foam_tmp = tmp};
+    const double p0[3] = {0.3, 0.5, 1.0}, v0[3] = {0.2, -0.1, 2.0}, g[3] = {0, 0, -9.81};
+    double t = 0;
+    const float dts[3] = {0.05f, 1.0f / 60, 0.1f};
+    for (int k = 0; k < 3; ++k) {
+        ms_sim_spray_fly(&sim, 0, dts[k], 0.3f);
+        t += dts[k];
+        ck_assert_int_eq(sim.spray.n, 1);
+        for (int a = 0; a < 3; ++a) {
+            ck_assert_double_eq_tol(pos[a], p0[a] + v0[a] * t + 0.5 * g[a] * t * t, 2e-6);
+            ck_assert_double_eq_tol(vel[a], v0[a] + g[a] * t, 2e-6);
+        }
+    }
+    /* up 2 m/s from 1 m: falls through z = 0.5 at t = (2 + sqrt(4 + 2 g 0.5)) / g */
+    const double land = (2.0 + sqrt(4.0 + 9.81)) / 9.81;
+    const double x = 0.3 + 0.2 * land, y = 0.5 - 0.1 * land;
+    ms_sim_spray_fly(&sim, 0, (float)(land - t) - 0.01f, 0.3f);
+    ck_assert_int_eq(sim.spray.n, 1);
+    ms_sim_spray_fly(&sim, 0, 0.02f, 0.3f);
+    ck_assert_int_eq(sim.spray.n, 0);
+    ck_assert_int_eq(sim.spray.landed, 1);
+    int cell = (int)(y / 0.25) * 4 + (int)(x / 0.25);
+    for (int c = 0; c < 16; ++c)
+        ck_assert_float_eq(foam[c], c == cell ? 0.3f : 0.0f);
+}
+END_TEST
+
+/* Foam fades as exp(-t / lifetime): after one lifetime 1/e of it is left,
+ * whatever the frame rate. */
+START_TEST(foam_fades_with_its_lifetime)
+{
+    float foam[8 * 8], tmp[8 * 8];
+    ms_sim sim = {0};
+    sim.domain_max[0] = sim.domain_max[1] = 1;
+    sim.spray = (ms_sim_spray_state){.gnx = 8,
+                                     .gny = 8,
+                                     .gdx = 0.125f,
+                                     .gdy = 0.125f,
+                                     .foam = foam,
+                                     .foam_tmp = tmp,
+                                     .foam_on = 1};
+    for (int i = 0; i < 64; ++i)
+        foam[i] = i % 2 ? 0.8f : 0.0f;
+    const float life = 2.0f;
+    for (int f = 0; f < 60; ++f)
+        ms_sim_foam_step(&sim, NULL, life / 60, life);
+    for (int i = 0; i < 64; ++i)
+        ck_assert_double_eq_tol(sim.spray.foam[i], i % 2 ? 0.8 * exp(-1.0) : 0.0, 1e-5);
+    for (int f = 0; f < 6; ++f)
+        ms_sim_foam_step(&sim, NULL, life, life);
+    ck_assert_double_eq_tol(sim.spray.foam[1], 0.8 * exp(-7.0), 1e-6);
+    /* faded below what shows: cleared, and the next frames skip it */
+    for (int f = 0; f < 3; ++f)
+        ms_sim_foam_step(&sim, NULL, life, life);
+    ck_assert_float_eq(sim.spray.foam[1], 0.0f);
+    ck_assert_int_eq(sim.spray.foam_on, 0);
+}
+END_TEST
+
+/* A budget above the stated maximum, ramps that are no ramps, and spray
+ * without a volume to throw it are refused, naming value and bound. */
+START_TEST(spray_settings_are_refused_out_of_range)
+{
+    const char *bad[][2] = {
+        {SPLASH("{\"budget\": 300000}"), "300000"},
+        {SPLASH("{\"budget\": 0}"), "budget"},
+        {SPLASH("{\"kinetic\": [2, 1]}"), "lo < hi"},
+        {SPLASH("{\"lifetime\": 0}"), "lifetime"},
+        {SPLASH("{\"foam\": 2}"), "foam"},
+        {SPLASH("{\"sprya\": 2}"), "sprya"},
+        {"{" POOL_DOMAIN ", " POOL_SURFACE ", \"effects\": {\"spray\": {}}}", "needs a \"volume\""},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        ms_scene *sc = NULL;
+        ms_status st = ms_scene_parse(bad[i][0], strlen(bad[i][0]), &sc);
+        ck_assert_msg(st != MS_OK, "case %zu accepted", i);
+        ck_assert_msg(strstr(ms_last_error(), bad[i][1]), "case %zu: %s", i, ms_last_error());
+        ck_assert_msg(strstr(ms_last_error(), "effects.spray"), "case %zu: %s", i, ms_last_error());
+    }
+    ms_scene *sc = NULL;
+    const char *big = SPLASH("{\"budget\": 300000}");
+    MS_ASSERT_REFUSED(ms_scene_parse(big, strlen(big), &sc), MS_ERR_INVALID_ARGUMENT, "262144");
+}
+END_TEST
+
+/* Spray costs its buffers and nothing more: the budget's positions and
+ * velocities, the band's mean velocity per field cell, two foam grids and
+ * the surface flow that carries the foam. */
+START_TEST(spray_costs_its_buffers)
+{
+    ms_scene *plain = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE "}");
+    ms_scene *fx = scene("{" POOL_DOMAIN ", " POOL_VOLUME ", " POOL_SURFACE
+                         ", \"effects\": {\"spray\": {\"budget\": 100}}}");
+    ms_sim *a = sim_of(plain, 1), *b = sim_of(fx, 1);
+    steps(a, 3, 1.0f / 60);
+    steps(b, 3, 1.0f / 60);
+    ms_stats sa = ms_stats_init(), sb = ms_stats_init();
+    ms_sim_get_stats(a, &sa);
+    ms_sim_get_stats(b, &sb);
+    ck_assert_uint_eq(sa.effects_bytes, 0);
+    ck_assert_uint_eq(sb.effects_bytes, (6 * 100 + 4 * 16 * 16 + 2 * 64 * 64) * sizeof(float) +
+                                            5 * 16 * 16 * sizeof(float));
+    ck_assert_uint_eq(sb.surface_bytes, sa.surface_bytes);
+    ck_assert_double_eq(sa.spray_ms, 0);
+    ck_assert_ptr_null(ms_sim_spray(a, NULL));
+    ck_assert_ptr_null(ms_sim_foam(a, NULL, NULL));
+    ms_grid g;
+    MS_ASSERT_REFUSED(ms_sim_foam_grid(a, &g), MS_ERR_STATE, "effects.spray");
+    ck_assert_int_eq(ms_sim_foam_grid(b, &g), MS_OK);
+    ck_assert_int_eq(g.nx, 64);
+    ck_assert_float_eq(g.dx, 0.4f / 64);
+    ms_sim_destroy(a);
+    ms_sim_destroy(b);
+    ms_scene_destroy(plain);
+    ms_scene_destroy(fx);
+}
+END_TEST
+
+static uint64_t spray_hash(const ms_sim *sim)
+{
+    uint64_t h = 1469598103934665603ull;
+    int n, nx, ny;
+    const float *p = ms_sim_spray(sim, &n);
+    const unsigned char *b = (const unsigned char *)p;
+    for (size_t i = 0; i < (size_t)n * 3 * sizeof(float); ++i)
+        h = (h ^ b[i]) * 1099511628211ull;
+    b = (const unsigned char *)ms_sim_foam(sim, &nx, &ny);
+    for (size_t i = 0; i < (size_t)nx * ny * sizeof(float); ++i)
+        h = (h ^ b[i]) * 1099511628211ull;
+    return h;
+}
+
+/* One thread or two: the same spray and foam, frame by frame. */
+START_TEST(spray_is_the_same_on_one_and_two_threads)
+{
+    ms_scene *sc = scene(SPLASH("{\"budget\": 300}"));
+    ms_sim *one = sim_of(sc, 1), *two = sim_of(sc, 2);
+    for (int f = 0; f < 90; ++f) {
+        steps(one, 1, 1.0f / 60);
+        steps(two, 1, 1.0f / 60);
+        ck_assert_uint_eq(spray_hash(one), spray_hash(two));
+    }
+    ms_stats st = ms_stats_init();
+    ms_sim_get_stats(one, &st);
+    ck_assert_int_gt(st.spray_emitted, 0);
+    ms_sim_destroy(one);
+    ms_sim_destroy(two);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 static Suite *sim_suite(void)
 {
     Suite *s = suite_create("sim");
@@ -1304,6 +1570,13 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, bad_calls_are_refused);
     tcase_add_test(tc, failed_step_leaves_the_sim_refusing);
     tcase_add_test(tc, particle_arrays_are_one_block);
+    tcase_add_test(tc, still_water_throws_no_spray);
+    tcase_add_test(tc, a_splash_throws_spray_that_falls_back);
+    tcase_add_test(tc, spray_flies_the_exact_parabola_and_lands);
+    tcase_add_test(tc, foam_fades_with_its_lifetime);
+    tcase_add_test(tc, spray_settings_are_refused_out_of_range);
+    tcase_add_test(tc, spray_costs_its_buffers);
+    tcase_add_test(tc, spray_is_the_same_on_one_and_two_threads);
     suite_add_tcase(s, tc);
     /* The long scene runs on one thread (a case of its own: a sanitizer
      * for threads leaves it out, the Makefile's TSAN_LEAVE_OUT) */

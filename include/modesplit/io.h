@@ -27,6 +27,12 @@
  *                         [count][3] (what ParaView's Xdmf3 reader reads)
  *   /floaters             float32 [frame][n][3], m: the scene's floating
  *                         objects (leaves), when it has any
+ *   /spray, /spray_count  float32 [frame][budget][3] (m) and int32 [frame]:
+ *                         the spray droplets in flight, when the scene
+ *                         throws spray (/spray_id: 0 .. budget-1, their
+ *                         vertex cells in run.xmf)
+ *   /foam                 float32 [frame][y][x]: the foam cover in [0, 1]
+ *                         (attributes dx, origin as a field), with spray
  *   /checkpoint/0, /1     uint8 snapshots of the sim (ms_sim_snapshot),
  *                         attribute frame (see checkpoints below)
  * Only the fields asked for are present. Frame n is the n-th written frame.
@@ -185,6 +191,19 @@ MS_API ms_status ms_reader_read_checkpoint(const ms_reader *r, int i, void *buf,
  * frame's positions x, y, z into xyz (capacity >= n triples). */
 MS_API int ms_reader_floater_count(const ms_reader *r);
 MS_API ms_status ms_reader_read_floaters(const ms_reader *r, long frame, float *xyz, int capacity);
+
+/* Spray (the scene's effects.spray) per frame: /spray, float32
+ * [frame][budget][3], m, the droplets in flight in the first
+ * /spray_count[frame] rows (NaN past them); /foam, float32 [frame][y][x],
+ * the foam cover in [0, 1] on its grid (attributes dx, origin as
+ * /fields). The budget (0 when the file has no spray); frame's droplets
+ * into xyz (capacity >= *n triples; the budget always is); the foam's
+ * grid, and frame's cover into out (count >= nx * ny). */
+MS_API int ms_reader_spray_budget(const ms_reader *r);
+MS_API ms_status ms_reader_read_spray(const ms_reader *r, long frame, float *xyz, int capacity,
+                                      int *n);
+MS_API ms_status ms_reader_foam_grid(const ms_reader *r, ms_grid *out);
+MS_API ms_status ms_reader_read_foam(const ms_reader *r, long frame, float *out, size_t count);
 
 /* ---- shaded-relief preview (PNG) ---------------------------------------- */
 

@@ -216,6 +216,12 @@ typedef struct ms_shader_uniforms {
  *     float ms_pool_depth   still water depth over the floor the strips
  *                           span (m); 0 when the walls were not traced
  *     float ms_caustics_wall_rows  texel rows of one strip
+ *     sampler2D ms_foam     foam cover in [0, 1] in .r (the sim's spray,
+ *                           ms_renderer_set_foam), texture unit 4; its
+ *                           coordinate is (pos.xy - ms_foam_field.xy) *
+ *                           ms_foam_field.zw (vec4 ms_foam_field, as
+ *                           ms_field); float ms_foam_on 1 when there is
+ *                           foam, else 0 (a shader may ignore all three)
  *     float ms_side         1 while the side of the liquid in a glass is
  *                           drawn (a vertical wall: shade with gl_Normal,
  *                           which the renderer sets for it), else 0

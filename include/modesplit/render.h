@@ -200,6 +200,18 @@ typedef struct ms_render_disc {
 #define MS_RENDER_MAX_DISCS 20000
 MS_API ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int n);
 
+/* Spray (ms_sim_spray) drawn with the next draws as lit droplets of
+ * `radius` m (in (0, 1]): n positions, 3n floats x, y, z (m, world;
+ * copied), at most MS_RENDER_MAX_SPRAY; n = 0 removes them. Foam
+ * (ms_sim_foam over ms_sim_foam_grid): a cover in [0, 1] per cell of g
+ * (copied) that shaders reading ms_foam lay over the liquid (water draws
+ * it white; the others ignore it); foam NULL removes it. ms_renderer_draw
+ * sets both from a sim with spray, the droplets 0.15 particle spacings in
+ * radius. */
+#define MS_RENDER_MAX_SPRAY 262144
+MS_API ms_status ms_renderer_set_spray(ms_renderer *r, const float *xyz, int n, float radius);
+MS_API ms_status ms_renderer_set_foam(ms_renderer *r, const float *foam, const ms_grid *g);
+
 /* RGBA8, top row first; view valid until the next draw. */
 MS_API const unsigned char *ms_renderer_pixels(const ms_renderer *r, int *w, int *h);
 MS_API ms_status ms_renderer_write_png(const ms_renderer *r, const char *path);

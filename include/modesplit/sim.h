@@ -117,7 +117,8 @@ MS_API const ms_scene *ms_sim_scene(const ms_sim *sim); /* NULL when made from a
  *               and the smoothing on the surface thread (the flow of the
  *               floaters too)
  *   surface_ms  scripted effects, volume->surface coupling, wave steps
- *   combine_ms  up-sampling and sum (eq. 20), floaters
+ *   combine_ms  up-sampling and sum (eq. 20), floaters, spray (spray_ms
+ *               is its share)
  * volume_steps / surface_steps are the SPH / leapfrog sub-steps taken;
  * bytes is all memory held, split below. An effect the scene does not name
  * adds nothing to any of them. */
@@ -132,6 +133,9 @@ typedef struct ms_stats {
     size_t effects_bytes; /* obstacle masks, floaters, shapes' bookkeeping */
     long drops;           /* drops added to the waves (scripted and rain) */
     int n_time;           /* wave steps in the last frame (eq. 19) */
+    int spray;            /* spray particles in flight (scene effects.spray) */
+    long spray_emitted;   /* spray particles emitted since creation */
+    double spray_ms;      /* emission, flight and foam (on the surface thread) */
 } ms_stats;
 static inline ms_stats ms_stats_init(void)
 {
@@ -157,7 +161,8 @@ typedef struct ms_sim_info {
     int floaters;               /* floating objects */
     int obstacles;              /* obstacles + container */
     /* --- grown at the end --- */
-    float spacing; /* m, the volume's particle spacing (0 without a volume) */
+    float spacing;    /* m, the volume's particle spacing (0 without a volume) */
+    int spray_budget; /* spray particles in flight at most (scene effects.spray; 0 = none) */
 } ms_sim_info;
 static inline ms_sim_info ms_sim_info_init(void)
 {
@@ -172,6 +177,19 @@ MS_API void ms_sim_get_info(const ms_sim *sim, ms_sim_info *out);
  * published frame; NULL and *n = 0 without floaters. View valid until the
  * next ms_sim_step. */
 MS_API const float *ms_sim_floaters(const ms_sim *sim, int *n);
+
+/* Spray (scene effects.spray): 3n floats x, y, z (m) of the particles in
+ * flight at the published frame, thrown by fast SPH particles at the
+ * surface and falling back ballistically; NULL and *n = 0 without spray.
+ * The foam cover on the surface, in [0, 1], nx * ny cells on the wave grid
+ * (the SPH field's grid without waves; ms_sim_foam_grid): where spray
+ * lands and the surface breaks, fading with the scene's lifetime; NULL
+ * and *nx = *ny = 0 without spray. Views valid until the next
+ * ms_sim_step. */
+MS_API const float *ms_sim_spray(const ms_sim *sim, int *n);
+MS_API const float *ms_sim_foam(const ms_sim *sim, int *nx, int *ny);
+/* Where the foam cover lies in the world; MS_ERR_STATE without spray. */
+MS_API ms_status ms_sim_foam_grid(const ms_sim *sim, ms_grid *out);
 
 /* The user dragging the water (paper Fig. 1), for engines: during the
  * next frame's volume step, water within radius (m) of the point `depth`

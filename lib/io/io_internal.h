@@ -45,6 +45,8 @@ typedef struct ms_writer_layout {
                                      0 = stored without filters (fastest, largest) */
     int checkpoint_every;        /* written frames per sim snapshot, 0 = none */
     int floaters;                /* floating objects per frame (/floaters), 0 = none */
+    int spray;                   /* the spray budget (/spray rows a frame), 0 = no spray */
+    ms_grid foam;                /* with spray: where /foam lies */
 } ms_writer_layout;
 
 typedef struct ms_writer_data {
@@ -54,7 +56,10 @@ typedef struct ms_writer_data {
     const float *pos[3], *vel[3];      /* particles views, may be NULL if count is 0 */
     const void *checkpoint;            /* an ms_sim_snapshot blob of this frame, or NULL */
     size_t checkpoint_bytes;
-    const float *floaters; /* 3 * layout.floaters: x, y, z (m) */
+    const float *floaters;  /* 3 * layout.floaters: x, y, z (m) */
+    int spray;              /* droplets in flight, [0, layout.spray] */
+    const float *spray_xyz; /* 3 * spray: x, y, z (m) */
+    const float *foam;      /* layout.foam's cells, cover in [0, 1] */
 } ms_writer_data;
 
 ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out);
@@ -91,6 +96,8 @@ typedef struct ms_xdmf ms_xdmf;
  * to the sidecar's directory); legacy = 1 writes the Xdmf2 flavour. */
 ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_writer_layout *l,
                        int legacy, ms_xdmf **out);
+/* The next frame's spray droplets (/spray rows, run.xmf only), 0 without. */
+void ms_xdmf_set_spray(ms_xdmf *x, int n);
 /* Append frame `frame` (time t, `particles` particles in /Step#frame). */
 ms_status ms_xdmf_frame(ms_xdmf *x, long frame, double t, int particles);
 /* run.xmf's next state with the frame, made before the HDF5 frame is written

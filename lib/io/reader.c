@@ -25,6 +25,9 @@ struct ms_reader {
     hid_t time_dset;
     hid_t floater_dset; /* -1 without /floaters */
     int nfloaters;
+    hid_t spray_dset, spray_n_dset, foam_dset; /* -1 without /spray */
+    int spray_budget;
+    ms_grid foam;
     hid_t dset[MS_IO_NFIELDS];
     ms_grid grid[MS_IO_NFIELDS];
     long frames;
@@ -51,6 +54,10 @@ static void reader_free(ms_reader *r)
         H5Dclose(r->time_dset);
     if (r->floater_dset >= 0)
         H5Dclose(r->floater_dset);
+    hid_t spray[3] = {r->spray_dset, r->spray_n_dset, r->foam_dset};
+    for (int i = 0; i < 3; ++i)
+        if (spray[i] >= 0)
+            H5Dclose(spray[i]);
     if (r->file >= 0)
         H5Fclose(r->file);
     H5Eclear2(H5E_DEFAULT);
@@ -159,6 +166,38 @@ static ms_status open_field(ms_reader *r, int slot, hid_t fields)
     r->fields |= 1u << slot;
     if (dims[0] < (hsize_t)r->frames)
         r->frames = (long)dims[0];
+    return MS_OK;
+}
+
+/* /spray [frame][budget][3], /spray_count [frame] and /foam [frame][y][x]
+ * (with dx and origin, as a field). */
+static ms_status open_spray(ms_reader *r)
+{
+    hsize_t sd[3], nd[1], fd[3];
+    r->spray_dset = open_dataset(r->file, "spray", H5T_FLOAT, 3, sd);
+    r->spray_n_dset = open_dataset(r->file, "spray_count", H5T_INTEGER, 1, nd);
+    r->foam_dset = open_dataset(r->file, "foam", H5T_FLOAT, 3, fd);
+    double dx[2], origin[2];
+    if (r->spray_dset < 0 || r->spray_n_dset < 0 || r->foam_dset < 0 || sd[1] < 1 ||
+        sd[1] > (1u << 20) || sd[2] != 3 || fd[1] < 1 || fd[1] > MS_IO_MAX_SIDE || fd[2] < 1 ||
+        fd[2] > MS_IO_MAX_SIDE || fd[1] * fd[2] > (hsize_t)MS_IO_MAX_CELLS ||
+        ms_h5_read_doubles(r->foam_dset, "dx", dx, 2) < 0 || !(dx[0] >= FLT_MIN) ||
+        !(dx[1] >= FLT_MIN) || !(dx[0] <= 3e38) || !(dx[1] <= 3e38) ||
+        ms_h5_read_doubles(r->foam_dset, "origin", origin, 2) < 0 || !(fabs(origin[0]) <= 3e38) ||
+        !(fabs(origin[1]) <= 3e38))
+        return ms_fail(MS_ERR_PARSE,
+                       "io: %s: /spray, /spray_count and /foam are not the [frame][budget][3], "
+                       "[frame] and [frame][y][x] datasets (foam with dx and origin) of a spray",
+                       r->path);
+    r->spray_budget = (int)sd[1];
+    r->foam = (ms_grid){.nx = (int)fd[2],
+                        .ny = (int)fd[1],
+                        .dx = (float)dx[0],
+                        .dy = (float)dx[1],
+                        .origin = {(float)origin[0], (float)origin[1]}};
+    hsize_t least = MS_MIN(sd[0], MS_MIN(nd[0], fd[0]));
+    if (least < (hsize_t)r->frames)
+        r->frames = (long)least;
     return MS_OK;
 }
 
@@ -319,6 +358,12 @@ static ms_status read_layout(ms_reader *r)
             r->frames = (long)fd[0];
     }
 
+    if (H5Lexists(f, "spray", H5P_DEFAULT) > 0) {
+        ms_status st = open_spray(r);
+        if (st != MS_OK)
+            return st;
+    }
+
     if (H5Lexists(f, "fields", H5P_DEFAULT) > 0) {
         H5O_info_t info;
         if (H5Oget_info_by_name(f, "fields", &info, H5P_DEFAULT) < 0 || info.type != H5O_TYPE_GROUP)
@@ -361,6 +406,7 @@ ms_status ms_reader_open(const char *path, ms_reader **out)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the reader");
     }
     r->file = r->time_dset = r->floater_dset = -1;
+    r->spray_dset = r->spray_n_dset = r->foam_dset = -1;
     for (int i = 0; i < MS_IO_NFIELDS; ++i)
         r->dset[i] = -1;
     ms_h5_quiet q;
@@ -741,4 +787,101 @@ ms_status ms_reader_read_floaters(const ms_reader *r, long frame, float *xyz, in
         H5Sclose(ms);
     ms_h5_loud(&q);
     return st;
+}
+
+int ms_reader_spray_budget(const ms_reader *r)
+{
+    return r ? r->spray_budget : 0;
+}
+
+/* One frame's rows of a [frame][...] dataset d into buf (count: the row's
+ * dimensions after the frame's, rank - 1 of them). */
+static ms_status read_row(const ms_reader *r, hid_t d, long frame, int rank, const hsize_t *row,
+                          hid_t mtype, void *buf, const char *what)
+{
+    hsize_t start[3] = {(hsize_t)frame, 0, 0}, count[3] = {1, 1, 1};
+    for (int i = 1; i < rank; ++i)
+        count[i] = row[i - 1];
+    ms_h5_quiet q;
+    ms_h5_hush(&q);
+    ms_status st = MS_OK;
+    hid_t fs = H5Dget_space(d), ms = H5Screate_simple(rank, count, NULL);
+    if (fs < 0 || ms < 0 || H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) < 0 ||
+        H5Dread(d, mtype, ms, fs, H5P_DEFAULT, buf) < 0)
+        st = ms_h5_fail(MS_ERR_IO, "io: cannot read frame %ld's %s from %s", frame, what, r->path);
+    if (fs >= 0)
+        H5Sclose(fs);
+    if (ms >= 0)
+        H5Sclose(ms);
+    ms_h5_loud(&q);
+    return st;
+}
+
+ms_status ms_reader_read_spray(const ms_reader *r, long frame, float *xyz, int capacity, int *n)
+{
+    ms_status st = check_frame(r, frame);
+    if (st == MS_OK && (st = ms_check_not_null("io", "n", n)) == MS_OK)
+        st = ms_check_not_null("io", "xyz", xyz);
+    if (st != MS_OK)
+        return st;
+    *n = 0;
+    if (r->spray_budget == 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %s holds no spray", r->path);
+    int count = 0;
+    if ((st = read_row(r, r->spray_n_dset, frame, 1, NULL, H5T_NATIVE_INT, &count,
+                       "spray count")) != MS_OK)
+        return st;
+    if (count < 0 || count > r->spray_budget)
+        return ms_fail(MS_ERR_PARSE, "io: %s: frame %ld holds %d droplets, outside [0, %d]",
+                       r->path, frame, count, r->spray_budget);
+    if (capacity < count)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: frame %ld of %s holds %d droplets, more than the capacity %d", frame,
+                       r->path, count, capacity);
+    if (count > 0) {
+        ms_h5_quiet q;
+        ms_h5_hush(&q);
+        hsize_t start[3] = {(hsize_t)frame, 0, 0}, cnt[3] = {1, (hsize_t)count, 3};
+        hid_t fs = H5Dget_space(r->spray_dset), ms = H5Screate_simple(3, cnt, NULL);
+        if (fs < 0 || ms < 0 ||
+            H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, cnt, NULL) < 0 ||
+            H5Dread(r->spray_dset, H5T_NATIVE_FLOAT, ms, fs, H5P_DEFAULT, xyz) < 0)
+            st = ms_h5_fail(MS_ERR_IO, "io: cannot read frame %ld's spray from %s", frame, r->path);
+        if (fs >= 0)
+            H5Sclose(fs);
+        if (ms >= 0)
+            H5Sclose(ms);
+        ms_h5_loud(&q);
+    }
+    if (st == MS_OK)
+        *n = count;
+    return st;
+}
+
+ms_status ms_reader_foam_grid(const ms_reader *r, ms_grid *out)
+{
+    MS_TRY(ms_check_not_null("io", "reader", r));
+    MS_TRY(ms_check_not_null("io", "out", out));
+    if (r->spray_budget == 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %s holds no foam (no spray)", r->path);
+    *out = r->foam;
+    return MS_OK;
+}
+
+ms_status ms_reader_read_foam(const ms_reader *r, long frame, float *out, size_t count)
+{
+    ms_status st = check_frame(r, frame);
+    if (st == MS_OK)
+        st = ms_check_not_null("io", "out", out);
+    if (st != MS_OK)
+        return st;
+    if (r->spray_budget == 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %s holds no foam (no spray)", r->path);
+    const size_t need = (size_t)r->foam.nx * (size_t)r->foam.ny;
+    if (count < need)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: the foam needs %zu floats (%d x %d) but out holds %zu", need,
+                       r->foam.nx, r->foam.ny, count);
+    const hsize_t row[2] = {(hsize_t)r->foam.ny, (hsize_t)r->foam.nx};
+    return read_row(r, r->foam_dset, frame, 3, row, H5T_NATIVE_FLOAT, out, "foam");
 }

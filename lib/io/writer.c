@@ -65,6 +65,10 @@ struct ms_writer {
     hid_t dset[MS_IO_NFIELDS];
     hid_t time_dset;
     hid_t floater_dset; /* /floaters [frame][n][3], -1 without floaters */
+    hid_t spray_dset;   /* /spray [frame][budget][3], -1 without spray */
+    hid_t spray_n_dset; /* /spray_count [frame] */
+    hid_t foam_dset;    /* /foam [frame][y][x] */
+    float *spray_rows;  /* budget * 3: a frame's rows, NaN past the droplets */
     hid_t frames_attr;
     ms_writer_layout layout; /* strings not kept */
     long frames;             /* committed */
@@ -93,6 +97,12 @@ static void close_handles(ms_writer *w)
         H5Dclose(w->floater_dset);
         w->floater_dset = -1;
     }
+    hid_t *spray[3] = {&w->spray_dset, &w->spray_n_dset, &w->foam_dset};
+    for (int i = 0; i < 3; ++i)
+        if (*spray[i] >= 0) {
+            H5Dclose(*spray[i]);
+            *spray[i] = -1;
+        }
     if (w->frames_attr >= 0) {
         H5Aclose(w->frames_attr);
         w->frames_attr = -1;
@@ -114,6 +124,7 @@ static void free_writer(ms_writer *w)
     ms_free(w->xmf_path);
     ms_free(w->xmf2_path);
     ms_free(w->ckpt_buf);
+    ms_free(w->spray_rows);
     ms_free(w);
 }
 
@@ -193,6 +204,16 @@ static ms_status check_layout(const ms_writer_layout *l)
     if (l->floaters < 0 || l->floaters > 1 << 20)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %d floaters is outside [0, %d]", l->floaters,
                        1 << 20);
+    if (l->spray < 0 || l->spray > 1 << 20)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: a spray budget of %d is outside [0, %d]",
+                       l->spray, 1 << 20);
+    if (l->spray > 0 && (l->foam.nx < 1 || l->foam.ny < 1 || l->foam.nx > MS_IO_MAX_SIDE ||
+                         l->foam.ny > MS_IO_MAX_SIDE || !(l->foam.dx > 0) || !(l->foam.dy > 0)))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: the foam grid %d x %d of %g x %g m cells is not a grid; allowed: "
+                       "1 to %d cells a side, cells > 0",
+                       l->foam.nx, l->foam.ny, (double)l->foam.dx, (double)l->foam.dy,
+                       MS_IO_MAX_SIDE);
     return MS_OK;
 }
 
@@ -283,6 +304,58 @@ static hid_t create_floaters(hid_t file, int n)
     return create_extendible(file, "floaters", H5T_IEEE_F32LE, 3, chunk, "m", -1, NULL);
 }
 
+/* Spray: /spray float32 [frame][budget][3] (m), the droplets in flight
+ * in their first /spray_count[frame] rows and NaN past them (shuffle +
+ * deflate take the NaN away), and the foam cover /foam float32
+ * [frame][y][x] on its grid (attributes dx, origin as /fields). */
+static int create_spray(ms_writer *w, const ms_writer_layout *l)
+{
+    const hsize_t chunk[3] = {1, (hsize_t)l->spray, 3}, nchunk[1] = {TIME_CHUNK};
+    const float nan = NAN;
+    const int zero = 0;
+    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    hsize_t dims[3] = {0, chunk[1], 3}, maxdims[3] = {H5S_UNLIMITED, chunk[1], 3};
+    hid_t space = H5Screate_simple(3, dims, maxdims);
+    if (dcpl >= 0 && space >= 0 && H5Pset_chunk(dcpl, 3, chunk) >= 0 &&
+        set_filters(dcpl, MS_MAX(l->deflate, 1)) >= 0 &&
+        H5Pset_fill_value(dcpl, H5T_NATIVE_FLOAT, &nan) >= 0) {
+        w->spray_dset =
+            H5Dcreate2(w->file, "spray", H5T_IEEE_F32LE, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+        if (w->spray_dset >= 0 && ms_h5_attr_string(w->spray_dset, "units", "m") < 0) {
+            H5Dclose(w->spray_dset);
+            w->spray_dset = -1;
+        }
+    }
+    if (dcpl >= 0)
+        H5Pclose(dcpl);
+    if (space >= 0)
+        H5Sclose(space);
+    if (w->spray_dset < 0)
+        return -1;
+    w->spray_n_dset = create_extendible(w->file, "spray_count", H5T_STD_I32LE, 1, nchunk, "",
+                                        H5T_NATIVE_INT, &zero);
+    w->foam_dset = create_field(w->file, "foam", &l->foam, l->deflate);
+    if (w->spray_n_dset < 0 || w->foam_dset < 0 ||
+        ms_h5_attr_string(w->foam_dset, "meaning", "foam cover in [0, 1]") < 0)
+        return -1;
+    /* /spray_id: 0 .. budget-1, the vertex cells of the spray (xdmf.c) */
+    int *ids = ms_alloc_array((size_t)l->spray, sizeof *ids);
+    hsize_t n[1] = {(hsize_t)l->spray};
+    hid_t s1 = ids ? H5Screate_simple(1, n, NULL) : -1;
+    hid_t d = s1 >= 0 ? H5Dcreate2(w->file, "spray_id", H5T_STD_I32LE, s1, H5P_DEFAULT, H5P_DEFAULT,
+                                   H5P_DEFAULT)
+                      : -1;
+    for (int i = 0; ids && i < l->spray; ++i)
+        ids[i] = i;
+    herr_t e = d >= 0 ? H5Dwrite(d, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, ids) : -1;
+    if (d >= 0)
+        H5Dclose(d);
+    if (s1 >= 0)
+        H5Sclose(s1);
+    ms_free(ids);
+    return e < 0 ? -1 : 0;
+}
+
 /* Root attributes, datasets and the `frames` attribute of a new file. */
 static int create_checkpoints(ms_writer *w);
 
@@ -324,6 +397,8 @@ static int write_layout(ms_writer *w, const ms_writer_layout *l)
     if (w->time_dset < 0)
         return -1;
     if (l->floaters > 0 && (w->floater_dset = create_floaters(f, l->floaters)) < 0)
+        return -1;
+    if (l->spray > 0 && create_spray(w, l) < 0)
         return -1;
     if (l->checkpoint_every > 0 && !create_checkpoints(w))
         return -1;
@@ -466,6 +541,7 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
     if (!w)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
     w->file = w->time_dset = w->frames_attr = w->floater_dset = -1;
+    w->spray_dset = w->spray_n_dset = w->foam_dset = -1;
     w->lock_fd = -1;
     for (int i = 0; i < MS_IO_NFIELDS; ++i)
         w->dset[i] = -1;
@@ -623,6 +699,9 @@ static uint64_t frame_bound_bytes(const ms_writer *w, int particles)
     if (w->layout.fields & MS_FIELD_PARTICLES)
         raw += (uint64_t)particles * 13u * 4u; /* H5Part 6 + id + [n][3] twice */
     raw += w->ckpt_pending + (uint64_t)w->layout.floaters * 12u;
+    if (w->layout.spray > 0)
+        raw += (uint64_t)w->layout.spray * 12u + 4u +
+               (uint64_t)w->layout.foam.nx * (uint64_t)w->layout.foam.ny * 4u;
     /* deflate can grow incompressible data a little */
     return raw + raw / 64 + META_SLACK_BYTES;
 }
@@ -826,6 +905,15 @@ static ms_status check_data(const ms_writer *w, const ms_writer_data *d)
     if (w->layout.floaters > 0 && !d->floaters)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: %d floaters but no positions for frame %ld",
                        w->layout.floaters, w->frames);
+    if (w->layout.spray > 0) {
+        if (d->spray < 0 || d->spray > w->layout.spray)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "io: %d spray droplets in frame %ld, outside [0, %d] (the budget)",
+                           d->spray, w->frames, w->layout.spray);
+        if ((d->spray > 0 && !d->spray_xyz) || !d->foam)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "io: frame %ld has no spray positions or no foam", w->frames);
+    }
     return MS_OK;
 }
 
@@ -853,6 +941,7 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
     long k = w->frames;
     int particles = (w->layout.fields & MS_FIELD_PARTICLES) ? d->particles : 0;
     /* 0: run.xmf's next state, renamed in after the commit (xdmf.c) */
+    ms_xdmf_set_spray(w->xdmf, w->layout.spray > 0 ? d->spray : 0);
     if ((st = ms_xdmf_prepare(w->xdmf, k, d->time, particles)) != MS_OK) {
         ms_h5_loud(&q);
         return st;
@@ -873,6 +962,22 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
     if (ok && w->floater_dset >= 0) {
         hsize_t row[2] = {(hsize_t)w->layout.floaters, 3};
         ok = append_rows(w->floater_dset, k, d->floaters, H5T_NATIVE_FLOAT, 3, row) >= 0;
+    }
+    if (ok && w->spray_dset >= 0) {
+        const size_t used = 3 * (size_t)d->spray, all = 3 * (size_t)w->layout.spray;
+        if (!w->spray_rows && !(w->spray_rows = ms_alloc_array(all, sizeof(float))))
+            ok = 0;
+        if (ok) {
+            if (used)
+                memcpy(w->spray_rows, d->spray_xyz, used * sizeof(float));
+            for (size_t i = used; i < all; ++i)
+                w->spray_rows[i] = NAN;
+        }
+        hsize_t row[2] = {(hsize_t)w->layout.spray, 3};
+        hsize_t frow[2] = {(hsize_t)w->layout.foam.ny, (hsize_t)w->layout.foam.nx};
+        ok = ok && append_rows(w->spray_dset, k, w->spray_rows, H5T_NATIVE_FLOAT, 3, row) >= 0 &&
+             append_rows(w->spray_n_dset, k, &d->spray, H5T_NATIVE_INT, 1, NULL) >= 0 &&
+             append_rows(w->foam_dset, k, d->foam, H5T_NATIVE_FLOAT, 3, frow) >= 0;
     }
     if (ok && d->checkpoint && d->checkpoint_bytes > 0)
         ok = write_checkpoint(w, k, d->checkpoint, d->checkpoint_bytes);
@@ -1125,6 +1230,24 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
         if (nf < k)
             k = nf;
     }
+    htri_t has_spray = H5Lexists(f, "spray", H5P_DEFAULT);
+    if ((has_spray > 0) != (l->spray > 0))
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "io: %s %s spray and this run %s it: not the same output", p,
+                       has_spray > 0 ? "holds" : "lacks", l->spray > 0 ? "throws" : "lacks");
+    if (l->spray > 0) {
+        static const char *const names[3] = {"spray", "spray_count", "foam"};
+        hid_t *d[3] = {&w->spray_dset, &w->spray_n_dset, &w->foam_dset};
+        for (int i = 0; i < 3; ++i) {
+            *d[i] =
+                H5Lexists(f, names[i], H5P_DEFAULT) > 0 ? H5Dopen2(f, names[i], H5P_DEFAULT) : -1;
+            long nf = *d[i] >= 0 ? first_dim(*d[i]) : -1;
+            if (nf < 0)
+                return ms_fail(MS_ERR_PARSE, "io: %s has no readable /%s", p, names[i]);
+            if (nf < k)
+                k = nf;
+        }
+    }
     w->frames_attr = H5Aopen(f, "frames", H5P_DEFAULT);
     if (w->frames_attr < 0)
         return ms_fail(MS_ERR_PARSE, "io: %s has no frames attribute", p);
@@ -1180,6 +1303,13 @@ static ms_status trim_and_relist(ms_writer *w)
     hsize_t fdims[3] = {(hsize_t)k, (hsize_t)w->layout.floaters, 3};
     if (w->floater_dset >= 0 && H5Dset_extent(w->floater_dset, fdims) < 0)
         return MS_ERR_IO;
+    if (w->spray_dset >= 0) {
+        hsize_t sdims[3] = {(hsize_t)k, (hsize_t)w->layout.spray, 3};
+        hsize_t gdims[3] = {(hsize_t)k, (hsize_t)w->layout.foam.ny, (hsize_t)w->layout.foam.nx};
+        if (H5Dset_extent(w->spray_dset, sdims) < 0 || H5Dset_extent(w->spray_n_dset, tdims) < 0 ||
+            H5Dset_extent(w->foam_dset, gdims) < 0)
+            return MS_ERR_IO;
+    }
     if (w->layout.fields & MS_FIELD_PARTICLES) {
         /* links of later frames, if the kill came between link and `frames` */
         for (long j = k;; ++j) {
@@ -1234,8 +1364,22 @@ static ms_status relist_sidecars(ms_writer *w)
         int n = 0;
         if (ok && (w->layout.fields & MS_FIELD_PARTICLES))
             ok = (n = step_count(w->file, j)) >= 0;
+        int ns = 0;
+        if (ok && w->spray_n_dset >= 0) {
+            fs = H5Dget_space(w->spray_n_dset);
+            ms = H5Screate_simple(1, count, NULL);
+            ok = fs >= 0 && ms >= 0 &&
+                 H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, NULL, count, NULL) >= 0 &&
+                 H5Dread(w->spray_n_dset, H5T_NATIVE_INT, ms, fs, H5P_DEFAULT, &ns) >= 0 &&
+                 ns >= 0 && ns <= w->layout.spray;
+            if (fs >= 0)
+                H5Sclose(fs);
+            if (ms >= 0)
+                H5Sclose(ms);
+        }
         if (!ok)
             return ms_h5_fail(MS_ERR_PARSE, "io: frame %ld of %s cannot be read back", j, w->path);
+        ms_xdmf_set_spray(w->xdmf, ns);
         st = ms_xdmf_frame(w->xdmf, j, t, n);
         if (st == MS_OK)
             st = ms_xdmf_frame(w->xdmf2, j, t, n);

@@ -53,7 +53,12 @@ static ms_status sim_layout(const ms_sim *sim, unsigned fields, ms_writer_layout
     l.checkpoint_every = sc ? ms_scene_output_checkpoint_every(sc) : 1;
     ms_sim_info info = ms_sim_info_init();
     ms_sim_get_info(sim, &info);
-    l.floaters = info.floaters; /* fig10's leaves, every frame */
+    l.floaters = info.floaters;  /* fig10's leaves, every frame */
+    if (info.spray_budget > 0) { /* spray in flight and the foam, every frame */
+        if ((st = ms_sim_foam_grid(sim, &l.foam)) != MS_OK)
+            return st;
+        l.spray = info.spray_budget;
+    }
     *out = l;
     return MS_OK;
 }
@@ -122,6 +127,13 @@ ms_status ms_writer_frame(ms_writer *w, const ms_sim *sim)
         if (!d.floaters || n != l->floaters)
             return ms_fail(MS_ERR_STATE, "io: the sim shows %d floaters, the file holds %d", n,
                            l->floaters);
+    }
+    if (l->spray > 0) {
+        int nx = 0, ny = 0;
+        d.spray_xyz = ms_sim_spray(sim, &d.spray);
+        d.foam = ms_sim_foam(sim, &nx, &ny);
+        if (!d.spray_xyz || nx != l->foam.nx || ny != l->foam.ny)
+            return ms_fail(MS_ERR_STATE, "io: the sim's spray is not the file's");
     }
     /* the sim's whole state with every checkpoint_every-th frame */
     if (l->checkpoint_every > 0 && ms_writer_frames(w) % l->checkpoint_every == 0) {

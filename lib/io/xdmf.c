@@ -16,7 +16,10 @@
  * collection with its <Time>, one uniform grid per distinct field grid
  * (combined and surface share the wave grid, volume has the SPH grid) and,
  * when the frame has particles, a poly-vertex grid of them with `velocity`
- * (3-vector) and `id`, one vertex cell per particle. The grids are named
+ * (3-vector) and `id`, one vertex cell per particle, and with spray a
+ * grid "foam" (the cover, point data on its grid) and, when droplets fly,
+ * a poly-vertex grid "spray" (run.xmf only; the legacy sidecar lists
+ * neither). The grids are named
  * after what they hold, but ParaView 5.11's Xdmf3ReaderS (what File > Open
  * picks) flattens every file into one unnamed multipiece, whatever its
  * nesting: named blocks come from the legacy sidecar. The legacy reader
@@ -79,6 +82,7 @@ struct ms_xdmf {
     int pending_fd;     /* -1: none */
     char *pending_path; /* path.tmp */
     off_t pending_body; /* bytes the frame adds before the closing tags */
+    int spray;          /* the next frame's spray droplets (ms_xdmf_set_spray) */
 };
 
 #define PARTICLE_GROUP MS_IO_NFIELDS
@@ -379,6 +383,54 @@ static void particles_xml(sbuf *b, const ms_xdmf *x, long frame, int n, const ch
               time_xml, n, n, x->h5, step, n, x->h5, frame, n, x->h5, frame, n, x->h5, step);
 }
 
+void ms_xdmf_set_spray(ms_xdmf *x, int n)
+{
+    if (x)
+        x->spray = n;
+}
+
+/* The spray of a frame (run.xmf only): the first n rows of /spray's
+ * frame as vertex cells (connectivity: the first n of /spray_id, which
+ * holds 0 .. budget-1), and the foam cover as point data on its grid, as
+ * a height field is. */
+static void spray_xml(sbuf *b, const ms_xdmf *x, long frame, int n)
+{
+    const ms_grid *g = &x->layout.foam;
+    const int budget = x->layout.spray;
+    double ox = (double)g->origin[0] + 0.5 * g->dx, oy = (double)g->origin[1] + 0.5 * g->dy;
+    sb_printf(b,
+              "    <Grid Name=\"foam\" GridType=\"Uniform\">\n"
+              "     <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"1 %d %d\"/>\n"
+              "     <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+              "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+              "Format=\"XML\">0 %.17g %.17g</DataItem>\n"
+              "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+              "Format=\"XML\">1 %.9g %.9g</DataItem>\n"
+              "     </Geometry>\n"
+              "     <Attribute Name=\"foam\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+              "      <DataItem Dimensions=\"1 %d %d\" NumberType=\"Float\" "
+              "Precision=\"4\" Format=\"HDF\">%s:/foam|%ld 0 0:1 1 1:1 %d %d:%ld %d %d</DataItem>\n"
+              "     </Attribute>\n"
+              "    </Grid>\n",
+              g->ny, g->nx, oy, ox, (double)g->dy, (double)g->dx, g->ny, g->nx, x->h5, frame, g->ny,
+              g->nx, frame + 1, g->ny, g->nx);
+    if (n <= 0)
+        return;
+    sb_printf(b,
+              "    <Grid Name=\"spray\" GridType=\"Uniform\">\n"
+              "     <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%d\" "
+              "NodesPerElement=\"1\">\n"
+              "      <DataItem Dimensions=\"%d\" NumberType=\"Int\" Precision=\"4\" "
+              "Format=\"HDF\">%s:/spray_id|0:1:%d:%d</DataItem>\n"
+              "     </Topology>\n"
+              "     <Geometry GeometryType=\"XYZ\">\n"
+              "      <DataItem Dimensions=\"%d 3\" NumberType=\"Float\" Precision=\"4\" "
+              "Format=\"HDF\">%s:/spray|%ld 0 0:1 1 1:1 %d 3:%ld %d 3</DataItem>\n"
+              "     </Geometry>\n"
+              "    </Grid>\n",
+              n, n, x->h5, n, budget, n, x->h5, frame, n, frame + 1, budget);
+}
+
 /* ---- legacy: run.xdmf2 + run.xdmf2.d/<grid>.xml ---- */
 
 static const char *group_file(int g)
@@ -545,6 +597,8 @@ ms_status ms_xdmf_prepare(ms_xdmf *x, long frame, double t, int particles)
             field_grid_xml(&b, x, i, frame, "");
     if (particles > 0)
         particles_xml(&b, x, frame, particles, "");
+    if (x->layout.spray > 0)
+        spray_xml(&b, x, frame, x->spray);
     sb_printf(&b, "   </Grid>\n");
     size_t body = b.len;
     sb_printf(&b, "%s", TAIL);

@@ -107,8 +107,9 @@ void ms_gl_delete_objects(ms_gl *gl)
     glDeleteTextures(1, &gl->open_tex);
     glDeleteFramebuffers(1, &gl->env_fbo);
     glDeleteRenderbuffers(1, &gl->env_depth);
-    GLuint buf[4] = {gl->pool_vbo, gl->discs_vbo, gl->mesh_vbo, gl->mesh_ibo};
-    glDeleteBuffers(4, buf);
+    glDeleteTextures(1, &gl->foam_tex);
+    GLuint buf[5] = {gl->pool_vbo, gl->discs_vbo, gl->mesh_vbo, gl->mesh_ibo, gl->spray_vbo};
+    glDeleteBuffers(5, buf);
     GLuint rb[2] = {gl->color_rb, gl->depth_rb};
     glDeleteRenderbuffers(2, rb);
     glDeleteFramebuffers(1, &gl->fbo);
@@ -116,6 +117,7 @@ void ms_gl_delete_objects(ms_gl *gl)
     ms_gl_program_free(&gl->pool);
     ms_gl_program_free(&gl->sky);
     ms_gl_program_free(&gl->glass);
+    ms_gl_program_free(&gl->spray);
 }
 
 ms_status ms_renderer_create_in_context(const ms_renderer_desc *d, ms_renderer **out)

@@ -1,6 +1,7 @@
 /* ms_renderer_draw: the sim's combined field (ms_sim_height over
  * ms_sim_field_grid's MS_FIELD_COMBINED grid) at the fields' time, with
- * the sim's floaters (the paper's leaves) and the scene's boat as discs.
+ * the sim's floaters (the paper's leaves) and the scene's boat as discs,
+ * its spray as droplets and its foam on the liquid.
  *
  * For display only, the SPH part of the combined field is reconstructed
  * more smoothly than eq. 20's bilinear up-sampling: the field drawn is
@@ -260,6 +261,18 @@ ms_status ms_renderer_draw(ms_renderer *r, const ms_sim *sim)
             MS_OK ||
         (st = ms_render_objects_update(r, sc, sim, ms_sim_time(sim))) != MS_OK)
         return st;
+    /* spray and foam, when the sim throws them (else those set by hand stay) */
+    int nspray = 0;
+    const float *spray = ms_sim_spray(sim, &nspray);
+    ms_grid fg;
+    if (spray) {
+        ms_sim_info si = ms_sim_info_init();
+        ms_sim_get_info(sim, &si);
+        if ((st = ms_renderer_set_spray(r, spray, nspray, 0.15f * si.spacing)) != MS_OK ||
+            (st = ms_sim_foam_grid(sim, &fg)) != MS_OK ||
+            (st = ms_renderer_set_foam(r, ms_sim_foam(sim, NULL, NULL), &fg)) != MS_OK)
+            return st;
+    }
     /* the SPH part smoothed for display, when it was up-sampled (eq. 20) */
     int vnx = 0, vny = 0;
     const float *v = ms_sim_volume_height(sim, &vnx, &vny);

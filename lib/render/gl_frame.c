@@ -236,6 +236,7 @@ static void draw_liquid(ms_renderer *r, double time)
                    1.0f / ((float)f->ny * f->dy));
     }
     ms_gl_walls_bind(r, &u);
+    ms_gl_foam_bind(r, &u);
     if (r->shader.vt->set_uniforms)
         r->shader.vt->set_uniforms(r->shader.self, &u);
 
@@ -310,6 +311,7 @@ static void draw_scene(ms_renderer *r, double time)
     glFrontFace(GL_CCW);
     ms_gl_pool_draw(r, 1.0f, 0.0f);
     glDisable(GL_CULL_FACE);
+    ms_gl_spray_draw(r, view);
 
     /* the sky: the camera's basis from the view matrix's rows, scaled to
      * the view's half-extents at unit distance */
@@ -355,10 +357,15 @@ static ms_status frame(ms_renderer *r, const float *h, const ms_grid *g, double 
         return st;
     if (r->discs_changed && (st = ms_gl_discs_upload(r)) != MS_OK)
         return st;
+    if ((!r->gl->foam_tex || r->foam_changed) && (st = ms_gl_foam_upload(r)) != MS_OK)
+        return st;
+    r->foam_changed = 0;
     double t2 = ms_now();
     if ((st = ms_gl_env_objects(r)) != MS_OK) /* the objects refracted and reflected */
         return st;
     draw_scene(r, time);
+    if ((st = ms_gl_check("drawing the spray")) != MS_OK)
+        return st;
     glFinish();
     double t3 = ms_now();
     if (r->gl->context.borrowed)

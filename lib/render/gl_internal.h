@@ -145,6 +145,10 @@ struct ms_gl {
     GLuint open_tex;         /* the light in the water, in slices (gl_walls.c) */
     int open_n, open_slices; /* its size as uploaded: n x slices n */
     GLuint side_vbo;         /* the liquid's side in the glass (gl_glass.c) */
+    GLuint foam_tex;         /* ms_foam (gl_spray.c): 1 x 1 of 0 until foam is set */
+    int foam_nx, foam_ny;    /* its size as uploaded */
+    ms_gl_program spray;     /* the droplets (gl_spray.c), made at the first */
+    GLuint spray_vbo;
 };
 
 /* gl_pool.c: the pool's geometry into gl->pool_vbo; the pool program. */
@@ -201,6 +205,14 @@ void ms_gl_glass_draw(const ms_renderer *r, const float eye[3], float keep);
 void ms_gl_liquid_side_draw(ms_renderer *r, const ms_shader_uniforms *u);
 /* gl_renderer.c: after r->desc's camera changed: ms_env drawn again. */
 ms_status ms_gl_camera_moved(ms_renderer *r);
+
+/* gl_spray.c: the foam cover into ms_foam (made at the first call, 1 x 1
+ * of 0 without foam), bound for the liquid's shader with ms_foam_field
+ * and ms_foam_on; the spray drawn as lit droplets with the view matrix
+ * view (column-major) current. */
+ms_status ms_gl_foam_upload(ms_renderer *r);
+void ms_gl_foam_bind(const ms_renderer *r, const ms_shader_uniforms *u);
+void ms_gl_spray_draw(ms_renderer *r, const float view[16]);
 
 /* A sentence for the first pending GL error, "" if none (clears them). */
 ms_status ms_gl_check(const char *doing);

@@ -298,6 +298,8 @@ void ms_renderer_destroy(ms_renderer *r)
     ms_caustics_free(&r->caustics);
     ms_render_objects_free(r);
     ms_free(r->discs);
+    ms_free(r->spray);
+    ms_free(r->foam);
     ms_free(r->display);
     ms_render_cavity_free(r);
     ms_free(r->pixels);
@@ -381,6 +383,70 @@ ms_status ms_renderer_set_discs(ms_renderer *r, const ms_render_disc *discs, int
     r->ndiscs = n;
     r->nleaves = 0;
     r->discs_changed = 1;
+    return MS_OK;
+}
+
+ms_status ms_renderer_set_spray(ms_renderer *r, const float *xyz, int n, float radius)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK ||
+        (st = ms_check_int_range(PART, "spray n", n, 0, MS_RENDER_MAX_SPRAY)) != MS_OK ||
+        (n > 0 && (st = ms_check_not_null(PART, "spray", xyz)) != MS_OK) ||
+        (n > 0 && (st = ms_check_range(PART, "spray radius", radius, 1e-6, 1.0, "m")) != MS_OK))
+        return st;
+    for (int i = 0; i < 3 * n; ++i)
+        if (!isfinite(xyz[i]) || fabsf(xyz[i]) > 1e6f)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "render: spray droplet %d coordinate %d is %g, outside [-1e6, 1e6] m",
+                           i / 3, i % 3, (double)xyz[i]);
+    if (n > r->spray_cap) {
+        float *p = ms_alloc_array((size_t)n * 3, sizeof *p);
+        if (!p)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %d droplets", n);
+        ms_free(r->spray);
+        r->spray = p;
+        r->spray_cap = n;
+    }
+    if (n > 0)
+        memcpy(r->spray, xyz, (size_t)n * 3 * sizeof *xyz);
+    r->nspray = n;
+    r->spray_radius = radius;
+    return MS_OK;
+}
+
+ms_status ms_renderer_set_foam(ms_renderer *r, const float *foam, const ms_grid *g)
+{
+    ms_status st;
+    if ((st = ms_check_not_null(PART, "renderer", r)) != MS_OK)
+        return st;
+    if (!foam) {
+        r->foam_changed |= r->has_foam;
+        r->has_foam = 0;
+        return MS_OK;
+    }
+    if ((st = ms_check_not_null(PART, "foam grid", g)) != MS_OK ||
+        (st = ms_check_int_range(PART, "foam grid nx", g->nx, 1, 16384)) != MS_OK ||
+        (st = ms_check_int_range(PART, "foam grid ny", g->ny, 1, 16384)) != MS_OK ||
+        (st = ms_check_positive(PART, "foam grid dx", g->dx, "m")) != MS_OK ||
+        (st = ms_check_positive(PART, "foam grid dy", g->dy, "m")) != MS_OK)
+        return st;
+    const size_t cells = (size_t)g->nx * (size_t)g->ny;
+    for (size_t c = 0; c < cells; ++c)
+        if (!(foam[c] >= 0.0f && foam[c] <= 1.0f))
+            return ms_fail(MS_ERR_INVALID_ARGUMENT, "render: foam cell %zu is %g, outside [0, 1]",
+                           c, (double)foam[c]);
+    if (r->foam_cap < cells) {
+        float *p = ms_alloc_array(cells, sizeof *p);
+        if (!p)
+            return ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for %zu foam cells", cells);
+        ms_free(r->foam);
+        r->foam = p;
+        r->foam_cap = cells;
+    }
+    memcpy(r->foam, foam, cells * sizeof *foam);
+    r->foam_grid = *g;
+    r->has_foam = 1;
+    r->foam_changed = 1;
     return MS_OK;
 }
 

@@ -238,6 +238,14 @@ struct ms_renderer {
     float boat_pos[3];     /* m, world: its centre at the water line */
     float boat_heading[2]; /* unit, x-y: where its bow points */
     float boat_radius;     /* m: half its length */
+    float *spray;          /* 3 * nspray: droplets, ms_renderer_set_spray */
+    int nspray, spray_cap;
+    float spray_radius; /* m */
+    float *foam;        /* foam_grid's cells, ms_renderer_set_foam */
+    size_t foam_cap;    /* floats */
+    ms_grid foam_grid;
+    int has_foam;
+    int foam_changed;                    /* the GL side must upload it */
     const struct ms_scene *object_scene; /* the scene objects were meshed for */
     ms_render_object *objects;
     int nobjects;

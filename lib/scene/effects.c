@@ -1,5 +1,5 @@
 /* The scene's "effects" section (rain, boat, drops, floaters, drag,
- * container): what the sim adds to the flow beside the two solvers. The
+ * container, spray): what the sim adds to the flow beside the two solvers. The
  * same table as data/scenes/README.md's effects; keep both in step. An
  * effect that is absent leaves its has_* flag 0 and costs nothing.
  */
@@ -185,10 +185,57 @@ static ms_status read_container(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
     return MS_OK;
 }
 
+/* A ramp [lo, hi] of an emission potential: both in [0, max], lo < hi. */
+static ms_status get_ramp(ms_scene_ctx *c, json_t *o, const char *key, float lo, float hi,
+                          double max, const char *unit, float *out)
+{
+    const float def[2] = {lo, hi};
+    MS_TRY(ms_scene_get_vec(c, o, key, 2, def, 0, max, unit, out));
+    if (out[0] < out[1])
+        return MS_OK;
+    ms_scene_push_key(c, key);
+    ms_status st = ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                                 "[%g, %g] is no ramp; allowed: [lo, hi] with lo < hi",
+                                 (double)out[0], (double)out[1]);
+    ms_scene_pop(c);
+    return st;
+}
+
+/* Spray and foam (lib/sim/spray.c owns what they do; the defaults and
+ * ranges are here, as for every effect). The defaults fit the scenes'
+ * scale (decimetres, splashes of 0.5 to 2 m/s): a particle starts to emit
+ * above 0.4 m/s (0.08 J/kg) and emits fully at 1.4 m/s (1 J/kg); the
+ * trapped-air and wave-crest ramps start at 0.2 and 0.15 m/s. A pool at
+ * rest keeps below 0.1 m/s (0.005 J/kg) and emits nothing. */
+static ms_status read_spray(ms_scene_ctx *c, json_t *fx, ms_scene *sc)
+{
+    static const char *const keys[] = {"budget", "kinetic",  "trapped_air", "wave_crest",
+                                       "rate",   "lifetime", "foam",        NULL};
+    static const float rate[2] = {400, 400};
+    json_t *o;
+    long budget;
+    MS_TRY(ms_scene_get_object(c, fx, "spray", &o));
+    if (!o)
+        return MS_OK;
+    sc->has_spray = 1;
+    ms_scene_push_key(c, "spray");
+    MS_TRY(ms_scene_check_keys(c, o, keys));
+    MS_TRY(ms_scene_get_int(c, o, "budget", 4096, 1, MS_SCENE_MAX_SPRAY, &budget));
+    sc->spray_budget = (int)budget;
+    MS_TRY(get_ramp(c, o, "kinetic", 0.08f, 1.0f, 1e6, "J/kg", sc->spray_kinetic));
+    MS_TRY(get_ramp(c, o, "trapped_air", 0.2f, 1.0f, 1e3, "m/s", sc->spray_trapped_air));
+    MS_TRY(get_ramp(c, o, "wave_crest", 0.15f, 0.8f, 1e3, "m/s", sc->spray_wave_crest));
+    MS_TRY(ms_scene_get_vec(c, o, "rate", 2, rate, 0, 1e4, "1/s", sc->spray_rate));
+    MS_TRY(ms_scene_get_float(c, o, "lifetime", 3, 0, 600, 1, "s", &sc->foam_lifetime));
+    MS_TRY(ms_scene_get_float(c, o, "foam", 0.04, 0, 1, 0, "", &sc->foam_deposit));
+    ms_scene_pop(c);
+    return MS_OK;
+}
+
 ms_status ms_scene_read_effects(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
     static const char *const keys[] = {"rain", "boat",      "drops", "floaters",
-                                       "drag", "container", NULL};
+                                       "drag", "container", "spray", NULL};
     json_t *fx;
     MS_TRY(ms_scene_get_object(c, root, "effects", &fx));
     if (!fx)
@@ -201,6 +248,13 @@ ms_status ms_scene_read_effects(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     MS_TRY(read_floaters(c, fx, sc));
     MS_TRY(read_drag(c, fx, sc));
     MS_TRY(read_container(c, fx, sc));
+    MS_TRY(read_spray(c, fx, sc));
+    if (sc->has_spray && !sc->has_volume) {
+        ms_scene_push_key(c, "spray");
+        return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                             "needs a \"volume\" section (the SPH particles emit it); allowed: "
+                             "only in scenes with a volume");
+    }
     /* effects that live on the wave field need one */
     static const char *const surface_fx[] = {"rain", "boat", "drops", NULL};
     for (const char *const *k = surface_fx; *k && !sc->has_surface; ++k) {

@@ -22,6 +22,10 @@
 #define MS_SCENE_MAX_FILLS 64
 #define MS_SCENE_MAX_DROPS 4096
 #define MS_SCENE_MAX_FLOATERS 100000
+/* the largest spray budget a scene may ask for: 2^18 particles of 28
+ * bytes (7 floats), 7 MiB, and a frame's ballistic pass over them stays
+ * well below the SPH step of the scenes' 2000 to 32000 particles */
+#define MS_SCENE_MAX_SPRAY 262144
 
 /* A scripted motion along a polyline at constant speed (m/s), starting at
  * time `start` (s). dim = 2 (x, y) or 3 (x, y, z); npoints = 0: no path. */
@@ -110,6 +114,17 @@ struct ms_scene {
     float drag_strength; /* 1/s: how fast the water takes the pointer's velocity */
     int has_container;
     ms_scene_shape container;
+    /* spray and foam (lib/sim/spray.c): emission after Ihmsen et al. 2012,
+     * n = phi_k (k_ta phi_ta + k_wc phi_wc) dt per particle, each phi a
+     * clamped ramp over [lo, hi] */
+    int has_spray;
+    int spray_budget;           /* spray particles alive at most */
+    float spray_kinetic[2];     /* J/kg: kinetic energy ramp */
+    float spray_trapped_air[2]; /* m/s: speed relative to the cell's surface flow */
+    float spray_wave_crest[2];  /* m/s: upward speed of a surface particle */
+    float spray_rate[2];        /* 1/s: k_ta, k_wc */
+    float foam_lifetime;        /* s: foam fades as exp(-t / lifetime) */
+    float foam_deposit;         /* foam cover a landing or breaking particle adds to its cell */
 
     /* the renderer's desc (render section over ms_renderer_desc_default(),
      * the pool from the domain and the level); always made, so a scene

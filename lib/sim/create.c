@@ -342,7 +342,8 @@ static ms_status create_common(const ms_sim_desc *user, const float *origin, flo
                                : derive_field(sim->domain_max[1] - sim->domain_min[1], sim->spacing,
                                               sim->sny);
     }
-    int floaters = sc && sc->has_floaters;
+    /* the surface flow: floaters ride it, foam is carried by it */
+    int floaters = sc && (sc->has_floaters || sc->has_spray);
     if (st == MS_OK)
         st = alloc_buffers(sim, floaters);
     if (st == MS_OK && sc)
@@ -468,5 +469,6 @@ void ms_sim_destroy(ms_sim *sim)
     ms_free(sim->boat_xy);
     ms_free(sim->floater_xyz);
     ms_free(sim->floater_vel);
+    ms_sim_spray_free(sim);
     ms_free(sim);
 }

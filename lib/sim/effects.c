@@ -1,7 +1,7 @@
 /* Setting up the scene's effects, each only when the scene names it:
  * obstacles and the container (volume colliders, eq. 15, and solid cells
  * of the wave grid at the water level), rain, the boat (a disturber that
- * makes bow waves, Fig. 10b), scripted drops (Fig. 3a), floaters. */
+ * makes bow waves, Fig. 10b), scripted drops (Fig. 3a), floaters, spray. */
 #include <stdio.h>
 #include <string.h>
 
@@ -195,5 +195,7 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
         }
         sim->nfloaters = n;
     }
+    if (st == MS_OK)
+        st = ms_sim_spray_setup(sim, sc);
     return st;
 }

@@ -9,9 +9,7 @@
 
 #include "sim/sim_internal.h"
 
-/* Bilinear sample of a cell-centred nx x ny field (stride comp floats per
- * cell, component k) at world (x, y), edges held. */
-static float sample(const float *f, int nx, int ny, int comp, int k, float x0, float y0, float dx,
+float ms_sim_sample(const float *f, int nx, int ny, int comp, int k, float x0, float y0, float dx,
                     float dy, float x, float y)
 {
     float u = (x - x0) / dx - 0.5f, v = (y - y0) / dy - 0.5f;
@@ -55,19 +53,21 @@ void ms_sim_floaters_step(ms_sim *sim, const float *flow, const float *wave, flo
             float u[2] = {0, 0}, a[2] = {0, 0};
             if (flow)
                 for (int k = 0; k < 2; ++k)
-                    u[k] =
-                        sample(flow, sim->fnx, sim->fny, 2, k, lo[0], lo[1], fdx, fdy, p[0], p[1]);
+                    u[k] = ms_sim_sample(flow, sim->fnx, sim->fny, 2, k, lo[0], lo[1], fdx, fdy,
+                                         p[0], p[1]);
             if (wave && slope > 0) {
                 /* central differences over one wave cell either side */
                 float d = sim->sdx;
-                float gx =
-                    (sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0] + d, p[1]) -
-                     sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0] - d, p[1])) /
-                    (2 * d);
-                float gy =
-                    (sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0], p[1] + d) -
-                     sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0], p[1] - d)) /
-                    (2 * d);
+                float gx = (ms_sim_sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d,
+                                          p[0] + d, p[1]) -
+                            ms_sim_sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d,
+                                          p[0] - d, p[1])) /
+                           (2 * d);
+                float gy = (ms_sim_sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0],
+                                          p[1] + d) -
+                            ms_sim_sample(wave, sim->snx, sim->sny, 1, 0, lo[0], lo[1], d, d, p[0],
+                                          p[1] - d)) /
+                           (2 * d);
                 a[0] = -slope * sim->gravity * gx;
                 a[1] = -slope * sim->gravity * gy;
             }
@@ -98,14 +98,14 @@ void ms_sim_floaters_height(ms_sim *sim)
         float *p = sim->floater_xyz + 3 * f;
         float z;
         if (sim->surface)
-            z = sample(sim->combined, sim->snx, sim->sny, 1, 0, lo[0], lo[1], sim->sdx, sim->sdx,
-                       p[0], p[1]);
+            z = ms_sim_sample(sim->combined, sim->snx, sim->sny, 1, 0, lo[0], lo[1], sim->sdx,
+                              sim->sdx, p[0], p[1]);
         else {
             long m = sim->calls; /* the frame being finished: m = n - 1 = calls */
             const float *hf = sim->hfield[m % 2];
             float fdx = (sim->domain_max[0] - sim->domain_min[0]) / (float)sim->fnx;
             float fdy = (sim->domain_max[1] - sim->domain_min[1]) / (float)sim->fny;
-            z = sample(hf, sim->fnx, sim->fny, 1, 0, lo[0], lo[1], fdx, fdy, p[0], p[1]);
+            z = ms_sim_sample(hf, sim->fnx, sim->fny, 1, 0, lo[0], lo[1], fdx, fdy, p[0], p[1]);
         }
         p[2] = sim->domain_min[2] + z;
     }

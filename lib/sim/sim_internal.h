@@ -64,6 +64,24 @@ typedef struct ms_sim_shape {
     float api_quat[4], api_omega[3];
 } ms_sim_shape;
 
+/* Spray and foam (spray.c), made only for a scene's effects.spray. */
+typedef struct ms_sim_spray_state {
+    int cap, n;             /* the budget; spray particles alive */
+    float *pos, *vel;       /* 3 * cap each: x, y, z (m), vx, vy, vz (m/s) */
+    float g[3];             /* m/s^2, the volume's gravity */
+    float *cell_v;          /* 3 * fnx * fny: the surface band's mean velocity */
+    float *cell_n;          /* fnx * fny: particles in the band */
+    int gnx, gny;           /* the foam grid: the wave grid, or the SPH field's */
+    float gdx, gdy;         /* m */
+    float *foam, *foam_tmp; /* gnx * gny: cover in [0, 1], and the advection's scratch */
+    int foam_on;            /* some cell holds foam (else decay and advection are skipped) */
+    int box[4];             /* with foam_on: the cells holding foam lie in [box[0], box[1]] x
+                             * [box[2], box[3]] */
+    ms_rng rng;             /* seeded from the scene's seed */
+    long emitted, landed;   /* since creation (not state: statistics) */
+    double ms;              /* ms spent, statistics */
+} ms_sim_spray_state;
+
 typedef struct ms_sim_drag_req {
     float pos[2], vel[2]; /* m, m/s */
     float radius, depth, strength;
@@ -160,6 +178,7 @@ struct ms_sim {
     float *floater_vel; /* 2 * n: m/s */
     ms_sim_drag_req drags[MS_SIM_MAX_DRAGS];
     int ndrags;
+    ms_sim_spray_state spray; /* spray and foam (spray.c); all 0 unless the scene asks */
 
     /* time */
     long calls;      /* ms_sim_step calls done = frames finished */
@@ -258,7 +277,26 @@ void ms_sim_worker_stop(ms_sim *sim);
 void ms_sim_worker_run(ms_sim *sim, ms_task_fn *fn, void *arg);
 void ms_sim_worker_wait(ms_sim *sim);
 
+/* spray.c: set up from the scene (its buffers, counted as effects), one
+ * frame's spray and foam on the surface thread (slot: the particle copy
+ * and field of t_m; dt: frame m's, 0 for the first), and the landing
+ * surface (m, world z) at (x, y). */
+ms_status ms_sim_spray_setup(ms_sim *sim, const ms_scene *sc);
+void ms_sim_spray_free(ms_sim *sim);
+void ms_sim_spray_frame(ms_sim *sim, int slot, float dt);
+float ms_sim_surface_z(const ms_sim *sim, int slot, float x, float y);
+/* The frame's parts (tests call them alone): the ballistic flight over dt
+ * (landing adds foam to the cell), and the foam's fade over dt, carried
+ * by flow (2 floats per SPH field cell) when it is not NULL. */
+void ms_sim_spray_fly(ms_sim *sim, int slot, float dt, float foam);
+void ms_sim_foam_step(ms_sim *sim, const float *flow, float dt, float lifetime);
+
 /* floaters.c */
+/* Bilinear sample of a cell-centred nx x ny field (stride comp floats per
+ * cell, component k) at world (x, y), the grid's corner at (x0, y0), cells
+ * dx x dy (m), edges held. */
+float ms_sim_sample(const float *f, int nx, int ny, int comp, int k, float x0, float y0, float dx,
+                    float dy, float x, float y);
 void ms_sim_floaters_step(ms_sim *sim, const float *flow, const float *wave, float dt);
 void ms_sim_floaters_height(ms_sim *sim);
 

@@ -182,6 +182,35 @@ static ms_status check_drags(const ms_sim_drag_req *d, int n)
     return st;
 }
 
+/* Spray and foam (only a sim with spray holds these records, so a blob of
+ * a scene without stays as it was): the droplets in flight, the foam and
+ * its box, the generator. */
+static ms_status spray_io(ms_blob *b, ms_sim *sim)
+{
+    ms_sim_spray_state *s = &sim->spray;
+    const size_t ng = (size_t)s->gnx * s->gny;
+    int n = s->n;
+    ms_status st;
+    if ((st = ms_blob_count(b, "sim.spray.n", &n, s->cap)) ||
+        (st = buf_io(b, "sim.spray.pos", s->pos, 3 * (size_t)n)) ||
+        (st = buf_io(b, "sim.spray.vel", s->vel, 3 * (size_t)n)) ||
+        (st = ms_blob_floats(b, "sim.spray.foam", s->foam, ng, 0.0, 1.0, "")) ||
+        (st = MS_BLOB_IO(b, "sim.spray.foam_on", s->foam_on)) ||
+        (st = ms_blob_io(b, "sim.spray.box", s->box, sizeof s->box)) ||
+        (st = ms_blob_io(b, "sim.spray.rng", &s->rng, sizeof s->rng)))
+        return st;
+    if (b->reading) {
+        if ((st = ms_blob_check_int("sim.spray.foam_on", s->foam_on, 0, 1)))
+            return st;
+        for (int k = 0; k < 4; ++k)
+            if (s->foam_on && (st = ms_blob_check_int("sim.spray.box", s->box[k], 0,
+                                                      k < 2 ? s->gnx - 1 : s->gny - 1)))
+                return st;
+        s->n = n;
+    }
+    return MS_OK;
+}
+
 /* Every record of the sim, either way. */
 static ms_status sim_io(ms_sim *sim, ms_blob *b)
 {
@@ -238,6 +267,8 @@ static ms_status sim_io(ms_sim *sim, ms_blob *b)
         (b->reading && (st = check_drags(sim->drags, ndrags))) || (st = shapes_io(b, sim)) ||
         (st = buf_io(b, "sim.floater_xyz", sim->floater_xyz, 3 * (size_t)sim->nfloaters)) ||
         (st = buf_io(b, "sim.floater_vel", sim->floater_vel, 2 * (size_t)sim->nfloaters)))
+        return st;
+    if (sim->spray.cap > 0 && (st = spray_io(b, sim)) != MS_OK)
         return st;
     if (b->reading) {
         sim->next_drop = next_drop;

@@ -2,7 +2,7 @@
  * height field from the volume thread's snapshot (phase B of eqs. 16-18),
  * the scripted effects, the coupling from the volume (3.5), N_time wave
  * steps (eq. 19), the up-sampled SPH field plus the waves (eq. 20),
- * floaters. */
+ * floaters, spray and foam. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -226,6 +226,8 @@ void ms_sim_surface_task(void *arg)
                 ms_sim_floaters_step(sim, sim->flow[slot], NULL, task->plan->dt);
             ms_sim_floaters_height(sim);
         }
+        if (st == MS_OK && m >= 1)
+            ms_sim_spray_frame(sim, slot, task->plan->dt);
         task->ms_a = 0;
         task->ms_b = (ms_now() - c0) * 1e3;
         task->status = st;
@@ -279,6 +281,8 @@ void ms_sim_surface_task(void *arg)
                 ms_sim_floaters_step(sim, h ? sim->flow[slot] : NULL, wv, task->plan->dt);
             ms_sim_floaters_height(sim);
         }
+        if (h && m >= 1)
+            ms_sim_spray_frame(sim, slot, task->plan->dt);
     }
     double c2 = ms_now();
     task->ms_a = (c1 - c0) * 1e3;

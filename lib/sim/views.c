@@ -103,6 +103,38 @@ const float *ms_sim_floaters(const ms_sim *sim, int *n)
     return have ? sim->floater_xyz : NULL;
 }
 
+const float *ms_sim_spray(const ms_sim *sim, int *n)
+{
+    int have = sim && sim->spray.cap > 0;
+    if (n)
+        *n = have ? sim->spray.n : 0;
+    return have ? sim->spray.pos : NULL;
+}
+
+const float *ms_sim_foam(const ms_sim *sim, int *nx, int *ny)
+{
+    int have = sim && sim->spray.cap > 0;
+    if (nx)
+        *nx = have ? sim->spray.gnx : 0;
+    if (ny)
+        *ny = have ? sim->spray.gny : 0;
+    return have ? sim->spray.foam : NULL;
+}
+
+ms_status ms_sim_foam_grid(const ms_sim *sim, ms_grid *out)
+{
+    MS_TRY(ms_check_not_null("sim", "sim", sim));
+    MS_TRY(ms_check_not_null("sim", "out", out));
+    if (!sim->spray.cap)
+        return ms_fail(MS_ERR_STATE, "sim: no foam without the scene's effects.spray");
+    *out = (ms_grid){.nx = sim->spray.gnx,
+                     .ny = sim->spray.gny,
+                     .dx = sim->spray.gdx,
+                     .dy = sim->spray.gdy,
+                     .origin = {sim->domain_min[0], sim->domain_min[1]}};
+    return MS_OK;
+}
+
 double ms_sim_time(const ms_sim *sim)
 {
     return sim ? sim->t_fields : 0;
@@ -166,6 +198,9 @@ void ms_sim_get_stats(const ms_sim *sim, ms_stats *user)
         out->drops = si.drops;
         out->n_time = ms_sim_wave_plan(sim)->n_time;
     }
+    out->spray = sim->spray.n;
+    out->spray_emitted = sim->spray.emitted;
+    out->spray_ms = sim->spray.ms;
     out->bytes = sizeof *sim + out->volume_bytes + out->surface_bytes + out->effects_bytes;
     ms_struct_write(user, &full, size);
 }
@@ -188,6 +223,7 @@ void ms_sim_get_info(const ms_sim *sim, ms_sim_info *user)
         out->field_ny = sim->fny;
         out->particles = ms_volume_count(sim->volume);
         out->spacing = sim->spacing;
+        out->spray_budget = sim->spray.cap;
     }
     if (sim->surface) {
         out->surface_nx = sim->snx;

@@ -4,7 +4,8 @@
  * the pool floor or a wall by the caustics light map, light absorbed along its path
  * under water, and a sun highlight. Seen from below the surface: Snell's
  * window (the sky within asin(1 / ior) of the normal) and total internal
- * reflection outside it.
+ * reflection outside it. Foam (the sim's spray, ms_foam) lies white over
+ * the water seen from above.
  *
  * Parameters: {"color": [0.02, 0.28, 0.33], "ior": 1.333, "caustics": 1.2,
  *              "clarity": 1.5}
@@ -43,6 +44,9 @@ static const char fragment_source[] =
     "uniform float water_caustics;\n"
     "uniform float water_clarity;\n"
     "uniform float water_parallax;\n"
+    "uniform sampler2D ms_foam;\n"
+    "uniform vec4 ms_foam_field;\n"
+    "uniform float ms_foam_on;\n"
     "void main()\n"
     "{\n"
     "    vec3 n = ms_surface_normal();\n"
@@ -104,6 +108,13 @@ static const char fragment_source[] =
     "    vec3 h = normalize(ms_light_dir - v);\n"
     "    vec3 spec = ms_light_color * pow(max(dot(n, h), 0.0), 400.0) * fresnel * 4.0;\n"
     "    vec3 seen_above = mix(below, reflected, fresnel) + spec;\n"
+    /* foam: a white, rough layer lit by the sun and the sky, over the water seen from
+     * above, covering it as the sim's cover says (sharpened: thin foam is streaks) */
+    "    float foam = ms_foam_on * texture2D(ms_foam, (v_pos.xy - ms_foam_field.xy)\n"
+    "                                                 * ms_foam_field.zw).r;\n"
+    "    vec3 white = vec3(0.85) * (0.55 + 0.45 * max(dot(n, ms_light_dir), 0.0))\n"
+    "               * (0.6 + 0.4 * ms_light_color);\n"
+    "    seen_above = mix(seen_above, white, smoothstep(0.0, 0.8, foam) * 0.85);\n"
     "    gl_FragColor = vec4(ms_tonemap(under ? seen_under : seen_above), 1.0);\n"
     "}\n";
 

@@ -221,6 +221,32 @@ static int floater_discs(const ms_reader *rd, long f, ms_renderer *r, const ms_r
     return rc;
 }
 
+/* The file's spray and foam of frame f (/spray, /foam) as a run draws
+ * them (lib/render/draw_sim.c: droplets 0.15 particle spacings in radius,
+ * the scene's spacing); nothing when the file has none. 0 or -1. */
+static int spray_and_foam(const ms_reader *rd, const ms_scene *sc, long f, ms_renderer *r)
+{
+    const int budget = ms_reader_spray_budget(rd);
+    if (budget <= 0)
+        return 0;
+    ms_grid g;
+    ms_volume_desc vd = ms_volume_desc_default();
+    if (ms_reader_foam_grid(rd, &g) != MS_OK || (sc && ms_scene_volume_desc(sc, &vd) != MS_OK))
+        return -1;
+    float *xyz = malloc((size_t)budget * 3 * sizeof *xyz);
+    float *foam = malloc((size_t)g.nx * (size_t)g.ny * sizeof *foam);
+    int n = 0;
+    int rc = xyz && foam && ms_reader_read_spray(rd, f, xyz, budget, &n) == MS_OK &&
+                     ms_reader_read_foam(rd, f, foam, (size_t)g.nx * (size_t)g.ny) == MS_OK &&
+                     ms_renderer_set_spray(r, xyz, n, 0.15f * vd.spacing) == MS_OK &&
+                     ms_renderer_set_foam(r, foam, &g) == MS_OK
+                 ? 0
+                 : -1;
+    free(xyz);
+    free(foam);
+    return rc;
+}
+
 /* What a render holds open; render_close frees it all. */
 typedef struct render_state {
     render_opts o;
@@ -329,6 +355,7 @@ static int render_frame(render_state *s, long f)
     double t = 0;
     if (ms_reader_read_field(s->rd, MS_FIELD_COMBINED, f, s->h, s->n) != MS_OK ||
         ms_reader_time(s->rd, f, &t) != MS_OK || floater_discs(s->rd, f, s->r, &s->d) != 0 ||
+        spray_and_foam(s->rd, s->sc, f, s->r) != 0 ||
         ms_renderer_draw_scene_field(s->r, s->sc, s->h, &s->g, t) != MS_OK) {
         tool_error("render: frame %ld: %s", f, ms_last_error());
         return -1;

@@ -184,3 +184,30 @@ def test_a_python_without_numpy_or_pxr_gets_the_tools_sentence(run, tmp_path):
         assert "Traceback" not in r.stderr, r.stderr
         assert r.stderr.startswith("modesplit export: ") and word in r.stderr, r.stderr
         assert "pip install usd-core" in r.stderr and r.stderr.count("\n") == 1, r.stderr
+
+
+def test_spray_and_foam_are_exported(tmp_path):
+    """A run with spray: /Run/Spray holds each frame's droplets in flight
+    (their count changes), the surface the foam as a vertex primvar."""
+    h5 = str(tmp_path / "pour.h5")
+    subprocess.run([TOOL, "run", os.path.join(ROOT, "data", "scenes", "pour.json"), "--frames",
+                    "24", "--out", h5, "--quiet", "--set", "output.fields=[\"combined\"]"],
+                   check=True)
+    usd = str(tmp_path / "pour.usdc")
+    r = export_py(h5, usd)
+    assert r.returncode == 0, r.stderr
+    stage = Usd.Stage.Open(usd)
+    spray = UsdGeom.Points(stage.GetPrimAtPath("/Run/Spray"))
+    assert spray
+    mesh = UsdGeom.Mesh(stage.GetPrimAtPath("/Run/Surface"))
+    foam = UsdGeom.PrimvarsAPI(mesh).GetPrimvar("foam")
+    counts = []
+    with h5py.File(h5, "r") as f:
+        for k in range(int(f.attrs["frames"])):
+            n = int(f["spray_count"][k])
+            p = np.asarray(spray.GetPointsAttr().Get(k)).reshape(-1, 3)
+            assert p.shape == (n, 3)
+            assert np.array_equal(p, f["spray"][k, :n])
+            assert np.array_equal(np.asarray(foam.Get(k)), f["foam"][k].ravel())
+            counts.append(n)
+    assert max(counts) > 0 and len(set(counts)) > 1

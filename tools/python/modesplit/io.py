@@ -91,6 +91,31 @@ class Reader(Handle):
         return np.stack([self.field(name, i) for i in range(self.frames)]) if self.frames \
             else np.empty((0, 0, 0), np.float32)
 
+    @property
+    def spray_budget(self):
+        """Droplets a frame may hold (0: the file has no spray)."""
+        return L().ms_reader_spray_budget(self._ptr)
+
+    def spray(self, frame):
+        """Frame's spray droplets, (n, 3) m."""
+        out = np.empty((max(self.spray_budget, 1), 3), np.float32)
+        n = ctypes.c_int()
+        check(L().ms_reader_read_spray(self._ptr, frame, out.ctypes.data, len(out),
+                                       ctypes.byref(n)))
+        return out[:n.value].copy()
+
+    def foam_grid(self):
+        g = new_struct("ms_grid")
+        check(L().ms_reader_foam_grid(self._ptr, ctypes.byref(g)))
+        return to_dict(g)
+
+    def foam(self, frame):
+        """Frame's foam cover, (ny, nx) in [0, 1]."""
+        g = self.foam_grid()
+        out = np.empty((g["ny"], g["nx"]), np.float32)
+        check(L().ms_reader_read_foam(self._ptr, frame, out.ctypes.data, out.size))
+        return out
+
     def particles(self, frame):
         n = ctypes.c_int()
         check(L().ms_reader_particle_count(self._ptr, frame, ctypes.byref(n)))

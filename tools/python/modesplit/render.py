@@ -54,6 +54,25 @@ class Renderer(Handle):
         p = L().ms_renderer_caustics(self._ptr, ctypes.byref(n))
         return view(p, (n.value, n.value) if p else (0, 0), np.float32, self)
 
+    def set_spray(self, xyz, radius):
+        """Droplets drawn with the next draws: xyz (n, 3) m, radius m;
+        an empty xyz removes them. draw(sim) sets a sim's own."""
+        a = np.ascontiguousarray(xyz, dtype=np.float32).reshape(-1, 3)
+        check(L().ms_renderer_set_spray(self._ptr, a.ctypes.data if len(a) else None, len(a),
+                                        float(radius)))
+
+    def set_foam(self, foam, grid=None):
+        """Foam cover (ny, nx) in [0, 1] over grid (a dict as Sim.foam_grid
+        gives), laid white over the water by the water shader; None
+        removes it. draw(sim) sets a sim's own."""
+        if foam is None:
+            check(L().ms_renderer_set_foam(self._ptr, None, None))
+            return
+        a = np.ascontiguousarray(foam, dtype=np.float32)
+        g = new_struct("ms_grid")
+        set_fields("ms_grid", g, dict(grid or {}, nx=a.shape[1], ny=a.shape[0]), "render")
+        check(L().ms_renderer_set_foam(self._ptr, a.ctypes.data, ctypes.byref(g)))
+
     def write_png(self, path):
         check(L().ms_renderer_write_png(self._ptr, os.fsencode(path)))
 

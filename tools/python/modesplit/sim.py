@@ -164,6 +164,29 @@ class Sim(Handle):
         return view(p, (n.value, 3), np.float32, self)
 
     @property
+    def spray(self):
+        """Spray droplets in flight (scene effects.spray): (n, 3) m, thrown
+        by fast water at the surface, falling back ballistically; (0, 3)
+        without spray. A view valid until the next step."""
+        n = ctypes.c_int()
+        p = L().ms_sim_spray(self._ptr, ctypes.byref(n))
+        return view(p, (n.value, 3), np.float32, self)
+
+    @property
+    def foam(self):
+        """The foam cover in [0, 1], (ny, nx) on foam_grid() (the wave
+        grid); (0, 0) without spray. A view valid until the next step."""
+        nx, ny = ctypes.c_int(), ctypes.c_int()
+        p = L().ms_sim_foam(self._ptr, ctypes.byref(nx), ctypes.byref(ny))
+        return view(p, (ny.value, nx.value), np.float32, self)
+
+    def foam_grid(self):
+        """Where the foam cover lies (StateError without spray)."""
+        out = new_struct("ms_grid")
+        check(L().ms_sim_foam_grid(self._ptr, ctypes.byref(out)))
+        return to_dict(out)
+
+    @property
     def volume(self):
         """The sim's Volume (borrowed: valid while the sim is), or None."""
         p = L().ms_sim_volume(self._ptr)

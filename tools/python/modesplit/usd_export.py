@@ -23,6 +23,12 @@ text):
   /Run/Particles       Points: positions, velocities (m/s) and ids
                        time-sampled, one constant width (the mean particle
                        spacing of frame 0, or 1 cm).
+  /Run/Spray           Points (a run with spray): the droplets in flight,
+                       positions time-sampled (their count changes from
+                       frame to frame), one constant width (0.3 particle
+                       spacings, as the renderer draws them). The foam
+                       cover, when it lies on the surface's grid, is the
+                       Surface's time-sampled vertex primvar `foam` (0..1).
 Exit status: 0 written; 1 a read or write failure; 2 bad arguments or not a
 modesplit run file (the message names the file and what is missing).
 """
@@ -196,7 +202,16 @@ def export(run, usd_path, field=None):
             nrm_attr = mesh.CreateNormalsAttr()
             ext_attr = mesh.CreateExtentAttr()
             xy = np.stack([gx.ravel(), gy.ravel()], -1)
+            foam = f.get("foam")
+            if foam is not None and foam.shape[1:] != (ny, nx):
+                foam = None  # on another grid: not a primvar of this mesh
+            foam_pv = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar(
+                "foam", Sdf.ValueTypeNames.FloatArray, UsdGeom.Tokens.vertex) \
+                if foam is not None else None
             for k in range(frames):
+                if foam_pv is not None:
+                    c = np.nan_to_num(np.asarray(foam[k], dtype=np.float32), nan=0.0)
+                    foam_pv.Set(Vt.FloatArray.FromNumpy(c.ravel()), k)
                 h = np.asarray(ds[k], dtype=np.float32)
                 finite = np.isfinite(h)
                 if not finite.all():
@@ -244,6 +259,30 @@ def export(run, usd_path, field=None):
                                           Gf.Vec3f(*map(float, hi))]), k)
                 grow(k, lo, hi)
                 i_attr.Set(Vt.Int64Array.FromNumpy(ids.astype(np.int64)), k)
+        if "spray" in f and "spray_count" in f:
+            spray = UsdGeom.Points.Define(stage, "/Run/Spray")
+            s_attr = spray.CreatePointsAttr()
+            se_attr = spray.CreateExtentAttr()
+            width = 0.01
+            try:
+                scene = __import__("json").loads(text(f.attrs["scene"]))
+                width = 0.3 * float(scene["volume"]["spacing"])
+            except Exception:
+                pass
+            spray.CreateWidthsAttr(Vt.FloatArray([width]))
+            spray.SetWidthsInterpolation(UsdGeom.Tokens.constant)
+            ds, counts = f["spray"], f["spray_count"]
+            for k in range(min(frames, len(ds), len(counts))):
+                n = int(counts[k])
+                p = np.asarray(ds[k, :n], dtype=np.float32).reshape(-1, 3)
+                s_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
+                if n:
+                    lo, hi = p.min(0) - 0.5 * width, p.max(0) + 0.5 * width
+                    grow(k, lo, hi)
+                else:
+                    lo = hi = np.zeros(3, np.float32)
+                se_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
+                                           Gf.Vec3f(*map(float, hi))]), k)
         model = UsdGeom.ModelAPI.Apply(root.GetPrim())
         for k, (lo, hi) in sorted(union.items()):
             model.SetExtentsHint(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),

@@ -273,3 +273,38 @@ def test_particle_views_kept_across_a_growing_fill_box_are_refused_not_read_free
     assert v.count > 4 * n
     (x, _, _), _ = v.particle_views()
     assert x.shape == (v.count,) and np.isfinite(x).all()
+
+
+SPLASH = """{"domain": {"min": [0, 0, 0], "max": [0.4, 0.4, 0.5]}, "frame_dt": 0.016667,
+ "volume": {"spacing": 0.04, "fill": [{"min": [0, 0, 0], "max": [0.4, 0.4, 0.12]},
+            {"min": [0.12, 0.12, 0.3], "max": [0.28, 0.28, 0.45]}], "field": [16, 16]},
+ "surface": {"cells": [64, 64], "wave_speed": 0.3, "damping": 0.9},
+ "effects": {"spray": {"budget": 300}}}"""
+
+
+def test_spray_and_foam_views(tmp_path):
+    with ms.Sim(ms.Scene.parse(SPLASH)) as sim:
+        w = ms.Writer(tmp_path / "s.h5", sim, "combined")
+        most = 0
+        for _ in range(20):
+            sim.step()
+            w.frame()
+            s = sim.spray
+            assert s.shape[1] == 3 and len(s) <= 300 and not s.flags.writeable
+            most = max(most, len(s))
+        last = sim.spray.copy()
+        w.close()
+        assert most > 10
+        f = sim.foam
+        assert f.shape == (64, 64) and f.max() > 0 and f.min() >= 0 and f.max() <= 1
+        assert sim.foam_grid()["nx"] == 64 and sim.info()["spray_budget"] == 300
+        assert sim.stats()["spray_emitted"] >= most
+        with ms.Reader(tmp_path / "s.h5") as r:
+            assert r.spray_budget == 300 and r.frames == 20
+            assert np.array_equal(r.spray(19), last)
+            assert np.array_equal(r.foam(19), f)
+    with ms.Sim(ms.Scene.load(SCENES / "fig3.json")) as plain:
+        plain.step()
+        assert plain.spray.shape == (0, 3) and plain.foam.shape == (0, 0)
+        with pytest.raises(ms.StateError):
+            plain.foam_grid()
