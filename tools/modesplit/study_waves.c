@@ -410,6 +410,9 @@ int study_waves_current(acc_ctx *c)
              "wavelength): the rows' error against c + U holds that lag of the grid; the speed "
              "added by the current is measured against it.",
              still);
+    return 0;
+}
+
 /* Each surface model the library has against real water, simulated: the
  * phase speed omega / k of the standing mode of a 64 x 4 reflecting basin
  * whose wavelength lambda is 32 cells (cos(4 pi (x + 1/2) / 64) along x),
