@@ -2,9 +2,9 @@
  * regular files (FIFOs, devices, run files linking to other files) are
  * refused before they are opened, and `check` refuses what `run` refuses;
  * `export` refuses what `info` refuses, in the same sentence, and a file
- * claiming more frames or particles than memory holds before anything is
- * read; strings from a file reach the terminal escaped; a resume of a file
- * of another grid says so. Every hostile file is made here, from a real
+ * claiming more frames than the disk holds or a frame larger than memory
+ * before anything is read; strings from a file reach the terminal
+ * escaped; a resume of a file of another grid says so. Every hostile file is made here, from a real
  * run file edited with HDF5 as a forger would. A hang fails by the case's
  * time-out. */
 #define _GNU_SOURCE
@@ -290,7 +290,8 @@ START_TEST(export_refuses_what_info_refuses_in_the_same_sentence)
 END_TEST
 
 /* Sparse claims: 1e9 frames (extended, never written), 1e8 particles (a
- * step whose arrays are declared and never stored). */
+ * step whose arrays are declared and never stored). The export streams its
+ * frames, so the frames' count bounds the file it writes, not its memory. */
 START_TEST(export_refuses_a_sparse_file_claiming_more_than_memory_holds)
 {
     const char *scene = scene_with("s.json", "");
@@ -317,8 +318,14 @@ START_TEST(export_refuses_a_sparse_file_claiming_more_than_memory_holds)
     struct stat sb;
     ck_assert_int_eq(stat(run, &sb), 0);
     ck_assert_int_lt(sb.st_blocks * 512LL, 64LL << 20); /* the claim is not in the file */
+    /* streamed as .usdc, it would not fit on the disk; as .usda, not in
+     * memory either */
     result r = run_tool((const char *[]){"export", run, "--usd", tmp_path("o.usdc"), NULL});
-    ASSERT_REFUSED(r, 2, "1000000000 frames of a 64 x 48 field");
+    ASSERT_REFUSED(r, 2, "1000000000 frames of a 64 x 48 field would write about");
+    ck_assert_msg(strstr(r.err, "free, so it is refused") != NULL, "%s", r.err);
+    result_free(&r);
+    r = run_tool((const char *[]){"export", run, "--usd", tmp_path("o.usda"), NULL});
+    ASSERT_REFUSED(r, 2, "1000000000 frames as a .usda text layer");
     ck_assert_msg(strstr(r.err, "of memory") != NULL, "%s", r.err);
     result_free(&r);
 
@@ -346,6 +353,44 @@ START_TEST(export_refuses_a_sparse_file_claiming_more_than_memory_holds)
     r = run_tool((const char *[]){"info", run, NULL});
     ck_assert_msg(r.code == 0 && strstr(r.out, "Step#0"), "%s%s", r.out, r.err);
     result_free(&r);
+}
+END_TEST
+
+/* The export holds one frame at a time, so the frame itself is what must
+ * fit: a field of 65536 x 4096 cells (the reader's largest, declared and
+ * never stored) is refused before Python starts, as a .usdc too. */
+START_TEST(export_refuses_a_frame_larger_than_memory_holds)
+{
+    const char *scene = scene_with("s.json", "");
+    const char *run = real_run(scene, "wide.h5");
+    hid_t f = H5Fopen(run, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    ck_assert_int_ge(H5Ldelete(f, "fields/combined", H5P_DEFAULT), 0);
+    hsize_t dims[3] = {3, 4096, 65536}, chunk[3] = {1, 4096, 65536};
+    hid_t sp = H5Screate_simple(3, dims, NULL), dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    ck_assert_int_ge(H5Pset_chunk(dcpl, 3, chunk), 0);
+    hid_t d = H5Dcreate2(f, "fields/combined", H5T_IEEE_F32LE, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    ck_assert_int_ge(d, 0);
+    hsize_t two = 2;
+    hid_t asp = H5Screate_simple(1, &two, NULL);
+    const double dx[2] = {1e-3, 1e-3}, origin[2] = {0, 0};
+    hid_t a = H5Acreate2(d, "dx", H5T_NATIVE_DOUBLE, asp, H5P_DEFAULT, H5P_DEFAULT);
+    ck_assert_int_ge(H5Awrite(a, H5T_NATIVE_DOUBLE, dx), 0);
+    H5Aclose(a);
+    a = H5Acreate2(d, "origin", H5T_NATIVE_DOUBLE, asp, H5P_DEFAULT, H5P_DEFAULT);
+    ck_assert_int_ge(H5Awrite(a, H5T_NATIVE_DOUBLE, origin), 0);
+    H5Aclose(a);
+    H5Sclose(asp);
+    H5Dclose(d);
+    H5Pclose(dcpl);
+    H5Sclose(sp);
+    H5Fclose(f);
+    result r = run_tool((const char *[]){"export", run, "--usd", tmp_path("o.usdc"), NULL});
+    ASSERT_REFUSED(r, 2, "one frame of a 65536 x 4096 field would need about");
+    ck_assert_msg(strstr(r.err, "of memory") != NULL, "%s", r.err);
+    result_free(&r);
+    struct stat sb;
+    ck_assert_int_ne(stat(tmp_path("o.usdc"), &sb), 0);
 }
 END_TEST
 
@@ -450,6 +495,7 @@ static Suite *untrusted_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, export_refuses_what_info_refuses_in_the_same_sentence);
     tcase_add_test(tc, export_refuses_a_sparse_file_claiming_more_than_memory_holds);
+    tcase_add_test(tc, export_refuses_a_frame_larger_than_memory_holds);
     tcase_add_test(tc, strings_from_a_file_reach_the_terminal_escaped);
     tcase_add_test(tc, a_resume_of_another_grid_says_what_differs);
     suite_add_tcase(s, tc);

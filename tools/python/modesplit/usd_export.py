@@ -125,6 +125,14 @@ def vertex_normals(h, dx, dy):
     return n.reshape(-1, 3).astype(np.float32)
 
 
+# Unsaved time samples before the layer is saved (crate files only): a
+# .usdc layer saved again writes only what changed and keeps what it wrote
+# on disk, not in memory, so the export holds about this much plus one
+# frame, whatever the number of frames. A .usda text layer is written whole
+# at its one save (the C tool refuses one that would not fit in memory).
+SAVE_BYTES = 64 << 20
+
+
 def export(run, usd_path, field=None):
     try:
         from pxr import Gf, Sdf, Usd, UsdGeom, Vt
@@ -149,7 +157,11 @@ def export(run, usd_path, field=None):
         elif field not in present:
             fail(2, f"{run} has no field {field} (it has: {', '.join(present) or 'none'})")
 
-        stage = Usd.Stage.CreateNew(usd_path)
+        # .usd is written as crate too (not as USD_DEFAULT_FILE_FORMAT says):
+        # only crate layers can be saved as they grow
+        text_layer = usd_path.endswith(".usda")
+        layer = Sdf.Layer.CreateNew(usd_path, {} if text_layer else {"format": "usdc"})
+        stage = Usd.Stage.Open(layer) if layer else None
         if stage is None:
             fail(1, f"cannot create {usd_path}")
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
@@ -164,16 +176,10 @@ def export(run, usd_path, field=None):
                                           text(f.attrs.get("scene_name", "")))
         root.GetPrim().SetCustomDataByKey("modesplit:source", run)
 
-        # /Run is an Xform, which has no extent of its own: its children's
-        # union per frame goes into the model's extentsHint, so every prim
-        # states its bounds.
-        union = {}
+        def box(lo, hi):
+            return Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))])
 
-        def grow(k, lo, hi):
-            a, b = union.get(k, (lo, hi))
-            union[k] = (np.minimum(a, lo), np.maximum(b, hi))
-
-        bad = 0
+        mesh_attrs = None
         if field is not None:
             ds = f[f"fields/{field}"]
             nx, ny, dx, dy, x0, y0 = grid_of(ds)
@@ -182,6 +188,7 @@ def export(run, usd_path, field=None):
             counts, idx = quad_topology(nx, ny)
             mesh.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(counts))
             mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(idx))
+            del counts, idx
             mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
             mesh.CreateOrientationAttr(UsdGeom.Tokens.rightHanded)
             xs = x0 + (np.arange(nx) + 0.5) * dx
@@ -191,33 +198,19 @@ def export(run, usd_path, field=None):
             pv = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar(
                 "st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.vertex)
             pv.Set(Vt.Vec2fArray.FromNumpy(st.astype(np.float32)))
+            del st
             mesh.SetNormalsInterpolation(UsdGeom.Tokens.vertex)
-            pts_attr = mesh.CreatePointsAttr()
-            nrm_attr = mesh.CreateNormalsAttr()
-            ext_attr = mesh.CreateExtentAttr()
-            xy = np.stack([gx.ravel(), gy.ravel()], -1)
-            for k in range(frames):
-                h = np.asarray(ds[k], dtype=np.float32)
-                finite = np.isfinite(h)
-                if not finite.all():
-                    bad += 1
-                    h = np.where(finite, h, 0.0).astype(np.float32)
-                p = np.concatenate([xy, h.reshape(-1, 1)], 1).astype(np.float32)
-                pts_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
-                nrm_attr.Set(Vt.Vec3fArray.FromNumpy(vertex_normals(h, dx, dy)), k)
-                lo, hi = p.min(0), p.max(0)
-                ext_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))]), k)
-                grow(k, lo, hi)
-        if bad:
-            print(f"modesplit export: {bad} frames of {field} had non-finite heights, "
-                  "written as 0", file=sys.stderr)
+            mesh_attrs = (mesh.CreatePointsAttr(), mesh.CreateNormalsAttr(),
+                          mesh.CreateExtentAttr())
+            # the points' x and y, the same every frame (float32, as written)
+            xy = np.stack([gx.ravel(), gy.ravel()], -1).astype(np.float32)
+            del gx, gy
 
+        step_attrs = None
         if "Step#0" in f:
             points = UsdGeom.Points.Define(stage, "/Run/Particles")
-            p_attr = points.CreatePointsAttr()
-            v_attr = points.CreateVelocitiesAttr()
-            i_attr = points.CreateIdsAttr()
-            e_attr = points.CreateExtentAttr()
+            step_attrs = (points.CreatePointsAttr(), points.CreateVelocitiesAttr(),
+                          points.CreateIdsAttr(), points.CreateExtentAttr())
             spacing = 0.01
             try:
                 scene = __import__("json").loads(text(f.attrs["scene"]))
@@ -226,29 +219,60 @@ def export(run, usd_path, field=None):
                 pass
             points.CreateWidthsAttr(Vt.FloatArray([spacing]))
             points.SetWidthsInterpolation(UsdGeom.Tokens.constant)
-            for k in range(frames):
-                step = f.get(f"Step#{k}")
-                if step is None:
-                    continue
+
+        # /Run is an Xform, which has no extent of its own: its children's
+        # union per frame goes into the model's extentsHint, so every prim
+        # states its bounds.
+        model = UsdGeom.ModelAPI.Apply(root.GetPrim())
+        # Frame by frame: each frame's samples are read, set and let go;
+        # the layer is saved whenever SAVE_BYTES of them wait.
+        bad = pending = 0
+        for k in range(frames):
+            lo = hi = None
+            if mesh_attrs is not None:
+                h = np.asarray(ds[k], dtype=np.float32)
+                finite = np.isfinite(h)
+                if not finite.all():
+                    bad += 1
+                    h = np.where(finite, h, 0.0).astype(np.float32)
+                del finite
+                p = np.empty((nx * ny, 3), np.float32)
+                p[:, :2] = xy
+                p[:, 2] = h.ravel()
+                mesh_attrs[0].Set(Vt.Vec3fArray.FromNumpy(p), k)
+                mesh_attrs[1].Set(Vt.Vec3fArray.FromNumpy(vertex_normals(h, dx, dy)), k)
+                lo, hi = p.min(0), p.max(0)
+                mesh_attrs[2].Set(box(lo, hi), k)
+                pending += 24 * nx * ny
+                del h, p
+            step = f.get(f"Step#{k}") if step_attrs is not None else None
+            if step is not None:
                 p = np.stack([step[a][:] for a in "xyz"], 1).astype(np.float32)
                 v = np.stack([step[a][:] for a in ("vx", "vy", "vz")], 1).astype(np.float32)
                 ids = step["id"][:] if "id" in step else np.arange(len(p))
-                p_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
-                v_attr.Set(Vt.Vec3fArray.FromNumpy(v), k)
+                step_attrs[0].Set(Vt.Vec3fArray.FromNumpy(p), k)
+                step_attrs[1].Set(Vt.Vec3fArray.FromNumpy(v), k)
+                step_attrs[2].Set(Vt.Int64Array.FromNumpy(ids.astype(np.int64)), k)
                 # the points' box grown by half the width (UsdGeom.Points' rule)
                 if len(p):
-                    lo, hi = p.min(0) - 0.5 * spacing, p.max(0) + 0.5 * spacing
+                    plo, phi = p.min(0) - 0.5 * spacing, p.max(0) + 0.5 * spacing
                 else:
-                    lo = hi = np.zeros(3, np.float32)
-                e_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
-                                          Gf.Vec3f(*map(float, hi))]), k)
-                grow(k, lo, hi)
-                i_attr.Set(Vt.Int64Array.FromNumpy(ids.astype(np.int64)), k)
-        model = UsdGeom.ModelAPI.Apply(root.GetPrim())
-        for k, (lo, hi) in sorted(union.items()):
-            model.SetExtentsHint(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
-                                                Gf.Vec3f(*map(float, hi))]), k)
-        stage.GetRootLayer().Save()
+                    plo = phi = np.zeros(3, np.float32)
+                step_attrs[3].Set(box(plo, phi), k)
+                lo = plo if lo is None else np.minimum(lo, plo)
+                hi = phi if hi is None else np.maximum(hi, phi)
+                pending += 32 * len(p)
+                del p, v, ids
+            if lo is not None:
+                model.SetExtentsHint(box(lo, hi), k)
+            if not text_layer and pending >= SAVE_BYTES:
+                layer.Save()
+                pending = 0
+        if bad:
+            print(f"modesplit export: {bad} frames of {field} had non-finite heights, "
+                  "written as 0", file=sys.stderr)
+        if not layer.Save():
+            fail(1, f"cannot write {usd_path}")
     return frames
 
 
