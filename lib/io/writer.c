@@ -1026,6 +1026,16 @@ static long first_dim(hid_t d)
     return (long)dims[0];
 }
 
+/* A dataset whose values are kept in another file (external storage, a
+ * virtual dataset): the append would write there. */
+static ms_status refuse_foreign(const char *path, const char *name)
+{
+    return ms_fail(MS_ERR_PARSE,
+                   "io: %s: /%s keeps its values in another file (external storage or a virtual "
+                   "dataset); a run file holds all its data itself, so it is not resumed",
+                   path, name);
+}
+
 /* Check the file's identity against the layout: format, build, scene, the
  * fields and their grids. Opens w->dset[], w->time_dset, w->frames_attr
  * and sets w->frames to the complete frames. */
@@ -1042,6 +1052,11 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
     }
     ms_free(s);
     s = NULL;
+    /* the reader's check: nothing below may name another file, which the
+     * append would otherwise extend and write */
+    ms_status lst = ms_h5_check_links(f, p);
+    if (lst != MS_OK)
+        return lst;
     if (ms_h5_read_int64(f, "format_version", &version) < 0 || version != MS_FILE_FORMAT_VERSION)
         return ms_fail(MS_ERR_UNSUPPORTED,
                        "io: %s has format_version %lld; only version %d files can be resumed", p,
@@ -1085,6 +1100,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
         if (!want_it)
             continue;
         w->dset[i] = H5Dopen2(f, name, H5P_DEFAULT);
+        if (w->dset[i] >= 0 && !ms_h5_dataset_own(w->dset[i]))
+            return refuse_foreign(p, name);
         hsize_t dims[3] = {0, 0, 0};
         hid_t sp = w->dset[i] >= 0 ? H5Dget_space(w->dset[i]) : -1;
         int rank = sp >= 0 ? H5Sget_simple_extent_ndims(sp) : -1;
@@ -1107,6 +1124,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
                        has_particles > 0 ? "holds" : "lacks",
                        (l->fields & MS_FIELD_PARTICLES) ? "writes" : "does not write");
     w->time_dset = H5Dopen2(f, "time", H5P_DEFAULT);
+    if (w->time_dset >= 0 && !ms_h5_dataset_own(w->time_dset))
+        return refuse_foreign(p, "time");
     long nt = w->time_dset >= 0 ? first_dim(w->time_dset) : -1;
     if (nt < 0)
         return ms_fail(MS_ERR_PARSE, "io: %s has no readable /time", p);
@@ -1119,6 +1138,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
                        has_floaters > 0 ? "holds" : "lacks", l->floaters > 0 ? "has" : "lacks");
     if (l->floaters > 0) {
         w->floater_dset = H5Dopen2(f, "floaters", H5P_DEFAULT);
+        if (w->floater_dset >= 0 && !ms_h5_dataset_own(w->floater_dset))
+            return refuse_foreign(p, "floaters");
         long nf = w->floater_dset >= 0 ? first_dim(w->floater_dset) : -1;
         if (nf < 0)
             return ms_fail(MS_ERR_PARSE, "io: %s has no readable /floaters", p);
@@ -1138,6 +1159,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
             continue;
         int64_t at = -1;
         w->ckpt[i] = H5Dopen2(f, name, H5P_DEFAULT);
+        if (w->ckpt[i] >= 0 && !ms_h5_dataset_own(w->ckpt[i]))
+            return refuse_foreign(p, name);
         if (w->ckpt[i] < 0 || ms_h5_read_int64(w->ckpt[i], "frame", &at) < 0)
             return ms_fail(MS_ERR_PARSE, "io: %s has an unreadable /%s", p, name);
         w->ckpt_frame[i] = at >= 0 && at < k ? (long)at : -1;
@@ -1249,8 +1272,16 @@ ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout 
     ms_status st = writer_new(path, l, out, &w);
     if (st != MS_OK)
         return st;
-    if (access(path, R_OK | W_OK) != 0) {
+    struct stat sb;
+    if (access(path, R_OK | W_OK) != 0 || stat(path, &sb) != 0) {
         st = ms_fail(MS_ERR_IO, "io: cannot resume %s: %s", path, strerror(errno));
+        free_writer(w);
+        return st;
+    }
+    /* a FIFO would block the open, a device never ends: as the reader */
+    if (!S_ISREG(sb.st_mode)) {
+        st = ms_fail(MS_ERR_IO, "io: cannot resume %s: it is %s, not a regular file", path,
+                     ms_file_kind(sb.st_mode));
         free_writer(w);
         return st;
     }
