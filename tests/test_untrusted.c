@@ -161,6 +161,50 @@ START_TEST(fifos_devices_and_a_cubemap_without_faces_are_refused_by_check_and_ru
 }
 END_TEST
 
+static const char *sentence(const char *err);
+
+/* Cut every file of a cubemap folder to `keep` bytes (0: empty). */
+static void cut_faces(const char *dir, long keep)
+{
+    static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+    for (int i = 0; i < 6; ++i) {
+        char face[600];
+        snprintf(face, sizeof face, "%s/%s.png", dir, faces[i]);
+        ck_assert_int_eq(truncate(face, keep), 0);
+    }
+}
+
+/* Faces whose headers are good and whose pixels are cut off, or that are
+ * empty: check decodes what run --png decodes, and both refuse with the
+ * same sentence (before, check said ok to the cut faces and run --png
+ * failed at its renderer). */
+START_TEST(check_refuses_the_cubemap_faces_run_cannot_decode)
+{
+    static const struct {
+        long keep;
+        const char *word;
+    } cases[] = {{0, "is not a readable PNG"}, {60, "cannot be decoded"}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const char *dir = tmp_path(i ? "cut" : "empty");
+        result r = run_tool((const char *[]){"cubemap", "--out", dir, "--size", "32", NULL});
+        ck_assert_msg(r.code == 0, "%s", r.err);
+        result_free(&r);
+        cut_faces(dir, cases[i].keep);
+        char extra[700];
+        snprintf(extra, sizeof extra, ", \"render\": {\"cubemap\": \"%s\"}", dir);
+        const char *scene = scene_with("s.json", extra);
+        result c = run_tool((const char *[]){"check", scene, NULL});
+        ASSERT_REFUSED(c, 2, cases[i].word);
+        result p = run_tool((const char *[]){"run", scene, "--frames", "1", "--no-out", "--png",
+                                             tmp_path("frames"), NULL});
+        ASSERT_REFUSED(p, 2, cases[i].word);
+        ck_assert_str_eq(sentence(p.err), sentence(c.err));
+        result_free(&c);
+        result_free(&p);
+    }
+}
+END_TEST
+
 /* Replace /time of a run file with an external link to `target`, or with a
  * dataset whose values are stored in `target` (HDF5's external storage). */
 static void forge_time(const char *run, const char *target, int external_storage)
@@ -489,6 +533,7 @@ static Suite *untrusted_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, fifos_devices_and_a_cubemap_without_faces_are_refused_by_check_and_run);
     tcase_add_test(tc, a_run_file_naming_other_files_is_refused_before_they_are_opened);
+    tcase_add_test(tc, check_refuses_the_cubemap_faces_run_cannot_decode);
     suite_add_tcase(s, tc);
     tc = tcase_create("files");
     tcase_add_checked_fixture(tc, setup, teardown);
