@@ -475,6 +475,19 @@ START_TEST(strings_from_a_file_reach_the_terminal_escaped)
     ck_assert_msg(r.code == 2, "exit %d: %s", r.code, r.err);
     assert_no_control(r.err, "0.0\\x1b]0;owned\\x07\\x1b[2J");
     result_free(&r);
+    /* a C1 control in UTF-8 (U+009B, a CSI to a terminal that takes C1)
+     * and bytes that are not UTF-8; well-formed text (U+00E9) is kept */
+    f = H5Fopen(run, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    set_string_attr(f, "library_version",
+                    "0.0\xc2\x9b"
+                    "2J\xff\xfe\xc3\xa9\xe2\x82");
+    H5Fclose(f);
+    r = run_tool((const char *[]){"run", scene, "--frames", "6", "--resume", run, NULL});
+    ck_assert_msg(r.code == 2, "exit %d: %s", r.code, r.err);
+    assert_no_control(r.err, "0.0\\u009b2J\\xff\\xfe\xc3\xa9\\xe2\\x82");
+    ck_assert_ptr_null(strstr(r.err, "\xc2\x9b"));
+    result_free(&r);
     /* info's --set lines come from the file's scene text */
     f = H5Fopen(run, H5F_ACC_RDWR, H5P_DEFAULT);
     ck_assert_int_ge(f, 0);
@@ -483,6 +496,34 @@ START_TEST(strings_from_a_file_reach_the_terminal_escaped)
     r = run_tool((const char *[]){"info", run, NULL});
     ck_assert_msg(r.code == 0, "exit %d: %s", r.code, r.err);
     assert_no_control(r.out, "--set     a=\\x1b[2J");
+    result_free(&r);
+}
+END_TEST
+
+/* A scene's name is printed by check and run and is the viewer's title
+ * and its log's header line: a control character in it is refused by
+ * both, in the scene file and through --set. */
+START_TEST(a_scene_name_with_control_characters_is_refused)
+{
+    /* in the scene file (the one scene_with makes, its name edited) */
+    const char *scene = scene_with("s.json", "");
+    char *text = ms_test_slurp(scene);
+    ck_assert_ptr_nonnull(text);
+    char *at = strstr(text, "\"untrusted\"");
+    ck_assert_ptr_nonnull(at);
+    char edited[4096];
+    snprintf(edited, sizeof edited, "%.*s\"a\\u001b]0;owned\\u0007\"%s", (int)(at - text), text,
+             at + strlen("\"untrusted\""));
+    free(text);
+    write_text(scene, edited);
+    check_and_run_refuse(scene, "name holds the control character 0x1b at byte 1");
+    /* through --set */
+    scene = scene_with("t.json", "");
+    result r = run_tool((const char *[]){"check", scene, "--set", "name=\"x\\ny\"", NULL});
+    ASSERT_REFUSED(r, 2, "name holds the control character 0x0a at byte 1");
+    result_free(&r);
+    r = run_tool((const char *[]){"run", scene, "--no-out", "--set", "name=\"x\\ty\"", NULL});
+    ASSERT_REFUSED(r, 2, "name holds the control character 0x09 at byte 1");
     result_free(&r);
 }
 END_TEST
@@ -543,6 +584,7 @@ static Suite *untrusted_suite(void)
     tcase_add_test(tc, export_refuses_a_frame_larger_than_memory_holds);
     tcase_add_test(tc, strings_from_a_file_reach_the_terminal_escaped);
     tcase_add_test(tc, a_resume_of_another_grid_says_what_differs);
+    tcase_add_test(tc, a_scene_name_with_control_characters_is_refused);
     suite_add_tcase(s, tc);
     return s;
 }
