@@ -1459,6 +1459,21 @@ START_TEST(append_refuses_links_to_other_files_and_leaves_them)
     }
     free(v0);
     free(r0);
+    /* a step's x that is a scalar: named, not HDF5's stale reason */
+    ck_assert_int_eq(ms_writer_open_layout(run, &l, &w), MS_OK);
+    write_frames(w, &l, 0, 3);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    hid_t h = H5Fopen(run, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(H5Ldelete(h, "Step#1/x", H5P_DEFAULT), 0);
+    hid_t sp = H5Screate(H5S_SCALAR);
+    hid_t d = H5Dcreate2(h, "Step#1/x", H5T_IEEE_F32LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    ck_assert_int_ge(d, 0);
+    H5Dclose(d);
+    H5Sclose(sp);
+    H5Fclose(h);
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(run, &l, &w), MS_ERR_PARSE,
+                      "forged.h5 cannot be read back: its /Step#1/x is missing or not a 1D float "
+                      "array");
     ck_assert_int_eq(mkfifo(tmp_path("pipe.h5"), 0600), 0);
     MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("pipe.h5"), &l, &w), MS_ERR_IO,
                       "it is a FIFO (named pipe), not a regular file");

@@ -1178,7 +1178,14 @@ static int step_count(hid_t f, long k)
     hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
     if (d < 0)
         return -1;
-    long n = first_dim(d);
+    hid_t sp = H5Dget_space(d), t = H5Dget_type(d);
+    int rank1 = sp >= 0 && H5Sget_simple_extent_ndims(sp) == 1;
+    int flt = t >= 0 && H5Tget_class(t) == H5T_FLOAT;
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (t >= 0)
+        H5Tclose(t);
+    long n = rank1 && flt ? first_dim(d) : -1;
     H5Dclose(d);
     return n > MS_IO_MAX_PARTICLES ? -1 : (int)n;
 }
@@ -1254,11 +1261,18 @@ static ms_status relist_sidecars(ms_writer *w)
             H5Sclose(fs);
         if (ms >= 0)
             H5Sclose(ms);
-        int n = 0;
-        if (ok && (w->layout.fields & MS_FIELD_PARTICLES))
-            ok = (n = step_count(w->file, j)) >= 0;
         if (!ok)
             return ms_h5_fail(MS_ERR_PARSE, "io: frame %ld of %s cannot be read back", j, w->path);
+        int n = 0;
+        if ((w->layout.fields & MS_FIELD_PARTICLES) && (n = step_count(w->file, j)) < 0) {
+            /* HDF5 may have said nothing (a scalar opens fine): no stale
+             * reason from its stack or errno */
+            H5Eclear2(H5E_DEFAULT);
+            return ms_fail(MS_ERR_PARSE,
+                           "io: frame %ld of %s cannot be read back: its /Step#%ld/x is missing "
+                           "or not a 1D float array",
+                           j, w->path, j);
+        }
         st = ms_xdmf_frame(w->xdmf, j, t, n);
         if (st == MS_OK)
             st = ms_xdmf_frame(w->xdmf2, j, t, n);
