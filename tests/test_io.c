@@ -910,8 +910,21 @@ START_TEST(unwritable_paths_are_refused_with_the_reason)
     fclose(f);
     MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("plain/run.h5"), &l, &w), MS_ERR_IO,
                       "Not a directory");
+    /* a device or a FIFO is not opened: a FIFO would block for good, a
+     * disk would take the probe's zeros (the full disk is a tmpfs in
+     * full_disk_is_an_error_and_leaves_a_readable_file) */
     MS_ASSERT_REFUSED(ms_writer_open_layout("/dev/full", &l, &w), MS_ERR_IO,
-                      "No space left on device");
+                      "it is a character device, not a regular file");
+    ck_assert_int_eq(mkfifo(tmp_path("pipe.h5"), 0600), 0);
+    MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("pipe.h5"), &l, &w), MS_ERR_IO,
+                      "it is a FIFO (named pipe), not a regular file");
+    ck_assert_int_eq(mkfifo(tmp_path("side.xmf"), 0600), 0);
+    MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("side.h5"), &l, &w), MS_ERR_IO,
+                      "side.xmf: it is a FIFO (named pipe), not a regular file");
+    struct stat sb;
+    ck_assert_int_eq(stat(tmp_path("side.xmf"), &sb), 0);
+    ck_assert(S_ISFIFO(sb.st_mode));
+    ck_assert_int_ne(stat(tmp_path("side.h5"), &sb), 0);
     if (geteuid() != 0) { /* root writes anywhere */
         ck_assert_int_eq(mkdir(tmp_path("ro"), 0500), 0);
         MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("ro/run.h5"), &l, &w), MS_ERR_IO,

@@ -158,6 +158,11 @@ START_TEST(fifos_devices_and_a_cubemap_without_faces_are_refused_by_check_and_ru
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i)
         check_and_run_refuse(scene_with("s.json", cases[i].extra), cases[i].word);
+    /* a FIFO as the run file (the open would block for good) */
+    result r = run_tool(
+        (const char *[]){"run", scene_with("s.json", ""), "--frames", "1", "--out", fifo, NULL});
+    ASSERT_REFUSED(r, 1, "it is a FIFO (named pipe), not a regular file");
+    result_free(&r);
 }
 END_TEST
 

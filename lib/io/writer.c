@@ -445,6 +445,25 @@ static ms_status lock_file(const char *name, const char *shown, int create, int 
     return MS_OK;
 }
 
+/* The run file and its sidecars are regular files or not there yet: a FIFO
+ * would block the open for good, a device would take the probe's zeros (a
+ * disk's first blocks) and a sidecar's rename would replace a device's
+ * node. Refused before anything is opened; a symbolic link to a regular
+ * file is written through. */
+static ms_status check_regular(const ms_writer *w)
+{
+    const char *const names[3] = {w->path, w->xmf_path, w->xmf2_path};
+    for (int i = 0; i < 3; ++i) {
+        struct stat sb;
+        if (stat(names[i], &sb) == 0 && !S_ISREG(sb.st_mode))
+            return ms_fail(MS_ERR_IO,
+                           "io: cannot write %s: it is %s, not a regular file (a run file and its "
+                           "XDMF sidecars are written as regular files only)",
+                           names[i], ms_file_kind(sb.st_mode));
+    }
+    return MS_OK;
+}
+
 /* The set-up both openers share: the arguments checked (*out = NULL) and
  * a writer of layout l for path with no file open yet (strings of the
  * layout not kept) in *wp. */
@@ -482,7 +501,7 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
         free_writer(w);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
     }
-    if ((st = check_not_input(w, l->scene_path)) != MS_OK) {
+    if ((st = check_not_input(w, l->scene_path)) != MS_OK || (st = check_regular(w)) != MS_OK) {
         free_writer(w);
         return st;
     }
@@ -495,8 +514,8 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
  * as it was (an older run there stays whole) instead of a file that does
  * not open; HDF5's first flush writes blocks that point into each other,
  * and before it nothing committed could guard them (h5_atomic.c). NULL
- * (write path itself, in place) when path is not a plain file (a device;
- * a symbolic link, which is written through), is a file this process may
+ * (write path itself, in place) when path is not a plain file (a symbolic
+ * link, which is written through; writer_new refused the rest), is a file this process may
  * not write, or its folder takes no new file: the probe then reports why
  * with path's name. *oom: out of memory. */
 static char *part_path_for(const char *path, int *oom)
@@ -1286,16 +1305,8 @@ ms_status ms_writer_open_append_layout(const char *path, const ms_writer_layout 
     ms_status st = writer_new(path, l, out, &w);
     if (st != MS_OK)
         return st;
-    struct stat sb;
-    if (access(path, R_OK | W_OK) != 0 || stat(path, &sb) != 0) {
+    if (access(path, R_OK | W_OK) != 0) {
         st = ms_fail(MS_ERR_IO, "io: cannot resume %s: %s", path, strerror(errno));
-        free_writer(w);
-        return st;
-    }
-    /* a FIFO would block the open, a device never ends: as the reader */
-    if (!S_ISREG(sb.st_mode)) {
-        st = ms_fail(MS_ERR_IO, "io: cannot resume %s: it is %s, not a regular file", path,
-                     ms_file_kind(sb.st_mode));
         free_writer(w);
         return st;
     }
