@@ -215,7 +215,7 @@ SDL2_CFLAGS := $(shell $(PKG_CONFIG) --cflags sdl2 2>/dev/null)
 SDL2_LIBS   := $(shell $(PKG_CONFIG) --libs sdl2 2>/dev/null)
 endif
 VIEW_TEST_OBJ := $(addprefix $(BUILD)/obj/tools/modesplit/,view_log.o view_camera.o view_stats.o \
-                 view_input.o)
+                 view_input.o regular_file.o)
 $(BUILD)/obj/tools/modesplit/%.o: CPPFLAGS += -DMS_HAVE_SDL2=$(HAVE_SDL2)
 $(BUILD)/obj/tools/modesplit/%.o: ALL_CFLAGS += $(SDL2_CFLAGS)
 $(BUILD)/bin/modesplit: SYS_LIBS += $(SDL2_LIBS)

@@ -560,6 +560,35 @@ START_TEST(plot_script_runs_nothing_from_a_part)
 }
 END_TEST
 
+/* A part that is a FIFO (the open would block for good) or a link to
+ * /dev/zero (its trace would be copied until the disk is full) is refused
+ * by name; the case's time-out catches a hang. */
+START_TEST(merge_refuses_parts_that_are_not_regular_files)
+{
+    make_dir();
+    char header[4096], line1[4096], out[1 << 14], parts[400], path[500];
+    real_part(header, line1, sizeof header);
+    snprintf(parts, sizeof parts, "%s/parts", dir);
+    static const char *const kinds[3] = {"csv", "notes", "trace"};
+    for (int k = 0; k < 3; ++k) {
+        forge_part(header, line1, "water", NULL);
+        snprintf(path, sizeof path, "%s/water-dispersion.%s", parts, kinds[k]);
+        remove(path);
+        if (k == 0)
+            ck_assert_int_eq(mkfifo(path, 0600), 0);
+        else
+            ck_assert_int_eq(symlink("/dev/zero", path), 0);
+        const char *a[] = {"accuracy", "--merge", parts, "--out", dir, NULL};
+        ck_assert_int_eq(tool_argv(a, out, sizeof out), 1);
+        ck_assert_msg(strstr(out, "cannot read the part") && strstr(out, path) &&
+                          strstr(out, "not a regular file"),
+                      "%s", out);
+        remove(path);
+    }
+    remove_dir();
+}
+END_TEST
+
 /* An --out with quotes and a command in it reaches no shell: the merge
  * writes into that very directory, and --jobs prints lines a shell reads
  * back as the same words. */
@@ -626,6 +655,7 @@ static Suite *accuracy_suite(void)
     tcase_add_test(t, merge_refuses_study_names_that_are_not_names);
     tcase_add_test(t, plot_script_runs_nothing_from_a_part);
     tcase_add_test(t, out_with_quotes_reaches_no_shell);
+    tcase_add_test(t, merge_refuses_parts_that_are_not_regular_files);
     suite_add_tcase(s, t);
     return s;
 }

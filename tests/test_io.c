@@ -910,8 +910,21 @@ START_TEST(unwritable_paths_are_refused_with_the_reason)
     fclose(f);
     MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("plain/run.h5"), &l, &w), MS_ERR_IO,
                       "Not a directory");
+    /* a device or a FIFO is not opened: a FIFO would block for good, a
+     * disk would take the probe's zeros (the full disk is a tmpfs in
+     * full_disk_is_an_error_and_leaves_a_readable_file) */
     MS_ASSERT_REFUSED(ms_writer_open_layout("/dev/full", &l, &w), MS_ERR_IO,
-                      "No space left on device");
+                      "it is a character device, not a regular file");
+    ck_assert_int_eq(mkfifo(tmp_path("pipe.h5"), 0600), 0);
+    MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("pipe.h5"), &l, &w), MS_ERR_IO,
+                      "it is a FIFO (named pipe), not a regular file");
+    ck_assert_int_eq(mkfifo(tmp_path("side.xmf"), 0600), 0);
+    MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("side.h5"), &l, &w), MS_ERR_IO,
+                      "side.xmf: it is a FIFO (named pipe), not a regular file");
+    struct stat sb;
+    ck_assert_int_eq(stat(tmp_path("side.xmf"), &sb), 0);
+    ck_assert(S_ISFIFO(sb.st_mode));
+    ck_assert_int_ne(stat(tmp_path("side.h5"), &sb), 0);
     if (geteuid() != 0) { /* root writes anywhere */
         ck_assert_int_eq(mkdir(tmp_path("ro"), 0500), 0);
         MS_ASSERT_REFUSED(ms_writer_open_layout(tmp_path("ro/run.h5"), &l, &w), MS_ERR_IO,
@@ -1370,6 +1383,119 @@ START_TEST(append_refuses_another_scene_build_or_fields)
 }
 END_TEST
 
+/* The bytes of a file, compared before and after a refusal. */
+static void assert_same_bytes(const char *path, const char *before, size_t n)
+{
+    size_t m;
+    char *now = ms_test_slurp_n(path, &m);
+    ck_assert_msg(now && m == n && !memcmp(now, before, n), "%s changed", path);
+    free(now);
+}
+
+/* Replace /time of the run at `path` with `how`: 0 an external link to
+ * victim:/time, 1 a soft link to a hard copy, 2 a dataset whose values
+ * live in the raw file `victim` (HDF5's external storage). */
+static void forge_time_link(const char *path, int how, const char *victim)
+{
+    hid_t f = H5Fopen(path, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    if (how == 1)
+        ck_assert_int_ge(H5Lmove(f, "time", f, "time_real", H5P_DEFAULT, H5P_DEFAULT), 0);
+    else
+        ck_assert_int_ge(H5Ldelete(f, "time", H5P_DEFAULT), 0);
+    if (how == 0) {
+        ck_assert_int_ge(H5Lcreate_external(victim, "/time", f, "time", H5P_DEFAULT, H5P_DEFAULT),
+                         0);
+    } else if (how == 1) {
+        ck_assert_int_ge(H5Lcreate_soft("/time_real", f, "time", H5P_DEFAULT, H5P_DEFAULT), 0);
+    } else {
+        hsize_t n = 3, maxn = H5S_UNLIMITED;
+        hid_t sp = H5Screate_simple(1, &n, &maxn), dcpl = H5Pcreate(H5P_DATASET_CREATE);
+        ck_assert_int_ge(H5Pset_external(dcpl, victim, 0, H5F_UNLIMITED), 0);
+        hid_t d = H5Dcreate2(f, "time", H5T_IEEE_F64LE, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+        ck_assert_int_ge(d, 0);
+        H5Dclose(d);
+        H5Pclose(dcpl);
+        H5Sclose(sp);
+    }
+    H5Fclose(f);
+}
+
+/* A run file naming another file would make an append extend and write
+ * that file: the appender runs the reader's link check and refuses
+ * external storage, before anything is written to either file; a FIFO or a
+ * device is refused before it is opened (the case's time-out catches a
+ * hang). */
+START_TEST(append_refuses_links_to_other_files_and_leaves_them)
+{
+    make_tmp_dir();
+    ms_writer_layout l = test_layout(MS_IO_ALL_FIELDS);
+    ms_writer *w;
+    char victim[512], run[512], raw[512];
+    snprintf(victim, sizeof victim, "%s", tmp_path("victim.h5"));
+    snprintf(run, sizeof run, "%s", tmp_path("forged.h5"));
+    snprintf(raw, sizeof raw, "%s", tmp_path("victim.raw"));
+    ck_assert_int_eq(ms_writer_open_layout(victim, &l, &w), MS_OK);
+    write_frames(w, &l, 0, 3);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    FILE *rf = fopen(raw, "wb");
+    ck_assert_ptr_nonnull(rf);
+    const double t3[3] = {0, 0.02, 0.04};
+    ck_assert_int_eq(fwrite(t3, sizeof t3, 1, rf), 1);
+    fclose(rf);
+    size_t nv, nr;
+    char *v0 = ms_test_slurp_n(victim, &nv), *r0 = ms_test_slurp_n(raw, &nr);
+    ck_assert_ptr_nonnull(v0);
+    ck_assert_ptr_nonnull(r0);
+    static const char *const words[3] = {"time is an external or soft link",
+                                         "time is an external or soft link",
+                                         "/time keeps its values in another file"};
+    for (int how = 0; how < 3; ++how) {
+        ck_assert_int_eq(ms_writer_open_layout(run, &l, &w), MS_OK);
+        write_frames(w, &l, 0, 3);
+        ck_assert_int_eq(ms_writer_close(w), MS_OK);
+        forge_time_link(run, how, how == 2 ? raw : victim);
+        size_t nf;
+        char *f0 = ms_test_slurp_n(run, &nf);
+        ck_assert_ptr_nonnull(f0);
+        MS_ASSERT_REFUSED(ms_writer_open_append_layout(run, &l, &w), MS_ERR_PARSE, words[how]);
+        ck_assert_ptr_null(w);
+        assert_same_bytes(run, f0, nf);
+        free(f0);
+        assert_same_bytes(victim, v0, nv);
+        assert_same_bytes(raw, r0, nr);
+        /* the reader says the same of the links */
+        ms_reader *r;
+        if (how < 2)
+            MS_ASSERT_REFUSED(ms_reader_open(run, &r), MS_ERR_PARSE, words[how]);
+        ck_assert_int_eq(unlink(run), 0);
+    }
+    free(v0);
+    free(r0);
+    /* a step's x that is a scalar: named, not HDF5's stale reason */
+    ck_assert_int_eq(ms_writer_open_layout(run, &l, &w), MS_OK);
+    write_frames(w, &l, 0, 3);
+    ck_assert_int_eq(ms_writer_close(w), MS_OK);
+    hid_t h = H5Fopen(run, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(H5Ldelete(h, "Step#1/x", H5P_DEFAULT), 0);
+    hid_t sp = H5Screate(H5S_SCALAR);
+    hid_t d = H5Dcreate2(h, "Step#1/x", H5T_IEEE_F32LE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    ck_assert_int_ge(d, 0);
+    H5Dclose(d);
+    H5Sclose(sp);
+    H5Fclose(h);
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(run, &l, &w), MS_ERR_PARSE,
+                      "forged.h5 cannot be read back: its /Step#1/x is missing or not a 1D float "
+                      "array");
+    ck_assert_int_eq(mkfifo(tmp_path("pipe.h5"), 0600), 0);
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout(tmp_path("pipe.h5"), &l, &w), MS_ERR_IO,
+                      "it is a FIFO (named pipe), not a regular file");
+    MS_ASSERT_REFUSED(ms_writer_open_append_layout("/dev/null", &l, &w), MS_ERR_IO,
+                      "it is a character device, not a regular file");
+    remove_tmp_dir();
+}
+END_TEST
+
 static Suite *io_suite(void)
 {
     Suite *s = suite_create("io");
@@ -1402,6 +1528,7 @@ static Suite *io_suite(void)
     tcase_add_test(tc, reader_refuses_malformed_datasets);
     tcase_add_test(tc, append_continues_after_the_last_complete_frame);
     tcase_add_test(tc, append_refuses_another_scene_build_or_fields);
+    tcase_add_test(tc, append_refuses_links_to_other_files_and_leaves_them);
     suite_add_tcase(s, tc);
     tc = tcase_create("preview");
     tcase_set_timeout(tc, 60);

@@ -2,9 +2,9 @@
  * regular files (FIFOs, devices, run files linking to other files) are
  * refused before they are opened, and `check` refuses what `run` refuses;
  * `export` refuses what `info` refuses, in the same sentence, and a file
- * claiming more frames or particles than memory holds before anything is
- * read; strings from a file reach the terminal escaped; a resume of a file
- * of another grid says so. Every hostile file is made here, from a real
+ * claiming more frames than the disk holds or a frame larger than memory
+ * before anything is read; strings from a file reach the terminal
+ * escaped; a resume of a file of another grid says so. Every hostile file is made here, from a real
  * run file edited with HDF5 as a forger would. A hang fails by the case's
  * time-out. */
 #define _GNU_SOURCE
@@ -158,6 +158,55 @@ START_TEST(fifos_devices_and_a_cubemap_without_faces_are_refused_by_check_and_ru
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i)
         check_and_run_refuse(scene_with("s.json", cases[i].extra), cases[i].word);
+    /* a FIFO as the run file (the open would block for good) */
+    result r = run_tool(
+        (const char *[]){"run", scene_with("s.json", ""), "--frames", "1", "--out", fifo, NULL});
+    ASSERT_REFUSED(r, 1, "it is a FIFO (named pipe), not a regular file");
+    result_free(&r);
+}
+END_TEST
+
+static const char *sentence(const char *err);
+
+/* Cut every file of a cubemap folder to `keep` bytes (0: empty). */
+static void cut_faces(const char *dir, long keep)
+{
+    static const char *const faces[6] = {"px", "nx", "py", "ny", "pz", "nz"};
+    for (int i = 0; i < 6; ++i) {
+        char face[600];
+        snprintf(face, sizeof face, "%s/%s.png", dir, faces[i]);
+        ck_assert_int_eq(truncate(face, keep), 0);
+    }
+}
+
+/* Faces whose headers are good and whose pixels are cut off, or that are
+ * empty: check decodes what run --png decodes, and both refuse with the
+ * same sentence (before, check said ok to the cut faces and run --png
+ * failed at its renderer). */
+START_TEST(check_refuses_the_cubemap_faces_run_cannot_decode)
+{
+    static const struct {
+        long keep;
+        const char *word;
+    } cases[] = {{0, "is not a readable PNG"}, {60, "cannot be decoded"}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const char *dir = tmp_path(i ? "cut" : "empty");
+        result r = run_tool((const char *[]){"cubemap", "--out", dir, "--size", "32", NULL});
+        ck_assert_msg(r.code == 0, "%s", r.err);
+        result_free(&r);
+        cut_faces(dir, cases[i].keep);
+        char extra[700];
+        snprintf(extra, sizeof extra, ", \"render\": {\"cubemap\": \"%s\"}", dir);
+        const char *scene = scene_with("s.json", extra);
+        result c = run_tool((const char *[]){"check", scene, NULL});
+        ASSERT_REFUSED(c, 2, cases[i].word);
+        result p = run_tool((const char *[]){"run", scene, "--frames", "1", "--no-out", "--png",
+                                             tmp_path("frames"), NULL});
+        ASSERT_REFUSED(p, 2, cases[i].word);
+        ck_assert_str_eq(sentence(p.err), sentence(c.err));
+        result_free(&c);
+        result_free(&p);
+    }
 }
 END_TEST
 
@@ -290,7 +339,8 @@ START_TEST(export_refuses_what_info_refuses_in_the_same_sentence)
 END_TEST
 
 /* Sparse claims: 1e9 frames (extended, never written), 1e8 particles (a
- * step whose arrays are declared and never stored). */
+ * step whose arrays are declared and never stored). The export streams its
+ * frames, so the frames' count bounds the file it writes, not its memory. */
 START_TEST(export_refuses_a_sparse_file_claiming_more_than_memory_holds)
 {
     const char *scene = scene_with("s.json", "");
@@ -317,8 +367,14 @@ START_TEST(export_refuses_a_sparse_file_claiming_more_than_memory_holds)
     struct stat sb;
     ck_assert_int_eq(stat(run, &sb), 0);
     ck_assert_int_lt(sb.st_blocks * 512LL, 64LL << 20); /* the claim is not in the file */
+    /* streamed as .usdc, it would not fit on the disk; as .usda, not in
+     * memory either */
     result r = run_tool((const char *[]){"export", run, "--usd", tmp_path("o.usdc"), NULL});
-    ASSERT_REFUSED(r, 2, "1000000000 frames of a 64 x 48 field");
+    ASSERT_REFUSED(r, 2, "1000000000 frames of a 64 x 48 field would write about");
+    ck_assert_msg(strstr(r.err, "free, so it is refused") != NULL, "%s", r.err);
+    result_free(&r);
+    r = run_tool((const char *[]){"export", run, "--usd", tmp_path("o.usda"), NULL});
+    ASSERT_REFUSED(r, 2, "1000000000 frames as a .usda text layer");
     ck_assert_msg(strstr(r.err, "of memory") != NULL, "%s", r.err);
     result_free(&r);
 
@@ -346,6 +402,44 @@ START_TEST(export_refuses_a_sparse_file_claiming_more_than_memory_holds)
     r = run_tool((const char *[]){"info", run, NULL});
     ck_assert_msg(r.code == 0 && strstr(r.out, "Step#0"), "%s%s", r.out, r.err);
     result_free(&r);
+}
+END_TEST
+
+/* The export holds one frame at a time, so the frame itself is what must
+ * fit: a field of 65536 x 4096 cells (the reader's largest, declared and
+ * never stored) is refused before Python starts, as a .usdc too. */
+START_TEST(export_refuses_a_frame_larger_than_memory_holds)
+{
+    const char *scene = scene_with("s.json", "");
+    const char *run = real_run(scene, "wide.h5");
+    hid_t f = H5Fopen(run, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    ck_assert_int_ge(H5Ldelete(f, "fields/combined", H5P_DEFAULT), 0);
+    hsize_t dims[3] = {3, 4096, 65536}, chunk[3] = {1, 4096, 65536};
+    hid_t sp = H5Screate_simple(3, dims, NULL), dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    ck_assert_int_ge(H5Pset_chunk(dcpl, 3, chunk), 0);
+    hid_t d = H5Dcreate2(f, "fields/combined", H5T_IEEE_F32LE, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    ck_assert_int_ge(d, 0);
+    hsize_t two = 2;
+    hid_t asp = H5Screate_simple(1, &two, NULL);
+    const double dx[2] = {1e-3, 1e-3}, origin[2] = {0, 0};
+    hid_t a = H5Acreate2(d, "dx", H5T_NATIVE_DOUBLE, asp, H5P_DEFAULT, H5P_DEFAULT);
+    ck_assert_int_ge(H5Awrite(a, H5T_NATIVE_DOUBLE, dx), 0);
+    H5Aclose(a);
+    a = H5Acreate2(d, "origin", H5T_NATIVE_DOUBLE, asp, H5P_DEFAULT, H5P_DEFAULT);
+    ck_assert_int_ge(H5Awrite(a, H5T_NATIVE_DOUBLE, origin), 0);
+    H5Aclose(a);
+    H5Sclose(asp);
+    H5Dclose(d);
+    H5Pclose(dcpl);
+    H5Sclose(sp);
+    H5Fclose(f);
+    result r = run_tool((const char *[]){"export", run, "--usd", tmp_path("o.usdc"), NULL});
+    ASSERT_REFUSED(r, 2, "one frame of a 65536 x 4096 field would need about");
+    ck_assert_msg(strstr(r.err, "of memory") != NULL, "%s", r.err);
+    result_free(&r);
+    struct stat sb;
+    ck_assert_int_ne(stat(tmp_path("o.usdc"), &sb), 0);
 }
 END_TEST
 
@@ -386,6 +480,19 @@ START_TEST(strings_from_a_file_reach_the_terminal_escaped)
     ck_assert_msg(r.code == 2, "exit %d: %s", r.code, r.err);
     assert_no_control(r.err, "0.0\\x1b]0;owned\\x07\\x1b[2J");
     result_free(&r);
+    /* a C1 control in UTF-8 (U+009B, a CSI to a terminal that takes C1)
+     * and bytes that are not UTF-8; well-formed text (U+00E9) is kept */
+    f = H5Fopen(run, H5F_ACC_RDWR, H5P_DEFAULT);
+    ck_assert_int_ge(f, 0);
+    set_string_attr(f, "library_version",
+                    "0.0\xc2\x9b"
+                    "2J\xff\xfe\xc3\xa9\xe2\x82");
+    H5Fclose(f);
+    r = run_tool((const char *[]){"run", scene, "--frames", "6", "--resume", run, NULL});
+    ck_assert_msg(r.code == 2, "exit %d: %s", r.code, r.err);
+    assert_no_control(r.err, "0.0\\u009b2J\\xff\\xfe\xc3\xa9\\xe2\\x82");
+    ck_assert_ptr_null(strstr(r.err, "\xc2\x9b"));
+    result_free(&r);
     /* info's --set lines come from the file's scene text */
     f = H5Fopen(run, H5F_ACC_RDWR, H5P_DEFAULT);
     ck_assert_int_ge(f, 0);
@@ -394,6 +501,34 @@ START_TEST(strings_from_a_file_reach_the_terminal_escaped)
     r = run_tool((const char *[]){"info", run, NULL});
     ck_assert_msg(r.code == 0, "exit %d: %s", r.code, r.err);
     assert_no_control(r.out, "--set     a=\\x1b[2J");
+    result_free(&r);
+}
+END_TEST
+
+/* A scene's name is printed by check and run and is the viewer's title
+ * and its log's header line: a control character in it is refused by
+ * both, in the scene file and through --set. */
+START_TEST(a_scene_name_with_control_characters_is_refused)
+{
+    /* in the scene file (the one scene_with makes, its name edited) */
+    const char *scene = scene_with("s.json", "");
+    char *text = ms_test_slurp(scene);
+    ck_assert_ptr_nonnull(text);
+    char *at = strstr(text, "\"untrusted\"");
+    ck_assert_ptr_nonnull(at);
+    char edited[4096];
+    snprintf(edited, sizeof edited, "%.*s\"a\\u001b]0;owned\\u0007\"%s", (int)(at - text), text,
+             at + strlen("\"untrusted\""));
+    free(text);
+    write_text(scene, edited);
+    check_and_run_refuse(scene, "name holds the control character 0x1b at byte 1");
+    /* through --set */
+    scene = scene_with("t.json", "");
+    result r = run_tool((const char *[]){"check", scene, "--set", "name=\"x\\ny\"", NULL});
+    ASSERT_REFUSED(r, 2, "name holds the control character 0x0a at byte 1");
+    result_free(&r);
+    r = run_tool((const char *[]){"run", scene, "--no-out", "--set", "name=\"x\\ty\"", NULL});
+    ASSERT_REFUSED(r, 2, "name holds the control character 0x09 at byte 1");
     result_free(&r);
 }
 END_TEST
@@ -444,14 +579,17 @@ static Suite *untrusted_suite(void)
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, fifos_devices_and_a_cubemap_without_faces_are_refused_by_check_and_run);
     tcase_add_test(tc, a_run_file_naming_other_files_is_refused_before_they_are_opened);
+    tcase_add_test(tc, check_refuses_the_cubemap_faces_run_cannot_decode);
     suite_add_tcase(s, tc);
     tc = tcase_create("files");
     tcase_add_checked_fixture(tc, setup, teardown);
     tcase_set_timeout(tc, 120);
     tcase_add_test(tc, export_refuses_what_info_refuses_in_the_same_sentence);
     tcase_add_test(tc, export_refuses_a_sparse_file_claiming_more_than_memory_holds);
+    tcase_add_test(tc, export_refuses_a_frame_larger_than_memory_holds);
     tcase_add_test(tc, strings_from_a_file_reach_the_terminal_escaped);
     tcase_add_test(tc, a_resume_of_another_grid_says_what_differs);
+    tcase_add_test(tc, a_scene_name_with_control_characters_is_refused);
     suite_add_tcase(s, tc);
     return s;
 }

@@ -129,9 +129,11 @@ MS_API ms_status ms_scene_renderer_desc(const ms_scene *sc, ms_renderer_desc *ou
  * is not built or cannot make a context). */
 MS_API ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out);
 /* The checks ms_renderer_create_desc makes before it needs a GL context:
- * every field, and a cubemap's files (they exist, are PNGs, and their
- * headers give faces of at most 4096 texels, square and of one size),
- * without decoding them. Works in a build without OpenGL. */
+ * every field, and a cubemap's files (they exist, are PNGs, their headers
+ * give faces of at most 4096 texels, square and of one size, and every
+ * row decodes: a face cut short is refused here as creating refuses it),
+ * with one row of a face in memory at a time. Works in a build without
+ * OpenGL. */
 MS_API ms_status ms_renderer_desc_check(const ms_renderer_desc *d);
 /* ms_renderer_desc_from_scene + ms_renderer_create_desc; a scene without a
  * `render` section is refused (it asks for no image). */

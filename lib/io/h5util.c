@@ -270,3 +270,65 @@ herr_t ms_h5_read_int64(hid_t obj, const char *name, int64_t *v)
     H5Aclose(a);
     return st;
 }
+
+/* The walk of ms_h5_check_links: the first link that is not a hard link goes
+ * into name (and stops the walk); groups are walked to a depth. */
+typedef struct link_walk {
+    char name[256];
+    int depth;
+} link_walk;
+
+static herr_t foreign_link(hid_t g, const char *name, const H5L_info_t *info, void *data)
+{
+    link_walk *w = data;
+    if (info->type != H5L_TYPE_HARD) {
+        snprintf(w->name, sizeof w->name, "%s", name);
+        return 1;
+    }
+    /* An object the file does not hold yet (a live run's frame being
+     * written lies past the end of allocation) cannot be opened by the
+     * reader either: its links do not matter, so it is passed over. */
+    H5O_info_t oi;
+    if (w->depth >= 8 || H5Oget_info_by_name(g, name, &oi, H5P_DEFAULT) < 0 ||
+        oi.type != H5O_TYPE_GROUP) {
+        H5Eclear2(H5E_DEFAULT);
+        return 0;
+    }
+    hid_t sub = H5Gopen2(g, name, H5P_DEFAULT);
+    if (sub < 0) {
+        H5Eclear2(H5E_DEFAULT);
+        return 0;
+    }
+    w->depth++;
+    herr_t e = H5Literate(sub, H5_INDEX_NAME, H5_ITER_NATIVE, NULL, foreign_link, w);
+    w->depth--;
+    H5Gclose(sub);
+    H5Eclear2(H5E_DEFAULT);
+    return e > 0 ? 1 : 0;
+}
+
+ms_status ms_h5_check_links(hid_t file, const char *path)
+{
+    link_walk w = {"", 0};
+    herr_t e = H5Literate(file, H5_INDEX_NAME, H5_ITER_NATIVE, NULL, foreign_link, &w);
+    if (e > 0) {
+        /* the name is the link's own; its group is not kept */
+        return ms_fail(MS_ERR_PARSE,
+                       "io: %s: %.200s is an external or soft link; a run file holds all "
+                       "its objects itself, so it is refused",
+                       path, w.name);
+    }
+    if (e < 0)
+        return ms_h5_fail(MS_ERR_PARSE, "io: %s: cannot list its objects", path);
+    return MS_OK;
+}
+
+int ms_h5_dataset_own(hid_t d)
+{
+    hid_t dcpl = H5Dget_create_plist(d);
+    int own = dcpl >= 0 && H5Pget_external_count(dcpl) == 0 && H5Pget_layout(dcpl) != H5D_VIRTUAL;
+    if (dcpl >= 0)
+        H5Pclose(dcpl);
+    H5Eclear2(H5E_DEFAULT);
+    return own;
+}

@@ -189,5 +189,18 @@ herr_t ms_h5_attr_int64(hid_t obj, const char *name, int64_t v);
 herr_t ms_h5_read_string(hid_t obj, const char *name, size_t max_len, char **out);
 herr_t ms_h5_read_doubles(hid_t obj, const char *name, double *v, int n);
 herr_t ms_h5_read_int64(hid_t obj, const char *name, int64_t *v);
+/* A run file is one file: every link in it is a hard link. An external
+ * link names another file (a FIFO there hangs the open, a device never
+ * ends; a writer would extend and write that file) and a soft link can
+ * point anywhere in this one, so both are refused before any object is
+ * opened, by the reader and by the writer that appends. A group the file
+ * does not hold yet (past the end of allocation while a run writes it) is
+ * passed over, so `info` reads a live run. `path` names the file in the
+ * sentence. */
+ms_status ms_h5_check_links(hid_t file, const char *path);
+/* 1 when dataset d keeps its values in this file: external raw storage and
+ * virtual datasets name other files (a FIFO or a device would hang a read,
+ * and an append would write there). */
+int ms_h5_dataset_own(hid_t d);
 
 #endif /* MS_IO_INTERNAL_H */

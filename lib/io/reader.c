@@ -98,13 +98,8 @@ static hid_t open_dataset(hid_t loc, const char *name, H5T_class_t cls, int rank
     hid_t d = H5Dopen2(loc, name, H5P_DEFAULT);
     if (d < 0)
         return -1;
-    /* the data must be in this file: external raw storage and virtual
-     * datasets name other files (a FIFO or a device would hang a read) */
-    hid_t dcpl = H5Dget_create_plist(d);
-    int own = dcpl >= 0 && H5Pget_external_count(dcpl) == 0 && H5Pget_layout(dcpl) != H5D_VIRTUAL;
-    if (dcpl >= 0)
-        H5Pclose(dcpl);
-    if (!own) {
+    /* the data must be in this file (ms_h5_dataset_own) */
+    if (!ms_h5_dataset_own(d)) {
         H5Dclose(d);
         return -1;
     }
@@ -243,64 +238,6 @@ static void read_checkpoints(ms_reader *r)
     H5Eclear2(H5E_DEFAULT);
 }
 
-/* The walk of check_links: the first link that is not a hard link goes
- * into name (and stops the walk); groups are walked to a depth. */
-typedef struct link_walk {
-    char name[256];
-    int depth;
-} link_walk;
-
-static herr_t foreign_link(hid_t g, const char *name, const H5L_info_t *info, void *data)
-{
-    link_walk *w = data;
-    if (info->type != H5L_TYPE_HARD) {
-        snprintf(w->name, sizeof w->name, "%s", name);
-        return 1;
-    }
-    /* An object the file does not hold yet (a live run's frame being
-     * written lies past the end of allocation) cannot be opened by the
-     * reader either: its links do not matter, so it is passed over. */
-    H5O_info_t oi;
-    if (w->depth >= 8 || H5Oget_info_by_name(g, name, &oi, H5P_DEFAULT) < 0 ||
-        oi.type != H5O_TYPE_GROUP) {
-        H5Eclear2(H5E_DEFAULT);
-        return 0;
-    }
-    hid_t sub = H5Gopen2(g, name, H5P_DEFAULT);
-    if (sub < 0) {
-        H5Eclear2(H5E_DEFAULT);
-        return 0;
-    }
-    w->depth++;
-    herr_t e = H5Literate(sub, H5_INDEX_NAME, H5_ITER_NATIVE, NULL, foreign_link, w);
-    w->depth--;
-    H5Gclose(sub);
-    H5Eclear2(H5E_DEFAULT);
-    return e > 0 ? 1 : 0;
-}
-
-/* A run file is one file: every link in it is a hard link. An external
- * link names another file (a FIFO there hangs the open, a device never
- * ends) and a soft link can point anywhere in this one, so both are
- * refused before any object is opened. A group the file does not hold yet
- * (past the end of allocation while a run writes it) is passed over, so
- * `info` reads a live run. */
-static ms_status check_links(ms_reader *r)
-{
-    link_walk w = {"", 0};
-    herr_t e = H5Literate(r->file, H5_INDEX_NAME, H5_ITER_NATIVE, NULL, foreign_link, &w);
-    if (e > 0) {
-        /* the name is the link's own; its group is not kept */
-        return ms_fail(MS_ERR_PARSE,
-                       "io: %s: %.200s is an external or soft link; a run file holds all "
-                       "its objects itself, so it is refused",
-                       r->path, w.name);
-    }
-    if (e < 0)
-        return ms_h5_fail(MS_ERR_PARSE, "io: %s: cannot list its objects", r->path);
-    return MS_OK;
-}
-
 static ms_status read_layout(ms_reader *r)
 {
     hid_t f = r->file;
@@ -313,7 +250,7 @@ static ms_status read_layout(ms_reader *r)
                        r->path, MS_FILE_FORMAT);
     }
     ms_free(format);
-    ms_status lst = check_links(r);
+    ms_status lst = ms_h5_check_links(r->file, r->path);
     if (lst != MS_OK)
         return lst;
     int64_t v;

@@ -520,6 +520,25 @@ static ms_status lock_file(const char *name, const char *shown, int create, int 
     return MS_OK;
 }
 
+/* The run file and its sidecars are regular files or not there yet: a FIFO
+ * would block the open for good, a device would take the probe's zeros (a
+ * disk's first blocks) and a sidecar's rename would replace a device's
+ * node. Refused before anything is opened; a symbolic link to a regular
+ * file is written through. */
+static ms_status check_regular(const ms_writer *w)
+{
+    const char *const names[3] = {w->path, w->xmf_path, w->xmf2_path};
+    for (int i = 0; i < 3; ++i) {
+        struct stat sb;
+        if (stat(names[i], &sb) == 0 && !S_ISREG(sb.st_mode))
+            return ms_fail(MS_ERR_IO,
+                           "io: cannot write %s: it is %s, not a regular file (a run file and its "
+                           "XDMF sidecars are written as regular files only)",
+                           names[i], ms_file_kind(sb.st_mode));
+    }
+    return MS_OK;
+}
+
 /* The set-up both openers share: the arguments checked (*out = NULL) and
  * a writer of layout l for path with no file open yet (strings of the
  * layout not kept) in *wp. */
@@ -558,7 +577,7 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
         free_writer(w);
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the writer");
     }
-    if ((st = check_not_input(w, l->scene_path)) != MS_OK) {
+    if ((st = check_not_input(w, l->scene_path)) != MS_OK || (st = check_regular(w)) != MS_OK) {
         free_writer(w);
         return st;
     }
@@ -571,8 +590,8 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
  * as it was (an older run there stays whole) instead of a file that does
  * not open; HDF5's first flush writes blocks that point into each other,
  * and before it nothing committed could guard them (h5_atomic.c). NULL
- * (write path itself, in place) when path is not a plain file (a device;
- * a symbolic link, which is written through), is a file this process may
+ * (write path itself, in place) when path is not a plain file (a symbolic
+ * link, which is written through; writer_new refused the rest), is a file this process may
  * not write, or its folder takes no new file: the probe then reports why
  * with path's name. *oom: out of memory. */
 static char *part_path_for(const char *path, int *oom)
@@ -1131,6 +1150,16 @@ static long first_dim(hid_t d)
     return (long)dims[0];
 }
 
+/* A dataset whose values are kept in another file (external storage, a
+ * virtual dataset): the append would write there. */
+static ms_status refuse_foreign(const char *path, const char *name)
+{
+    return ms_fail(MS_ERR_PARSE,
+                   "io: %s: /%s keeps its values in another file (external storage or a virtual "
+                   "dataset); a run file holds all its data itself, so it is not resumed",
+                   path, name);
+}
+
 /* Check the file's identity against the layout: format, build, scene, the
  * fields and their grids. Opens w->dset[], w->time_dset, w->frames_attr
  * and sets w->frames to the complete frames. */
@@ -1147,6 +1176,11 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
     }
     ms_free(s);
     s = NULL;
+    /* the reader's check: nothing below may name another file, which the
+     * append would otherwise extend and write */
+    ms_status lst = ms_h5_check_links(f, p);
+    if (lst != MS_OK)
+        return lst;
     if (ms_h5_read_int64(f, "format_version", &version) < 0 || version != MS_FILE_FORMAT_VERSION)
         return ms_fail(MS_ERR_UNSUPPORTED,
                        "io: %s has format_version %lld; only version %d files can be resumed", p,
@@ -1190,6 +1224,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
         if (!want_it)
             continue;
         w->dset[i] = H5Dopen2(f, name, H5P_DEFAULT);
+        if (w->dset[i] >= 0 && !ms_h5_dataset_own(w->dset[i]))
+            return refuse_foreign(p, name);
         hsize_t dims[3] = {0, 0, 0};
         hid_t sp = w->dset[i] >= 0 ? H5Dget_space(w->dset[i]) : -1;
         int rank = sp >= 0 ? H5Sget_simple_extent_ndims(sp) : -1;
@@ -1212,6 +1248,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
                        has_particles > 0 ? "holds" : "lacks",
                        (l->fields & MS_FIELD_PARTICLES) ? "writes" : "does not write");
     w->time_dset = H5Dopen2(f, "time", H5P_DEFAULT);
+    if (w->time_dset >= 0 && !ms_h5_dataset_own(w->time_dset))
+        return refuse_foreign(p, "time");
     long nt = w->time_dset >= 0 ? first_dim(w->time_dset) : -1;
     if (nt < 0)
         return ms_fail(MS_ERR_PARSE, "io: %s has no readable /time", p);
@@ -1224,6 +1262,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
                        has_floaters > 0 ? "holds" : "lacks", l->floaters > 0 ? "has" : "lacks");
     if (l->floaters > 0) {
         w->floater_dset = H5Dopen2(f, "floaters", H5P_DEFAULT);
+        if (w->floater_dset >= 0 && !ms_h5_dataset_own(w->floater_dset))
+            return refuse_foreign(p, "floaters");
         long nf = w->floater_dset >= 0 ? first_dim(w->floater_dset) : -1;
         if (nf < 0)
             return ms_fail(MS_ERR_PARSE, "io: %s has no readable /floaters", p);
@@ -1261,6 +1301,8 @@ static ms_status check_resumable(ms_writer *w, const ms_writer_layout *l)
             continue;
         int64_t at = -1;
         w->ckpt[i] = H5Dopen2(f, name, H5P_DEFAULT);
+        if (w->ckpt[i] >= 0 && !ms_h5_dataset_own(w->ckpt[i]))
+            return refuse_foreign(p, name);
         if (w->ckpt[i] < 0 || ms_h5_read_int64(w->ckpt[i], "frame", &at) < 0)
             return ms_fail(MS_ERR_PARSE, "io: %s has an unreadable /%s", p, name);
         w->ckpt_frame[i] = at >= 0 && at < k ? (long)at : -1;
@@ -1278,7 +1320,14 @@ static int step_count(hid_t f, long k)
     hid_t d = H5Dopen2(f, name, H5P_DEFAULT);
     if (d < 0)
         return -1;
-    long n = first_dim(d);
+    hid_t sp = H5Dget_space(d), t = H5Dget_type(d);
+    int rank1 = sp >= 0 && H5Sget_simple_extent_ndims(sp) == 1;
+    int flt = t >= 0 && H5Tget_class(t) == H5T_FLOAT;
+    if (sp >= 0)
+        H5Sclose(sp);
+    if (t >= 0)
+        H5Tclose(t);
+    long n = rank1 && flt ? first_dim(d) : -1;
     H5Dclose(d);
     return n > MS_IO_MAX_PARTICLES ? -1 : (int)n;
 }
@@ -1361,11 +1410,20 @@ static ms_status relist_sidecars(ms_writer *w)
             H5Sclose(fs);
         if (ms >= 0)
             H5Sclose(ms);
+        if (!ok)
+            return ms_h5_fail(MS_ERR_PARSE, "io: frame %ld of %s cannot be read back", j, w->path);
         int n = 0;
-        if (ok && (w->layout.fields & MS_FIELD_PARTICLES))
-            ok = (n = step_count(w->file, j)) >= 0;
+        if ((w->layout.fields & MS_FIELD_PARTICLES) && (n = step_count(w->file, j)) < 0) {
+            /* HDF5 may have said nothing (a scalar opens fine): no stale
+             * reason from its stack or errno */
+            H5Eclear2(H5E_DEFAULT);
+            return ms_fail(MS_ERR_PARSE,
+                           "io: frame %ld of %s cannot be read back: its /Step#%ld/x is missing "
+                           "or not a 1D float array",
+                           j, w->path, j);
+        }
         int ns = 0;
-        if (ok && w->spray_n_dset >= 0) {
+        if (w->spray_n_dset >= 0) {
             fs = H5Dget_space(w->spray_n_dset);
             ms = H5Screate_simple(1, count, NULL);
             ok = fs >= 0 && ms >= 0 &&
@@ -1376,9 +1434,11 @@ static ms_status relist_sidecars(ms_writer *w)
                 H5Sclose(fs);
             if (ms >= 0)
                 H5Sclose(ms);
+            if (!ok)
+                return ms_h5_fail(MS_ERR_PARSE,
+                                  "io: frame %ld of %s: its spray count cannot be read back", j,
+                                  w->path);
         }
-        if (!ok)
-            return ms_h5_fail(MS_ERR_PARSE, "io: frame %ld of %s cannot be read back", j, w->path);
         ms_xdmf_set_spray(w->xdmf, ns);
         st = ms_xdmf_frame(w->xdmf, j, t, n);
         if (st == MS_OK)

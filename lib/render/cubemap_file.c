@@ -6,6 +6,7 @@
 #include <errno.h>
 #include <math.h>
 #include <png.h>
+#include <setjmp.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -79,6 +80,67 @@ static ms_status read_png(const char *path, int max_w, int max_h, unsigned char 
     *h = (int)img.height;
     *out = px;
     return MS_OK;
+}
+
+/* libpng's errors as a sentence (longjmp back to decode_rows); its
+ * warnings are not the caller's business. */
+typedef struct png_err {
+    jmp_buf jump;
+    char message[160];
+} png_err;
+
+static void on_png_error(png_structp png, png_const_charp message)
+{
+    png_err *e = png_get_error_ptr(png);
+    snprintf(e->message, sizeof e->message, "%s", message);
+    longjmp(e->jump, 1);
+}
+
+static void on_png_warning(png_structp png, png_const_charp message)
+{
+    (void)png;
+    (void)message;
+}
+
+/* Every row of a PNG decoded, one row of memory at a time, the pixels
+ * dropped: what ms_cubemap_load meets past the header (a face cut short,
+ * corrupt data) found without the face's memory, so that the check
+ * refuses what loading refuses. The header was checked by open_png. */
+static ms_status decode_rows(const char *path)
+{
+    const char *why;
+    FILE *f = ms_fopen_regular(path, &why);
+    if (!f)
+        return ms_fail(MS_ERR_IO, "render: cubemap \"%s\" cannot be read: %s", path, why);
+    png_err e;
+    e.message[0] = '\0';
+    png_structp png =
+        png_create_read_struct(PNG_LIBPNG_VER_STRING, &e, on_png_error, on_png_warning);
+    png_infop info = png ? png_create_info_struct(png) : NULL;
+    unsigned char *volatile row = NULL;
+    ms_status st = MS_OK;
+    if (!info) {
+        st = ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"", path);
+    } else if (setjmp(e.jump)) {
+        st =
+            ms_fail(MS_ERR_PARSE, "render: cubemap \"%s\" cannot be decoded (%s)", path, e.message);
+    } else {
+        png_init_io(png, f);
+        png_read_info(png, info);
+        int passes = png_set_interlace_handling(png);
+        png_read_update_info(png, info);
+        png_uint_32 h = png_get_image_height(png, info);
+        row = ms_alloc(png_get_rowbytes(png, info));
+        if (!row)
+            st = ms_fail(MS_ERR_OUT_OF_MEMORY, "render: out of memory for cubemap \"%s\"", path);
+        for (int pass = 0; row && pass < passes; ++pass)
+            for (png_uint_32 y = 0; y < h; ++y)
+                png_read_row(png, row, NULL);
+    }
+    ms_free(row);
+    png_destroy_read_struct(png ? &png : NULL, info ? &info : NULL, NULL);
+    fclose(f);
+    return st;
 }
 
 static int file_exists(const char *path)
@@ -280,7 +342,8 @@ ms_status ms_cubemap_probe(const char *path)
         int w = (int)img.width, h = (int)img.height;
         png_image_free(&img);
         fclose(fp);
-        return check_strip(path, w, h);
+        MS_TRY(check_strip(path, w, h));
+        return decode_rows(path);
     }
     int size = 0;
     for (int f = 0; f < 6; ++f) {
@@ -291,6 +354,7 @@ ms_status ms_cubemap_probe(const char *path)
         png_image_free(&img);
         fclose(fp);
         MS_TRY(check_face(face, f, w, h, size));
+        MS_TRY(decode_rows(face));
         size = w;
     }
     return MS_OK;

@@ -41,8 +41,8 @@ void ms_cubemap_direction(int f, float s, float t, float dir[3]);
 ms_status ms_sky_builtin(int size, const float light_dir[3], ms_cubemap *out);
 /* Loads "path": a directory of six faces or one PNG strip (render.h). */
 ms_status ms_cubemap_load(const char *path, ms_cubemap *out);
-/* The checks ms_cubemap_load makes of the files' headers (existence, PNG,
- * face sizes), without decoding: the same refusals, none of the work. */
+/* The refusals of ms_cubemap_load (existence, PNG, face sizes from the
+ * headers, every row decoded) with one row in memory, not the faces. */
 ms_status ms_cubemap_probe(const char *path);
 
 /* ---- tiles (CPU) -------------------------------------------------------- */

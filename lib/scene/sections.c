@@ -602,6 +602,18 @@ ms_status ms_scene_read_sections(ms_scene_ctx *c, json_t *root, ms_scene *sc, co
         return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
                              "is %zu bytes long; allowed: at most 256 bytes", strlen(name));
     }
+    /* the name is printed (check, run's progress, the viewer's title and
+     * its log's header line): a control character would reach a terminal
+     * raw (an escape sequence retitles or clears it) or break the log's
+     * lines */
+    for (const unsigned char *p = (const unsigned char *)name; *p; ++p)
+        if (*p < 0x20 || *p == 0x7f) {
+            ms_scene_push_key(c, "name");
+            return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
+                                 "holds the control character 0x%02x at byte %td; allowed: "
+                                 "printable text",
+                                 *p, (const char *)p - name);
+        }
     sc->name = ms_strdup(name);
     if (!sc->name)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory");

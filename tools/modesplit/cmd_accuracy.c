@@ -422,9 +422,14 @@ static int refuse_fields(const char *path, int lineno, char *const *fl)
 
 static int read_part(const char *path, acc_ctx *c, char *machine, char *commit, size_t size)
 {
-    FILE *f = fopen(path, "r");
-    if (!f)
+    const char *why;
+    FILE *f = tool_fopen_regular(path, &why);
+    if (!f && errno == ENOENT)
         return 1; /* a case that wrote nothing */
+    if (!f) {
+        tool_error("accuracy: cannot read the part %s: %s", path, why);
+        return -1;
+    }
     char line[4096];
     int rc = 0, lineno = 0;
     while (fgets(line, sizeof line, f)) {
@@ -560,9 +565,16 @@ static int merge_traces(const char *parts, const char *out)
     int blocks = 0;
     for (int k = 0; k < NCASES; ++k) {
         snprintf(path, sizeof path, "%s/%s.trace", parts, cases[k].name);
-        FILE *f = fopen(path, "r");
-        if (!f)
+        const char *why;
+        FILE *f = tool_fopen_regular(path, &why);
+        if (!f && errno == ENOENT)
             continue;
+        if (!f) {
+            tool_error("accuracy: cannot read the part %s: %s", path, why);
+            if (o)
+                fclose(o);
+            return -1;
+        }
         if (!o) {
             snprintf(path, sizeof path, "%s/sph_trace.dat", out);
             o = fopen(path, "w");
@@ -606,7 +618,12 @@ static int merge(const char *parts, const char *out)
             ++found;
         }
         snprintf(path, sizeof path, "%s/%s.notes", parts, cases[k].name);
-        FILE *f = fopen(path, "r");
+        const char *why;
+        FILE *f = rc == 0 ? tool_fopen_regular(path, &why) : NULL;
+        if (!f && rc == 0 && errno != ENOENT) {
+            tool_error("accuracy: cannot read the part %s: %s", path, why);
+            rc = -1;
+        }
         if (f) {
             size_t used = strlen(c.note);
             size_t got = fread(c.note + used, 1, sizeof c.note - used - 1, f);

@@ -25,8 +25,9 @@ static const char *field_list(unsigned f, char *buf, size_t size)
 int tool_check_frame_work(const ms_scene *sc, ms_sim *sim, const char *path)
 {
     /* The render section as the renderer would take it (a cubemap's face
-     * sizes from the files' headers), so that check refuses what run
-     * --png would, and run refuses it before its first frame. */
+     * sizes from the files' headers, every row decoded), so that check
+     * refuses what run --png would, and run refuses it before its first
+     * frame. */
     if (ms_scene_has_render(sc)) {
         ms_renderer_desc rd = ms_renderer_desc_default();
         if (ms_renderer_desc_from_scene(sc, &rd) != MS_OK || ms_renderer_desc_check(&rd) != MS_OK) {

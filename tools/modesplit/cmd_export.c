@@ -10,11 +10,13 @@
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include "tool.h"
@@ -51,16 +53,24 @@ static char *python_dir(void)
     return NULL;
 }
 
-/* USD writes a stage when it is saved: every time sample (points and
- * normals of each cell, 24 bytes; the particles' positions, velocities and
- * ids) is held in memory until then, with some bookkeeping per time code
- * and attribute. The export is refused when that estimate passes half this
- * machine's memory or EXPORT_MAX_BYTES, whichever is smaller, before
- * Python starts. */
+/* What the export holds in memory (tools/python/modesplit/usd_export.py,
+ * its peak RSS measured with /usr/bin/time -f %M: 128 MiB at 64 x 48 cells,
+ * 570 MiB at 2048 x 1536, +12 MiB for 184800 particles). A .usdc (or
+ * .usd) layer is saved whenever SAVE_BYTES (64 MiB) of time samples wait
+ * and keeps what it saved on disk, so the export holds Python with usd-core
+ * and numpy, those samples and one frame's arrays, whatever the number of
+ * frames. A .usda text layer is written whole at its one save: every time
+ * sample is held until then. */
+#define EXPORT_BASE_BYTES (192.0 * (1u << 20)) /* Python, usd-core, numpy; SAVE_BYTES */
+#define EXPORT_CELL_PEAK 160.0    /* a frame's heights, points, normals and their temporaries */
+#define EXPORT_PARTICLE_PEAK 96.0 /* a step's six arrays, ids and their USD copies */
 #define EXPORT_MAX_BYTES (16.0 * (1u << 30))
-#define EXPORT_CELL_BYTES 24.0      /* a point and a normal, float3 each */
-#define EXPORT_FRAME_BYTES 4096.0   /* a time code's samples and Python's objects */
-#define EXPORT_PARTICLE_FACTOR 1.34 /* in memory per stored byte: +8 B of id to 24 */
+/* What the USD file holds per frame: a point and a normal (float3 each) a
+ * cell, a position, a velocity (float3) and an int64 id a particle, and
+ * some bookkeeping per time code and attribute. */
+#define EXPORT_CELL_BYTES 24.0
+#define EXPORT_PARTICLE_BYTES 32.0
+#define EXPORT_FRAME_BYTES 4096.0
 
 static double export_bound(void)
 {
@@ -69,11 +79,82 @@ static double export_bound(void)
     return half < EXPORT_MAX_BYTES ? half : EXPORT_MAX_BYTES;
 }
 
+/* Bytes free to this user in the folder of `usd`; INFINITY when unknown. */
+static double free_bytes(const char *usd)
+{
+    char *dir = strdup(usd);
+    if (!dir)
+        return INFINITY;
+    char *slash = strrchr(dir, '/');
+    if (slash)
+        slash[slash == dir ? 1 : 0] = '\0';
+    struct statvfs vb;
+    double avail =
+        statvfs(slash ? dir : ".", &vb) == 0 ? (double)vb.f_bavail * (double)vb.f_frsize : INFINITY;
+    free(dir);
+    return avail;
+}
+
+/* The file written would not fit in the folder's free space: refused. */
+static int refuse_disk(const char *run, const char *usd, long frames, const ms_grid *g,
+                       double particles, double write)
+{
+    double avail = free_bytes(usd);
+    if (write <= avail)
+        return 0;
+    char a[32], b[32];
+    char parts[64] = "";
+    if (particles > 0)
+        snprintf(parts, sizeof parts, " and %.0f particles", particles);
+    tool_error("export: %s: %ld frames of a %d x %d field%s would write about %s to %s; its "
+               "folder has %s free, so it is refused",
+               run, frames, g->nx, g->ny, parts, tool_bytes(write, a, sizeof a), usd,
+               tool_bytes(avail, b, sizeof b));
+    return EXIT_USAGE;
+}
+
+/* The memory the export needs (`need`) over this machine's bound: refused
+ * with `what` needs it. */
+static int refuse_memory(const char *run, const char *what, double need)
+{
+    double bound = export_bound();
+    if (need <= bound)
+        return 0;
+    char a[32], b[32];
+    tool_error("export: %s: %s would need about %s of memory; this machine's bound is %s (half "
+               "its memory, at most 16 GiB), so it is refused",
+               run, what, tool_bytes(need, a, sizeof a), tool_bytes(bound, b, sizeof b));
+    return EXIT_USAGE;
+}
+
+/* The export's memory (one frame of g's cells and `most` particles; for a
+ * .usda the whole file) and the file it writes (`write` bytes, of `total`
+ * particles) against their bounds. 0, or an exit status after a message. */
+static int check_size(const char *run, const char *usd, int text, long frames, const ms_grid *g,
+                      int most, double total, double write)
+{
+    char what[200];
+    int at = snprintf(what, sizeof what, "one frame of a %d x %d field", g->nx, g->ny);
+    if (most > 0)
+        snprintf(what + at, sizeof what - (size_t)at, " and %d particles", most);
+    int rc = refuse_memory(run, what,
+                           EXPORT_BASE_BYTES + (double)g->nx * g->ny * EXPORT_CELL_PEAK +
+                               (double)most * EXPORT_PARTICLE_PEAK);
+    if (rc == 0 && text) {
+        snprintf(what, sizeof what,
+                 "%ld frames as a .usda text layer (held whole until its one save; a .usdc is "
+                 "saved as it grows)",
+                 frames);
+        rc = refuse_memory(run, what, EXPORT_BASE_BYTES + write);
+    }
+    return rc == 0 ? refuse_disk(run, usd, frames, g, total, write) : rc;
+}
+
 /* What the export will read, checked by the library's reader first: a file
  * `info` refuses is refused here in the same sentence, and the Python
  * side only ever sees a file the reader accepted. *field becomes the field
  * the mesh is made of (NULL: none). 0, or an exit status after a message. */
-static int check_run(const char *run, const char **field)
+static int check_run(const char *run, const char *usd, const char **field)
 {
     static const char *const names[3] = {"combined", "surface", "volume"};
     static const unsigned bits[3] = {MS_FIELD_COMBINED, MS_FIELD_SURFACE, MS_FIELD_VOLUME};
@@ -102,36 +183,32 @@ static int check_run(const char *run, const char **field)
     ms_grid g = {0};
     if (pick >= 0)
         ms_reader_field_grid(r, bits[pick], &g);
-    /* the particles' arrays are stored unfiltered (the reader checks that
-     * the file holds their bytes), so the file's allocated size bounds
-     * them: a sparse file's holes count for nothing */
-    struct stat sb;
-    double stored = stat(run, &sb) == 0 ? 512.0 * (double)sb.st_blocks : 0.0;
-    double need = (double)frames * ((double)g.nx * g.ny * EXPORT_CELL_BYTES + EXPORT_FRAME_BYTES) +
-                  EXPORT_PARTICLE_FACTOR * stored;
-    double bound = export_bound();
-    if (need > bound) {
-        char a[32], b[32];
-        tool_error("export: %s: %ld frames of a %d x %d field and its particles would need about "
-                   "%s of memory (USD holds every time sample until it saves the stage); this "
-                   "machine's bound is %s (half its memory, at most 16 GiB), so it is refused",
-                   run, frames, g.nx, g.ny, tool_bytes(need, a, sizeof a),
-                   tool_bytes(bound, b, sizeof b));
-        ms_reader_close(r);
-        return EXIT_USAGE;
-    }
+    double cells = (double)g.nx * g.ny;
+    size_t n = strlen(usd);
+    int text = n > 5 && !strcmp(usd + n - 5, ".usda");
+    /* the heights first, then the particles counted step by step: a claim
+     * of 1e9 frames is refused before a look at each */
+    double write = (double)frames * (cells * EXPORT_CELL_BYTES + EXPORT_FRAME_BYTES);
+    int rc = check_size(run, usd, text, frames, &g, 0, 0, write);
     /* every step's particles as the reader sees them (their bytes stored
-     * in the file), before Python reads them whole */
-    for (long k = 0; k < frames && (have & MS_FIELD_PARTICLES); ++k) {
-        int n;
-        if (ms_reader_particle_count(r, k, &n) != MS_OK) {
+     * in the file), before Python reads them */
+    double total = 0;
+    int most = 0;
+    for (long k = 0; rc == 0 && k < frames && (have & MS_FIELD_PARTICLES); ++k) {
+        int count;
+        if (ms_reader_particle_count(r, k, &count) != MS_OK) {
             tool_error("export: %s", ms_last_error());
-            ms_reader_close(r);
-            return EXIT_USAGE;
+            rc = EXIT_USAGE;
+        } else {
+            total += count;
+            most = count > most ? count : most;
         }
     }
     ms_reader_close(r);
-    return 0;
+    if (rc == 0 && total > 0)
+        rc = check_size(run, usd, text, frames, &g, most, total,
+                        write + total * EXPORT_PARTICLE_BYTES);
+    return rc;
 }
 
 /* The USD file to write: a .usd/.usda/.usdc name in an existing folder
@@ -209,7 +286,7 @@ int cmd_export(int argc, char **argv)
     }
     int rc = check_out(run, usd);
     if (rc == 0)
-        rc = check_run(run, &field);
+        rc = check_run(run, usd, &field);
     if (rc != 0)
         return rc;
     char *dir = python_dir();

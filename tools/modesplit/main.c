@@ -205,13 +205,44 @@ int tool_refuse_same_file(const char *cmd, const char *option, const char *out, 
     return -1;
 }
 
+/* Bytes of the well-formed UTF-8 sequence of 2 to 4 bytes at p, 0 when
+ * there is none (a stray or cut byte, an overlong form, a surrogate). The
+ * checks stop at the first byte that is not a continuation, so a string's
+ * NUL ends them. */
+static int utf8_len(const unsigned char *p)
+{
+    if (p[0] >= 0xc2 && p[0] <= 0xdf)
+        return (p[1] & 0xc0) == 0x80 ? 2 : 0;
+    if (p[0] >= 0xe0 && p[0] <= 0xef) {
+        if ((p[1] & 0xc0) != 0x80 || (p[2] & 0xc0) != 0x80 || (p[0] == 0xe0 && p[1] < 0xa0) ||
+            (p[0] == 0xed && p[1] >= 0xa0))
+            return 0;
+        return 3;
+    }
+    if (p[0] >= 0xf0 && p[0] <= 0xf4) {
+        if ((p[1] & 0xc0) != 0x80 || (p[2] & 0xc0) != 0x80 || (p[3] & 0xc0) != 0x80 ||
+            (p[0] == 0xf0 && p[1] < 0x90) || (p[0] == 0xf4 && p[1] >= 0x90))
+            return 0;
+        return 4;
+    }
+    return 0;
+}
+
 void tool_put_escaped(FILE *f, const char *s, const char *keep)
 {
-    for (const unsigned char *p = (const unsigned char *)s; *p; ++p) {
-        if ((*p < 0x20 && !strchr(keep, *p)) || *p == 0x7f)
-            fprintf(f, "\\x%02x", *p);
-        else
-            fputc(*p, f);
+    for (const unsigned char *p = (const unsigned char *)s; *p;) {
+        int n = *p < 0x80 ? 1 : utf8_len(p);
+        if ((*p < 0x20 && !strchr(keep, *p)) || *p == 0x7f || n == 0) {
+            fprintf(f, "\\x%02x", *p++);
+        } else if (n == 2 && p[0] == 0xc2 && p[1] < 0xa0) {
+            /* U+0080..U+009F: the C1 controls (U+009B is a CSI to a
+             * terminal that takes them) */
+            fprintf(f, "\\u%04x", p[1]);
+            p += 2;
+        } else {
+            fwrite(p, 1, (size_t)n, f);
+            p += n;
+        }
     }
 }
 

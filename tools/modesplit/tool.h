@@ -21,10 +21,17 @@ enum { EXIT_OK = 0, EXIT_RUNTIME = 1, EXIT_USAGE = 2 };
 
 /* Strings from a file are data, not terminal commands: control
  * characters (ESC sequences that retitle or rewrite the terminal, CR, BEL,
- * ...) and DEL are written to f as \xNN; `keep` lists the ones written as
- * they are. The one escaping of the tool: `info`, `--resume`, `export`,
+ * ...), DEL and bytes that are not well-formed UTF-8 are written to f as
+ * \xNN, the C1 controls U+0080..U+009F as \uNNNN; `keep` lists the
+ * control characters written as they are. The one escaping of the tool: `info`, `--resume`, `export`,
  * the viewer and every tool_error message use it. */
 void tool_put_escaped(FILE *f, const char *s, const char *keep);
+/* Open a file to read only when it is a regular file: a FIFO would block
+ * the open, /dev/zero never ends. NULL with *why the reason (errno kept
+ * from the open, ENOENT for a missing file; 0 for a file that is not
+ * regular). The tool's one such open: view --script logs and accuracy's
+ * part files use it. */
+FILE *tool_fopen_regular(const char *path, const char **why);
 /* Print "modesplit: <message>\n" to stderr, the message escaped
  * (tool_put_escaped, newlines and tabs kept). */
 void tool_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "tool.h"
 #include "view.h"
 
 static const char *const type_names[] = {"key-down",  "key-up", "button-down",
@@ -125,26 +126,21 @@ int view_script_load(const char *path, view_script *s, char *err, size_t errlen)
     memset(s, 0, sizeof *s);
     /* a regular file of bounded size: /dev/zero would be read forever (its
      * NUL "lines" are empty), a FIFO would block the open */
-    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    const char *why_not;
+    FILE *f = tool_fopen_regular(path, &why_not);
     struct stat sb;
-    if (fd < 0 || fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode) || sb.st_size > VIEW_LOG_MAX_BYTES) {
-        if (fd < 0 || fstat(fd, &sb) != 0)
-            snprintf(err, errlen, "%s: cannot open the input log: %s", path, strerror(errno));
-        else if (!S_ISREG(sb.st_mode))
+    if (!f || fstat(fileno(f), &sb) != 0 || sb.st_size > VIEW_LOG_MAX_BYTES) {
+        if (!f && errno == 0)
             snprintf(err, errlen,
                      "%s: the input log must be a regular file (not a FIFO or a device)", path);
+        else if (!f)
+            snprintf(err, errlen, "%s: cannot open the input log: %s", path, why_not);
         else
             snprintf(err, errlen,
                      "%s: the input log is %lld bytes, over the %d bytes a log may have", path,
                      (long long)sb.st_size, VIEW_LOG_MAX_BYTES);
-        if (fd >= 0)
-            close(fd);
-        return -1;
-    }
-    FILE *f = fdopen(fd, "r");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot open the input log: %s", path, strerror(errno));
-        close(fd);
+        if (f)
+            fclose(f);
         return -1;
     }
     char line[256], why[200];

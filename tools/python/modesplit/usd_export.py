@@ -23,12 +23,6 @@ text):
   /Run/Particles       Points: positions, velocities (m/s) and ids
                        time-sampled, one constant width (the mean particle
                        spacing of frame 0, or 1 cm).
-  /Run/Spray           Points (a run with spray): the droplets in flight,
-                       positions time-sampled (their count changes from
-                       frame to frame), one constant width (0.3 particle
-                       spacings, as the renderer draws them). The foam
-                       cover, when it lies on the surface's grid, is the
-                       Surface's time-sampled vertex primvar `foam` (0..1).
 Exit status: 0 written; 1 a read or write failure; 2 bad arguments or not a
 modesplit run file (the message names the file and what is missing).
 """
@@ -131,6 +125,14 @@ def vertex_normals(h, dx, dy):
     return n.reshape(-1, 3).astype(np.float32)
 
 
+# Unsaved time samples before the layer is saved (crate files only): a
+# .usdc layer saved again writes only what changed and keeps what it wrote
+# on disk, not in memory, so the export holds about this much plus one
+# frame, whatever the number of frames. A .usda text layer is written whole
+# at its one save (the C tool refuses one that would not fit in memory).
+SAVE_BYTES = 64 << 20
+
+
 def export(run, usd_path, field=None):
     try:
         from pxr import Gf, Sdf, Usd, UsdGeom, Vt
@@ -155,7 +157,11 @@ def export(run, usd_path, field=None):
         elif field not in present:
             fail(2, f"{run} has no field {field} (it has: {', '.join(present) or 'none'})")
 
-        stage = Usd.Stage.CreateNew(usd_path)
+        # .usd is written as crate too (not as USD_DEFAULT_FILE_FORMAT says):
+        # only crate layers can be saved as they grow
+        text_layer = usd_path.endswith(".usda")
+        layer = Sdf.Layer.CreateNew(usd_path, {} if text_layer else {"format": "usdc"})
+        stage = Usd.Stage.Open(layer) if layer else None
         if stage is None:
             fail(1, f"cannot create {usd_path}")
         UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
@@ -170,16 +176,10 @@ def export(run, usd_path, field=None):
                                           text(f.attrs.get("scene_name", "")))
         root.GetPrim().SetCustomDataByKey("modesplit:source", run)
 
-        # /Run is an Xform, which has no extent of its own: its children's
-        # union per frame goes into the model's extentsHint, so every prim
-        # states its bounds.
-        union = {}
+        def box(lo, hi):
+            return Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))])
 
-        def grow(k, lo, hi):
-            a, b = union.get(k, (lo, hi))
-            union[k] = (np.minimum(a, lo), np.maximum(b, hi))
-
-        bad = 0
+        mesh_attrs = None
         if field is not None:
             ds = f[f"fields/{field}"]
             nx, ny, dx, dy, x0, y0 = grid_of(ds)
@@ -188,6 +188,7 @@ def export(run, usd_path, field=None):
             counts, idx = quad_topology(nx, ny)
             mesh.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(counts))
             mesh.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(idx))
+            del counts, idx
             mesh.CreateSubdivisionSchemeAttr(UsdGeom.Tokens.none)
             mesh.CreateOrientationAttr(UsdGeom.Tokens.rightHanded)
             xs = x0 + (np.arange(nx) + 0.5) * dx
@@ -197,42 +198,26 @@ def export(run, usd_path, field=None):
             pv = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar(
                 "st", Sdf.ValueTypeNames.TexCoord2fArray, UsdGeom.Tokens.vertex)
             pv.Set(Vt.Vec2fArray.FromNumpy(st.astype(np.float32)))
+            del st
             mesh.SetNormalsInterpolation(UsdGeom.Tokens.vertex)
-            pts_attr = mesh.CreatePointsAttr()
-            nrm_attr = mesh.CreateNormalsAttr()
-            ext_attr = mesh.CreateExtentAttr()
-            xy = np.stack([gx.ravel(), gy.ravel()], -1)
+            mesh_attrs = (mesh.CreatePointsAttr(), mesh.CreateNormalsAttr(),
+                          mesh.CreateExtentAttr())
+            # the points' x and y, the same every frame (float32, as written)
+            xy = np.stack([gx.ravel(), gy.ravel()], -1).astype(np.float32)
+            del gx, gy
+            # the foam, a vertex primvar when it lies on the mesh's grid
             foam = f.get("foam")
             if foam is not None and foam.shape[1:] != (ny, nx):
                 foam = None  # on another grid: not a primvar of this mesh
             foam_pv = UsdGeom.PrimvarsAPI(mesh).CreatePrimvar(
                 "foam", Sdf.ValueTypeNames.FloatArray, UsdGeom.Tokens.vertex) \
                 if foam is not None else None
-            for k in range(frames):
-                if foam_pv is not None:
-                    c = np.nan_to_num(np.asarray(foam[k], dtype=np.float32), nan=0.0)
-                    foam_pv.Set(Vt.FloatArray.FromNumpy(c.ravel()), k)
-                h = np.asarray(ds[k], dtype=np.float32)
-                finite = np.isfinite(h)
-                if not finite.all():
-                    bad += 1
-                    h = np.where(finite, h, 0.0).astype(np.float32)
-                p = np.concatenate([xy, h.reshape(-1, 1)], 1).astype(np.float32)
-                pts_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
-                nrm_attr.Set(Vt.Vec3fArray.FromNumpy(vertex_normals(h, dx, dy)), k)
-                lo, hi = p.min(0), p.max(0)
-                ext_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)), Gf.Vec3f(*map(float, hi))]), k)
-                grow(k, lo, hi)
-        if bad:
-            print(f"modesplit export: {bad} frames of {field} had non-finite heights, "
-                  "written as 0", file=sys.stderr)
 
+        step_attrs = None
         if "Step#0" in f:
             points = UsdGeom.Points.Define(stage, "/Run/Particles")
-            p_attr = points.CreatePointsAttr()
-            v_attr = points.CreateVelocitiesAttr()
-            i_attr = points.CreateIdsAttr()
-            e_attr = points.CreateExtentAttr()
+            step_attrs = (points.CreatePointsAttr(), points.CreateVelocitiesAttr(),
+                          points.CreateIdsAttr(), points.CreateExtentAttr())
             spacing = 0.01
             try:
                 scene = __import__("json").loads(text(f.attrs["scene"]))
@@ -241,28 +226,11 @@ def export(run, usd_path, field=None):
                 pass
             points.CreateWidthsAttr(Vt.FloatArray([spacing]))
             points.SetWidthsInterpolation(UsdGeom.Tokens.constant)
-            for k in range(frames):
-                step = f.get(f"Step#{k}")
-                if step is None:
-                    continue
-                p = np.stack([step[a][:] for a in "xyz"], 1).astype(np.float32)
-                v = np.stack([step[a][:] for a in ("vx", "vy", "vz")], 1).astype(np.float32)
-                ids = step["id"][:] if "id" in step else np.arange(len(p))
-                p_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
-                v_attr.Set(Vt.Vec3fArray.FromNumpy(v), k)
-                # the points' box grown by half the width (UsdGeom.Points' rule)
-                if len(p):
-                    lo, hi = p.min(0) - 0.5 * spacing, p.max(0) + 0.5 * spacing
-                else:
-                    lo = hi = np.zeros(3, np.float32)
-                e_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
-                                          Gf.Vec3f(*map(float, hi))]), k)
-                grow(k, lo, hi)
-                i_attr.Set(Vt.Int64Array.FromNumpy(ids.astype(np.int64)), k)
+
+        spray_attrs = None
         if "spray" in f and "spray_count" in f:
             spray = UsdGeom.Points.Define(stage, "/Run/Spray")
-            s_attr = spray.CreatePointsAttr()
-            se_attr = spray.CreateExtentAttr()
+            spray_attrs = (spray.CreatePointsAttr(), spray.CreateExtentAttr())
             width = 0.01
             try:
                 scene = __import__("json").loads(text(f.attrs["scene"]))
@@ -271,23 +239,80 @@ def export(run, usd_path, field=None):
                 pass
             spray.CreateWidthsAttr(Vt.FloatArray([width]))
             spray.SetWidthsInterpolation(UsdGeom.Tokens.constant)
-            ds, counts = f["spray"], f["spray_count"]
-            for k in range(min(frames, len(ds), len(counts))):
-                n = int(counts[k])
-                p = np.asarray(ds[k, :n], dtype=np.float32).reshape(-1, 3)
-                s_attr.Set(Vt.Vec3fArray.FromNumpy(p), k)
-                if n:
-                    lo, hi = p.min(0) - 0.5 * width, p.max(0) + 0.5 * width
-                    grow(k, lo, hi)
-                else:
-                    lo = hi = np.zeros(3, np.float32)
-                se_attr.Set(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
-                                           Gf.Vec3f(*map(float, hi))]), k)
+            spray_ds, spray_n = f["spray"], f["spray_count"]
+            spray_frames = min(len(spray_ds), len(spray_n))
+
+        # /Run is an Xform, which has no extent of its own: its children's
+        # union per frame goes into the model's extentsHint, so every prim
+        # states its bounds.
         model = UsdGeom.ModelAPI.Apply(root.GetPrim())
-        for k, (lo, hi) in sorted(union.items()):
-            model.SetExtentsHint(Vt.Vec3fArray([Gf.Vec3f(*map(float, lo)),
-                                                Gf.Vec3f(*map(float, hi))]), k)
-        stage.GetRootLayer().Save()
+        # Frame by frame: each frame's samples are read, set and let go;
+        # the layer is saved whenever SAVE_BYTES of them wait.
+        bad = pending = 0
+        for k in range(frames):
+            lo = hi = None
+            if mesh_attrs is not None:
+                h = np.asarray(ds[k], dtype=np.float32)
+                finite = np.isfinite(h)
+                if not finite.all():
+                    bad += 1
+                    h = np.where(finite, h, 0.0).astype(np.float32)
+                del finite
+                p = np.empty((nx * ny, 3), np.float32)
+                p[:, :2] = xy
+                p[:, 2] = h.ravel()
+                mesh_attrs[0].Set(Vt.Vec3fArray.FromNumpy(p), k)
+                mesh_attrs[1].Set(Vt.Vec3fArray.FromNumpy(vertex_normals(h, dx, dy)), k)
+                lo, hi = p.min(0), p.max(0)
+                mesh_attrs[2].Set(box(lo, hi), k)
+                pending += 24 * nx * ny
+                del h, p
+                if foam_pv is not None and k < len(foam):
+                    c = np.nan_to_num(np.asarray(foam[k], dtype=np.float32), nan=0.0)
+                    foam_pv.Set(Vt.FloatArray.FromNumpy(c.ravel()), k)
+                    pending += 4 * nx * ny
+                    del c
+            step = f.get(f"Step#{k}") if step_attrs is not None else None
+            if step is not None:
+                p = np.stack([step[a][:] for a in "xyz"], 1).astype(np.float32)
+                v = np.stack([step[a][:] for a in ("vx", "vy", "vz")], 1).astype(np.float32)
+                ids = step["id"][:] if "id" in step else np.arange(len(p))
+                step_attrs[0].Set(Vt.Vec3fArray.FromNumpy(p), k)
+                step_attrs[1].Set(Vt.Vec3fArray.FromNumpy(v), k)
+                step_attrs[2].Set(Vt.Int64Array.FromNumpy(ids.astype(np.int64)), k)
+                # the points' box grown by half the width (UsdGeom.Points' rule)
+                if len(p):
+                    plo, phi = p.min(0) - 0.5 * spacing, p.max(0) + 0.5 * spacing
+                else:
+                    plo = phi = np.zeros(3, np.float32)
+                step_attrs[3].Set(box(plo, phi), k)
+                lo = plo if lo is None else np.minimum(lo, plo)
+                hi = phi if hi is None else np.maximum(hi, phi)
+                pending += 32 * len(p)
+                del p, v, ids
+            if spray_attrs is not None and k < spray_frames:
+                n = max(0, min(int(spray_n[k]), spray_ds.shape[1]))
+                p = np.asarray(spray_ds[k, :n], dtype=np.float32).reshape(-1, 3)
+                spray_attrs[0].Set(Vt.Vec3fArray.FromNumpy(p), k)
+                if n:
+                    slo, shi = p.min(0) - 0.5 * width, p.max(0) + 0.5 * width
+                    lo = slo if lo is None else np.minimum(lo, slo)
+                    hi = shi if hi is None else np.maximum(hi, shi)
+                else:
+                    slo = shi = np.zeros(3, np.float32)
+                spray_attrs[1].Set(box(slo, shi), k)
+                pending += 12 * n
+                del p
+            if lo is not None:
+                model.SetExtentsHint(box(lo, hi), k)
+            if not text_layer and pending >= SAVE_BYTES:
+                layer.Save()
+                pending = 0
+        if bad:
+            print(f"modesplit export: {bad} frames of {field} had non-finite heights, "
+                  "written as 0", file=sys.stderr)
+        if not layer.Save():
+            fail(1, f"cannot write {usd_path}")
     return frames
 
 
