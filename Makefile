@@ -83,10 +83,17 @@ $(BUILD)/obj/lib/volume/%.o: ALL_CFLAGS += -fno-math-errno -ffp-contract=off
 # The lane passes once per instruction set (lib/volume/passes.h), each
 # file with its own flags: every x86-64 path with gcc and clang alike.
 # No -mfma: the paths must not differ by a rounding.
+# (`make -s isa-flags SRC=lib/volume/passes_avx2.c` prints a file's, for
+# builds outside this Makefile: .ci/fuzz.)
+ISA_FLAGS_passes_avx2   := -mavx2
+ISA_FLAGS_passes_avx512 := -mavx512f -mavx512dq -mbmi -mbmi2 -mpopcnt
 ifneq ($(filter x86_64%,$(shell $(CC) -dumpmachine)),)
-$(BUILD)/obj/lib/volume/passes_avx2.o: ALL_CFLAGS += -mavx2
-$(BUILD)/obj/lib/volume/passes_avx512.o: ALL_CFLAGS += -mavx512f -mavx512dq -mbmi -mbmi2 -mpopcnt
+$(BUILD)/obj/lib/volume/passes_avx2.o: ALL_CFLAGS += $(ISA_FLAGS_passes_avx2)
+$(BUILD)/obj/lib/volume/passes_avx512.o: ALL_CFLAGS += $(ISA_FLAGS_passes_avx512)
 endif
+.PHONY: isa-flags
+isa-flags:
+	@echo $(ISA_FLAGS_$(basename $(notdir $(SRC))))
 SYS_LIBS   := $(PKG_LIBS) -ldl -lpthread -lm
 
 LIB_SRC := $(wildcard lib/*/*.c)
