@@ -473,7 +473,7 @@ END_TEST
 START_TEST(river_same_bytes_threads_and_resume)
 {
     ms_scene *sc = NULL;
-    ck_assert_msg(ms_scene_load("data/scenes/river.json", &sc) == MS_OK, "%s", ms_last_error());
+    ck_assert_msg(ms_scene_load("tests/data/river.json", &sc) == MS_OK, "%s", ms_last_error());
     ms_sim *one = sim_of(sc, 1), *two = sim_of(sc, 2), *back = sim_of(sc, 1);
     steps(one, 20);
     steps(two, 20);
