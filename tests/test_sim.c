@@ -1570,8 +1570,6 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, bad_calls_are_refused);
     tcase_add_test(tc, failed_step_leaves_the_sim_refusing);
     tcase_add_test(tc, particle_arrays_are_one_block);
-    tcase_add_test(tc, still_water_throws_no_spray);
-    tcase_add_test(tc, a_splash_throws_spray_that_falls_back);
     tcase_add_test(tc, spray_flies_the_exact_parabola_and_lands);
     tcase_add_test(tc, foam_fades_with_its_lifetime);
     tcase_add_test(tc, spray_settings_are_refused_out_of_range);
@@ -1586,6 +1584,8 @@ static Suite *sim_suite(void)
     tcase_add_test(one, dragging_moves_the_water);
     tcase_add_test(one, a_spinning_scene_paddle_turns_and_stirs);
     tcase_add_test(one, a_moving_edge_of_the_liquid_makes_no_speckle);
+    tcase_add_test(one, still_water_throws_no_spray);
+    tcase_add_test(one, a_splash_throws_spray_that_falls_back);
     suite_add_tcase(s, one);
     return s;
 }
