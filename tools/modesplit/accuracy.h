@@ -55,18 +55,25 @@ void acc_trace(acc_ctx *c, const char *fmt, ...) __attribute__((format(printf, 2
  * the calling thread's (CLOCK_THREAD_CPUTIME_ID): every case runs its sim
  * with one thread, which the library runs on the caller, so that is all
  * the work's time and nothing else's. acc_tic / acc_toc add one timing of
- * the work; acc_step and acc_repeat time a piece of work ACC_REPEATS
+ * the work; acc_step and acc_repeat time a piece of work acc_repeats
  * times and add the cheapest (acc_step from a snapshot of the sim, so the
  * sim ends as one step would leave it). Other work on a loaded machine
  * still inflates a thread's CPU time (its caches flushed, a busy
  * sibling hyperthread); the least of a few repeats close in time is what
  * the work costs when that interference is least, and a first run's
- * warm-up (cold caches, first-touch allocations) is not counted. */
+ * warm-up (cold caches, first-touch allocations) is not counted.
+ * --quick times once (acc_repeats 1): its rows check errors against the
+ * committed study's (make check-accuracy, test_accuracy), and no cost of
+ * its rows is compared or quoted, so the repeats would only triple its
+ * time. The errors do not depend on the count (every repeat starts from
+ * the same state and gives the same bytes). */
 #define ACC_REPEATS 3
-/* The cost_method column of the rows, as each case's study sets it. */
-#define ACC_BY_FRAME "thread CPU time; each frame the least of 3 repeats"
-#define ACC_BY_RUN "thread CPU time; the least of 3 repeats of the run"
-#define ACC_BY_BLOCK "thread CPU time; each 16 steps the least of 3 repeats"
+extern int acc_repeats;
+/* The cost_method column of the rows, as each case's study sets it: a
+ * format whose %s acc_add fills with how the repeats were taken. */
+#define ACC_BY_FRAME "thread CPU time; each frame %s"
+#define ACC_BY_RUN "thread CPU time; %s of the run"
+#define ACC_BY_BLOCK "thread CPU time; each 16 steps %s"
 #define ACC_BY_CALL "thread CPU time; the median of 5 calls"
 typedef struct acc_timer {
     double wall, cpu;   /* s, summed over the timings */
@@ -77,7 +84,7 @@ void acc_toc(acc_timer *t);
 /* ms_sim_step(sim, dt) timed as above; the snapshot and the restores are
  * not timed. */
 ms_status acc_step(acc_timer *t, ms_sim *sim, float dt);
-/* The least of ACC_REPEATS timings of work(arg) added to t: work whose
+/* The least of acc_repeats timings of work(arg) added to t: work whose
  * cost does not depend on the state it leaves (a block of wave steps); the
  * first failure's status, or MS_OK. */
 ms_status acc_repeat(acc_timer *t, ms_status (*work)(void *), void *arg);

@@ -107,10 +107,10 @@ static int mode_row(acc_ctx *c, const char *knob, double value, int N, double cr
 {
     double w = NAN;
     acc_row r = {.value = value, .size = (double)N * N, .threads = 1};
-    /* the run ACC_REPEATS times (its steps change what they time, so the
+    /* the run acc_repeats times (its steps change what they time, so the
      * whole run is the repeat): the same frequency each time, the least
      * cost (accuracy.h) */
-    for (int k = 0; k < ACC_REPEATS; ++k) {
+    for (int k = 0; k < acc_repeats; ++k) {
         double wk;
         acc_row rk = r;
         if (standing_mode(N, cr, &wk, &rk) != 0)
@@ -236,8 +236,8 @@ int study_waves_ring(acc_ctx *c)
         const double dx = 2.0 / N, c0 = 1.0;
         double speed = NAN, t = 0, cpu = INFINITY, wall = INFINITY;
         long steps = 0;
-        /* the run ACC_REPEATS times, the least cost (as mode_row) */
-        for (int k = 0; k < ACC_REPEATS; ++k) {
+        /* the run acc_repeats times, the least cost (as mode_row) */
+        for (int k = 0; k < acc_repeats; ++k) {
             acc_timer tm = {0};
             double sk;
             if (ring_speed(N, &sk, &tm, &steps, &t) != 0)
@@ -502,7 +502,7 @@ static int model_omega(ms_surface_model model, double lambda, double depth, doub
 
 /* ms_surface_step's cost for one model: a 256 x 256 grid of 1 cm cells at
  * the depth, stepped at its largest stable sub-step; blocks of 16
- * sub-steps, the least of ACC_REPEATS (a step's cost does not depend on
+ * sub-steps, the least of acc_repeats (a step's cost does not depend on
  * the heights). Into r: CPU and wall ms per sub-step and per simulated
  * second, the cells. */
 typedef struct model_block {
@@ -554,8 +554,8 @@ static int model_cost(ms_surface_model model, double depth, acc_row *r)
         return -1;
     }
     /* 4 blocks counted (the least of each block's repeats) */
-    long sub = (in1.substeps - in0.substeps) / ACC_REPEATS;
-    double sim_s = (in1.time - in0.time) / ACC_REPEATS;
+    long sub = (in1.substeps - in0.substeps) / acc_repeats;
+    double sim_s = (in1.time - in0.time) / acc_repeats;
     r->cpu_ms_per_step = 1e3 * tm.cpu / (double)sub;
     r->ms_per_step = 1e3 * tm.wall / (double)sub;
     r->cpu_ms_per_s = 1e3 * tm.cpu / sim_s;
