@@ -802,6 +802,12 @@ static int write_pareto(FILE *gp, const char *dir, const acc_row *rows, int n, i
         fprintf(d, "%.6g %.6g \"%s\"\n", last, rows[best].error, label);
     }
     fclose(d);
+    /* a partial merge (--case) may hold none of the spec's rows: no plot,
+     * where gnuplot would stop the whole script on an empty range */
+    if (!(xhi > 0)) {
+        remove(path);
+        return 0;
+    }
     char title[256];
     snprintf(title, sizeof title, "%s: %s, every configuration;", p->study, p->metric);
     fputs("set output ", gp);
