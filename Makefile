@@ -131,6 +131,8 @@ TSAN_SUITES ?= core plugin sim determinism api
 TSAN_SUITES += pool
 # the tool's PNG writer thread (run / render --png)
 TSAN_SUITES += render_tool
+# the library's own threads against the engine's tasks
+TSAN_SUITES += threads
 ifeq ($(SAN),tsan)
 TESTS     := $(filter $(TSAN_SUITES:%=$(BUILD)/tests/test_%),$(TESTS))
 endif
@@ -244,7 +246,11 @@ $(BUILD)/obj/tests/%.o: tests/%.c $(CONFIG_STAMP)
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TEST_SUPPORT) $(STATIC) | plugins tools
 	@mkdir -p $(@D)
 	@echo "  LD      $@"
-	$(Q)$(CC) $(LDSAN) -o $@ $< $(TEST_SUPPORT) $(STATIC) $(CHECK_LIBS) $(SYS_LIBS)
+	$(Q)$(CC) $(LDSAN) $(TEST_LDFLAGS) -o $@ $< $(TEST_SUPPORT) $(STATIC) $(CHECK_LIBS) $(SYS_LIBS)
+# test_threads counts the library's pthread_create calls (its
+# __wrap_pthread_create); a variable of its own, which the tools and
+# plugins it depends on never read.
+$(BUILD)/tests/test_threads: TEST_LDFLAGS := -Wl,--wrap=pthread_create
 
 deps:
 	@tools/deps.sh
