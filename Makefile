@@ -193,11 +193,11 @@ $(STATIC): $(LIB_OBJ)
 
 # Plugins are self-contained: they use no libmodesplit symbols, so they
 # load into any host (a statically linked test, an engine, the tool).
-$(BUILD)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h $(CONFIG_STAMP)
+$(BUILD)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h $(wildcard plugins/common/*.h) $(CONFIG_STAMP)
 	@mkdir -p $(@D)
 	@echo "  PLUGIN  $@"
 	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -shared -Wl,--no-undefined $(LDSAN) -o $@ $< $(PLUGIN_LIBS)
-$(BUILD)/plugins/shader_%.so: plugins/shaders/%.c include/modesplit/plugin.h $(CONFIG_STAMP)
+$(BUILD)/plugins/shader_%.so: plugins/shaders/%.c include/modesplit/plugin.h $(wildcard plugins/common/*.h) $(CONFIG_STAMP)
 	@mkdir -p $(@D)
 	@echo "  PLUGIN  $@"
 	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -shared -Wl,--no-undefined $(LDSAN) -o $@ $< $(PLUGIN_LIBS)
@@ -251,6 +251,9 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TEST_SUPPORT) $(STATIC) | plugins too
 # __wrap_pthread_create); a variable of its own, which the tools and
 # plugins it depends on never read.
 $(BUILD)/tests/test_threads: TEST_LDFLAGS := -Wl,--wrap=pthread_create
+# test_alloc counts the library's direct calls to the C allocator
+$(BUILD)/tests/test_alloc: TEST_LDFLAGS := $(foreach f,malloc calloc realloc free aligned_alloc \
+    posix_memalign strdup strndup,-Wl,--wrap=$(f))
 
 deps:
 	@tools/deps.sh
@@ -691,7 +694,7 @@ $(A64)/obj/%.o: %.c | $(A64_STAMP)
 $(A64_LIB): $(A64_OBJ)
 	@mkdir -p $(@D)
 	$(Q)rm -f $@ && $(A64_AR) rcs $@ $^
-$(A64)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h | $(A64_STAMP)
+$(A64)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h $(wildcard plugins/common/*.h) | $(A64_STAMP)
 	@mkdir -p $(@D)
 	@echo "  PLUG64  $@"
 	$(Q)$(A64_CC) $(A64_CPPFLAGS) $(A64_CFLAGS) -shared -Wl,--no-undefined -o $@ $< $(A64_LIBS)

@@ -39,9 +39,7 @@ static ms_status read_shader_params(ms_scene_ctx *c, json_t *o, const char *name
     MS_TRY(ms_scene_get_object(c, o, "shader_params", &p));
     if (!p)
         return MS_OK;
-    char *text = json_dumps(p, JSON_COMPACT | JSON_SORT_KEYS);
-    *out = text ? ms_strdup(text) : NULL;
-    free(text);
+    *out = ms_json_text(p, JSON_COMPACT | JSON_SORT_KEYS);
     if (!*out)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for render.shader_params");
     const ms_plugin_rec *rec;
