@@ -131,6 +131,8 @@ TSAN_SUITES ?= core plugin sim determinism api
 TSAN_SUITES += pool
 # the tool's PNG writer thread (run / render --png)
 TSAN_SUITES += render_tool
+# the library's own threads against the engine's tasks
+TSAN_SUITES += threads
 ifeq ($(SAN),tsan)
 TESTS     := $(filter $(TSAN_SUITES:%=$(BUILD)/tests/test_%),$(TESTS))
 endif
@@ -191,11 +193,11 @@ $(STATIC): $(LIB_OBJ)
 
 # Plugins are self-contained: they use no libmodesplit symbols, so they
 # load into any host (a statically linked test, an engine, the tool).
-$(BUILD)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h $(CONFIG_STAMP)
+$(BUILD)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h $(wildcard plugins/common/*.h) $(CONFIG_STAMP)
 	@mkdir -p $(@D)
 	@echo "  PLUGIN  $@"
 	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -shared -Wl,--no-undefined $(LDSAN) -o $@ $< $(PLUGIN_LIBS)
-$(BUILD)/plugins/shader_%.so: plugins/shaders/%.c include/modesplit/plugin.h $(CONFIG_STAMP)
+$(BUILD)/plugins/shader_%.so: plugins/shaders/%.c include/modesplit/plugin.h $(wildcard plugins/common/*.h) $(CONFIG_STAMP)
 	@mkdir -p $(@D)
 	@echo "  PLUGIN  $@"
 	$(Q)$(CC) $(CPPFLAGS) $(ALL_CFLAGS) -shared -Wl,--no-undefined $(LDSAN) -o $@ $< $(PLUGIN_LIBS)
@@ -244,7 +246,14 @@ $(BUILD)/obj/tests/%.o: tests/%.c $(CONFIG_STAMP)
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(TEST_SUPPORT) $(STATIC) | plugins tools
 	@mkdir -p $(@D)
 	@echo "  LD      $@"
-	$(Q)$(CC) $(LDSAN) -o $@ $< $(TEST_SUPPORT) $(STATIC) $(CHECK_LIBS) $(SYS_LIBS)
+	$(Q)$(CC) $(LDSAN) $(TEST_LDFLAGS) -o $@ $< $(TEST_SUPPORT) $(STATIC) $(CHECK_LIBS) $(SYS_LIBS)
+# test_threads counts the library's pthread_create calls (its
+# __wrap_pthread_create); a variable of its own, which the tools and
+# plugins it depends on never read.
+$(BUILD)/tests/test_threads: TEST_LDFLAGS := -Wl,--wrap=pthread_create
+# test_alloc counts the library's direct calls to the C allocator
+$(BUILD)/tests/test_alloc: TEST_LDFLAGS := $(foreach f,malloc calloc realloc free aligned_alloc \
+    posix_memalign strdup strndup,-Wl,--wrap=$(f))
 
 deps:
 	@tools/deps.sh
@@ -685,7 +694,7 @@ $(A64)/obj/%.o: %.c | $(A64_STAMP)
 $(A64_LIB): $(A64_OBJ)
 	@mkdir -p $(@D)
 	$(Q)rm -f $@ && $(A64_AR) rcs $@ $^
-$(A64)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h | $(A64_STAMP)
+$(A64)/plugins/shape_%.so: plugins/shapes/%.c include/modesplit/plugin.h $(wildcard plugins/common/*.h) | $(A64_STAMP)
 	@mkdir -p $(@D)
 	@echo "  PLUG64  $@"
 	$(Q)$(A64_CC) $(A64_CPPFLAGS) $(A64_CFLAGS) -shared -Wl,--no-undefined -o $@ $< $(A64_LIBS)

@@ -4,6 +4,7 @@
 #include <check.h>
 #include <dlfcn.h>
 #include <pthread.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,13 +22,21 @@
 static char tmp[256];
 
 static const char *const variants[][2] = {
-    {"no_entry", "-DNO_ENTRY"},       {"abi_major", "-DABI_MAJOR"},
-    {"abi_newer", "-DABI_NEWER"},     {"size_zero", "-DSIZE_ZERO"},
-    {"size_trunc", "-DSIZE_TRUNC"},   {"null_info", "-DNULL_INFO"},
-    {"bad_kind", "-DBAD_KIND"},       {"bad_name", "-DBAD_NAME"},
-    {"no_vtable", "-DNO_VTABLE"},     {"vt_trunc", "-DVT_TRUNC"},
-    {"no_distance", "-DNO_DISTANCE"}, {"testball", ""},
-    {"testball_again", ""},           {"fake_sphere", "-DNAME=\\\"sphere\\\""},
+    {"no_entry", "-DNO_ENTRY"},
+    {"abi_major", "-DABI_MAJOR"},
+    {"abi_newer", "-DABI_NEWER"},
+    {"size_zero", "-DSIZE_ZERO"},
+    {"size_trunc", "-DSIZE_TRUNC"},
+    {"null_info", "-DNULL_INFO"},
+    {"bad_kind", "-DBAD_KIND"},
+    {"bad_name", "-DBAD_NAME"},
+    {"no_vtable", "-DNO_VTABLE"},
+    {"vt_trunc", "-DVT_TRUNC"},
+    {"no_distance", "-DNO_DISTANCE"},
+    {"testball", ""},
+    {"testball_again", ""},
+    {"fake_sphere", "-DNAME=\\\"sphere\\\""},
+    {"oldball", "-DABI_1_0 -DNAME=\\\"oldball\\\""},
 };
 #define N_VARIANTS (int)(sizeof variants / sizeof variants[0])
 #define N_BAD 11 /* the first N_BAD variants are refused */
@@ -209,6 +218,78 @@ START_TEST(refuses_a_duplicate_name)
     ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0, 0, 3}, NULL), 2.0f, 1e-6f);
     ck_assert_str_eq(ms_shape_kind(s), "testball");
     ms_shape_destroy(s);
+}
+END_TEST
+
+/* The engine's allocator, counting its blocks. */
+static atomic_long hook_allocs, hook_frees;
+
+static void *count_alloc(size_t size, size_t alignment, void *user)
+{
+    (void)user;
+    atomic_fetch_add(&hook_allocs, 1);
+    return aligned_alloc(alignment, size);
+}
+
+static void count_free(void *p, void *user)
+{
+    (void)user;
+    atomic_fetch_add(&hook_frees, 1);
+    free(p);
+}
+
+/* Blocks of the engine's allocator that one instance of a plugin shape
+ * holds: created and destroyed through the plugin's own vtable (the
+ * ms_shape handle around it is the library's). */
+static long instance_blocks(const char *name)
+{
+    const ms_plugin_rec *rec;
+    ck_assert_int_eq(ms_plugin_find("test", name, MS_PLUGIN_SHAPE, &rec), MS_OK);
+    const long a0 = atomic_load(&hook_allocs), f0 = atomic_load(&hook_frees);
+    void *self = NULL;
+    char err[256];
+    ck_assert_int_eq(rec->vt.shape.create(NULL, &self, err, sizeof err), MS_PLUGIN_OK);
+    const long held = atomic_load(&hook_allocs) - a0;
+    ck_assert_float_eq_tol(rec->vt.shape.distance(self, (float[3]){0, 0, 3}, NULL), 2.0f, 1e-6f);
+    rec->vt.shape.destroy(self);
+    ck_assert_int_eq(atomic_load(&hook_frees) - f0, held); /* all given back */
+    return held;
+}
+
+/* ABI 1.1 added the host's allocator (ms_plugin_info.set_host): a plugin
+ * built against 1.0 (its info ends at vtable, its instances from malloc)
+ * still loads and works; one of 1.1 gets the host's allocator, which is
+ * the engine's. */
+START_TEST(a_plugin_of_abi_1_0_still_loads_and_one_of_1_1_allocates_through_the_host)
+{
+    ck_assert_msg(tmp[0], "the test plugins could not be built");
+    ck_assert_int_eq(ms_set_allocator(count_alloc, count_free, NULL), MS_OK);
+    char old[512], cur[512];
+    path_of(old, sizeof old, "oldball", ".so");
+    path_of(cur, sizeof cur, "testball", ".so");
+    ck_assert_msg(ms_plugin_load(old) == MS_OK, "%s", ms_last_error());
+    ck_assert_int_eq(ms_plugin_load(cur), MS_OK);
+    int seen = 0;
+    for (int i = 0; i < ms_plugin_count(); ++i) {
+        ms_plugin_description d = ms_plugin_description_init();
+        ck_assert_int_eq(ms_plugin_describe(i, &d), MS_OK);
+        if (!strcmp(d.name, "oldball")) {
+            ck_assert_uint_eq(d.abi, 1u << 16); /* 1.0 */
+            ++seen;
+        }
+        if (!strcmp(d.name, "testball")) {
+            ck_assert_uint_eq(d.abi, MS_PLUGIN_ABI);
+            ++seen;
+        }
+    }
+    ck_assert_int_eq(seen, 2);
+    ck_assert_uint_eq(MS_PLUGIN_ABI, (1u << 16) | 1u);
+    ms_shape *s;
+    ck_assert_int_eq(ms_shape_create("oldball", NULL, &s), MS_OK);
+    ck_assert_float_eq_tol(ms_shape_distance(s, (float[3]){0, 0, 3}, NULL), 2.0f, 1e-6f);
+    ms_shape_destroy(s);
+    ck_assert_int_eq(instance_blocks("oldball"), 0); /* malloc's, as 1.0 had it */
+    ck_assert_int_eq(instance_blocks("testball"), 1);
 }
 END_TEST
 
@@ -456,6 +537,7 @@ static Suite *plugin_suite(void)
     tcase_add_test(tc, refuses_a_vtable_without_distance);
     tcase_add_test(tc, refuses_a_duplicate_name);
     tcase_add_test(tc, search_path_scan_skips_bad_files_and_earlier_names_win);
+    tcase_add_test(tc, a_plugin_of_abi_1_0_still_loads_and_one_of_1_1_allocates_through_the_host);
     suite_add_tcase(s, tc);
     TCase *reg = tcase_create("registry");
     tcase_set_timeout(reg, 30);

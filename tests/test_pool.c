@@ -107,6 +107,7 @@ START_TEST(a_pool_with_threads_of_its_own_ignores_a_lent_helper)
     ms_vpool *p = NULL;
     ck_assert_int_eq(ms_vpool_create(2, &p), MS_OK);
     ck_assert_int_eq(ms_vpool_threads(p), 2);
+    ck_assert_int_eq(ms_vpool_start(p), MS_OK); /* as a volume's first step does */
     ms_vpool_help_open(p);
     pthread_t t;
     ck_assert_int_eq(pthread_create(&t, NULL, helper, p), 0);

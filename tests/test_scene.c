@@ -251,7 +251,21 @@ START_TEST(inconsistent_sections_are_refused)
             "obstacles[0] lacks the required key \"shape\"");
     REFUSED("{\"surface\": {}, \"render\": {\"camera\": {\"eye\": [1,1,1], "
             "\"target\": [1,1,1]}}}",
-            MS_ERR_INVALID_ARGUMENT, "equals camera.eye");
+            MS_ERR_INVALID_ARGUMENT,
+            "render.camera.target is refused: render: target [1, 1, 1] m equals eye");
+    /* the renderer's ranges, named at the scene's keys */
+    REFUSED("{\"surface\": {}, \"render\": {\"caustics\": {\"resolution\": 8}}}",
+            MS_ERR_INVALID_ARGUMENT,
+            ":1:41: render.caustics.resolution is refused: render: caustics_resolution 8 is "
+            "outside [16, 4096]");
+    REFUSED("{\"surface\": {}, \"render\": {\"caustics\": {\"light\": [0, 0, 0]}}}",
+            MS_ERR_INVALID_ARGUMENT,
+            "render.caustics.light is refused: render: light_dir [0, 0, 0] is the zero vector");
+    REFUSED("{\"surface\": {}, \"render\": {\"camera\": {\"eye\": [0, 2e6, 1]}}}",
+            MS_ERR_INVALID_ARGUMENT,
+            "render.camera.eye is refused: render: eye[1] 2e+06 m is outside [-1e+06, 1e+06]");
+    REFUSED("{\"surface\": {}, \"render\": {\"camera\": {\"fov\": 180}}}", MS_ERR_INVALID_ARGUMENT,
+            "render.camera.fov is refused: render: fov 180 degrees is outside [1, 179]");
 }
 END_TEST
 

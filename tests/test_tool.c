@@ -1,7 +1,7 @@
 /* tool: the `modesplit` command line, driven as a user would (fork + exec
  * of build/bin/modesplit): usage and exit codes, every malformed scene of
  * tests/data/bad_scenes refused with status 2 and a sentence that names
- * it, a run's HDF5 + XDMF + PNG output, SIGKILL / SIGINT / SIGTERM in the
+ * it (the same sentence from check and from run), a run's HDF5 + XDMF + PNG output, SIGKILL / SIGINT / SIGTERM in the
  * middle of a run, unwritable paths, the progress display on a terminal
  * and off it; and the writer on a real sim, read back bit for bit. */
 #define _GNU_SOURCE /* posix_openpt, grantpt, unlockpt, ptsname; unshare */
@@ -256,6 +256,7 @@ START_TEST(every_malformed_scene_exits_2_naming_the_problem)
         }
         const char *const *modes[2] = {(const char *[]){"check", path, NULL},
                                        (const char *[]){"run", path, "--no-out", NULL}};
+        char *verdict = NULL; /* check's sentence, which run must say word for word */
         for (int m = 0; m < 2; ++m) {
             result r = run_tool(modes[m]);
             ck_assert_msg(WIFEXITED(r.status), "%s crashed (signal %d)", name, WTERMSIG(r.status));
@@ -267,8 +268,14 @@ START_TEST(every_malformed_scene_exits_2_naming_the_problem)
             ck_assert_msg(strstr(r.err, phrase) != NULL, "%s: message lacks \"%s\": %s", name,
                           phrase, r.err);
             ck_assert_msg(strncmp(r.err, "modesplit: ", 11) == 0, "%s: %s", name, r.err);
+            if (m == 0)
+                verdict = strdup(r.err);
+            else
+                ck_assert_msg(!strcmp(verdict, r.err), "%s: check said %s, run said %s", name,
+                              verdict, r.err);
             result_free(&r);
         }
+        free(verdict);
         ++cases;
     }
     fclose(f);

@@ -33,7 +33,16 @@
  * It must not call libmodesplit (the plugins shipped with the library are
  * linked with -Wl,--no-undefined against libc, libm, jansson and libpng
  * only), so it loads into any host: the tool, an engine, a statically
- * linked program. Drop it into a directory of MODESPLIT_PLUGIN_PATH or the
+ * linked program. Its memory comes from the host (ABI 1.1): the loader
+ * calls its set_host with the host's allocator before any create, and it
+ * allocates its instances with host->alloc_fn, so an engine's allocator
+ * (ms_set_allocator) sees them:
+ *
+ *     static const ms_plugin_host *host;
+ *     static void ball_set_host(const ms_plugin_host *h) { host = h; }
+ *     ... in ball_create:  float *r = host->alloc_fn(sizeof *r);
+ *     ... in ball_destroy: host->free_fn(self);
+ *     ... and in ball_info: .set_host = ball_set_host Drop it into a directory of MODESPLIT_PLUGIN_PATH or the
  * install's lib/modesplit/plugins, or load it with ms_plugin_load().
  *
  * THE ABI RULES
@@ -47,6 +56,8 @@
  * - Structs only grow at the end (a new field bumps the minor; the loader
  *   treats a field past the plugin's `size` as absent/NULL). Removing or
  *   reordering a field bumps the major.
+ * - ABI 1.1 added ms_plugin_info.set_host (the host's allocator); a plugin
+ *   of 1.0 (without it) still loads and allocates on its own.
  * - Enums are 32-bit (uint32_t fields).
  * - Names are [a-z0-9_-], 1..31 characters, unique across loaded plugins of
  *   all kinds.
@@ -81,7 +92,7 @@ extern "C" {
 #endif
 
 #define MS_PLUGIN_ABI_MAJOR 1u
-#define MS_PLUGIN_ABI_MINOR 0u
+#define MS_PLUGIN_ABI_MINOR 1u
 #define MS_PLUGIN_ABI ((MS_PLUGIN_ABI_MAJOR << 16) | MS_PLUGIN_ABI_MINOR)
 #define MS_PLUGIN_ENTRY_SYMBOL "ms_plugin_entry"
 /* Longest plugin name, without the terminating NUL. */
@@ -100,6 +111,17 @@ enum {
     MS_PLUGIN_SHADER = 2u /* vtable is a const ms_shader_vtable * */
 };
 
+/* The host's side of the ABI (1.1): its allocator, handed to a plugin by
+ * ms_plugin_info.set_host. Valid while the plugin is loaded; both
+ * functions are thread-safe. */
+typedef struct ms_plugin_host {
+    uint32_t size; /* sizeof(ms_plugin_host) of the host; only grows */
+    /* size bytes aligned for any type (64 bytes), or NULL when out of
+     * memory; the engine's allocator when it set one (ms_set_allocator) */
+    void *(*alloc_fn)(size_t size);
+    void (*free_fn)(void *p); /* a block of alloc_fn, or NULL */
+} ms_plugin_host;
+
 /* What ms_plugin_entry returns. Static, constant, valid while loaded. */
 typedef struct ms_plugin_info {
     uint32_t abi;            /* MS_PLUGIN_ABI of the headers it was built with */
@@ -109,6 +131,11 @@ typedef struct ms_plugin_info {
     uint32_t kind;           /* MS_PLUGIN_SHAPE or MS_PLUGIN_SHADER */
     const char *description; /* one line, for listings */
     const void *vtable;      /* the kind's vtable; starts with uint32_t size */
+    /* --- ABI 1.1 (past a 1.0 plugin's size: absent) --- */
+    /* Optional (NULL: the plugin allocates nothing, or on its own). Called
+     * once by the loader, after the checks and before any create, with
+     * the host's allocator. */
+    void (*set_host)(const ms_plugin_host *host);
 } ms_plugin_info;
 
 typedef const ms_plugin_info *(*ms_plugin_entry_fn)(void);

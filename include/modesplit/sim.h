@@ -26,8 +26,10 @@ extern "C" {
 
 /* A game engine that owns its threads can run the sim's parallel work
  * itself (ms_task_fn and friends, core.h): the two-core split and the
- * volume's parallel loops. When both are NULL the sim uses its own
- * pthreads. */
+ * volume's parallel loops. Given (in the desc, or by ms_sim_set_tasks
+ * before the first step), no pthread is created, whatever the thread
+ * counts of the sim and volume descs. When both are NULL the sim uses its
+ * own pthreads, started by the first ms_sim_step. */
 
 /* threads = 2 runs the volume and the surface tasks at the same time (a
  * volume-only sim instead gives the volume solver two threads; otherwise

@@ -81,7 +81,9 @@ typedef struct ms_volume_desc {
     int max_substeps;    /* sub-steps one ms_volume_step may take; beyond it the
                             step stops with MS_ERR_UNSTABLE; 1 .. 10^7 */
     int threads;         /* 1 .. 64 threads inside a step; every count gives
-                            the same bytes (per-particle sums in a fixed order) */
+                            the same bytes (per-particle sums in a fixed order).
+                            The threads - 1 pthreads start at the first step,
+                            none if ms_volume_set_tasks gave an engine's tasks */
     int smooth_steps;    /* eq. 18: smoothing passes of the extracted height
                             field when the liquid is still; 0 .. 64 */
     float smooth_energy; /* J/kg, eq. 18: E_kin / total mass at and above which
@@ -257,9 +259,11 @@ MS_API void ms_volume_get_info(const ms_volume *v, ms_volume_info *out);
 /* The desc the handle was created from (viscosity as last set). */
 MS_API ms_volume_desc ms_volume_get_desc(const ms_volume *v);
 /* Run the step's parallel loops (desc.threads chunks) as an engine's tasks
- * (core.h) instead of the volume's own worker threads, which are stopped;
- * both NULL starts them again. The same split, so the same bytes. Between
- * steps only; nothing to do with threads = 1. ms_sim hands its own task
+ * (core.h) instead of the volume's own worker threads: given after create
+ * and before the first step, no pthread of the library's is ever started;
+ * later, the running ones are stopped. Both NULL: the next step starts
+ * them again. The same split, so the same bytes. Between steps only;
+ * nothing to do with threads = 1. ms_sim hands its own task
  * interface on to its volume (with threads 2 and a volume of one thread,
  * each loop's chunks are shared with one engine task per loop). */
 /* Ask a step in progress (on another thread) to stop: it returns

@@ -41,8 +41,9 @@ ms_status ms_check_not_null(const char *part, const char *key, const void *p);
 
 /* Every allocation of the library goes through these (lib/core/alloc.c),
  * and so through the engine's allocator when ms_set_allocator gave one;
- * never call malloc/free directly in lib/ (memory from a dependency, such
- * as jansson's json_dumps or realpath, is freed with free()).
+ * never call malloc/free directly in lib/ (JSON text comes from
+ * ms_json_text, paths from realpath into a buffer; tests/test_alloc.c
+ * counts the direct calls, linked with -Wl,--wrap).
  * ms_alloc: zeroed, 64-byte aligned memory (cache line, AVX-512 vector); n
  * in bytes. ms_alloc_array checks count*size for overflow. ms_malloc is
  * not zeroed; ms_realloc keeps p valid when it fails. NULL when out of
@@ -53,6 +54,10 @@ void *ms_alloc_array(size_t count, size_t size);
 void *ms_malloc(size_t n);
 void *ms_realloc(void *p, size_t n);
 char *ms_strdup(const char *s);
+/* A jansson value as text (json_dumps' flags), in ms_malloc memory to give
+ * back with ms_free; NULL when out of memory (lib/core/json_text.c). */
+struct json_t;
+char *ms_json_text(const struct json_t *v, size_t flags);
 
 /* A file named by untrusted input, opened for reading only when it is a
  * regular file (lib/core/file.c): NULL with *why a phrase ("a FIFO (named

@@ -26,11 +26,11 @@ static void value_text(const json_t *v, char *buf, size_t n)
         return;
     }
     char *s =
-        json_dumps(v, JSON_COMPACT | JSON_SORT_KEYS | JSON_ENCODE_ANY | JSON_REAL_PRECISION(9));
+        ms_json_text(v, JSON_COMPACT | JSON_SORT_KEYS | JSON_ENCODE_ANY | JSON_REAL_PRECISION(9));
     snprintf(buf, n, "%s", s ? s : "?");
     if (s && strlen(s) >= n && n > 4)
         memcpy(buf + n - 4, "...", 4);
-    free(s);
+    ms_free(s);
 }
 
 static void name_path(diff_out *o, const char *path, const json_t *a, const json_t *b)

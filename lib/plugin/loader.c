@@ -20,6 +20,22 @@
 #define SHAPE_VT_SIZE_1_0 (offsetof(ms_shape_vtable, height_at) + sizeof(void (*)(void)))
 #define SHADER_VT_SIZE_1_0 (offsetof(ms_shader_vtable, set_uniforms) + sizeof(void (*)(void)))
 
+/* The host's allocator for plugins (ABI 1.1): the library's own, which is
+ * the engine's when it set one, so a plugin's blocks count among the
+ * library's (ms_set_allocator refuses a change while they live). */
+static void *host_alloc(size_t n)
+{
+    return ms_malloc(n);
+}
+
+static void host_free(void *p)
+{
+    ms_free(p);
+}
+
+static const ms_plugin_host host = {
+    .size = sizeof(ms_plugin_host), .alloc_fn = host_alloc, .free_fn = host_free};
+
 ms_status ms_plugin_status(int rc)
 {
     switch (rc) {
@@ -183,8 +199,12 @@ static ms_status check_loaded(const char *path, void *handle, ms_plugin_rec *rec
                        "plugin: %s: %s gives an ms_plugin_info of size %u bytes, smaller "
                        "than the %zu bytes of ABI 1.0 (truncated)",
                        path, sym, (unsigned)size, (size_t)INFO_SIZE_1_0);
+    memset(&rec->info, 0, sizeof rec->info); /* fields past a 1.0 plugin's size: absent */
     memcpy(&rec->info, in, MS_MIN((size_t)size, sizeof rec->info));
-    return check_contents(path, rec);
+    ms_status st = check_contents(path, rec);
+    if (st == MS_OK && rec->info.set_host)
+        rec->info.set_host(&host);
+    return st;
 }
 
 ms_status ms_plugin_open(const char *path, ms_plugin_rec **out)

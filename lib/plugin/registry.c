@@ -170,7 +170,8 @@ static void scan(void)
         if (dir) {
             memcpy(dir, p, n);
             dir[n] = '\0';
-            char *canon = realpath(dir, NULL);
+            char real[PATH_MAX];
+            char *canon = realpath(dir, real) ? ms_strdup(real) : NULL;
             if (!canon && n_env > 0) {
                 char msg[1200];
                 snprintf(msg, sizeof msg,
@@ -189,13 +190,13 @@ static void scan(void)
                     scan_dir(dir);
                 }
             }
-            free(canon);
+            ms_free(canon);
             ms_free(dir);
         }
         p += n + (colon != NULL);
     }
     for (int i = 0; i < n_seen; ++i)
-        free(seen[i]); /* realpath's, from malloc */
+        ms_free(seen[i]);
     ms_free(seen);
     pthread_mutex_unlock(&lock);
     ms_fail(MS_OK, "%s", saved);

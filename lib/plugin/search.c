@@ -6,6 +6,7 @@
  * that happens to still exist. */
 #define _GNU_SOURCE /* dladdr */
 #include <dlfcn.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -105,10 +106,10 @@ char *ms_plugin_default_search_path(void)
     /* MS_BUILD_PLUGIN_DIR is "<build>/plugins": is the object under <build>/? */
     const char *dir = MS_BUILD_PLUGIN_DIR;
     const char *slash = strrchr(dir, '/');
-    char *real = object ? realpath(object, NULL) : NULL;
+    char resolved[PATH_MAX];
+    const char *real = object ? realpath(object, resolved) : NULL;
     if (slash && real && !strncmp(real, dir, (size_t)(slash - dir)) && real[slash - dir] == '/')
         build = dir;
-    free(real);
 #endif
     return ms_plugin_compose_search_path(getenv("MODESPLIT_PLUGIN_PATH"), object, build);
 }

@@ -97,21 +97,24 @@ static ms_status check_camera(const float eye[3], const float target[3], const f
         view[k] = target[k] - eye[k];
     double lv = norm3(view);
     if (!(lv > 1e-9))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: target [%g, %g, %g] m equals eye; it must be away from the eye",
-                       (double)target[0], (double)target[1], (double)target[2]);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "target",
+                           "render: target [%g, %g, %g] m equals eye; it must be away from the eye",
+                           (double)target[0], (double)target[1], (double)target[2]);
     side[0] = view[1] * up[2] - view[2] * up[1];
     side[1] = view[2] * up[0] - view[0] * up[2];
     side[2] = view[0] * up[1] - view[1] * up[0];
     if (!(norm3(side) > 1e-6 * lv * norm3(up)) || !(norm3(up) > 0))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: up [%g, %g, %g] is zero or along the view direction; it must "
-                       "point across it",
-                       (double)up[0], (double)up[1], (double)up[2]);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "up",
+                           "render: up [%g, %g, %g] is zero or along the view direction; it must "
+                           "point across it",
+                           (double)up[0], (double)up[1], (double)up[2]);
     return MS_OK;
 }
 
-static ms_status check_desc(const ms_renderer_desc *d)
+/* Every field's range (render_internal.h): the one owner of the desc's
+ * ranges, which the scene's render section maps to its keys. Each refusal
+ * names its field (ms_last_error_key). */
+ms_status ms_renderer_desc_check_fields(const ms_renderer_desc *d)
 {
     ms_status st;
     const double big = 1e6; /* m */
@@ -119,24 +122,26 @@ static ms_status check_desc(const ms_renderer_desc *d)
         (st = ms_check_int_range(PART, "height", d->height, 16, MS_RENDER_MAX_SIDE)) != MS_OK)
         return st;
     if ((long)d->width * d->height > MS_RENDER_MAX_PIXELS)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "render: image %d x %d pixels is over %ld pixels",
-                       d->width, d->height, MS_RENDER_MAX_PIXELS);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "width",
+                           "render: image %d x %d pixels is over %ld pixels", d->width, d->height,
+                           MS_RENDER_MAX_PIXELS);
     if ((st = ms_check_not_null(PART, "shader", d->shader)) != MS_OK ||
         (st = ms_check_not_null(PART, "cubemap", d->cubemap)) != MS_OK)
         return st;
     if (!d->shader[0])
-        return ms_fail(MS_ERR_INVALID_ARGUMENT, "render: shader \"\" is empty; name a shader "
-                                                "plugin (\"water\", \"milk\", \"oil\")");
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "shader",
+                           "render: shader \"\" is empty; name a shader plugin (\"water\", "
+                           "\"milk\", \"oil\")");
     if (d->backend && strcmp(d->backend, "auto") != 0 && strcmp(d->backend, "osmesa") != 0 &&
         strcmp(d->backend, "egl") != 0)
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: backend \"%.40s\" is unknown; allowed: \"auto\", \"osmesa\", "
-                       "\"egl\"",
-                       d->backend);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "backend",
+                           "render: backend \"%.40s\" is unknown; allowed: \"auto\", \"osmesa\", "
+                           "\"egl\"",
+                           d->backend);
     if (!d->cubemap[0])
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: cubemap \"\" is empty; allowed: \"builtin\", a directory of "
-                       "six PNG faces or one PNG strip");
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "cubemap",
+                           "render: cubemap \"\" is empty; allowed: \"builtin\", a directory of "
+                           "six PNG faces or one PNG strip");
     if ((st = ms_check_int_range(PART, "caustics", d->caustics, 0, 1)) != MS_OK ||
         (st = ms_check_int_range(PART, "caustics_resolution", d->caustics_resolution, 16,
                                  MS_RENDER_MAX_CAUSTICS)) != MS_OK ||
@@ -152,15 +157,16 @@ static ms_status check_desc(const ms_renderer_desc *d)
         (st = ms_check_int_range(PART, "mesh_step", d->mesh_step, 0, 64)) != MS_OK)
         return st;
     if (!(norm3(d->light_dir) > 1e-6))
-        return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                       "render: light_dir [%g, %g, %g] is the zero vector; it must be a "
-                       "direction",
-                       (double)d->light_dir[0], (double)d->light_dir[1], (double)d->light_dir[2]);
+        return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "light_dir",
+                           "render: light_dir [%g, %g, %g] is the zero vector; it must be a "
+                           "direction",
+                           (double)d->light_dir[0], (double)d->light_dir[1],
+                           (double)d->light_dir[2]);
     for (int k = 0; k < 3; ++k)
         if (!(d->pool_max[k] > d->pool_min[k]))
-            return ms_fail(MS_ERR_INVALID_ARGUMENT,
-                           "render: pool_max[%d] %g m must be above pool_min[%d] %g m", k,
-                           (double)d->pool_max[k], k, (double)d->pool_min[k]);
+            return ms_fail_key(MS_ERR_INVALID_ARGUMENT, "pool_max",
+                               "render: pool_max[%d] %g m must be above pool_min[%d] %g m", k,
+                               (double)d->pool_max[k], k, (double)d->pool_min[k]);
     if ((st = ms_check_range(PART, "water_level", d->water_level, d->pool_min[2], d->pool_max[2],
                              "m")) != MS_OK)
         return st;
@@ -185,7 +191,7 @@ ms_status ms_renderer_desc_check(const ms_renderer_desc *user)
     ms_renderer_desc d = ms_renderer_desc_default();
     ms_status st;
     if ((st = ms_struct_in(user, &d, MS_SIZES_RENDERER_DESC, PART)) != MS_OK ||
-        (st = check_desc(&d)) != MS_OK)
+        (st = ms_renderer_desc_check_fields(&d)) != MS_OK)
         return st;
     return strcmp(d.cubemap, "builtin") == 0 ? MS_OK : ms_cubemap_probe(d.cubemap);
 }
@@ -198,7 +204,7 @@ ms_status ms_renderer_create_desc(const ms_renderer_desc *d, ms_renderer **out)
     *out = NULL;
     ms_renderer_desc desc = ms_renderer_desc_default();
     if ((st = ms_struct_in(d, &desc, MS_SIZES_RENDERER_DESC, PART)) != MS_OK ||
-        (st = check_desc(&desc)) != MS_OK)
+        (st = ms_renderer_desc_check_fields(&desc)) != MS_OK)
         return st;
     d = &desc;
 #if !MS_HAVE_GL

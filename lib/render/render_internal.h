@@ -23,6 +23,11 @@
 #include "modesplit/render.h"
 #include "plugin/plugin_internal.h"
 
+/* The ranges of every ms_renderer_desc field (render.c), without the
+ * cubemap's files (ms_renderer_desc_check probes those): the scene's render
+ * section checks its desc with it and names the refused field's key. */
+ms_status ms_renderer_desc_check_fields(const ms_renderer_desc *d);
+
 /* ---- cubemaps (CPU) ---------------------------------------------------- */
 
 /* Six square faces of sRGB-encoded RGBA8 texels, in OpenGL order

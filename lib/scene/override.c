@@ -200,14 +200,10 @@ ms_status ms_scene_apply_overrides(const char *text, size_t len, int n, const ch
         }
     }
     /* 17 significant digits: every number reads back as the same double */
-    char *dump = json_dumps(root, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(17));
+    *out = ms_json_text(root, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(17));
     json_decref(root);
-    if (!dump)
+    if (!*out)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "--set: out of memory writing the merged scene");
-    *out_len = strlen(dump);
-    *out = ms_alloc(*out_len + 1);
-    if (*out)
-        memcpy(*out, dump, *out_len + 1);
-    free(dump);
-    return *out ? MS_OK : ms_fail(MS_ERR_OUT_OF_MEMORY, "--set: out of memory");
+    *out_len = strlen(*out);
+    return MS_OK;
 }

@@ -1,7 +1,12 @@
 /* The "render" section of the scene schema: image size, shader, cubemap,
  * caustics, camera and GL backend (the table of data/scenes/README.md;
  * keep both in step), read into the scene's ms_renderer_desc over
- * ms_renderer_desc_default(), whose defaults it takes. */
+ * ms_renderer_desc_default(), whose defaults it takes. The ranges are the
+ * renderer's (ms_renderer_desc_check_fields): the section reads each key's
+ * type, then has the desc checked and names a refusal at the key that set
+ * the field, with the renderer's sentence. */
+#include <float.h>
+#include <limits.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,11 +17,14 @@
 #include "modesplit/plugin.h"
 #include "modesplit/render.h"
 #include "plugin/plugin_internal.h"
+#include "render/render_internal.h"
 #include "scene/reader.h"
 #include "scene/scene_internal.h"
 #include "scene/sections.h"
 
-#define BIG MS_SCENE_BIG
+/* Any finite number, any int: the renderer's check has the ranges. */
+#define ANY_F FLT_MAX
+#define ANY_I INT_MAX
 
 /* Is there at least one plugin of this kind? */
 static int have_plugins_of_kind(const char *kind)
@@ -39,9 +47,7 @@ static ms_status read_shader_params(ms_scene_ctx *c, json_t *o, const char *name
     MS_TRY(ms_scene_get_object(c, o, "shader_params", &p));
     if (!p)
         return MS_OK;
-    char *text = json_dumps(p, JSON_COMPACT | JSON_SORT_KEYS);
-    *out = text ? ms_strdup(text) : NULL;
-    free(text);
+    *out = ms_json_text(p, JSON_COMPACT | JSON_SORT_KEYS);
     if (!*out)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for render.shader_params");
     const ms_plugin_rec *rec;
@@ -140,8 +146,8 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
     sc->has_render = 1;
     ms_scene_push_key(c, "render");
     MS_TRY(ms_scene_check_keys(c, o, keys));
-    MS_TRY(ms_scene_get_int(c, o, "width", r->width, 16, MS_RENDER_MAX_SIDE, &w));
-    MS_TRY(ms_scene_get_int(c, o, "height", r->height, 16, MS_RENDER_MAX_SIDE, &h));
+    MS_TRY(ms_scene_get_int(c, o, "width", r->width, -ANY_I, ANY_I, &w));
+    MS_TRY(ms_scene_get_int(c, o, "height", r->height, -ANY_I, ANY_I, &h));
     r->width = (int)w;
     r->height = (int)h;
     MS_TRY(ms_scene_get_string(c, o, "shader", r->shader, &shader));
@@ -186,25 +192,14 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
         long res;
         ms_scene_push_key(c, "caustics");
         MS_TRY(ms_scene_check_keys(c, caus, ckeys));
-        MS_TRY(ms_scene_get_int(c, caus, "resolution", r->caustics_resolution, 16,
-                                MS_RENDER_MAX_CAUSTICS, &res));
+        MS_TRY(
+            ms_scene_get_int(c, caus, "resolution", r->caustics_resolution, -ANY_I, ANY_I, &res));
         r->caustics_resolution = (int)res;
-        MS_TRY(ms_scene_get_float(c, caus, "intensity", r->caustics_intensity, 0, 100, 0, "",
+        MS_TRY(ms_scene_get_float(c, caus, "intensity", r->caustics_intensity, -ANY_F, ANY_F, 0, "",
                                   &r->caustics_intensity));
-        MS_TRY(ms_scene_get_vec(c, caus, "light", 3, light, -1e3, 1e3, "", r->light_dir));
+        MS_TRY(ms_scene_get_vec(c, caus, "light", 3, light, -ANY_F, ANY_F, "", r->light_dir));
         ms_scene_pop(c);
     }
-    double ln =
-        sqrt((double)r->light_dir[0] * r->light_dir[0] + (double)r->light_dir[1] * r->light_dir[1] +
-             (double)r->light_dir[2] * r->light_dir[2]);
-    if (!(ln > 1e-6)) {
-        ms_scene_push_key(c, "caustics");
-        ms_scene_push_key(c, "light");
-        return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                             "is the zero vector; allowed: a direction [x, y, z], not all 0");
-    }
-    for (int k = 0; k < 3; ++k)
-        r->light_dir[k] = (float)(r->light_dir[k] / ln);
     /* camera: default looks at the domain's centre from the -y side, above */
     float ctr[3], ext = 0;
     for (int k = 0; k < 3; ++k) {
@@ -218,22 +213,63 @@ static ms_status read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const 
     if (cam) {
         ms_scene_push_key(c, "camera");
         MS_TRY(ms_scene_check_keys(c, cam, camkeys));
-        MS_TRY(ms_scene_get_vec(c, cam, "eye", 3, eye, -BIG, BIG, "m", r->eye));
-        MS_TRY(ms_scene_get_vec(c, cam, "target", 3, ctr, -BIG, BIG, "m", r->target));
-        MS_TRY(ms_scene_get_vec(c, cam, "up", 3, up, -1e3, 1e3, "", r->up));
-        MS_TRY(ms_scene_get_float(c, cam, "fov", r->fov, 1, 179, 0, "degrees", &r->fov));
-        double d = 0;
-        for (int k = 0; k < 3; ++k)
-            d += (double)(r->eye[k] - r->target[k]) * (r->eye[k] - r->target[k]);
-        if (!(d > 1e-12)) {
-            ms_scene_push_key(c, "target");
-            return ms_scene_fail(c, MS_ERR_INVALID_ARGUMENT,
-                                 "equals camera.eye; allowed: a point away from the eye");
-        }
+        MS_TRY(ms_scene_get_vec(c, cam, "eye", 3, eye, -ANY_F, ANY_F, "m", r->eye));
+        MS_TRY(ms_scene_get_vec(c, cam, "target", 3, ctr, -ANY_F, ANY_F, "m", r->target));
+        MS_TRY(ms_scene_get_vec(c, cam, "up", 3, up, -ANY_F, ANY_F, "", r->up));
+        MS_TRY(ms_scene_get_float(c, cam, "fov", r->fov, -ANY_F, ANY_F, 0, "degrees", &r->fov));
         ms_scene_pop(c);
     }
     ms_scene_pop(c);
     return MS_OK;
+}
+
+/* A render desc field and the key under "render" that sets it (sub: the
+ * object it is in, or NULL); a field of none (the pool, the still water
+ * level) comes from the domain. */
+static const struct {
+    const char *field, *sub, *key;
+} render_keys[] = {
+    {"width", NULL, "width"},
+    {"height", NULL, "height"},
+    {"shader", NULL, "shader"},
+    {"cubemap", NULL, "cubemap"},
+    {"backend", NULL, "backend"},
+    {"caustics_resolution", "caustics", "resolution"},
+    {"caustics_intensity", "caustics", "intensity"},
+    {"light_dir", "caustics", "light"},
+    {"eye", "camera", "eye"},
+    {"target", "camera", "target"},
+    {"up", "camera", "up"},
+    {"fov", "camera", "fov"},
+};
+
+/* ms_renderer_desc_check_fields of the scene's desc; a refusal named at
+ * the key that set the field ("eye[1]" at camera.eye). */
+static ms_status check_render(ms_scene_ctx *c, const ms_renderer_desc *r)
+{
+    ms_status st = ms_renderer_desc_check_fields(r);
+    if (st == MS_OK)
+        return MS_OK;
+    char field[64], why[640];
+    snprintf(field, sizeof field, "%s", ms_last_error_key());
+    field[strcspn(field, "[")] = '\0';
+    snprintf(why, sizeof why, "%s", ms_last_error());
+    const int depth = c->depth;
+    c->depth = 0;
+    int found = 0;
+    for (size_t i = 0; i < sizeof render_keys / sizeof render_keys[0] && !found; ++i)
+        if (strcmp(render_keys[i].field, field) == 0) {
+            ms_scene_push_key(c, "render");
+            if (render_keys[i].sub)
+                ms_scene_push_key(c, render_keys[i].sub);
+            ms_scene_push_key(c, render_keys[i].key);
+            found = 1;
+        }
+    if (!found)
+        ms_scene_push_key(c, "domain");
+    st = ms_scene_fail(c, st, "is refused: %s", why);
+    c->depth = depth;
+    return st;
 }
 
 ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, const char *dir)
@@ -241,5 +277,13 @@ ms_status ms_scene_read_render(ms_scene_ctx *c, json_t *root, ms_scene *sc, cons
     sc->render = ms_renderer_desc_default();
     MS_TRY(read_render(c, root, sc, dir));
     pool_and_camera(sc);
+    MS_TRY(check_render(c, &sc->render));
+    /* the light as a unit vector (checked not zero) */
+    ms_renderer_desc *r = &sc->render;
+    const double ln =
+        sqrt((double)r->light_dir[0] * r->light_dir[0] + (double)r->light_dir[1] * r->light_dir[1] +
+             (double)r->light_dir[2] * r->light_dir[2]);
+    for (int k = 0; k < 3; ++k)
+        r->light_dir[k] = (float)(r->light_dir[k] / ln);
     return MS_OK;
 }

@@ -120,9 +120,8 @@ ms_status ms_scene_read_shape(ms_scene_ctx *c, json_t *o, ms_scene_shape *s)
         json_object_set_new(params, "png", json_string(full));
         ms_free(full);
     }
-    char *text = params ? json_dumps(params, JSON_COMPACT) : NULL; /* malloc'ed by jansson */
-    s->params_json = ms_strdup(text ? text : "{}");
-    free(text);
+    char *text = params ? ms_json_text(params, JSON_COMPACT) : NULL;
+    s->params_json = text ? text : ms_strdup("{}");
     if (!s->kind || !s->params_json)
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "scene: out of memory for a shape");
     /* the kind must name a shape plugin (the registry's sentence lists the

@@ -270,9 +270,12 @@ void ms_sim_average_waves(ms_sim *sim, const float *wave, float *out);
 /* worker.c */
 ms_status ms_sim_worker_start(ms_sim *sim);
 /* The threads of threads = 2 (worker.c): the engine's tasks when given,
- * else the sim's own second thread; either way a volume of one thread
+ * else the sim's own second thread (from the first frame); either way a volume of one thread
  * shares its loops with the other side (or with the engine's tasks). */
 ms_status ms_sim_setup_threads(ms_sim *sim);
+/* The sim's own second thread, started by the first frame that needs it
+ * (threads = 2, a volume, no engine tasks); MS_OK otherwise. */
+ms_status ms_sim_worker_ensure(ms_sim *sim);
 void ms_sim_worker_stop(ms_sim *sim);
 void ms_sim_worker_run(ms_sim *sim, ms_task_fn *fn, void *arg);
 void ms_sim_worker_wait(ms_sim *sim);

@@ -167,6 +167,8 @@ static ms_status step_frame(ms_sim *sim, float frame_dt)
         (st = ms_sim_plan_waves(sim, frame_dt, &n_time, &wave_dt)) != MS_OK)
         return st;
     double c0 = ms_now();
+    if ((st = ms_sim_worker_ensure(sim)) != MS_OK)
+        return st;
     if (!sim->primed && (st = prime(sim)) != MS_OK)
         return st;
     long n = sim->calls + 1;

@@ -1,7 +1,11 @@
 /* The sim's own second thread for the two-core split (threads = 2 without
  * engine task callbacks): one persistent pthread that runs one task per
  * frame, handed over under a mutex (go/done generation counters), so a
- * frame costs two condition-variable signals, not a thread start. */
+ * frame costs two condition-variable signals, not a thread start. It
+ * starts at the first frame that needs it (ms_sim_worker_ensure), not at
+ * create: an engine that hands over its tasks after create
+ * (ms_sim_set_tasks) gets no thread of the library's own, started and
+ * stopped for nothing. */
 #include <string.h>
 
 #include "sim/sim_internal.h"
@@ -69,10 +73,14 @@ ms_status ms_sim_setup_threads(ms_sim *sim)
      * is the height field's column search, which leaves most of the frame
      * free. The same bytes either way. */
     MS_TRY(ms_volume_share_loops(sim->volume));
-    MS_TRY(ms_volume_set_tasks(sim->volume, sim->enqueue, sim->finish, sim->user_ctx));
-    if (!sim->enqueue && !sim->have_worker)
-        return ms_sim_worker_start(sim);
-    return MS_OK;
+    return ms_volume_set_tasks(sim->volume, sim->enqueue, sim->finish, sim->user_ctx);
+}
+
+ms_status ms_sim_worker_ensure(ms_sim *sim)
+{
+    if (sim->threads != 2 || !sim->volume || sim->enqueue || sim->have_worker)
+        return MS_OK;
+    return ms_sim_worker_start(sim);
 }
 
 void ms_sim_worker_stop(ms_sim *sim)

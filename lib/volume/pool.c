@@ -5,10 +5,14 @@
  * order-free reductions (max) are combined across chunks.
  * A volume's own pool (ms_vpool_create, desc.threads) is a shared pool
  * (below) with threads - 1 helper threads of its own that never stop
- * helping. When an engine gives its task interface (ms_volume_set_tasks),
- * the pool stops its own threads and runs chunks 1.. as the engine's tasks
- * (enqueue, then finish each), chunk 0 on the calling thread: the same
- * split, the same bytes.
+ * helping once started. They start at the first step (ms_vpool_start),
+ * not at create: an engine that hands over its task interface
+ * (ms_volume_set_tasks) between create and the first step never sees a
+ * thread of the library's own. With the engine's tasks the pool runs
+ * chunks 1.. as the engine's tasks (enqueue, then finish each), chunk 0
+ * on the calling thread, and stops its own threads if they ran: the same
+ * split, the same bytes. A loop before the first step (the density at
+ * create) runs every chunk on the calling thread, again the same bytes.
  * A shared pool (ms_vpool_create_shared, the sim's work sharing) has no
  * threads of its own: each loop's chunks are claimed one at a time by the
  * calling thread and by whoever else has a moment: a helper that another
@@ -268,7 +272,7 @@ static ms_status start_workers(ms_vpool *p)
 }
 
 /* A pool with threads - 1 helper threads of its own (a volume's
- * desc.threads). Its loops are shared loops (run_shared) whose helpers
+ * desc.threads), started by ms_vpool_start. Its loops are shared loops (run_shared) whose helpers
  * never leave: each spins MS_VPOOL_SPIN_US for the next loop before it
  * sleeps, so a step's loops, microseconds apart, cost no wake-up (a
  * worker woken from a condition variable for every loop made
@@ -284,12 +288,14 @@ ms_status ms_vpool_create(int threads, ms_vpool **out)
     if (st != MS_OK)
         return st;
     (*out)->own = 1;
-    st = start_workers(*out);
-    if (st != MS_OK) {
-        ms_vpool_destroy(*out);
-        *out = NULL;
-    }
-    return st;
+    return MS_OK;
+}
+
+ms_status ms_vpool_start(ms_vpool *p)
+{
+    if (!p || !p->own || p->enqueue || p->started)
+        return MS_OK; /* inline, the engine's tasks, or running */
+    return start_workers(p);
 }
 
 /* A shared pool's engine task: the chunks of the current loop still open
@@ -355,9 +361,7 @@ ms_status ms_vpool_set_tasks(ms_vpool *p, ms_enqueue_task_fn *enqueue, ms_finish
     p->enqueue = enqueue;
     p->finish = finish;
     p->user = user;
-    if (!enqueue && !p->started)
-        return start_workers(p);
-    return MS_OK;
+    return MS_OK; /* without tasks, the next step starts the threads */
 }
 
 void ms_vpool_destroy(ms_vpool *p)

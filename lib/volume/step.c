@@ -297,7 +297,9 @@ ms_status ms_volume_step(ms_volume *v, float dt)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: step of a NULL volume");
     if (!isfinite(dt) || dt < 0.0f || dt > 10.0f)
         return ms_fail(MS_ERR_INVALID_ARGUMENT, "volume: dt %g s is outside [0, 10] s", dt);
-    ms_status st = MS_OK;
+    ms_status st = ms_vpool_start(v->pool);
+    if (st != MS_OK)
+        return st;
     const float lambda = v->desc.courant, h = v->K.h;
     const int dfsph = v->desc.pressure == MS_PRESSURE_DFSPH;
     double rest = dt, tau = 0.0;

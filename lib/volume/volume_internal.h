@@ -90,6 +90,10 @@ typedef struct ms_vpool ms_vpool;
 /* Work on items [begin, end) of a parallel loop; `part` is the chunk index. */
 typedef void ms_vpool_fn(void *ctx, int part, int begin, int end);
 ms_status ms_vpool_create(int threads, ms_vpool **out);
+/* Start a volume pool's own threads unless they run, the engine's tasks
+ * are set, or it has none (a step calls it first; pool.c says why not
+ * create). */
+ms_status ms_vpool_start(ms_vpool *p);
 /* A pool of `parts` chunks and no threads of its own (pool.c): the caller
  * and a lent helper (ms_vpool_help, extract.h) claim them. */
 ms_status ms_vpool_create_shared(int parts, ms_vpool **out);

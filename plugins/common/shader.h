@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host.h"
 #include "modesplit/plugin.h"
 
 /* The renderer's surface mesh gives world positions and normals; every
@@ -71,7 +72,7 @@
 static inline int shader_keep(const void *parsed, size_t size, void **out, char *err,
                               size_t err_size)
 {
-    void *p = malloc(size);
+    void *p = plugin_alloc(size);
     if (!p) {
         snprintf(err, err_size, "out of memory");
         return MS_PLUGIN_ERR_OUT_OF_MEMORY;
@@ -84,7 +85,7 @@ static inline int shader_keep(const void *parsed, size_t size, void **out, char 
 /* The vtable's destroy for a shader whose self is one shader_keep copy. */
 static inline void shader_free(void *self)
 {
-    free(self);
+    plugin_free(self);
 }
 
 #endif

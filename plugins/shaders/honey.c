@@ -83,6 +83,7 @@ static const ms_plugin_info honey_info = {
     .kind = MS_PLUGIN_SHADER,
     .description = "amber, see-through honey: absorbed refraction, Fresnel, sharp highlight",
     .vtable = &honey_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

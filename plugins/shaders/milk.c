@@ -88,6 +88,7 @@ static const ms_plugin_info milk_info = {
     .kind = MS_PLUGIN_SHADER,
     .description = "opaque, soft milk: wrapped diffuse light, grazing sheen, no refraction",
     .vtable = &milk_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

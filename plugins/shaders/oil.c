@@ -73,6 +73,7 @@ static const ms_plugin_info oil_info = {
     .kind = MS_PLUGIN_SHADER,
     .description = "dark, opaque, glossy oil: Fresnel reflection, sharp highlight",
     .vtable = &oil_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

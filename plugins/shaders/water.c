@@ -156,6 +156,7 @@ static const ms_plugin_info water_info = {
     .kind = MS_PLUGIN_SHADER,
     .description = "clear water: Fresnel mix of cubemap reflection and refraction, caustics",
     .vtable = &water_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

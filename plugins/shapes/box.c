@@ -25,6 +25,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "../common/host.h"
 #include "../common/params.h"
 #include "modesplit/plugin.h"
 
@@ -52,7 +53,7 @@ static int box_create(const char *json, void **out, char *err, size_t err_size)
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
         return rc;
-    box *b = malloc(sizeof *b);
+    box *b = plugin_alloc(sizeof *b);
     if (!b) {
         snprintf(err, err_size, "out of memory");
         return MS_PLUGIN_ERR_OUT_OF_MEMORY;
@@ -69,7 +70,7 @@ static int box_create(const char *json, void **out, char *err, size_t err_size)
 
 static void box_destroy(void *self)
 {
-    free(self);
+    plugin_free(self);
 }
 
 static void box_normal(const box *b, const float p[3], float n[3])
@@ -158,6 +159,7 @@ static const ms_plugin_info box_info = {
     .kind = MS_PLUGIN_SHAPE,
     .description = "box of full extents size (m), rounded edges, normals smoothed at edges",
     .vtable = &box_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "../common/host.h"
 #include "../common/params.h"
 #include "modesplit/plugin.h"
 
@@ -37,7 +38,7 @@ static int capsule_create(const char *json, void **out, char *err, size_t err_si
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
         return rc;
-    capsule *c = malloc(sizeof *c);
+    capsule *c = plugin_alloc(sizeof *c);
     if (!c) {
         snprintf(err, err_size, "out of memory");
         return MS_PLUGIN_ERR_OUT_OF_MEMORY;
@@ -73,7 +74,7 @@ static int capsule_create(const char *json, void **out, char *err, size_t err_si
 
 static void capsule_destroy(void *self)
 {
-    free(self);
+    plugin_free(self);
 }
 
 static float capsule_distance(const void *self, const float p[3], float n[3])
@@ -121,6 +122,7 @@ static const ms_plugin_info capsule_info = {
     .kind = MS_PLUGIN_SHAPE,
     .description = "points within radius (m) of the segment a-b",
     .vtable = &capsule_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

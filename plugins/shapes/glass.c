@@ -25,6 +25,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "../common/host.h"
 #include "../common/params.h"
 #include "modesplit/plugin.h"
 
@@ -71,7 +72,7 @@ static int glass_create(const char *json, void **out, char *err, size_t err_size
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
         return rc;
-    glass *g = calloc(1, sizeof *g);
+    glass *g = plugin_calloc(1, sizeof *g);
     if (!g) {
         snprintf(err, err_size, "out of memory");
         return MS_PLUGIN_ERR_OUT_OF_MEMORY;
@@ -97,7 +98,7 @@ static int glass_create(const char *json, void **out, char *err, size_t err_size
 
 static void glass_destroy(void *self)
 {
-    free(self);
+    plugin_free(self);
 }
 
 static int inside(const glass *g, float rho, float z)
@@ -209,6 +210,7 @@ static const ms_plugin_info glass_info = {
     .kind = MS_PLUGIN_SHAPE,
     .description = "open cylindrical container: wall and floor of a thickness, open top",
     .vtable = &glass_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

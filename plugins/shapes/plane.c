@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "../common/host.h"
 #include "../common/params.h"
 #include "modesplit/plugin.h"
 
@@ -35,7 +36,7 @@ static int plane_create(const char *json, void **out, char *err, size_t err_size
         return rc;
     for (int k = 0; k < 3; ++k)
         s.n[k] = (float)(s.n[k] / l);
-    plane *p = malloc(sizeof *p);
+    plane *p = plugin_alloc(sizeof *p);
     if (!p) {
         snprintf(err, err_size, "out of memory");
         return MS_PLUGIN_ERR_OUT_OF_MEMORY;
@@ -47,7 +48,7 @@ static int plane_create(const char *json, void **out, char *err, size_t err_size
 
 static void plane_destroy(void *self)
 {
-    free(self);
+    plugin_free(self);
 }
 
 static float plane_distance(const void *self, const float p[3], float n[3])
@@ -110,6 +111,7 @@ static const ms_plugin_info plane_info = {
     .kind = MS_PLUGIN_SHAPE,
     .description = "half-space below the plane normal . p = offset (m)",
     .vtable = &plane_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "../common/host.h"
 #include "../common/params.h"
 #include "modesplit/plugin.h"
 
@@ -21,7 +22,7 @@ static int sphere_create(const char *json, void **out, char *err, size_t err_siz
     int rc = params_close(&pm);
     if (rc != MS_PLUGIN_OK)
         return rc;
-    sphere *p = malloc(sizeof *p);
+    sphere *p = plugin_alloc(sizeof *p);
     if (!p) {
         snprintf(err, err_size, "out of memory");
         return MS_PLUGIN_ERR_OUT_OF_MEMORY;
@@ -33,7 +34,7 @@ static int sphere_create(const char *json, void **out, char *err, size_t err_siz
 
 static void sphere_destroy(void *self)
 {
-    free(self);
+    plugin_free(self);
 }
 
 static float sphere_distance(const void *self, const float p[3], float n[3])
@@ -89,6 +90,7 @@ static const ms_plugin_info sphere_info = {
     .kind = MS_PLUGIN_SHAPE,
     .description = "ball of radius r (m) around the local origin",
     .vtable = &sphere_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

@@ -35,6 +35,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "../common/host.h"
 #include "../common/params.h"
 #include "modesplit/plugin.h"
 
@@ -55,18 +56,18 @@ static void terrain_destroy(void *self)
     terrain *t = self;
     if (!t)
         return;
-    free(t->h);
-    free(t->gx);
-    free(t->gy);
-    free(t);
+    plugin_free(t->h);
+    plugin_free(t->gx);
+    plugin_free(t->gy);
+    plugin_free(t);
 }
 
 static int alloc_maps(terrain *t, params *pm)
 {
     size_t n = (size_t)t->nx * (size_t)t->ny;
-    t->h = malloc(n * sizeof *t->h);
-    t->gx = malloc(n * sizeof *t->gx);
-    t->gy = malloc(n * sizeof *t->gy);
+    t->h = plugin_alloc(n * sizeof *t->h);
+    t->gx = plugin_alloc(n * sizeof *t->gx);
+    t->gy = plugin_alloc(n * sizeof *t->gy);
     if (!t->h || !t->gx || !t->gy) {
         params_fail(pm, MS_PLUGIN_ERR_OUT_OF_MEMORY, "out of memory for %d x %d heights", t->nx,
                     t->ny);
@@ -192,16 +193,16 @@ static void read_png_from(terrain *t, params *pm, FILE *f, const char *path, con
     img.format = wide ? PNG_FORMAT_LINEAR_Y : PNG_FORMAT_GRAY;
     t->nx = (int)img.width;
     t->ny = (int)img.height;
-    void *pix = malloc(PNG_IMAGE_SIZE(img));
+    void *pix = plugin_alloc(PNG_IMAGE_SIZE(img));
     if (!pix || !alloc_maps(t, pm)) {
-        free(pix);
+        plugin_free(pix);
         png_image_free(&img);
         if (!pix)
             params_fail(pm, MS_PLUGIN_ERR_OUT_OF_MEMORY, "out of memory reading png \"%s\"", path);
         return;
     }
     if (!png_image_finish_read(&img, NULL, pix, 0, NULL)) {
-        free(pix);
+        plugin_free(pix);
         params_fail(pm, MS_PLUGIN_ERR_IO, "png \"%s\" cannot be decoded: %s", path, img.message);
         return;
     }
@@ -215,7 +216,7 @@ static void read_png_from(terrain *t, params *pm, FILE *f, const char *path, con
             t->h[j * (size_t)t->nx + i] = range[0] + scale * v;
         }
     }
-    free(pix);
+    plugin_free(pix);
 }
 
 static void slopes(terrain *t)
@@ -236,7 +237,7 @@ static int terrain_create(const char *json, void **out, char *err, size_t err_si
     static const char *const keys[] = {"png", "heights", "size", "height_range", "base", NULL};
     static const float dsize[2] = {1, 1}, drange[2] = {0, 0.1f};
     params pm;
-    terrain *t = calloc(1, sizeof *t);
+    terrain *t = plugin_calloc(1, sizeof *t);
     if (!t) {
         snprintf(err, err_size, "out of memory");
         return MS_PLUGIN_ERR_OUT_OF_MEMORY;
@@ -382,6 +383,7 @@ static const ms_plugin_info terrain_info = {
     .kind = MS_PLUGIN_SHAPE,
     .description = "ground from a grey-scale PNG or an array of heights (m)",
     .vtable = &terrain_vtable,
+    .set_host = plugin_set_host,
 };
 
 const ms_plugin_info *ms_plugin_entry(void)

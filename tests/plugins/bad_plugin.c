@@ -2,9 +2,14 @@
  * builds one shared object per defect with -D<DEFECT>:
  *   NO_ENTRY  ABI_MAJOR  ABI_NEWER  SIZE_ZERO  SIZE_TRUNC  NULL_INFO
  *   BAD_KIND  BAD_NAME   NO_VTABLE  VT_TRUNC   NO_DISTANCE
- *   (none)    a good shape plugin called NAME (default "testball").
+ *   (none)    a good shape plugin called NAME (default "testball"), of
+ *             this ABI: each instance is a block of the host's allocator
+ *   ABI_1_0   a good one as a plugin built against ABI 1.0 headers was:
+ *             its ms_plugin_info ends at vtable (no set_host) and its
+ *             instances come from malloc
  */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include <modesplit/plugin.h>
@@ -13,18 +18,40 @@
 #define NAME "testball"
 #endif
 
+#ifndef ABI_1_0
+static const ms_plugin_host *host;
+
+static void tb_set_host(const ms_plugin_host *h)
+{
+    host = h;
+}
+#endif
+
+/* an instance of one float, the radius 1 m the functions below assume */
 static int tb_create(const char *json, void **out, char *err, size_t n)
 {
     (void)json;
     (void)err;
     (void)n;
-    *out = NULL;
+#ifdef ABI_1_0
+    float *r = malloc(sizeof *r);
+#else
+    float *r = host ? host->alloc_fn(sizeof *r) : NULL;
+#endif
+    if (!r)
+        return MS_PLUGIN_ERR_OUT_OF_MEMORY;
+    *r = 1.0f;
+    *out = r;
     return MS_PLUGIN_OK;
 }
 
 static void tb_destroy(void *self)
 {
-    (void)self;
+#ifdef ABI_1_0
+    free(self);
+#else
+    host->free_fn(self);
+#endif
 }
 
 static float tb_distance(const void *self, const float p[3], float nrm[3])
@@ -62,6 +89,24 @@ static const ms_shape_vtable vt = {
     .bounds = tb_bounds,
 };
 
+#ifdef ABI_1_0
+/* ms_plugin_info as the ABI 1.0 headers declared it */
+typedef struct info_1_0 {
+    uint32_t abi, size;
+    const char *name, *version;
+    uint32_t kind;
+    const char *description;
+    const void *vtable;
+} info_1_0;
+static const info_1_0 info_old = {.abi = 1u << 16,
+                                  .size = sizeof(info_1_0),
+                                  .name = NAME,
+                                  .version = "0.0-test",
+                                  .kind = MS_PLUGIN_SHAPE,
+                                  .description = "test plugin of ABI 1.0",
+                                  .vtable = &vt};
+#endif
+
 static const ms_plugin_info info = {
 #if defined(ABI_MAJOR)
     .abi = (2u << 16) | 0u,
@@ -94,6 +139,9 @@ static const ms_plugin_info info = {
 #else
     .vtable = &vt,
 #endif
+#ifndef ABI_1_0
+    .set_host = tb_set_host,
+#endif
 };
 
 #ifdef NO_ENTRY
@@ -105,9 +153,12 @@ const ms_plugin_info *not_the_entry(void)
 #else
 const ms_plugin_info *ms_plugin_entry(void)
 {
-#ifdef NULL_INFO
+#if defined(NULL_INFO)
     (void)info;
     return NULL;
+#elif defined(ABI_1_0)
+    (void)info;
+    return (const ms_plugin_info *)(const void *)&info_old;
 #else
     return &info;
 #endif
