@@ -167,6 +167,64 @@ START_TEST(fifos_devices_and_a_cubemap_without_faces_are_refused_by_check_and_ru
 }
 END_TEST
 
+/* A waves-only scene of 512^2 cells over 1 m^2 with `effects` (JSON). */
+static const char *waves_with(const char *name, const char *effects)
+{
+    size_t n = strlen(effects) + 512;
+    char *text = malloc(n);
+    ck_assert_ptr_nonnull(text);
+    snprintf(text, n,
+             "{\"name\": \"work\", \"duration\": 1.0, \"frame_dt\": 0.02, \"threads\": 1,"
+             " \"domain\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0.4]},"
+             " \"surface\": {\"cells\": [512, 512], \"wave_speed\": 0.3},"
+             " \"effects\": %s}",
+             effects);
+    const char *p = tmp_path(name);
+    write_text(p, text);
+    free(text);
+    return p;
+}
+
+/* `count` scripted drops at t = 0 of radius `radius` m, as JSON. */
+static char *drops_json(int count, double radius)
+{
+    size_t n = (size_t)count * 80 + 32;
+    char *s = malloc(n), *p = s;
+    ck_assert_ptr_nonnull(s);
+    p += sprintf(p, "{\"drops\": [");
+    for (int i = 0; i < count; ++i)
+        p += sprintf(p, "%s{\"at\": [0.5, 0.5], \"time\": 0, \"radius\": %g}", i ? ", " : "",
+                     radius);
+    sprintf(p, "]}");
+    return s;
+}
+
+/* Every effect's work is bounded, and check refuses what run would: 4096
+ * scripted drops at t = 0, each over the whole 512^2 grid (about a minute
+ * for two frames before), and rain under the drops-a-second cap whose
+ * drops are the grid's size, are refused by both with exit 2; drops just
+ * under the cap (about 3 s of one core in all) pass check. */
+START_TEST(drops_and_rain_of_unbounded_work_are_refused_by_check_and_run)
+{
+    char *many = drops_json(4096, 0.5);
+    check_and_run_refuse(waves_with("drops.json", many), "visit 1.07e+09 wave cells in all");
+    free(many);
+    char *under = drops_json(1020, 0.5); /* 1020 * 512^2 cells: just under 2^28 */
+    result c = run_tool((const char *[]){"check", waves_with("under.json", under), NULL});
+    ck_assert_msg(c.code == 0, "%s", c.err);
+    result_free(&c);
+    free(under);
+    /* 1e5 drops a second (the count cap) of a 0.5 m radius */
+    check_and_run_refuse(waves_with("rain.json", "{\"rain\": {\"rate\": 1e5, \"radius\": 0.5}}"),
+                         "wave cells a second; at most 2.68e+08");
+    /* the same rain with the default radius is the count cap's, and passes */
+    c = run_tool(
+        (const char *[]){"check", waves_with("fine.json", "{\"rain\": {\"rate\": 1e5}}"), NULL});
+    ck_assert_msg(c.code == 0, "%s", c.err);
+    result_free(&c);
+}
+END_TEST
+
 /* The path policy (docs/scenes.md): a scene may name its PNGs (a
  * terrain's height map, a cubemap folder) by `..` and absolute paths, as it
  * may any file its user can read; check and run accept both, and a missing
@@ -632,6 +690,7 @@ static Suite *untrusted_suite(void)
     tcase_add_test(tc, a_run_file_naming_other_files_is_refused_before_they_are_opened);
     tcase_add_test(tc, check_refuses_the_cubemap_faces_run_cannot_decode);
     tcase_add_test(tc, a_scene_reads_pngs_by_parent_and_absolute_paths);
+    tcase_add_test(tc, drops_and_rain_of_unbounded_work_are_refused_by_check_and_run);
     suite_add_tcase(s, tc);
     tc = tcase_create("files");
     tcase_add_checked_fixture(tc, setup, teardown);
