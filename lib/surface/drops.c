@@ -13,8 +13,6 @@
  * no in-range rate over a large grid makes a frame endless. */
 #define MAX_RAIN_DROPS_PER_S 1e5
 
-/* Add the bump to f^n and f^{n-1} alike (h, not v): a displacement at rest. Cells are
- * wrapped on a periodic grid and clipped otherwise; solid cells stay 0. */
 double ms_surface_drop_cells(const ms_surface *s, float radius)
 {
     const double rmin = MIN_RADIUS_CELLS * (double)s->desc.dx;
@@ -25,6 +23,8 @@ double ms_surface_drop_cells(const ms_surface *s, float radius)
     return nx * ny;
 }
 
+/* Add the bump to f^n and f^{n-1} alike (h, not v): a displacement at rest. Cells are
+ * wrapped on a periodic grid and clipped otherwise; solid cells stay 0. */
 static void splat(ms_surface *s, float x, float y, float radius, float amplitude)
 {
     const float dx = s->desc.dx;

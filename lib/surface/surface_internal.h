@@ -124,7 +124,7 @@ double ms_surface_drop_cells(const ms_surface *s, float radius);
  * (2^28: about 3 s of one core at the ~11 ns a cell a splat was measured
  * to take at 512^2), so no set of in-range drops makes a frame endless
  * (4096 drops of a whole 512^2 grid each took about a minute for two
- * frames). The rain's cells a second share it (rain.c's check). */
+ * frames). The rain's cells a second share it (ms_surface_check_rain). */
 #define MS_SURFACE_MAX_DROP_CELLS 268435456.0
 ms_status ms_surface_check_disturber(const ms_surface *s, const ms_disturber_desc *d);
 /* disturber.c */
