@@ -3,6 +3,7 @@
 #   make                 library (shared + static), plugins, tools
 #   make check           build and run every test (README's test command)
 #   make demo            run the default scene: HDF5 file + PNG frames in demo/
+#                        (each time anew: --force replaces the last demo's run)
 #   make bench           benchmarks: medians, spreads, machine; CSV in bench/
 #   make install PREFIX=/usr/local
 #   make SAN=asan check  the tests under AddressSanitizer + UBSan (build-asan/)
@@ -487,7 +488,7 @@ check-usd: all
 demo: deps
 	@$(MAKE) --no-print-directory all
 	@mkdir -p demo
-	$(BUILD)/bin/modesplit run data/scenes/default.json --out demo/default.h5 --png demo/frames
+	$(BUILD)/bin/modesplit run data/scenes/default.json --out demo/default.h5 --force --png demo/frames
 	@echo "demo: wrote demo/default.h5 (HDF5), demo/default.xmf (ParaView) and demo/frames/*.png"
 
 bench: deps

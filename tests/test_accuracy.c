@@ -439,6 +439,17 @@ START_TEST(bad_options_are_refused)
     ck_assert_int_eq(tool("accuracy --jobs --merge x", out, sizeof out), 2);
     ck_assert_ptr_nonnull(strstr(out, "one of"));
     ck_assert_int_eq(tool("accuracy --bogus", out, sizeof out), 2);
+    /* two cases in one run are refused, not run as the last one alone: a
+     * case's part is its own process's (its costs measured with the
+     * machine to itself), and --jobs lists a line per case to run them */
+    ck_assert_int_eq(tool("accuracy --case waves-cells --case water-dispersion --out "
+                          "/tmp/ms_acc_two_cases",
+                          out, sizeof out),
+                     2);
+    ck_assert_msg(strstr(out, "--case water-dispersion after --case waves-cells: one case a run"),
+                  "%s", out);
+    struct stat sb;
+    ck_assert_int_ne(stat("/tmp/ms_acc_two_cases", &sb), 0);
     ck_assert_int_eq(
         tool("accuracy --merge /nonexistent/parts --out /tmp/ms_acc_none", out, sizeof out), 1);
     ck_assert_ptr_nonnull(strstr(out, "no part"));

@@ -1230,7 +1230,7 @@ static void stop(pid_t pid)
 }
 
 /* One writer per run file: while a run (or a resume) writes f.h5, a
- * --resume of it and another run with --out f.h5 are refused in one
+ * --resume of it and another run with --out f.h5 --force are refused in one
  * sentence with exit 1, and the writer goes on: its file stays readable,
  * its sidecar lists what the file holds, and it resumes afterwards. */
 START_TEST(a_second_writer_of_a_run_file_is_refused)
@@ -1241,7 +1241,8 @@ START_TEST(a_second_writer_of_a_run_file_is_refused)
     snprintf(xmf, sizeof xmf, "%s/f.xmf", tmp_dir);
     const char *run[] = {"run", SCENE, "--frames", "100000", "--quiet", "--out", f, NULL};
     const char *resume[] = {"run", SCENE, "--frames", "100000", "--quiet", "--resume", f, NULL};
-    const char *again[] = {"run", SCENE, "--frames", "3", "--quiet", "--out", f, NULL};
+    /* --force: past the refusal of an existing run, to the writer's lock */
+    const char *again[] = {"run", SCENE, "--frames", "3", "--quiet", "--out", f, "--force", NULL};
     for (int round = 0; round < 2; ++round) {
         /* pass 0: a run is writing; pass 1: a resume is */
         pid_t first = start_and_wait(round == 0 ? run : resume, f, frames_listed(f) + 2);

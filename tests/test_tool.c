@@ -502,8 +502,9 @@ START_TEST(sigkill_mid_run_leaves_a_file_h5dump_and_info_read)
     const char *out = tmp_path("killed.h5");
     for (int round = 0; round < 3; ++round) {
         remove(out);
+        /* each round replaces the last one's run (its sidecars are left) */
         pid_t pid = ms_test_spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
-                                                        "--out", out, "--quiet", NULL},
+                                                        "--out", out, "--force", "--quiet", NULL},
                                        tmp_path("o.txt"), tmp_path("e.txt"));
         /* readable while the run goes on */
         int ok = wait_for_frames(out, 2 + round, 60);
@@ -538,9 +539,9 @@ START_TEST(sigint_and_sigterm_finish_the_frame_and_close_the_file)
     for (int i = 0; i < 2; ++i) {
         const char *out = tmp_path("stopped.h5");
         remove(out);
-        pid_t pid = ms_test_spawn_tool(
-            (const char *[]){"run", SMALL_SCENE, "--frames", "100000", "--out", out, NULL},
-            tmp_path("o.txt"), tmp_path("e.txt"));
+        pid_t pid = ms_test_spawn_tool((const char *[]){"run", SMALL_SCENE, "--frames", "100000",
+                                                        "--out", out, "--force", NULL},
+                                       tmp_path("o.txt"), tmp_path("e.txt"));
         ck_assert(wait_for_frames(out, 2, 60));
         kill(pid, sigs[i]);
         int status;
@@ -715,6 +716,117 @@ START_TEST(run_refuses_an_output_that_is_its_scene)
         result_free(&r);
         free(text);
     }
+    remove_tmp_dir();
+}
+END_TEST
+
+/* Does tmp file `name` hold these bytes (NULL: is it absent)? */
+static int holds(const char *name, const char *bytes, size_t len)
+{
+    if (!bytes)
+        return !tmp_exists(name);
+    size_t n = 0;
+    char *now = ms_test_slurp_n(tmp_path(name), &n);
+    int same = n == len && memcmp(now, bytes, len) == 0;
+    free(now);
+    return same;
+}
+
+/* A run is replaced only on purpose: run --out over an existing run file,
+ * or over a sidecar of it alone (the run file deleted, its .xmf or .xdmf2
+ * left), or a dangling symbolic link, is refused in one sentence naming the
+ * file and --force, exit 2, before the PNG folder is made; every file
+ * keeps its bytes. --force replaces the run; --force with --resume is a
+ * usage error; the library's check names the same files. */
+START_TEST(run_replaces_an_existing_run_only_with_force)
+{
+    make_tmp_dir();
+    char *out = tmp_path("r.h5"), *png = tmp_path("png");
+    result r = run_tool(
+        (const char *[]){"run", SMALL_SCENE, "--frames", "2", "--quiet", "--out", out, NULL});
+    ASSERT_EXIT(r, 0);
+    result_free(&r);
+    const char *names[3] = {"r.h5", "r.xmf", "r.xdmf2"};
+    char *bytes[3];
+    size_t len[3];
+    for (int i = 0; i < 3; ++i)
+        ck_assert_ptr_nonnull(bytes[i] = ms_test_slurp_n(tmp_path(names[i]), &len[i]));
+    /* the whole run there, then each sidecar alone */
+    for (int k = -1; k < 3; ++k) {
+        if (k >= 0) {
+            for (int i = 0; i < 3; ++i)
+                unlink(tmp_path(names[i]));
+            FILE *f = fopen(tmp_path(names[k]), "wb");
+            ck_assert_uint_eq(fwrite(bytes[k], 1, len[k], f), len[k]);
+            fclose(f);
+        }
+        r = run_tool((const char *[]){"run", SMALL_SCENE, "--frames", "3", "--quiet", "--out", out,
+                                      "--png", png, NULL});
+        ASSERT_EXIT(r, 2);
+        ck_assert_int_eq(count_lines(r.err), 1);
+        ck_assert_msg(strstr(r.err, k <= 0 ? "r.h5 exists" : names[k]) &&
+                          strstr(r.err, "pass --force") && strstr(r.err, "another --out"),
+                      "%s", r.err);
+        if (k > 0)
+            ck_assert_msg(strstr(r.err, "XDMF sidecar of"), "%s", r.err);
+        for (int i = 0; i < 3; ++i)
+            ck_assert_msg(holds(names[i], k < 0 || i == k ? bytes[i] : NULL, len[i]),
+                          "%s changed (case %d)", names[i], k);
+        ck_assert_msg(!tmp_exists("png"), "the PNG folder was made for a refused run");
+        result_free(&r);
+    }
+    /* a dangling symbolic link is a name the run would replace */
+    unlink(tmp_path("r.xdmf2"));
+    ck_assert_int_eq(symlink(tmp_path("nowhere.h5"), out), 0);
+    r = run_tool(
+        (const char *[]){"run", SMALL_SCENE, "--frames", "3", "--quiet", "--out", out, NULL});
+    ASSERT_EXIT(r, 2);
+    ck_assert_msg(strstr(r.err, "r.h5 exists"), "%s", r.err);
+    ck_assert(!tmp_exists("nowhere.h5"));
+    result_free(&r);
+    unlink(out);
+    /* the library's check, on the run's sim */
+    ms_scene *sc;
+    ms_sim *sim;
+    ck_assert_int_eq(ms_scene_load(SMALL_SCENE, &sc), MS_OK);
+    ck_assert_int_eq(ms_sim_create_from_scene(sc, 1, &sim), MS_OK);
+    char name[600];
+    int exists = -1;
+    ck_assert_int_eq(ms_writer_existing(out, sim, name, sizeof name, &exists), MS_OK);
+    ck_assert_int_eq(exists, 0);
+    ck_assert_str_eq(name, "");
+    FILE *f = fopen(tmp_path("r.xdmf2"), "wb");
+    fclose(f);
+    ck_assert_int_eq(ms_writer_existing(out, sim, name, sizeof name, &exists), MS_OK);
+    ck_assert_int_eq(exists, 1);
+    ck_assert_str_eq(name, tmp_path("r.xdmf2"));
+    MS_ASSERT_REFUSED(ms_writer_existing(out, sim, name, 0, &exists), MS_ERR_INVALID_ARGUMENT,
+                      "no room");
+    MS_ASSERT_REFUSED(ms_writer_existing(NULL, sim, name, sizeof name, &exists),
+                      MS_ERR_INVALID_ARGUMENT, "path");
+    MS_ASSERT_REFUSED(ms_writer_existing(SMALL_SCENE, sim, name, sizeof name, &exists),
+                      MS_ERR_INVALID_ARGUMENT, "is the scene file");
+    MS_ASSERT_REFUSED(ms_writer_existing("/dev/null", sim, name, sizeof name, &exists), MS_ERR_IO,
+                      "not a regular file");
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+    /* --force replaces the run (the .xdmf2 left alone above goes too) */
+    r = run_tool((const char *[]){"run", SMALL_SCENE, "--frames", "3", "--quiet", "--out", out,
+                                  "--force", NULL});
+    ASSERT_EXIT(r, 0);
+    result_free(&r);
+    ms_reader *rd;
+    ck_assert_int_eq(ms_reader_open(out, &rd), MS_OK);
+    ck_assert_int_eq(ms_reader_frames(rd), 3); /* output.every 1 */
+    ms_reader_close(rd);
+    ck_assert(!holds("r.xdmf2", "", 0));
+    /* --resume continues a file without --force, and takes none */
+    r = run_tool((const char *[]){"run", SMALL_SCENE, "--resume", out, "--force", NULL});
+    ASSERT_EXIT(r, 2);
+    ck_assert_msg(strstr(r.err, "--force replaces a run file, --resume appends"), "%s", r.err);
+    result_free(&r);
+    for (int i = 0; i < 3; ++i)
+        free(bytes[i]);
     remove_tmp_dir();
 }
 END_TEST
@@ -980,6 +1092,7 @@ static Suite *tool_suite(void)
     tcase_add_test(tc, writer_refuses_fields_the_sim_lacks);
     tcase_add_test(tc, unwritable_outputs_exit_1_with_a_sentence);
     tcase_add_test(tc, run_refuses_an_output_that_is_its_scene);
+    tcase_add_test(tc, run_replaces_an_existing_run_only_with_force);
     tcase_add_test(tc, full_disk_exits_1_and_keeps_the_frames);
     tcase_add_test(tc, progress_is_a_bar_on_a_terminal);
     tcase_add_test(tc, progress_line_fits_the_terminal_width);

@@ -18,6 +18,7 @@
 #include <unistd.h>
 
 #include <hdf5.h>
+#include <png.h>
 
 #include "modesplit/modesplit.h"
 #include "support.h"
@@ -163,6 +164,114 @@ START_TEST(fifos_devices_and_a_cubemap_without_faces_are_refused_by_check_and_ru
         (const char *[]){"run", scene_with("s.json", ""), "--frames", "1", "--out", fifo, NULL});
     ASSERT_REFUSED(r, 1, "it is a FIFO (named pipe), not a regular file");
     result_free(&r);
+}
+END_TEST
+
+/* A waves-only scene of 512^2 cells over 1 m^2 with `effects` (JSON). */
+static const char *waves_with(const char *name, const char *effects)
+{
+    size_t n = strlen(effects) + 512;
+    char *text = malloc(n);
+    ck_assert_ptr_nonnull(text);
+    snprintf(text, n,
+             "{\"name\": \"work\", \"duration\": 1.0, \"frame_dt\": 0.02, \"threads\": 1,"
+             " \"domain\": {\"min\": [0, 0, 0], \"max\": [1, 1, 0.4]},"
+             " \"surface\": {\"cells\": [512, 512], \"wave_speed\": 0.3},"
+             " \"effects\": %s}",
+             effects);
+    const char *p = tmp_path(name);
+    write_text(p, text);
+    free(text);
+    return p;
+}
+
+/* `count` scripted drops at t = 0 of radius `radius` m, as JSON. */
+static char *drops_json(int count, double radius)
+{
+    size_t n = (size_t)count * 80 + 32;
+    char *s = malloc(n), *p = s;
+    ck_assert_ptr_nonnull(s);
+    p += sprintf(p, "{\"drops\": [");
+    for (int i = 0; i < count; ++i)
+        p += sprintf(p, "%s{\"at\": [0.5, 0.5], \"time\": 0, \"radius\": %g}", i ? ", " : "",
+                     radius);
+    sprintf(p, "]}");
+    return s;
+}
+
+/* Every effect's work is bounded, and check refuses what run would: 4096
+ * scripted drops at t = 0, each over the whole 512^2 grid (about a minute
+ * for two frames before), and rain under the drops-a-second cap whose
+ * drops are the grid's size, are refused by both with exit 2; drops just
+ * under the cap (about 3 s of one core in all) pass check. */
+START_TEST(drops_and_rain_of_unbounded_work_are_refused_by_check_and_run)
+{
+    char *many = drops_json(4096, 0.5);
+    check_and_run_refuse(waves_with("drops.json", many), "visit 1.07e+09 wave cells in all");
+    free(many);
+    char *under = drops_json(1020, 0.5); /* 1020 * 512^2 cells: just under 2^28 */
+    result c = run_tool((const char *[]){"check", waves_with("under.json", under), NULL});
+    ck_assert_msg(c.code == 0, "%s", c.err);
+    result_free(&c);
+    free(under);
+    /* 1e5 drops a second (the count cap) of a 0.5 m radius */
+    check_and_run_refuse(waves_with("rain.json", "{\"rain\": {\"rate\": 1e5, \"radius\": 0.5}}"),
+                         "wave cells a second; at most 2.68e+08");
+    /* the same rain with the default radius is the count cap's, and passes */
+    c = run_tool(
+        (const char *[]){"check", waves_with("fine.json", "{\"rain\": {\"rate\": 1e5}}"), NULL});
+    ck_assert_msg(c.code == 0, "%s", c.err);
+    result_free(&c);
+}
+END_TEST
+
+/* The path policy (docs/scenes.md): a scene may name its PNGs (a
+ * terrain's height map, a cubemap folder) by `..` and absolute paths, as it
+ * may any file its user can read; check and run accept both, and a missing
+ * one is refused naming the path. */
+START_TEST(a_scene_reads_pngs_by_parent_and_absolute_paths)
+{
+    ck_assert_int_eq(mkdir(tmp_path("assets"), 0700), 0);
+    ck_assert_int_eq(mkdir(tmp_path("scenes"), 0700), 0);
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    img.width = img.height = 8;
+    img.format = PNG_FORMAT_GRAY;
+    unsigned char px[64];
+    for (int i = 0; i < 64; ++i)
+        px[i] = (unsigned char)(4 * i);
+    const char *ground = tmp_path("assets/ground.png");
+    ck_assert(png_image_write_to_file(&img, ground, 0, px, 0, NULL));
+    const char *sky = tmp_path("assets/sky");
+    result c = run_tool((const char *[]){"cubemap", "--out", sky, "--size", "16", NULL});
+    ck_assert_msg(c.code == 0, "%s", c.err);
+    result_free(&c);
+    char abs_png[700], abs_sky[700];
+    snprintf(abs_png, sizeof abs_png, "%s", ground);
+    snprintf(abs_sky, sizeof abs_sky, "%s", sky);
+    const char *const pngs[2] = {"../assets/ground.png", abs_png};
+    const char *const skies[2] = {"../assets/sky", abs_sky};
+    for (int i = 0; i < 2; ++i) {
+        char extra[2048];
+        snprintf(extra, sizeof extra,
+                 ", \"obstacles\": [{\"shape\": \"terrain\", \"params\": {\"png\": \"%s\","
+                 " \"size\": [1, 1], \"height_range\": [0, 0.05]}}],"
+                 " \"render\": {\"cubemap\": \"%s\"}",
+                 pngs[i], skies[i]);
+        const char *scene = scene_with("scenes/s.json", extra);
+        result ck = run_tool((const char *[]){"check", scene, NULL});
+        ck_assert_msg(ck.code == 0, "%s: %s", pngs[i], ck.err);
+        result_free(&ck);
+        result r = run_tool((const char *[]){"run", scene, "--frames", "1", "--no-out", NULL});
+        ck_assert_msg(r.code == 0, "%s: %s", pngs[i], r.err);
+        result_free(&r);
+    }
+    const char *missing =
+        scene_with("scenes/m.json", ", \"obstacles\": [{\"shape\": \"terrain\", \"params\": "
+                                    "{\"png\": \"../assets/none.png\", \"size\": [1, 1],"
+                                    " \"height_range\": [0, 0.05]}}]");
+    check_and_run_refuse(missing, "assets/none.png");
 }
 END_TEST
 
@@ -580,6 +689,8 @@ static Suite *untrusted_suite(void)
     tcase_add_test(tc, fifos_devices_and_a_cubemap_without_faces_are_refused_by_check_and_run);
     tcase_add_test(tc, a_run_file_naming_other_files_is_refused_before_they_are_opened);
     tcase_add_test(tc, check_refuses_the_cubemap_faces_run_cannot_decode);
+    tcase_add_test(tc, a_scene_reads_pngs_by_parent_and_absolute_paths);
+    tcase_add_test(tc, drops_and_rain_of_unbounded_work_are_refused_by_check_and_run);
     suite_add_tcase(s, tc);
     tc = tcase_create("files");
     tcase_add_checked_fixture(tc, setup, teardown);

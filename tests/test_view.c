@@ -788,6 +788,45 @@ START_TEST(a_paused_script_ends_at_frames)
 }
 END_TEST
 
+/* view --out keeps an existing run as run does: refused in one sentence
+ * naming the file and --force (exit 2, no window, the file's bytes kept,
+ * no input log written); --force replaces it. */
+START_TEST(view_out_replaces_an_existing_run_only_with_force)
+{
+    NEED_X();
+    make_tmp_dir();
+    char args[1536], p[512];
+    snprintf(args, sizeof args, "%s --fast --frames 3 --out %s/r.h5", POOL, tmp_dir);
+    ck_assert_int_eq(run_view("first", args), 0);
+    snprintf(p, sizeof p, "%s/r.h5", tmp_dir);
+    size_t n0 = 0, n1 = 0;
+    char *before = ms_test_slurp_n(p, &n0);
+    ck_assert_uint_gt(n0, 0);
+    snprintf(args, sizeof args, "%s --fast --frames 2 --out %s/r.h5 --record-input %s/in.log", POOL,
+             tmp_dir, tmp_dir);
+    ck_assert_int_eq(run_view("again", args), 2);
+    char e[512];
+    snprintf(e, sizeof e, "%s/again.err", tmp_dir);
+    char *err = ms_test_slurp(e);
+    ck_assert_msg(strstr(err, "view: ") && strstr(err, "r.h5 exists: pass --force"), "%s", err);
+    free(err);
+    char *after = ms_test_slurp_n(p, &n1);
+    ck_assert_msg(n1 == n0 && memcmp(before, after, n0) == 0, "r.h5 changed");
+    free(after);
+    char lg[512];
+    snprintf(lg, sizeof lg, "%s/in.log", tmp_dir);
+    ck_assert_int_ne(access(lg, F_OK), 0);
+    snprintf(args, sizeof args, "%s --fast --frames 2 --out %s/r.h5 --force", POOL, tmp_dir);
+    ck_assert_int_eq(run_view("forced", args), 0);
+    ms_reader *r;
+    ck_assert_int_eq(ms_reader_open(p, &r), MS_OK);
+    ck_assert_int_eq(ms_reader_frames(r), 2);
+    ms_reader_close(r);
+    free(before);
+    remove_tmp_dir();
+}
+END_TEST
+
 START_TEST(keys_toggle_what_they_say_and_escape_exits_0)
 {
     NEED_X();
@@ -990,6 +1029,7 @@ static Suite *view_suite(void)
     tcase_add_test(tc, scripted_drag_moves_the_water_and_the_particles_along_it);
     tcase_add_test(tc, keys_toggle_what_they_say_and_escape_exits_0);
     tcase_add_test(tc, a_paused_script_ends_at_frames);
+    tcase_add_test(tc, view_out_replaces_an_existing_run_only_with_force);
     tcase_add_test(tc, closing_resizing_and_a_lost_context_are_handled);
     tcase_add_test(tc, real_x_events_drag_the_water_in_a_screenshot_and_replay_exactly);
     suite_add_tcase(s, tc);

@@ -92,6 +92,17 @@ extern "C" {
  * and a second writer of that file (in any process) is MS_ERR_STATE. */
 MS_API ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields,
                                 ms_writer **out);
+/* Before a new run at `path` of this sim: the refusals ms_writer_open
+ * would give for its names (a name that is the scene's file, one that is
+ * not a regular file), then the files it would replace: *exists 1 and the
+ * first of path, its XDMF sidecar (ms_writer_xdmf_path's name) and the
+ * legacy reader's sidecar that is there (a regular file or a symbolic
+ * link, dangling too) in name, cut to size; *exists 0 and name "" when
+ * none is. How `modesplit run` and `view` refuse to replace a run without
+ * --force. The check and ms_writer_open are two steps: a file made between
+ * them is replaced. */
+MS_API ms_status ms_writer_existing(const char *path, const ms_sim *sim, char *name, size_t size,
+                                    int *exists);
 /* Append the sim's current frame (fields, particles, ms_sim_time) and flush
  * it to disk. After an MS_ERR_IO the writer is failed: later frames return
  * MS_ERR_STATE, and ms_writer_close keeps the frames written before. */

@@ -143,7 +143,9 @@ MS_API ms_status ms_surface_speed_from_depth(const float *depth, size_t n, float
  * [radius/2, radius] and an amplitude drawn in [amplitude/2, amplitude],
  * positions uniform over the grid, from the seeded RNG in the handle (same
  * seed, same steps -> same bytes). NULL or rate 0 turns rain off (then no
- * random numbers are drawn). */
+ * random numbers are drawn). Its work a second is bounded: at most 1e5
+ * drops a second over the grid, visiting at most 2^28 cells a second (a
+ * drop the square of its diameter); more is MS_ERR_INVALID_ARGUMENT. */
 typedef struct ms_rain {
     uint32_t size;   /* sizeof, set by ms_rain_default() (core.h: struct sizes) */
     float rate;      /* drops per m^2 per s, >= 0 */

@@ -63,6 +63,9 @@ typedef struct ms_writer_data {
 } ms_writer_data;
 
 ms_status ms_writer_open_layout(const char *path, const ms_writer_layout *l, ms_writer **out);
+/* ms_writer_existing for a layout. */
+ms_status ms_writer_existing_layout(const char *path, const ms_writer_layout *l, char *name,
+                                    size_t size, int *exists);
 /* Reopen a run file written with layout l to append to it: refuses another
  * format version, library version, scene text or set of fields (nothing in
  * the file is changed then), drops a frame cut by a kill and lists the

@@ -585,6 +585,35 @@ static ms_status writer_new(const char *path, const ms_writer_layout *l, ms_writ
     return MS_OK;
 }
 
+ms_status ms_writer_existing_layout(const char *path, const ms_writer_layout *l, char *name,
+                                    size_t size, int *exists)
+{
+    ms_status st;
+    if ((st = ms_check_not_null("io", "exists", exists)) != MS_OK)
+        return st;
+    *exists = 0;
+    if ((st = ms_check_not_null("io", "name", name)) != MS_OK)
+        return st;
+    if (size == 0)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT, "io: the name buffer has no room");
+    name[0] = '\0';
+    /* the opener's own refusals first: an input of the scene or a file
+     * that is not regular is never replaced, --force or not */
+    ms_writer *w = NULL, *unused;
+    if ((st = writer_new(path, l, &unused, &w)) != MS_OK)
+        return st;
+    const char *const names[3] = {w->path, w->xmf_path, w->xmf2_path};
+    for (int i = 0; i < 3 && !*exists; ++i) {
+        struct stat sb;
+        if (lstat(names[i], &sb) == 0) {
+            *exists = 1;
+            snprintf(name, size, "%s", names[i]);
+        }
+    }
+    free_writer(w);
+    return MS_OK;
+}
+
 /* Where a new run file is made: "<path>.part", renamed over path once the
  * layout's first flush is on disk. A kill before that rename leaves path
  * as it was (an older run there stays whole) instead of a file that does

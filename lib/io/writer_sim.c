@@ -75,6 +75,19 @@ ms_status ms_writer_open(const char *path, const ms_sim *sim, unsigned fields, m
     return ms_writer_open_layout(path, &l, out);
 }
 
+ms_status ms_writer_existing(const char *path, const ms_sim *sim, char *name, size_t size,
+                             int *exists)
+{
+    ms_status st;
+    if ((st = ms_check_not_null("io", "exists", exists)) != MS_OK)
+        return st;
+    *exists = 0;
+    ms_writer_layout l;
+    if ((st = sim_layout(sim, 0, &l)) != MS_OK)
+        return st;
+    return ms_writer_existing_layout(path, &l, name, size, exists);
+}
+
 ms_status ms_writer_open_append(const char *path, const ms_sim *sim, unsigned fields,
                                 ms_writer **out)
 {

@@ -164,6 +164,7 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
          * when it falls: `modesplit check` then refuses what `run` would
          * refuse at a later frame */
         const float extent = (float)MS_MAX(sim->snx, sim->sny) * sim->sdx;
+        double cells = 0.0;
         for (int i = 0; i < sc->ndrops; ++i) {
             const float r = sc->drops[i].radius;
             if (!isfinite(r) || !(r > 0) || r > extent)
@@ -171,7 +172,14 @@ ms_status ms_sim_setup_effects(ms_sim *sim, const ms_scene *sc)
                                "sim: scene drop %d (at t = %g s) has radius %g m, outside (0, "
                                "%g] m (the wave grid's extent)",
                                i, (double)sc->drops[i].time, (double)r, (double)extent);
+            cells += ms_surface_drop_cells(sim->surface, r);
         }
+        /* their work in all is bounded, as the rain's a second is */
+        if (cells > MS_SURFACE_MAX_DROP_CELLS)
+            return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                           "sim: the scene's %d drops visit %.3g wave cells in all (each the "
+                           "square of its diameter); at most %.3g (fewer or smaller drops)",
+                           sc->ndrops, cells, MS_SURFACE_MAX_DROP_CELLS);
         for (int i = 0; i < sc->ndrops; ++i) {
             int k = i;
             while (k > 0 && sc->drops[sim->drop_order[k - 1]].time > sc->drops[i].time) {

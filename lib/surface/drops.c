@@ -13,6 +13,16 @@
  * no in-range rate over a large grid makes a frame endless. */
 #define MAX_RAIN_DROPS_PER_S 1e5
 
+double ms_surface_drop_cells(const ms_surface *s, float radius)
+{
+    const double rmin = MIN_RADIUS_CELLS * (double)s->desc.dx;
+    const double r = (double)radius < rmin ? rmin : (double)radius;
+    const double side = 2.0 * r / (double)s->desc.dx + 2.0; /* floor and ceil at both ends */
+    const double nx = side < (double)s->nx ? side : (double)s->nx;
+    const double ny = side < (double)s->ny ? side : (double)s->ny;
+    return nx * ny;
+}
+
 /* Add the bump to f^n and f^{n-1} alike (h, not v): a displacement at rest. Cells are
  * wrapped on a periodic grid and clipped otherwise; solid cells stay 0. */
 static void splat(ms_surface *s, float x, float y, float radius, float amplitude)
@@ -93,6 +103,15 @@ ms_status ms_surface_check_rain(const ms_surface *s, const ms_rain *rain)
                        "a second; at most %g (rate <= %g here)",
                        (double)rain->rate, area, rain->rate * area, MAX_RAIN_DROPS_PER_S,
                        MAX_RAIN_DROPS_PER_S / area);
+    /* and the cells they visit: drops of the grid's size at the rate cap
+     * would visit ~1e12 cells a second */
+    const double cells = (double)rain->rate * area * ms_surface_drop_cells(s, rain->radius);
+    if (cells > MS_SURFACE_MAX_DROP_CELLS)
+        return ms_fail(MS_ERR_INVALID_ARGUMENT,
+                       "surface: rain of %g drops a second of radius up to %g m visits %.3g wave "
+                       "cells a second; at most %.3g (fewer or smaller drops)",
+                       (double)rain->rate * area, (double)rain->radius, cells,
+                       MS_SURFACE_MAX_DROP_CELLS);
     return MS_OK;
 }
 

@@ -117,6 +117,15 @@ void ms_surface_rain(ms_surface *s, float dt);
  * drops a second) and ms_surface_add_disturber, for values a snapshot
  * brings back (snapshot.c). */
 ms_status ms_surface_check_rain(const ms_surface *s, const ms_rain *rain);
+/* Cells one drop of this radius visits (its square of side 2 radius, at
+ * least MIN_RADIUS_CELLS cells, clipped to the grid): a drop's work. */
+double ms_surface_drop_cells(const ms_surface *s, float radius);
+/* The scripted drops of a scene visit at most this many cells in all
+ * (2^28: about 3 s of one core at the ~11 ns a cell a splat was measured
+ * to take at 512^2), so no set of in-range drops makes a frame endless
+ * (4096 drops of a whole 512^2 grid each took about a minute for two
+ * frames). The rain's cells a second share it (ms_surface_check_rain). */
+#define MS_SURFACE_MAX_DROP_CELLS 268435456.0
 ms_status ms_surface_check_disturber(const ms_surface *s, const ms_disturber_desc *d);
 /* disturber.c */
 void ms_surface_disturbers_advance(ms_surface *s, float dt);

@@ -43,12 +43,12 @@ typedef struct run_opts {
     const char *scene;
     const char *out; /* NULL: default name */
     const char *png;
-    const char *resume; /* --resume RUN.h5 (resume.c) */
-    long frames;        /* -1: from the duration */
-    double duration;    /* s, < 0: the scene's */
-    int threads;        /* 0: the scene's */
-    int no_out, quiet, preview;
-    tool_sets sets; /* --set KEY=VALUE */
+    const char *resume;                /* --resume RUN.h5 (resume.c) */
+    long frames;                       /* -1: from the duration */
+    double duration;                   /* s, < 0: the scene's */
+    int threads;                       /* 0: the scene's */
+    int no_out, quiet, preview, force; /* force: replace an existing run file */
+    tool_sets sets;                    /* --set KEY=VALUE */
 } run_opts;
 
 static int parse_args(int argc, char **argv, run_opts *o)
@@ -110,6 +110,8 @@ static int parse_args(int argc, char **argv, run_opts *o)
                 return EXIT_USAGE;
         } else if (!strcmp(a, "--preview")) {
             o->preview = 1;
+        } else if (!strcmp(a, "--force")) {
+            o->force = 1;
         } else if (!strcmp(a, "--no-out")) {
             o->no_out = 1;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
@@ -126,7 +128,7 @@ static int parse_args(int argc, char **argv, run_opts *o)
     }
     if (!o->scene) {
         tool_error("run: which scene? usage: modesplit run SCENE.json [--frames N | --duration "
-                   "S] [--out RUN.h5] [--png DIR [--preview]] [--threads 1|2] [--quiet]");
+                   "S] [--out RUN.h5 [--force]] [--png DIR [--preview]] [--threads 1|2] [--quiet]");
         return EXIT_USAGE;
     }
     if (o->frames >= 0 && o->duration >= 0) {
@@ -135,6 +137,10 @@ static int parse_args(int argc, char **argv, run_opts *o)
     }
     if (o->resume && (o->out || o->no_out)) {
         tool_error("run: --resume RUN.h5 appends to RUN.h5: give no --out or --no-out with it");
+        return EXIT_USAGE;
+    }
+    if (o->resume && o->force) {
+        tool_error("run: --force replaces a run file, --resume appends to one: give one of them");
         return EXIT_USAGE;
     }
     if (o->out && o->no_out) {
@@ -214,6 +220,17 @@ static int run_open(run_state *r)
     }
     if (tool_check_frame_work(r->sc, r->sim, o->scene) != 0)
         return EXIT_USAGE;
+    if (!o->resume && !o->no_out) {
+        /* before the PNG folder: a refused run leaves nothing behind */
+        int rc = EXIT_RUNTIME;
+        r->out = o->out ? strdup(o->out) : default_out(o->scene);
+        if (!r->out)
+            tool_error("run: out of memory");
+        else
+            rc = tool_refuse_replace("run", r->out, r->sim, o->force);
+        if (rc != EXIT_OK)
+            return rc;
+    }
     /* The PNG directory first: a --png that cannot be used (a file, no
      * permission) must not leave an empty run file and sidecar behind. */
     if (o->png && png_begin(&r->png, o->png, r->sc, o->preview, o->quiet) != 0)
@@ -226,9 +243,8 @@ static int run_open(run_state *r)
         if (rc != EXIT_OK)
             return rc;
     } else if (!o->no_out) {
-        r->out = o->out ? strdup(o->out) : default_out(o->scene);
-        if (!r->out || ms_writer_open(r->out, r->sim, 0, &r->w) != MS_OK) {
-            tool_error("%s", r->out ? ms_last_error() : "out of memory");
+        if (ms_writer_open(r->out, r->sim, 0, &r->w) != MS_OK) {
+            tool_error("%s", ms_last_error());
             return EXIT_RUNTIME;
         }
     }

@@ -128,8 +128,8 @@ static void watch_x_window(SDL_Window *win)
 
 typedef struct view_opts {
     const char *scene, *record_dir, *record_input, *script, *out;
-    int w, h, threads, fast;
-    long frames; /* -1: until closed */
+    int w, h, threads, fast, force; /* force: --out may replace a run file */
+    long frames;                    /* -1: until closed */
 } view_opts;
 
 static int parse_size(const char *s, int *w, int *h)
@@ -201,6 +201,8 @@ static int parse_args(int argc, char **argv, view_opts *o)
             o->out = v;
         } else if (!strcmp(a, "--fast")) {
             o->fast = 1;
+        } else if (!strcmp(a, "--force")) {
+            o->force = 1;
         } else if (a[0] == '-' && a[1]) {
             tool_error("view: unknown option %s (see modesplit view --help)", a);
             return EXIT_USAGE;
@@ -214,7 +216,7 @@ static int parse_args(int argc, char **argv, view_opts *o)
     if (!o->scene) {
         tool_error("view: which scene? usage: modesplit view SCENE.json [--size WxH] [--threads "
                    "1|2] [--record DIR] [--record-input FILE] [--script FILE] [--frames N] "
-                   "[--fast] [--out RUN.h5]");
+                   "[--fast] [--out RUN.h5 [--force]]");
         return EXIT_USAGE;
     }
     return 0;
@@ -754,6 +756,10 @@ int cmd_view(int argc, char **argv)
         goto done_sim;
     }
     view_state_init(&vw.v, vw.sim, &rd, ms_scene_frame_dt(vw.sc));
+    /* an existing run is refused before anything is made */
+    if ((rc = tool_refuse_replace("view", vw.o.out, vw.sim, vw.o.force)) != EXIT_OK)
+        goto done_sim;
+    rc = EXIT_RUNTIME;
     if (vw.o.record_dir && mkdirs(vw.o.record_dir) != 0) {
         tool_error("view: %s: cannot make the directory: %s", vw.o.record_dir, strerror(errno));
         goto done_sim;

@@ -31,6 +31,8 @@ static const char usage_text[] =
     "                             with .h5, in the current directory); RUN.xmf\n"
     "                             (ParaView) and RUN.xdmf2 (legacy XDMF reader,\n"
     "                             VisIt) are written beside it\n"
+    "      --force                replace RUN.h5 (or its sidecars) if it exists; without\n"
+    "                             it an existing run is refused and kept\n"
     "      --no-out               write no HDF5 file\n"
     "      --resume RUN.h5        continue a killed or stopped run, appending to RUN.h5\n"
     "                             (same scene and build; the fields end as an unbroken\n"
@@ -68,6 +70,7 @@ static const char usage_text[] =
     "      --record-input FILE    log the mouse and keys with their frame numbers\n"
     "      --script FILE          replay such a log (the same frames, the same water)\n"
     "      --out RUN.h5           also write the session's frames as run does\n"
+    "      --force                replace an existing RUN.h5, as for run\n"
     "  render RUN.h5 [options]    draw a run file's frames again, without simulating\n"
     "      --png DIR              write DIR/frame_NNNNN.png (NNNNN = the frame's index)\n"
     "      --video FILE.mp4       pipe the frames to ffmpeg (when it is installed)\n"
@@ -203,6 +206,27 @@ int tool_refuse_same_file(const char *cmd, const char *option, const char *out, 
     tool_error("%s: %s %s is %s %s: an output never overwrites an input; choose another name", cmd,
                option, out, what, in);
     return -1;
+}
+
+int tool_refuse_replace(const char *cmd, const char *out, const ms_sim *sim, int force)
+{
+    char name[4096];
+    int exists = 0;
+    if (!out)
+        return EXIT_OK;
+    if (ms_writer_existing(out, sim, name, sizeof name, &exists) != MS_OK) {
+        tool_error("%s", ms_last_error()); /* "io: ...", as the writer's open says it */
+        return EXIT_RUNTIME;
+    }
+    if (!exists || force)
+        return EXIT_OK;
+    if (strcmp(name, out) != 0)
+        tool_error("%s: %s, the XDMF sidecar of %s, exists: pass --force to replace the run, or "
+                   "choose another --out",
+                   cmd, name, out);
+    else
+        tool_error("%s: %s exists: pass --force to replace it, or choose another --out", cmd, out);
+    return EXIT_USAGE;
 }
 
 /* Bytes of the well-formed UTF-8 sequence of 2 to 4 bytes at p, 0 when

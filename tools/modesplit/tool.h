@@ -41,6 +41,13 @@ void tool_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
  * and returns -1. NULL names are never the same. */
 int tool_refuse_same_file(const char *cmd, const char *option, const char *out, const char *what,
                           const char *in);
+/* A run is replaced only on purpose: 0 when `force` is set or neither
+ * `out` nor its XDMF sidecars exist (ms_writer_existing, which first gives
+ * the writer's own refusals: EXIT_RUNTIME, the sentence printed); else
+ * prints "CMD: OUT exists: pass --force to replace it, or choose another
+ * --out" (naming the sidecar when that is the one there) and returns
+ * EXIT_USAGE. */
+int tool_refuse_replace(const char *cmd, const char *out, const ms_sim *sim, int force);
 /* The usage text (modesplit --help) to f. */
 void tool_usage(FILE *f);
 
