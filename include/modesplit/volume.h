@@ -128,6 +128,21 @@ MS_API void ms_volume_destroy(ms_volume *v);
  * filling the part of the box [lo, hi] (m) that lies inside the domain, at
  * rest. Refused (nothing added) if the count would pass max_particles. */
 MS_API ms_status ms_volume_fill_box(ms_volume *v, const float lo[3], const float hi[3]);
+/* Brings the particles to a packing at rest, before the first step (the
+ * opt-in start of a scene's volume.settle). The cubic lattice fill_box
+ * makes is not one: it is unstable under the pressure that holds its own
+ * weight, even with every layer at its hydrostatic density (a lattice
+ * relaxed to that equilibrium, moved by 1e-7 m, still rearranges 1.5 s
+ * later), and it collapses into a disordered packing in the first seconds
+ * of a run, sloshing while it does. settle moves every particle by a
+ * seeded jitter of up to a tenth of desc.spacing along each axis (the
+ * lattice broken at once, the same bytes on every run), then takes
+ * `seconds` of sub-steps with the velocities damped after each,
+ * and leaves the particles at rest; the volume's clock and step counts do
+ * not move and no thread is started. seconds in [0,
+ * MS_VOLUME_SETTLE_MAX_S]; 0 does nothing. */
+#define MS_VOLUME_SETTLE_MAX_S 60.0f /* s */
+MS_API ms_status ms_volume_settle(ms_volume *v, float seconds);
 /* n particles, pos and vel 3n floats (x0 y0 z0 x1 ...; vel NULL = at rest).
  * Every position must lie inside the domain: a particle outside it is
  * refused (the sentence names it) and nothing is added. */

@@ -80,6 +80,7 @@ struct ms_scene {
     int has_volume;
     ms_volume_desc volume;
     int nfill;
+    float settle; /* s of ms_volume_settle after the fills; 0: the lattice as filled */
     float fill_lo[MS_SCENE_MAX_FILLS][3], fill_hi[MS_SCENE_MAX_FILLS][3]; /* m */
 
     /* surface: wave equation (absent: the SPH field alone is the surface) */

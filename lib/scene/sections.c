@@ -339,14 +339,14 @@ static ms_status get_int_field(ms_scene_ctx *c, json_t *o, const char *key, int 
  * refused under the other laws (they would do nothing there). */
 static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
 {
-    static const char *const more[] = {"fill", "field", NULL};
+    static const char *const more[] = {"fill", "field", "settle", NULL};
     static const char *const pressures[] = {"ideal_gas", "tait", "dfsph", NULL};
-    const char *keys[sizeof volume_keys / sizeof volume_keys[0] + 2];
+    const char *keys[sizeof volume_keys / sizeof volume_keys[0] + 3];
     size_t nk = 0;
     for (const char *const *k = volume_keys; *k; ++k)
         keys[nk++] = *k;
-    keys[nk++] = more[0];
-    keys[nk++] = more[1];
+    for (const char *const *k = more; *k; ++k)
+        keys[nk++] = *k;
     keys[nk] = NULL;
     ms_volume_desc *v = &sc->volume;
     *v = ms_volume_desc_default();
@@ -396,6 +396,8 @@ static ms_status read_volume(ms_scene_ctx *c, json_t *root, ms_scene *sc)
     sc->sim.field_nx = field[0];
     sc->sim.field_ny = field[1];
     MS_TRY(check_volume(c, o, v));
+    /* the range is the volume's (ms_volume_settle) */
+    MS_TRY(ms_scene_get_float(c, o, "settle", 0, 0, MS_VOLUME_SETTLE_MAX_S, 0, "s", &sc->settle));
     double count = 0;
     MS_TRY(read_fill(c, o, sc, &count));
     if (maxp != 0 && count > maxp) {

@@ -420,6 +420,13 @@ ms_status ms_sim_create_from_scene(const ms_scene *sc, int threads, ms_sim **out
             return st;
         }
     }
+    if (sc->nfill > 0) {
+        ms_status st = ms_volume_settle(sim->volume, sc->settle);
+        if (st != MS_OK) {
+            ms_sim_destroy(sim);
+            return st;
+        }
+    }
     *out = sim;
     return MS_OK;
 }

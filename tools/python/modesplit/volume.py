@@ -45,6 +45,12 @@ class Volume(Handle):
         check(L().ms_volume_fill_box(self._ptr, vec(lo, 3, "volume: lo"),
                                      vec(hi, 3, "volume: hi")))
 
+    def settle(self, seconds):
+        """Bring the fill to a packing at rest before the first step
+        (ms_volume_settle: a seeded jitter, then seconds of damped
+        sub-steps; the clock does not move)."""
+        check(L().ms_volume_settle(self._ptr, seconds))
+
     def add_particles(self, pos, vel=None):
         """pos, vel: (n, 3) float32, C-contiguous (vel None = at rest)."""
         ptr = self._ptr

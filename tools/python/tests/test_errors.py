@@ -57,6 +57,15 @@ def test_dfsph_volume_steps():
     assert v.count > 0
 
 
+def test_settle_leaves_the_fill_at_rest_and_refuses_a_bad_time():
+    v = ms.Volume(spacing=0.05, smoothing_length=0.1)
+    v.fill_box((0, 0, 0), (0.5, 0.5, 0.2))
+    v.settle(0.5)
+    assert v.kinetic_energy == 0.0
+    with pytest.raises(ms.InvalidArgument, match="settle -1 s"):
+        v.settle(-1)
+
+
 def test_state_error_after_a_failed_sim_step():
     sim = ms.Sim.from_desc(volume=dict(max_substeps=1))   # a 1/60 s frame needs more
     sim.volume.fill_box((0, 0, 0), (0.3, 0.3, 0.3))
