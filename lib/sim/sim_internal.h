@@ -143,6 +143,8 @@ struct ms_sim {
     float *flow_count;              /* fnx * fny: S's scratch for the flow */
     float *flow_comp;               /* fnx * fny: one component of the flow (surface.advect) */
     float *current[2];              /* snx * sny: the flow up-sampled, ux and uy (surface.advect) */
+    float *current_wall; /* snx * sny: up(H), then 1 on the waves' walls (surface.advect) */
+    float *current_line; /* max(snx, sny): a row's or column's distances to a wall */
     float *ppos[2][3], *pvel[2][3]; /* particle copies, SoA */
     int pcount[2], pcap[2];
     float *wave_snap[2]; /* fnx * fny: W averaged per SPH cell, from S (gain_vs > 0) */
