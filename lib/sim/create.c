@@ -439,6 +439,7 @@ void ms_sim_destroy(ms_sim *sim)
             ms_volume_remove_collider(sim->volume, sh->vol);
         ms_shape_destroy(sh->vol);
         ms_shape_destroy(sh->surf);
+        ms_shape_destroy(sh->spray);
     }
     ms_free(sim->shapes);
     ms_volume_destroy(sim->volume);

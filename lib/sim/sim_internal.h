@@ -54,8 +54,9 @@
 /* A shape of the scene: one instance for the volume thread (collider) and
  * one for the surface thread (footprint), so the threads never share one. */
 typedef struct ms_sim_shape {
-    ms_shape *vol;  /* NULL without a volume */
-    ms_shape *surf; /* NULL without a surface or without surface_mask */
+    ms_shape *vol;   /* NULL without a volume */
+    ms_shape *surf;  /* NULL without a surface or without surface_mask */
+    ms_shape *spray; /* the spray's twin (surface thread), NULL without spray */
     const ms_scene_shape *spec;
     int moving;  /* has a path, a velocity or was moved by the API */
     int api_set; /* pose given by ms_sim_move_* (overrides the path) */
