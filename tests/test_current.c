@@ -361,8 +361,8 @@ static void steps(ms_sim *sim, int n)
 
 /* A scene that does not name surface.advect, or sets it false, pays no
  * byte and no step and gives the same bytes; with it the sim holds exactly
- * the flow, its averaging, the current on the wave grid and the surface's
- * five planes, takes the same wave steps, and the dam break's flow moves
+ * the flow, its averaging, the current and its walls on the wave grid and
+ * the surface's five planes, takes the same wave steps, and the dam break's flow moves
  * the waves. */
 START_TEST(absent_advect_costs_nothing)
 {
@@ -390,8 +390,9 @@ START_TEST(absent_advect_costs_nothing)
     ck_assert_int_eq(st[0].surface_steps, st[1].surface_steps);
     ck_assert_int_eq(st[0].surface_steps, st[2].surface_steps);
     /* the flow (2 slots of vx, vy per field cell, a count per cell), its
-     * averaging (4 per cell) and ux, uy per wave cell */
-    ck_assert_uint_eq(st[2].effects_bytes, (9 * nf + 2 * ns) * sizeof(float));
+     * averaging (4 per cell), ux, uy and the walls per wave cell, and a
+     * row's distances to a wall */
+    ck_assert_uint_eq(st[2].effects_bytes, (9 * nf + 3 * ns + 64) * sizeof(float));
     const ms_surface *s = ms_sim_surface(sim[2]);
     ck_assert_uint_eq(st[2].surface_bytes - st[0].surface_bytes, 5 * s->plane * sizeof(float));
     for (int k = 0; k < 3; ++k) {
@@ -473,7 +474,7 @@ END_TEST
 START_TEST(river_same_bytes_threads_and_resume)
 {
     ms_scene *sc = NULL;
-    ck_assert_msg(ms_scene_load("tests/data/river.json", &sc) == MS_OK, "%s", ms_last_error());
+    ck_assert_msg(ms_scene_load("data/scenes/river.json", &sc) == MS_OK, "%s", ms_last_error());
     ms_sim *one = sim_of(sc, 1), *two = sim_of(sc, 2), *back = sim_of(sc, 1);
     steps(one, 20);
     steps(two, 20);
@@ -499,6 +500,100 @@ START_TEST(river_same_bytes_threads_and_resume)
 }
 END_TEST
 
+/* Waves carried by the river's current do not feed on its walls: after 5
+ * s of the river scene (the pump has the channel flowing, up to ~0.5 m/s
+ * near it), the current the sim hands the waves has no component through
+ * a wall (at a cell next to the island or the pool's edge, the normal
+ * component is under 5 % of the fastest cell: the ramp over h leaves 2.5
+ * %), it still runs along the walls (along the island's south side at
+ * least a quarter of the south reach's mean speed), and waves carried by
+ * that current held frozen on the surface alone, with the scene's
+ * obstacle and damping, lose energy: over 10 s their energy falls at
+ * least tenfold (eq. 2's damping alone: 0.8 per second of velocity). A
+ * current through the walls made them grow instead (14x in amplitude
+ * every 2 s at the island's west wall, measured on the current at 20 s). */
+START_TEST(river_current_stops_at_walls)
+{
+    ms_scene *sc = NULL;
+    ck_assert_msg(ms_scene_load("data/scenes/river.json", &sc) == MS_OK, "%s", ms_last_error());
+    ms_sim *sim = sim_of(sc, 1);
+    steps(sim, 300);
+    const ms_surface *s = ms_sim_surface(sim);
+    const int nx = s->nx, ny = s->ny;
+    const size_t n = (size_t)nx * ny;
+    float *u = malloc(n * sizeof *u), *v = malloc(n * sizeof *v);
+    unsigned char *solid = malloc(n);
+    ck_assert_ptr_nonnull(s->cur_u);
+    ck_assert_ptr_nonnull(s->solid);
+    for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x) {
+            const size_t i = ms_surface_at(s, x, y), o = (size_t)y * nx + x;
+            u[o] = s->cur_u[i];
+            v[o] = s->cur_v[i];
+            solid[o] = s->solid[i];
+        }
+    const float umax = s->cur_max;
+    ck_assert_msg(umax > 0.1f, "the pump drives only %g m/s", (double)umax);
+    double along = 0, reach = 0;
+    int n_along = 0, n_reach = 0;
+    for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x) {
+            const size_t o = (size_t)y * nx + x;
+            if (solid[o])
+                continue;
+            const int wx = x == 0 || x == nx - 1 || solid[o - 1] || solid[o + 1];
+            const int wy = y == 0 || y == ny - 1 || solid[o - nx] || solid[o + nx];
+            ck_assert_msg(!wx || fabsf(u[o]) < 0.05f * umax,
+                          "cell (%d, %d) beside a wall along x: u %g m/s (fastest %g)", x, y,
+                          (double)u[o], (double)umax);
+            ck_assert_msg(!wy || fabsf(v[o]) < 0.05f * umax,
+                          "cell (%d, %d) beside a wall along y: v %g m/s (fastest %g)", x, y,
+                          (double)v[o], (double)umax);
+            /* the south reach (y < 0.3 m) between x = 0.5 and 1.5 m */
+            const float px = (x + 0.5f) * s->desc.dx, py = (y + 0.5f) * s->desc.dx;
+            if (px > 0.5f && px < 1.5f && py < 0.3f) {
+                reach += fabsf(u[o]);
+                n_reach++;
+                if (!solid[o + nx] && solid[o + 2 * nx]) { /* the row below the island */
+                    along += fabsf(u[o]);
+                    n_along++;
+                }
+            }
+        }
+    ck_assert_int_gt(n_along, 0);
+    along /= n_along;
+    reach /= n_reach;
+    ck_assert_msg(along > 0.25 * reach, "along the island %g m/s, the reach's mean %g m/s", along,
+                  reach);
+    /* the frozen current on the surface alone */
+    ms_surface *lone = NULL;
+    ms_surface_desc d = ms_surface_get_desc(s);
+    ck_assert(ms_surface_create(&d, &lone) == MS_OK);
+    ck_assert(ms_surface_set_obstacle_mask(lone, solid) == MS_OK);
+    for (int k = 0; k < 20; ++k)
+        ck_assert(ms_surface_add_drop(lone, 0.1f + 0.09f * k, k % 2 ? 0.15f : 0.85f, 0.02f,
+                                      0.002f) == MS_OK);
+    ck_assert(ms_surface_set_current(lone, u, v) == MS_OK);
+    double e1 = 0;
+    for (int f = 1; f <= 600; ++f) {
+        ck_assert_msg(ms_surface_step(lone, 1.0f / 60) == MS_OK, "%s", ms_last_error());
+        if (f == 60)
+            e1 = ms_surface_energy(lone);
+    }
+    const double e10 = ms_surface_energy(lone);
+    printf("river at 5 s: fastest current %.3f m/s, along the island %.3f m/s (reach %.3f); "
+           "carried waves' energy %.3g at 1 s, %.3g at 10 s\n",
+           (double)umax, along, reach, e1, e10);
+    ck_assert_msg(e1 > 0 && e10 < 0.1 * e1, "carried waves' energy %g at 1 s, %g at 10 s", e1, e10);
+    ms_surface_destroy(lone);
+    free(u);
+    free(v);
+    free(solid);
+    ms_sim_destroy(sim);
+    ms_scene_destroy(sc);
+}
+END_TEST
+
 int main(void)
 {
     Suite *s = suite_create("current");
@@ -519,6 +614,7 @@ int main(void)
     tcase_add_test(sim, absent_advect_costs_nothing);
     tcase_add_test(sim, pool_at_rest_with_advect_stays_at_rest);
     tcase_add_test(sim, river_same_bytes_threads_and_resume);
+    tcase_add_test(sim, river_current_stops_at_walls);
     suite_add_tcase(s, sim);
     return ms_test_run(s);
 }

@@ -1273,8 +1273,17 @@ START_TEST(a_second_writer_of_a_run_file_is_refused)
 }
 END_TEST
 
+/* How often needle occurs in hay. */
+static int count_of(const char *hay, const char *needle)
+{
+    int n = 0;
+    for (const char *p = strstr(hay, needle); p; p = strstr(p + 1, needle))
+        ++n;
+    return n;
+}
+
 /* Spray and foam in the run file: each frame's droplets and cover as the
- * sim showed them, listed in run.xmf; the checkpoint holds them, so a sim
+ * sim showed them, listed in run.xmf and the legacy run.xdmf2; the checkpoint holds them, so a sim
  * restored from it throws the same spray as the one never stopped. */
 START_TEST(spray_is_written_read_back_and_restored)
 {
@@ -1350,6 +1359,37 @@ START_TEST(spray_is_written_read_back_and_restored)
     ck_assert_ptr_nonnull(xmf);
     ck_assert_ptr_nonnull(strstr(xmf, "<Grid Name=\"spray\""));
     ck_assert_ptr_nonnull(strstr(xmf, ":/foam|29 0 0:1 1 1:1 64 64:30 64 64"));
+    free(xmf);
+    /* and so does the legacy one: its grid files foam.xml (every frame) and
+     * spray.xml (the frames in which droplets fly), HyperSlabs of the same
+     * datasets */
+    int flying = 0, last = -1;
+    for (int i = 0; i < F; ++i)
+        if (count[i] > 0) {
+            flying++;
+            last = i;
+        }
+    ck_assert_int_gt(flying, 0);
+    xmf = slurp(tmp_path("s.xdmf2"), &len);
+    ck_assert_ptr_nonnull(xmf);
+    ck_assert_ptr_nonnull(strstr(xmf, "s.xdmf2.d/foam.xml"));
+    ck_assert_ptr_nonnull(strstr(xmf, "s.xdmf2.d/spray.xml"));
+    free(xmf);
+    xmf = slurp(tmp_path("s.xdmf2.d/foam.xml"), &len);
+    ck_assert_ptr_nonnull(xmf);
+    ck_assert_int_eq(count_of(xmf, "<Grid Name=\"foam\" GridType=\"Uniform\">"), F);
+    ck_assert_ptr_nonnull(strstr(xmf, ">29 0 0 1 1 1 1 64 64</DataItem>"));
+    ck_assert_ptr_nonnull(strstr(xmf, "Dimensions=\"30 64 64\" NumberType=\"Float\" "
+                                      "Precision=\"4\" Format=\"HDF\">s.h5:/foam<"));
+    free(xmf);
+    xmf = slurp(tmp_path("s.xdmf2.d/spray.xml"), &len);
+    ck_assert_ptr_nonnull(xmf);
+    ck_assert_int_eq(count_of(xmf, "<Grid Name=\"spray\" GridType=\"Uniform\">"), flying);
+    char want[160];
+    snprintf(want, sizeof want, ">%d 0 0 1 1 1 1 %d 3</DataItem>", last, count[last]);
+    ck_assert_msg(strstr(xmf, want), "no %s", want);
+    snprintf(want, sizeof want, "Dimensions=\"%d 300 3\" NumberType=\"Float\"", last + 1);
+    ck_assert_msg(strstr(xmf, want), "no %s", want);
     free(xmf);
     /* a file without spray has none */
     ms_sim_destroy(b);

@@ -1414,6 +1414,53 @@ START_TEST(spray_flies_the_exact_parabola_and_lands)
 }
 END_TEST
 
+/* A droplet does not fly through an obstacle: thrown at a box (the box
+ * plugin's signed distance, as the SPH particles collide with it), it
+ * stops on the box's face, loses its speed into it, and runs down it,
+ * where without the box it would be past it. */
+START_TEST(spray_stops_at_obstacles)
+{
+    float pos[3] = {0.1f, 0.5f, 1.0f}, vel[3] = {3.0f, 0.0f, 0.0f};
+    float foam[4 * 4] = {0}, tmp[4 * 4], h[2] = {0.5f, 0.5f};
+    ms_shape *box = NULL;
+    ck_assert_msg(ms_shape_create("box", "{\"size\": [0.2, 0.2, 1.0]}", &box) == MS_OK, "%s",
+                  ms_last_error());
+    ck_assert(ms_shape_set_pose(box, (float[3]){0.5f, 0.5f, 1.0f}, (float[3]){0, 0, 0}) == MS_OK);
+    ms_sim_shape sh = {.spray = box};
+    ms_sim sim = {0};
+    sim.domain_max[0] = sim.domain_max[1] = 1;
+    sim.domain_max[2] = 2;
+    sim.fnx = sim.fny = 1;
+    sim.hfield[0] = h; /* still water 0.5 m deep */
+    sim.shapes = &sh;
+    sim.nshapes = 1;
+    sim.spray = (ms_sim_spray_state){.cap = 1,
+                                     .n = 1,
+                                     .pos = pos,
+                                     .vel = vel,
+                                     .g = {0, 0, -9.81f},
+                                     .gnx = 4,
+                                     .gny = 4,
+                                     .gdx = 0.25f,
+                                     .gdy = 0.25f,
+                                     .foam = foam,
+                                     .foam_tmp = tmp};
+    /* free flight would take it to x = 0.7 m in 0.2 s, 0.2 m down */
+    for (int f = 0; f < 12; ++f) {
+        ms_sim_spray_fly(&sim, 0, 1.0f / 60, 0.0f);
+        ck_assert_int_eq(sim.spray.n, 1);
+        ck_assert_msg(ms_shape_distance(box, pos, NULL) >= -1e-4f,
+                      "frame %d: the droplet at (%g, %g, %g) is inside the box", f, pos[0], pos[1],
+                      pos[2]);
+    }
+    ck_assert_msg(pos[0] <= 0.4f + 1e-4f && pos[0] > 0.39f, "x %g m: not on the box's face",
+                  pos[0]);
+    ck_assert_msg(fabsf(vel[0]) < 1e-3f && vel[2] < -1.0f, "velocity (%g, %g, %g) m/s", vel[0],
+                  vel[1], vel[2]);
+    ms_shape_destroy(box);
+}
+END_TEST
+
 /* Foam fades as exp(-t / lifetime): after one lifetime 1/e of it is left,
  * whatever the frame rate. */
 START_TEST(foam_fades_with_its_lifetime)
@@ -1571,6 +1618,7 @@ static Suite *sim_suite(void)
     tcase_add_test(tc, failed_step_leaves_the_sim_refusing);
     tcase_add_test(tc, particle_arrays_are_one_block);
     tcase_add_test(tc, spray_flies_the_exact_parabola_and_lands);
+    tcase_add_test(tc, spray_stops_at_obstacles);
     tcase_add_test(tc, foam_fades_with_its_lifetime);
     tcase_add_test(tc, spray_settings_are_refused_out_of_range);
     tcase_add_test(tc, spray_costs_its_buffers);

@@ -990,6 +990,7 @@ ms_status ms_writer_write(ms_writer *w, const ms_writer_data *d)
     int particles = (w->layout.fields & MS_FIELD_PARTICLES) ? d->particles : 0;
     /* 0: run.xmf's next state, renamed in after the commit (xdmf.c) */
     ms_xdmf_set_spray(w->xdmf, w->layout.spray > 0 ? d->spray : 0);
+    ms_xdmf_set_spray(w->xdmf2, w->layout.spray > 0 ? d->spray : 0);
     if ((st = ms_xdmf_prepare(w->xdmf, k, d->time, particles)) != MS_OK) {
         ms_h5_loud(&q);
         return st;
@@ -1469,6 +1470,7 @@ static ms_status relist_sidecars(ms_writer *w)
                                   w->path);
         }
         ms_xdmf_set_spray(w->xdmf, ns);
+        ms_xdmf_set_spray(w->xdmf2, ns);
         st = ms_xdmf_frame(w->xdmf, j, t, n);
         if (st == MS_OK)
             st = ms_xdmf_frame(w->xdmf2, j, t, n);

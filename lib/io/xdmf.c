@@ -18,8 +18,9 @@
  * when the frame has particles, a poly-vertex grid of them with `velocity`
  * (3-vector) and `id`, one vertex cell per particle, and with spray a
  * grid "foam" (the cover, point data on its grid) and, when droplets fly,
- * a poly-vertex grid "spray" (run.xmf only; the legacy sidecar lists
- * neither). The grids are named
+ * a poly-vertex grid "spray" (the legacy sidecar: the grid files
+ * foam.xml and spray.xml, spray.xml listing the frames in which droplets
+ * fly). The grids are named
  * after what they hold, but ParaView 5.11's Xdmf3ReaderS (what File > Open
  * picks) flattens every file into one unnamed multipiece, whatever its
  * nesting: named blocks come from the legacy sidecar. The legacy reader
@@ -72,11 +73,11 @@ struct ms_xdmf {
     ms_writer_layout layout;
     int group_of[MS_IO_NFIELDS]; /* first field slot with the same grid */
     /* legacy: one XIncluded file per grid (field slots, then particles) */
-    char *dir;      /* run.xdmf2.d */
-    char *dir_name; /* its last component, for the hrefs */
-    int gfd[MS_IO_NFIELDS + 1];
-    off_t gtail[MS_IO_NFIELDS + 1];
-    long gcount[MS_IO_NFIELDS + 1];
+    char *dir;                  /* run.xdmf2.d */
+    char *dir_name;             /* its last component, for the hrefs */
+    int gfd[MS_IO_NFIELDS + 3]; /* field slots, particles, foam, spray */
+    off_t gtail[MS_IO_NFIELDS + 3];
+    long gcount[MS_IO_NFIELDS + 3];
     /* run.xmf's next state, made by ms_xdmf_prepare: a copy under
      * pending_path, renamed over path by ms_xdmf_frame */
     int pending_fd;     /* -1: none */
@@ -86,6 +87,9 @@ struct ms_xdmf {
 };
 
 #define PARTICLE_GROUP MS_IO_NFIELDS
+#define FOAM_GROUP (MS_IO_NFIELDS + 1)
+#define SPRAY_GROUP (MS_IO_NFIELDS + 2)
+#define NGROUPS (MS_IO_NFIELDS + 3)
 static const char GROUP_TAIL[] = "</Grid>\n";
 
 static ms_status write_legacy_main(const ms_xdmf *x);
@@ -220,7 +224,7 @@ ms_status ms_xdmf_open(const char *xmf_path, const char *h5_name, const ms_write
         return ms_fail(MS_ERR_OUT_OF_MEMORY, "io: out of memory for the XDMF sidecar");
     x->fd = -1;
     x->pending_fd = -1;
-    for (int i = 0; i <= MS_IO_NFIELDS; ++i)
+    for (int i = 0; i < NGROUPS; ++i)
         x->gfd[i] = -1;
     x->layout = *l;
     x->legacy = legacy;
@@ -435,15 +439,74 @@ static void spray_xml(sbuf *b, const ms_xdmf *x, long frame, int n)
 
 static const char *group_file(int g)
 {
-    return g == PARTICLE_GROUP ? "particles" : ms_io_field_names[g];
+    return g == PARTICLE_GROUP ? "particles"
+           : g == FOAM_GROUP   ? "foam"
+           : g == SPRAY_GROUP  ? "spray"
+                               : ms_io_field_names[g];
 }
 
 static void group_name(sbuf *b, const ms_xdmf *x, int g)
 {
-    if (g == PARTICLE_GROUP)
-        sb_printf(b, "particles");
+    if (g >= PARTICLE_GROUP)
+        sb_printf(b, "%s", group_file(g));
     else
         grid_name(b, x, g);
+}
+
+/* The legacy sidecar's foam cover and droplets of a frame: HyperSlab
+ * items of /foam [frame][y][x], /spray [frame][budget][3] and /spray_id
+ * [budget], the selections run.xmf makes with Xdmf3's suffix. */
+static void legacy_foam_xml(sbuf *b, const ms_xdmf *x, long frame, const char *time_xml)
+{
+    const ms_grid *g = &x->layout.foam;
+    double ox = (double)g->origin[0] + 0.5 * g->dx, oy = (double)g->origin[1] + 0.5 * g->dy;
+    sb_printf(b,
+              "    <Grid Name=\"foam\" GridType=\"Uniform\">\n%s"
+              "     <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"1 %d %d\"/>\n"
+              "     <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+              "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+              "Format=\"XML\">0 %.17g %.17g</DataItem>\n"
+              "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+              "Format=\"XML\">1 %.9g %.9g</DataItem>\n"
+              "     </Geometry>\n"
+              "     <Attribute Name=\"foam\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+              "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d %d\" "
+              "Type=\"HyperSlab\">\n"
+              "       <DataItem Dimensions=\"3 3\" Format=\"XML\">%ld 0 0 1 1 1 1 %d %d"
+              "</DataItem>\n"
+              "       <DataItem Dimensions=\"%ld %d %d\" NumberType=\"Float\" "
+              "Precision=\"4\" Format=\"HDF\">%s:/foam</DataItem>\n"
+              "      </DataItem>\n"
+              "     </Attribute>\n"
+              "    </Grid>\n",
+              time_xml, g->ny, g->nx, oy, ox, (double)g->dy, (double)g->dx, g->ny, g->nx, frame,
+              g->ny, g->nx, frame + 1, g->ny, g->nx, x->h5);
+}
+
+static void legacy_spray_xml(sbuf *b, const ms_xdmf *x, long frame, int n, const char *time_xml)
+{
+    const int budget = x->layout.spray;
+    sb_printf(b,
+              "    <Grid Name=\"spray\" GridType=\"Uniform\">\n%s"
+              "     <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"%d\" "
+              "NodesPerElement=\"1\">\n"
+              "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d\" Type=\"HyperSlab\">\n"
+              "       <DataItem Dimensions=\"3 1\" Format=\"XML\">0 1 %d</DataItem>\n"
+              "       <DataItem Dimensions=\"%d\" NumberType=\"Int\" Precision=\"4\" "
+              "Format=\"HDF\">%s:/spray_id</DataItem>\n"
+              "      </DataItem>\n"
+              "     </Topology>\n"
+              "     <Geometry GeometryType=\"XYZ\">\n"
+              "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d 3\" "
+              "Type=\"HyperSlab\">\n"
+              "       <DataItem Dimensions=\"3 3\" Format=\"XML\">%ld 0 0 1 1 1 1 %d 3"
+              "</DataItem>\n"
+              "       <DataItem Dimensions=\"%ld %d 3\" NumberType=\"Float\" "
+              "Precision=\"4\" Format=\"HDF\">%s:/spray</DataItem>\n"
+              "      </DataItem>\n"
+              "     </Geometry>\n"
+              "    </Grid>\n",
+              time_xml, n, n, n, budget, x->h5, n, frame, n, frame + 1, budget, x->h5);
 }
 
 /* The main file, listing the grids that hold a frame: written to a
@@ -452,7 +515,7 @@ static ms_status write_legacy_main(const ms_xdmf *x)
 {
     sbuf b = {0};
     int any = 0;
-    for (int g = 0; g <= MS_IO_NFIELDS; ++g)
+    for (int g = 0; g < NGROUPS; ++g)
         any |= x->gcount[g] > 0;
     sb_printf(&b,
               "<?xml version=\"1.0\" ?>\n"
@@ -462,7 +525,7 @@ static ms_status write_legacy_main(const ms_xdmf *x)
               " <Domain>\n",
               ms_version(), x->h5);
     sb_printf(&b, "  <Grid Name=\"run\" GridType=\"Collection\" CollectionType=\"Spatial\">\n");
-    for (int g = 0; g <= MS_IO_NFIELDS; ++g)
+    for (int g = 0; g < NGROUPS; ++g)
         if (x->gcount[g] > 0)
             sb_printf(&b, "   <xi:include href=\"%s/%s.xml\"/>\n", x->dir_name, group_file(g));
     if (!any) {
@@ -552,15 +615,21 @@ static ms_status legacy_frame(ms_xdmf *x, long frame, double t, int particles)
     snprintf(time_xml, sizeof time_xml, "     <Time Value=\"%.17g\"/>\n", t);
     int grew = 0;
     ms_status st = MS_OK;
-    for (int g = 0; g <= MS_IO_NFIELDS && st == MS_OK; ++g) {
+    for (int g = 0; g < NGROUPS && st == MS_OK; ++g) {
         int field = g < MS_IO_NFIELDS && (x->layout.fields & (1u << g)) && x->group_of[g] == g;
-        if (!field && !(g == PARTICLE_GROUP && particles > 0))
+        if (!field && !(g == PARTICLE_GROUP && particles > 0) &&
+            !(g == FOAM_GROUP && x->layout.spray > 0) &&
+            !(g == SPRAY_GROUP && x->layout.spray > 0 && x->spray > 0))
             continue;
         sbuf e = {0};
         if (field)
             field_grid_xml(&e, x, g, frame, time_xml);
-        else
+        else if (g == PARTICLE_GROUP)
             particles_xml(&e, x, frame, particles, time_xml);
+        else if (g == FOAM_GROUP)
+            legacy_foam_xml(&e, x, frame, time_xml);
+        else
+            legacy_spray_xml(&e, x, frame, x->spray, time_xml);
         grew |= x->gcount[g] == 0;
         st = legacy_append(x, g, &e);
         ms_free(e.p);
@@ -695,7 +764,7 @@ ms_status ms_xdmf_close(ms_xdmf *x)
     if (x->fd >= 0 && close(x->fd) != 0)
         st = ms_fail(MS_ERR_IO, "io: closing the XDMF sidecar %s failed: %s", x->path,
                      strerror(errno));
-    for (int i = 0; i <= MS_IO_NFIELDS; ++i)
+    for (int i = 0; i < NGROUPS; ++i)
         if (x->gfd[i] >= 0 && close(x->gfd[i]) != 0 && st == MS_OK)
             st = ms_fail(MS_ERR_IO, "io: closing a grid file of %s failed: %s", x->path,
                          strerror(errno));

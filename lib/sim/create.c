@@ -172,7 +172,11 @@ static ms_status alloc_buffers(ms_sim *sim, int floaters)
         sim->flow_comp = sim_alloc(&sim->own_effects_bytes, 4 * nf, sizeof(float));
         for (int k = 0; k < 2; ++k)
             sim->current[k] = sim_alloc(&sim->own_effects_bytes, ns, sizeof(float));
-        if (!sim->flow_comp || !sim->current[0] || !sim->current[1])
+        sim->current_wall = sim_alloc(&sim->own_effects_bytes, ns, sizeof(float));
+        sim->current_line =
+            sim_alloc(&sim->own_effects_bytes, (size_t)MS_MAX(sim->snx, sim->sny), sizeof(float));
+        if (!sim->flow_comp || !sim->current[0] || !sim->current[1] || !sim->current_wall ||
+            !sim->current_line)
             return oom("the current that carries the waves");
     }
     if (sim->surface) {
@@ -442,6 +446,7 @@ void ms_sim_destroy(ms_sim *sim)
             ms_volume_remove_collider(sim->volume, sh->vol);
         ms_shape_destroy(sh->vol);
         ms_shape_destroy(sh->surf);
+        ms_shape_destroy(sh->spray);
     }
     ms_free(sim->shapes);
     ms_volume_destroy(sim->volume);
@@ -460,6 +465,8 @@ void ms_sim_destroy(ms_sim *sim)
     ms_free(sim->flow_comp);
     ms_free(sim->current[0]);
     ms_free(sim->current[1]);
+    ms_free(sim->current_wall);
+    ms_free(sim->current_line);
     ms_extract_work_free(&sim->work_v);
     ms_extract_work_free(&sim->work_s);
     ms_free(sim->hprev);

@@ -54,8 +54,9 @@
 /* A shape of the scene: one instance for the volume thread (collider) and
  * one for the surface thread (footprint), so the threads never share one. */
 typedef struct ms_sim_shape {
-    ms_shape *vol;  /* NULL without a volume */
-    ms_shape *surf; /* NULL without a surface or without surface_mask */
+    ms_shape *vol;   /* NULL without a volume */
+    ms_shape *surf;  /* NULL without a surface or without surface_mask */
+    ms_shape *spray; /* the spray's twin (surface thread), NULL without spray */
     const ms_scene_shape *spec;
     int moving;  /* has a path, a velocity or was moved by the API */
     int api_set; /* pose given by ms_sim_move_* (overrides the path) */
@@ -143,6 +144,8 @@ struct ms_sim {
     float *flow_count;              /* fnx * fny: S's scratch for the flow */
     float *flow_comp;               /* fnx * fny: one component of the flow (surface.advect) */
     float *current[2];              /* snx * sny: the flow up-sampled, ux and uy (surface.advect) */
+    float *current_wall; /* snx * sny: up(H), then 1 on the waves' walls (surface.advect) */
+    float *current_line; /* max(snx, sny): a row's or column's distances to a wall */
     float *ppos[2][3], *pvel[2][3]; /* particle copies, SoA */
     int pcount[2], pcap[2];
     float *wave_snap[2]; /* fnx * fny: W averaged per SPH cell, from S (gain_vs > 0) */

@@ -32,7 +32,13 @@
  * of at most 1/240 s only to find where it crosses the surface. It lands
  * when it falls through the surface of frame m (the combined field, or
  * the SPH field without waves), and leaves when it leaves the domain's
- * x-y extent or falls below its floor.
+ * x-y extent or falls below its floor. It does not pass through the
+ * obstacles and the container: after each sub-step, where a shape's
+ * signed distance (the plugin's, as the SPH particles' collisions use
+ * it) is negative, the droplet is put back on the shape's surface along
+ * its normal and loses its velocity into the shape (it runs down a wall,
+ * as the particles do). The shapes are the spray's own copies, placed at
+ * t_m on the surface thread.
  *
  * Foam: a cover in [0, 1] on the wave grid (the SPH field's grid without
  * waves). Each landing and each emission (the surface breaking) adds the
@@ -79,6 +85,14 @@ ms_status ms_sim_spray_setup(ms_sim *sim, const ms_scene *sc)
     ms_volume_desc vd = ms_volume_get_desc(sim->volume);
     memcpy(s->g, vd.gravity, sizeof s->g);
     ms_rng_seed(&s->rng, sc->seed ^ 0x7370726179ull); /* "spray" */
+    for (int i = 0; i < sim->nshapes; ++i) {
+        ms_sim_shape *sh = &sim->shapes[i];
+        ms_status st = ms_shape_create(sh->spec->kind, sh->spec->params_json, &sh->spray);
+        if (st == MS_OK)
+            st = ms_sim_shape_place(sh, sh->spray, 0.0);
+        if (st != MS_OK)
+            return st;
+    }
     return MS_OK;
 }
 
@@ -159,6 +173,19 @@ void ms_sim_spray_fly(ms_sim *sim, int slot, float dt, float foam)
             for (int a = 0; a < 3; ++a) {
                 p[a] += v[a] * h + 0.5f * s->g[a] * h * h;
                 v[a] += s->g[a] * h;
+            }
+            for (int o = 0; o < sim->nshapes; ++o) {
+                const ms_shape *tw = sim->shapes[o].spray;
+                float nrm[3];
+                const float d = tw ? ms_shape_distance(tw, p, nrm) : 1.0f; /* m */
+                if (!(d < 0.0f))
+                    continue;
+                const float vn = v[0] * nrm[0] + v[1] * nrm[1] + v[2] * nrm[2];
+                for (int a = 0; a < 3; ++a) {
+                    p[a] -= d * nrm[a];
+                    if (vn < 0.0f)
+                        v[a] -= vn * nrm[a];
+                }
             }
             if (p[0] < lo[0] || p[0] > hi[0] || p[1] < lo[1] || p[1] > hi[1] || p[2] < lo[2])
                 gone = 1;
@@ -335,6 +362,11 @@ void ms_sim_spray_frame(ms_sim *sim, int slot, float dt)
         return;
     double c0 = ms_now();
     const ms_scene *sc = sim->scene;
+    for (int i = 0; i < sim->nshapes; ++i) { /* the shapes at t_m */
+        ms_sim_shape *sh = &sim->shapes[i];
+        if (sh->spray && ms_sim_shape_dynamic(sh))
+            ms_sim_shape_place(sh, sh->spray, sim->t_fields + dt);
+    }
     ms_sim_spray_fly(sim, slot, dt, sc->foam_deposit);
     ms_sim_foam_step(sim, sim->flow[slot], dt, sc->foam_lifetime);
     emit(sim, slot, dt);

@@ -5,7 +5,7 @@
  *  - a surface alone at fig10's 200^2 and fig1's 400^2 grid (c = 0.2 m/s
  *    over 1 m, 1/60 s frames): ms a frame without a current, and with a
  *    sheared current set every frame, as the sim sets it;
- *  - the river scene (tests/data/river.json) as shipped and with
+ *  - the river scene (data/scenes/river.json) as shipped and with
  *    surface.advect=false: ms a frame of the whole sim.
  *
  * Writes <csv-dir>/current.csv.
@@ -151,7 +151,7 @@ int main(int argc, char **argv)
     int rc = surface_part(csv, machine, commit, quick);
     if (rc == 0)
         rc = river_part(csv, machine, commit, quick,
-                        bench_arg_value(argc, argv, "--data", "tests/data"));
+                        bench_arg_value(argc, argv, "--data", "data/scenes"));
     fclose(csv);
     return rc;
 }
