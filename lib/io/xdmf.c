@@ -310,13 +310,11 @@ static void grid_name(sbuf *b, const ms_xdmf *x, int slot)
         }
 }
 
-static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame, const char *time_xml)
+/* A 2D grid's opening after its name (the caller prints `<Grid Name="`
+ * and the name): the time, and its points at the cell centres. */
+static void grid2d_open(sbuf *b, const ms_grid *g, const char *time_xml)
 {
-    const ms_grid *g = &x->layout.grid[slot];
-    /* points at the cell centres */
     double ox = (double)g->origin[0] + 0.5 * g->dx, oy = (double)g->origin[1] + 0.5 * g->dy;
-    sb_printf(b, "    <Grid Name=\"");
-    grid_name(b, x, slot);
     sb_printf(b,
               "\" GridType=\"Uniform\">\n%s"
               "     <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"1 %d %d\"/>\n"
@@ -327,31 +325,57 @@ static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame, cons
               "Format=\"XML\">1 %.9g %.9g</DataItem>\n"
               "     </Geometry>\n",
               time_xml, g->ny, g->nx, oy, ox, (double)g->dy, (double)g->dx);
+}
+
+/* The attribute NAME of a 2D grid: frame's plane of the [frame][y][x]
+ * dataset DSET, as a HyperSlab item (legacy) or with Xdmf3's
+ * path|start:stride:count:dataspace suffix (the dataset holds >= frame+1). */
+static void frame_attribute(sbuf *b, const ms_xdmf *x, const ms_grid *g, const char *name,
+                            const char *dset, long frame)
+{
+    sb_printf(b, "     <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n", name);
+    if (x->legacy)
+        sb_printf(b,
+                  "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d %d\" "
+                  "Type=\"HyperSlab\">\n"
+                  "       <DataItem Dimensions=\"3 3\" Format=\"XML\">%ld 0 0 1 1 1 1 %d %d"
+                  "</DataItem>\n"
+                  "       <DataItem Dimensions=\"%ld %d %d\" NumberType=\"Float\" "
+                  "Precision=\"4\" Format=\"HDF\">%s:%s</DataItem>\n"
+                  "      </DataItem>\n",
+                  g->ny, g->nx, frame, g->ny, g->nx, frame + 1, g->ny, g->nx, x->h5, dset);
+    else
+        sb_printf(b,
+                  "      <DataItem Dimensions=\"1 %d %d\" NumberType=\"Float\" "
+                  "Precision=\"4\" Format=\"HDF\">%s:%s|%ld 0 0:1 1 1:1 %d %d:"
+                  "%ld %d %d</DataItem>\n",
+                  g->ny, g->nx, x->h5, dset, frame, g->ny, g->nx, frame + 1, g->ny, g->nx);
+    sb_printf(b, "     </Attribute>\n");
+}
+
+static void field_grid_xml(sbuf *b, const ms_xdmf *x, int slot, long frame, const char *time_xml)
+{
+    const ms_grid *g = &x->layout.grid[slot];
+    sb_printf(b, "    <Grid Name=\"");
+    grid_name(b, x, slot);
+    grid2d_open(b, g, time_xml);
     for (int i = 0; i < MS_IO_NFIELDS && frame >= 0; ++i) {
         if (!(x->layout.fields & (1u << i)) || x->group_of[i] != slot)
             continue;
-        sb_printf(b, "     <Attribute Name=\"%s\" AttributeType=\"Scalar\" Center=\"Node\">\n",
-                  ms_io_field_names[i]);
-        if (x->legacy)
-            sb_printf(b,
-                      "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d %d\" "
-                      "Type=\"HyperSlab\">\n"
-                      "       <DataItem Dimensions=\"3 3\" Format=\"XML\">%ld 0 0 1 1 1 1 %d %d"
-                      "</DataItem>\n"
-                      "       <DataItem Dimensions=\"%ld %d %d\" NumberType=\"Float\" "
-                      "Precision=\"4\" Format=\"HDF\">%s:/fields/%s</DataItem>\n"
-                      "      </DataItem>\n",
-                      g->ny, g->nx, frame, g->ny, g->nx, frame + 1, g->ny, g->nx, x->h5,
-                      ms_io_field_names[i]);
-        else /* Xdmf3: path|start:stride:count:dataspace (the dataset holds >= frame+1) */
-            sb_printf(b,
-                      "      <DataItem Dimensions=\"1 %d %d\" NumberType=\"Float\" "
-                      "Precision=\"4\" Format=\"HDF\">%s:/fields/%s|%ld 0 0:1 1 1:1 %d %d:"
-                      "%ld %d %d</DataItem>\n",
-                      g->ny, g->nx, x->h5, ms_io_field_names[i], frame, g->ny, g->nx, frame + 1,
-                      g->ny, g->nx);
-        sb_printf(b, "     </Attribute>\n");
+        char dset[64];
+        snprintf(dset, sizeof dset, "/fields/%s", ms_io_field_names[i]);
+        frame_attribute(b, x, g, ms_io_field_names[i], dset, frame);
     }
+    sb_printf(b, "    </Grid>\n");
+}
+
+/* The foam cover of a frame as point data on its grid, as a height field
+ * is (both files). */
+static void foam_xml(sbuf *b, const ms_xdmf *x, long frame, const char *time_xml)
+{
+    sb_printf(b, "    <Grid Name=\"foam");
+    grid2d_open(b, &x->layout.foam, time_xml);
+    frame_attribute(b, x, &x->layout.foam, "foam", "/foam", frame);
     sb_printf(b, "    </Grid>\n");
 }
 
@@ -393,31 +417,13 @@ void ms_xdmf_set_spray(ms_xdmf *x, int n)
         x->spray = n;
 }
 
-/* The spray of a frame (run.xmf only): the first n rows of /spray's
- * frame as vertex cells (connectivity: the first n of /spray_id, which
- * holds 0 .. budget-1), and the foam cover as point data on its grid, as
- * a height field is. */
+/* The spray of a frame (run.xmf only): the foam cover, and the first n
+ * rows of /spray's frame as vertex cells (connectivity: the first n of
+ * /spray_id, which holds 0 .. budget-1). */
 static void spray_xml(sbuf *b, const ms_xdmf *x, long frame, int n)
 {
-    const ms_grid *g = &x->layout.foam;
     const int budget = x->layout.spray;
-    double ox = (double)g->origin[0] + 0.5 * g->dx, oy = (double)g->origin[1] + 0.5 * g->dy;
-    sb_printf(b,
-              "    <Grid Name=\"foam\" GridType=\"Uniform\">\n"
-              "     <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"1 %d %d\"/>\n"
-              "     <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-              "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
-              "Format=\"XML\">0 %.17g %.17g</DataItem>\n"
-              "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
-              "Format=\"XML\">1 %.9g %.9g</DataItem>\n"
-              "     </Geometry>\n"
-              "     <Attribute Name=\"foam\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-              "      <DataItem Dimensions=\"1 %d %d\" NumberType=\"Float\" "
-              "Precision=\"4\" Format=\"HDF\">%s:/foam|%ld 0 0:1 1 1:1 %d %d:%ld %d %d</DataItem>\n"
-              "     </Attribute>\n"
-              "    </Grid>\n",
-              g->ny, g->nx, oy, ox, (double)g->dy, (double)g->dx, g->ny, g->nx, x->h5, frame, g->ny,
-              g->nx, frame + 1, g->ny, g->nx);
+    foam_xml(b, x, frame, "");
     if (n <= 0)
         return;
     sb_printf(b,
@@ -453,36 +459,9 @@ static void group_name(sbuf *b, const ms_xdmf *x, int g)
         grid_name(b, x, g);
 }
 
-/* The legacy sidecar's foam cover and droplets of a frame: HyperSlab
- * items of /foam [frame][y][x], /spray [frame][budget][3] and /spray_id
- * [budget], the selections run.xmf makes with Xdmf3's suffix. */
-static void legacy_foam_xml(sbuf *b, const ms_xdmf *x, long frame, const char *time_xml)
-{
-    const ms_grid *g = &x->layout.foam;
-    double ox = (double)g->origin[0] + 0.5 * g->dx, oy = (double)g->origin[1] + 0.5 * g->dy;
-    sb_printf(b,
-              "    <Grid Name=\"foam\" GridType=\"Uniform\">\n%s"
-              "     <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"1 %d %d\"/>\n"
-              "     <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-              "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
-              "Format=\"XML\">0 %.17g %.17g</DataItem>\n"
-              "      <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
-              "Format=\"XML\">1 %.9g %.9g</DataItem>\n"
-              "     </Geometry>\n"
-              "     <Attribute Name=\"foam\" AttributeType=\"Scalar\" Center=\"Node\">\n"
-              "      <DataItem ItemType=\"HyperSlab\" Dimensions=\"1 %d %d\" "
-              "Type=\"HyperSlab\">\n"
-              "       <DataItem Dimensions=\"3 3\" Format=\"XML\">%ld 0 0 1 1 1 1 %d %d"
-              "</DataItem>\n"
-              "       <DataItem Dimensions=\"%ld %d %d\" NumberType=\"Float\" "
-              "Precision=\"4\" Format=\"HDF\">%s:/foam</DataItem>\n"
-              "      </DataItem>\n"
-              "     </Attribute>\n"
-              "    </Grid>\n",
-              time_xml, g->ny, g->nx, oy, ox, (double)g->dy, (double)g->dx, g->ny, g->nx, frame,
-              g->ny, g->nx, frame + 1, g->ny, g->nx, x->h5);
-}
-
+/* The legacy sidecar's droplets of a frame: HyperSlab items of /spray
+ * [frame][budget][3] and /spray_id [budget], the selections run.xmf makes
+ * with Xdmf3's suffix (its foam: foam_xml). */
 static void legacy_spray_xml(sbuf *b, const ms_xdmf *x, long frame, int n, const char *time_xml)
 {
     const int budget = x->layout.spray;
@@ -627,7 +606,7 @@ static ms_status legacy_frame(ms_xdmf *x, long frame, double t, int particles)
         else if (g == PARTICLE_GROUP)
             particles_xml(&e, x, frame, particles, time_xml);
         else if (g == FOAM_GROUP)
-            legacy_foam_xml(&e, x, frame, time_xml);
+            foam_xml(&e, x, frame, time_xml);
         else
             legacy_spray_xml(&e, x, frame, x->spray, time_xml);
         grew |= x->gcount[g] == 0;
