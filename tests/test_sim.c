@@ -1363,20 +1363,16 @@ START_TEST(a_splash_throws_spray_that_falls_back)
 }
 END_TEST
 
-/* The flight is the exact parabola of constant gravity, whatever the
- * frame, and a particle that falls through the surface lands there,
- * adding foam to that cell. */
-START_TEST(spray_flies_the_exact_parabola_and_lands)
+/* A sim holding one droplet at pos with vel over still water 0.5 m deep
+ * (h), no waves, in a 1 x 1 x 2 m domain, its foam on a 4 x 4 grid: what
+ * ms_sim_spray_fly reads. */
+static ms_sim one_droplet(float *pos, float *vel, float *h, float *foam, float *tmp)
 {
-    float pos[3] = {0.3f, 0.5f, 1.0f}, vel[3] = {0.2f, -0.1f, 2.0f};
-    float foam[4 * 4] = {0}, tmp[4 * 4], h[2] = {0.5f, 0.5f};
     ms_sim sim = {0};
-    sim.domain_min[2] = 0;
     sim.domain_max[0] = sim.domain_max[1] = 1;
     sim.domain_max[2] = 2;
-    sim.fnx = 1;
-    sim.fny = 1;
-    sim.hfield[0] = h; /* still water 0.5 m deep, no waves */
+    sim.fnx = sim.fny = 1;
+    sim.hfield[0] = h;
     sim.spray = (ms_sim_spray_state){.cap = 1,
                                      .n = 1,
                                      .pos = pos,
@@ -1388,6 +1384,17 @@ START_TEST(spray_flies_the_exact_parabola_and_lands)
                                      .gdy = 0.25f,
                                      .foam = foam,
                                      .foam_tmp = tmp};
+    return sim;
+}
+
+/* The flight is the exact parabola of constant gravity, whatever the
+ * frame, and a particle that falls through the surface lands there,
+ * adding foam to that cell. */
+START_TEST(spray_flies_the_exact_parabola_and_lands)
+{
+    float pos[3] = {0.3f, 0.5f, 1.0f}, vel[3] = {0.2f, -0.1f, 2.0f};
+    float foam[4 * 4] = {0}, tmp[4 * 4], h[2] = {0.5f, 0.5f};
+    ms_sim sim = one_droplet(pos, vel, h, foam, tmp);
     const double p0[3] = {0.3, 0.5, 1.0}, v0[3] = {0.2, -0.1, 2.0}, g[3] = {0, 0, -9.81};
     double t = 0;
     const float dts[3] = {0.05f, 1.0f / 60, 0.1f};
@@ -1427,24 +1434,9 @@ START_TEST(spray_stops_at_obstacles)
                   ms_last_error());
     ck_assert(ms_shape_set_pose(box, (float[3]){0.5f, 0.5f, 1.0f}, (float[3]){0, 0, 0}) == MS_OK);
     ms_sim_shape sh = {.spray = box};
-    ms_sim sim = {0};
-    sim.domain_max[0] = sim.domain_max[1] = 1;
-    sim.domain_max[2] = 2;
-    sim.fnx = sim.fny = 1;
-    sim.hfield[0] = h; /* still water 0.5 m deep */
+    ms_sim sim = one_droplet(pos, vel, h, foam, tmp);
     sim.shapes = &sh;
     sim.nshapes = 1;
-    sim.spray = (ms_sim_spray_state){.cap = 1,
-                                     .n = 1,
-                                     .pos = pos,
-                                     .vel = vel,
-                                     .g = {0, 0, -9.81f},
-                                     .gnx = 4,
-                                     .gny = 4,
-                                     .gdx = 0.25f,
-                                     .gdy = 0.25f,
-                                     .foam = foam,
-                                     .foam_tmp = tmp};
     /* free flight would take it to x = 0.7 m in 0.2 s, 0.2 m down */
     for (int f = 0; f < 12; ++f) {
         ms_sim_spray_fly(&sim, 0, 1.0f / 60, 0.0f);
